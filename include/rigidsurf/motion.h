@@ -1,0 +1,77 @@
+/* rigidsurf: rigid motion of a master surface.
+ *
+ * The master moves rigidly: x = R X + T maps a reference-configuration point X to its
+ * current position x. The motion is a translation with velocity V and a rotation with
+ * angular speed omega about a fixed unit axis through a point C that moves with the
+ * translation. Both are superposed:
+ *     x(t) = C + D(t) + R(axis, phi(t)) (X - C),   D' = V,   phi' = omega.
+ * Rotations are integrated through the accumulated angle phi, so a constant rotation
+ * has no drift however long the run. Rates can change in time through a callback. */
+#ifndef RIGIDSURF_MOTION_H
+#define RIGIDSURF_MOTION_H
+
+#include "rigidsurf/types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// A rigid pose: x = R X + T. R is row-major (R[3*i + j] = R_ij).
+typedef struct rs_pose {
+    double R[9];
+    double T[3];
+} rs_pose;
+
+/// Sets the identity pose.
+void rs_pose_identity(rs_pose *p);
+/// x = R X + T.
+void rs_pose_to_global(const rs_pose *p, const double X[3], double x[3]);
+/// X = R^T (x - T).
+void rs_pose_to_local(const rs_pose *p, const double x[3], double X[3]);
+/// v = R V (a direction, no translation).
+void rs_pose_rotate(const rs_pose *p, const double V[3], double v[3]);
+/// V = R^T v.
+void rs_pose_unrotate(const rs_pose *p, const double v[3], double V[3]);
+
+/// Row-major rotation matrix for a rotation by angle (radians) about unit axis (Rodrigues).
+void rs_rotation_matrix(const double axis[3], double angle, double R[9]);
+
+/// Optional time-varying rates: fill vel[3] and *omega at time t. Return 0 on success,
+/// non-zero to stop the run (err filled by the callback's owner).
+typedef int (*rs_motion_rates_fn)(double t, double vel[3], double *omega, void *ctx);
+
+typedef struct rs_motion {
+    double t;           ///< current time
+    double vel[3];      ///< translation velocity V (length/time)
+    double omega;       ///< angular speed about axis (rad/time), right-hand rule
+    double axis[3];     ///< unit rotation axis
+    double center0[3];  ///< a point on the axis, reference configuration
+    double disp[3];     ///< accumulated translation D
+    double phi;         ///< accumulated rotation angle
+    rs_motion_rates_fn rates; ///< NULL for constant rates
+    void *ctx;          ///< passed to rates
+    rs_pose pose;       ///< current pose
+    double dQ[9];       ///< incremental rotation of the last rs_motion_advance (row-major)
+} rs_motion;
+
+/// No motion: identity pose, zero rates, axis = z, centre at the origin.
+void rs_motion_init(rs_motion *m);
+/// Sets a constant translation velocity.
+void rs_motion_set_translation(rs_motion *m, const double vel[3]);
+/// Sets the rotation axis (normalised here; must be non-zero), a point on it, and the
+/// angular speed. Returns RS_ERR_ARG for a zero or non-finite axis.
+int rs_motion_set_rotation(rs_motion *m, const double center[3], const double axis[3],
+                           double omega, rs_error *err);
+/// Advances time by dt: rates are taken at mid-step (t + dt/2), then phi and D are
+/// integrated and pose and dQ updated.
+int rs_motion_advance(rs_motion *m, double dt, rs_error *err);
+/// Current velocity of the master material point at spatial point p:
+/// v = V + omega axis x (p - (C + D)).
+void rs_motion_velocity_at(const rs_motion *m, const double p[3], double v[3]);
+/// Current position of the rotation centre, C + D.
+void rs_motion_center(const rs_motion *m, double c[3]);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,174 @@
+/* rigidsurf: master surfaces and the closest-feature query.
+ *
+ * Conventions (ARCHITECTURE.md, "Profiles and surfaces"):
+ * - A profile is a chain of LINE, CIRCL and PARAB segments in a 2D plane (x, y). For
+ *   CYLINDER that plane is the local (x, y) plane; for REVOLUTION it is (r, z).
+ * - The outward normal lies to the left of travel: n2 = (-t_y, t_x). Particles live on
+ *   the side n points to. One-sided unless SIDES=2.
+ * - Frames:  SEGMENTS    t1 = (0,0,-1) x n  (= travel direction), t2 = (0,0,-1)
+ *            CYLINDER    t1 = generator z^, t2 = n x t1
+ *            REVOLUTION  t2 = hoop e_theta = z^ x e_r, t1 = t2 x n
+ *            FACETED     t1 = global x projected on the tangent plane (global z when x is
+ *                        within 0.1 deg of n), t2 = n x t1
+ *   {n, t1, t2} is orthonormal and right-handed and turns with the master's rotation.
+ * - One contact per (point, feature) that owns a local minimum of distance in its
+ *   Voronoi region: a concave corner gives two segment contacts, a convex corner one
+ *   vertex contact. No contact is counted twice and none goes missing. */
+#ifndef RIGIDSURF_SURFACE_H
+#define RIGIDSURF_SURFACE_H
+
+#include "rigidsurf/motion.h"
+#include "rigidsurf/types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum rs_segment_type { RS_LINE = 1, RS_CIRCL = 2, RS_PARAB = 3 } rs_segment_type;
+
+/// One profile segment in its plane.
+typedef struct rs_segment {
+    rs_segment_type type;
+    double p0[2];   ///< start point
+    double p1[2];   ///< end point
+    double pm[2];   ///< CIRCL: centre; PARAB: middle point (on the curve, xi = 0)
+    double radius;  ///< CIRCL: radius
+    double ang0;    ///< CIRCL: polar angle of p0 about the centre
+    double sweep;   ///< CIRCL: signed sweep, |sweep| < pi (positive = counter-clockwise)
+    double length;  ///< arc length
+    double s0;      ///< arc length of the profile at p0
+} rs_segment;
+
+/// How the profile turns at a vertex, seen from the particle side (the side n points to).
+typedef enum rs_vertex_kind {
+    RS_VTX_END = 0,     ///< first or last point of an open profile
+    RS_VTX_CONVEX = 1,  ///< the wall bulges toward the particles: one vertex contact
+    RS_VTX_CONCAVE = 2, ///< a pocket: the two segments each give a contact
+    RS_VTX_SMOOTH = 3   ///< tangent-continuous (within 1e-9 rad): history carries over
+} rs_vertex_kind;
+
+typedef struct rs_profile {
+    int nseg;
+    rs_segment *seg;   ///< nseg segments
+    int closed;        ///< last end point coincides with the first start point
+    int nvert;         ///< nseg + 1 (open) or nseg (closed)
+    int *vkind;        ///< rs_vertex_kind for each vertex
+} rs_profile;
+
+typedef enum rs_surface_kind {
+    RS_SURF_SEGMENTS = 1,   ///< 2D profile in the global x-y plane, nDir = 2
+    RS_SURF_CYLINDER = 2,   ///< profile extruded along the generator
+    RS_SURF_REVOLUTION = 3, ///< profile in (r, z) revolved about the axis
+    RS_SURF_FACETED = 4     ///< triangle mesh (provided through rs_surface_class)
+} rs_surface_kind;
+
+struct rs_surface;
+struct rs_query;
+struct rs_contacts;
+
+/// Behaviour of surface kinds that live outside analytic_surfaces/ (meshes, user
+/// surfaces). A surface whose klass is set is answered through it.
+typedef struct rs_surface_class {
+    const char *name;
+    int (*query)(const struct rs_surface *s, const struct rs_query *q,
+                 struct rs_contacts *out, rs_error *err);
+    /// 1 when a contact may hand its history from feature fa to feature fb (the normal
+    /// is continuous across the junction), 0 otherwise.
+    int (*adjacent)(const struct rs_surface *s, int fa, int fb);
+    void (*destroy)(struct rs_surface *s);
+} rs_surface_class;
+
+typedef struct rs_surface {
+    rs_surface_kind kind;
+    char name[80];
+    int sides;             ///< 1 or 2
+    double fillet_radius;  ///< 0 when no fillets were requested
+    rs_profile profile;
+    /* Local frame in the reference configuration. CYLINDER: a, ex = (b-a)/|b-a|,
+     * ez = (c-a) orthogonalised to ex, ey = ez x ex. REVOLUTION: a, ez = (b-a)/|b-a|,
+     * ex a fixed unit vector normal to ez (the on-axis fallback for e_r), ey = ez x ex.
+     * SEGMENTS: a = 0 and the global axes. */
+    double a[3], ex[3], ey[3], ez[3];
+    int bounded;           ///< CYLINDER: EXTENT given
+    double zmin, zmax;     ///< CYLINDER: extent along the generator, local z
+    const rs_surface_class *klass; ///< NULL for the analytic kinds
+    void *impl;
+} rs_surface;
+
+/// Number of local directions: 2 for SEGMENTS, 3 otherwise.
+int rs_surface_ndir(const rs_surface *s);
+
+/// A block of query points (SoA), global coordinates, current configuration.
+typedef struct rs_query {
+    int n;
+    const double *x, *y, *z; ///< points or sphere centres (z ignored for SEGMENTS)
+    const double *radius;    ///< sphere radii, NULL for points
+    const rs_pose *pose;     ///< current pose of the master, NULL for identity
+    double gap_max;          ///< keep contacts with gap = dist - radius <= gap_max
+    double dist_min;         ///< drop contacts whose centre lies deeper than this signed
+                             ///< distance (use -INFINITY to keep every penetration)
+} rs_query;
+
+/// Contacts found by a query (SoA, global coordinates). Arrays grow as needed.
+typedef struct rs_contacts {
+    int n, cap;
+    int *point;       ///< index of the query point in its block
+    int *feature;     ///< RS_FEATURE(type, index)
+    double *xm[3];    ///< closest point on the master
+    double *nrm[3];   ///< outward unit normal (toward the point's side)
+    double *t1[3];    ///< first tangent, by the kind's convention
+    double *t2[3];    ///< second tangent (SEGMENTS: (0,0,-1))
+    double *dist;     ///< signed distance of the point from the surface along n
+                      ///< (> 0 on the particle side); rdisp1 = radius - dist
+    double *curv[2];  ///< principal curvatures along t1 and t2 at xm, > 0 where the
+                      ///< wall is convex toward the particle; 0 at sharp vertices
+} rs_contacts;
+
+/// Allocates room for cap contacts (cap >= 1). Returns RS_ERR_NOMEM on failure.
+int rs_contacts_reserve(rs_contacts *c, int cap, rs_error *err);
+/// Frees the arrays and zeroes c.
+void rs_contacts_free(rs_contacts *c);
+
+/// Appends the contacts of every query point to out (out->n grows; call with
+/// out->n = 0 for a fresh list). Contacts of one point are consecutive.
+int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
+                     rs_error *err);
+
+/// 1 when history may pass from feature fa to feature fb (see rs_surface_class).
+int rs_surface_adjacent(const rs_surface *s, int fa, int fb);
+
+/// Reads surface NAME (NULL: the first) from an Abaqus-style keyword file.
+int rs_surface_read(const char *path, const char *name, rs_surface *s, rs_error *err);
+/// Parses surface NAME (NULL: the first) from text; origin names the text in messages.
+int rs_surface_parse(const char *text, const char *origin, const char *name,
+                     rs_surface *s, rs_error *err);
+/// Frees what a surface owns and zeroes it.
+void rs_surface_free(rs_surface *s);
+
+/// A triangulation of the surface for display, in the reference configuration.
+/// Extrusions without EXTENT and revolutions are cut at +-span along their axis or
+/// drawn over the full turn with nhoop facets. Arrays are malloc'ed; free with free().
+typedef struct rs_trimesh {
+    int nvert, ntri;
+    double *xyz;  ///< 3 * nvert
+    int *tri;     ///< 3 * ntri, node order gives the outward normal (right-hand rule)
+} rs_trimesh;
+int rs_surface_triangulate(const rs_surface *s, double span, int nhoop, rs_trimesh *m,
+                           rs_error *err);
+void rs_trimesh_free(rs_trimesh *m);
+
+/* Frame conventions, one function per kind. n is the unit outward normal (global). */
+/// SEGMENTS: t1 = (0,0,-1) x n, t2 = (0,0,-1).
+void rs_frame_segments(const double n[3], double t1[3], double t2[3]);
+/// CYLINDER: t1 = generator gen (unit), t2 = n x t1.
+void rs_frame_cylinder(const double n[3], const double gen[3], double t1[3], double t2[3]);
+/// REVOLUTION: t2 = hoop (unit), t1 = t2 x n.
+void rs_frame_revolution(const double n[3], const double hoop[3], double t1[3],
+                         double t2[3]);
+/// FACETED: t1 = global x on the tangent plane (global z within 0.1 deg), t2 = n x t1.
+void rs_frame_faceted(const double n[3], double t1[3], double t2[3]);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

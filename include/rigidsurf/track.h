@@ -1,0 +1,101 @@
+/* rigidsurf: the contact tracker.
+ *
+ * One contact is (particle, surface, feature). Each has a history slot that the caller
+ * owns (per particle, `capacity` slots of RS_HIST_SIZE(nstatev) doubles), so an engine
+ * can migrate and restart it as plain doubles. The tracker turns the contacts of a
+ * query into the VUINTER kinematics (ARCHITECTURE.md, "rdisp, drdisp, drot"):
+ * - rdisp(1) = R - (x_c - x_m).n, > 0 overlap. drdisp(1) = its change since the last call
+ *   (for a new contact: -v_rel.n dt).
+ * - The old frame is carried by the master's incremental rotation Q, then by the minimal
+ *   rotation P taking Q n_old to n_new: tau_j = P Q t_j,old, drot(i,j) = t_i,new . tau_j.
+ * - Slip: s <- drot s, then s += ds with ds_i = v_rel . t_i dt, where
+ *   v_rel = v + w x (x_cp - x) - v_master(x_cp) and x_cp = x - (R - rdisp1/2) n.
+ *   rdisp(2:3) = s, drdisp(2:3) = ds. nDir = 2 uses t1 only and drot = I.
+ * - A contact whose feature is gone hands its history to an adjacent feature found
+ *   this call (rs_surface_adjacent). Otherwise it is emitted once more with RS_MAXVAL in
+ *   rdisp, drdisp and drot, then its slot is freed by rs_track_commit. */
+#ifndef RIGIDSURF_TRACK_H
+#define RIGIDSURF_TRACK_H
+
+#include "rigidsurf/motion.h"
+#include "rigidsurf/surface.h"
+#include "rigidsurf/types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* History slot layout (doubles). Empty slots have FEATURE = -1 and STATE = 0. */
+#define RS_H_FEATURE 0 ///< feature id, -1 when empty
+#define RS_H_STATE 1   ///< RS_HSTATE_*
+#define RS_H_N 2       ///< normal at the last call (3)
+#define RS_H_T1 5      ///< t1 at the last call (3)
+#define RS_H_T2 8      ///< t2 at the last call (3)
+#define RS_H_SLIP 11   ///< accumulated slip in (t1, t2) (2)
+#define RS_H_RDISP1 13 ///< rdisp(1) at the last call
+#define RS_H_STRESS 14 ///< stress(1:3) returned by the law at the last call (3)
+#define RS_H_STATEV 17 ///< law state variables (nstatev)
+#define RS_HIST_SIZE(nstatev) (17 + (nstatev))
+
+#define RS_HSTATE_EMPTY 0
+#define RS_HSTATE_ACTIVE 1
+#define RS_HSTATE_LEAVING 2 ///< emitted with RS_MAXVAL this call; freed on commit
+
+typedef struct rs_tracker {
+    int capacity;    ///< history slots per particle per surface (default 4)
+    int nstatev;     ///< law state variables per contact
+    int ndir;        ///< 2 (SEGMENTS) or 3
+    double tracking; ///< contacts are kept while gap <= tracking
+} rs_tracker;
+
+/// A block of particles (SoA). The query points of the same block are their centres.
+typedef struct rs_particles {
+    int n;
+    const double *x, *y, *z;    ///< centres
+    const double *vx, *vy, *vz; ///< velocities
+    const double *wx, *wy, *wz; ///< angular velocities (NULL: zero)
+    const double *radius;       ///< radii (NULL: points)
+    const int *id;              ///< particle ids for messages (NULL: block index)
+    double **hist;              ///< per particle: capacity * RS_HIST_SIZE(nstatev)
+} rs_particles;
+
+/// Tracker output: one entry per live or leaving contact, in Abaqus layout with
+/// stride ndir. Arrays grow as needed.
+typedef struct rs_track_out {
+    int n, cap, ndir;
+    int *point;        ///< particle index in the block
+    int *feature;      ///< feature id
+    double **slot;     ///< the contact's history slot
+    double *rdisp;     ///< rdisp(ndir, n)
+    double *drdisp;    ///< drdisp(ndir, n)
+    double *drot;      ///< drot(2, 2, n)
+    double *alocaldir; ///< alocaldir(ndir, ndir, n): columns n, t1[, t2]
+    double *coordslv;  ///< contact point x_cp (ndir, n)
+    double *coordmst;  ///< closest master point x_m (ndir, n)
+    double *vrel;      ///< relative velocity of x_cp in (n, t1[, t2]) (ndir, n)
+    double *curv;      ///< principal curvatures (2, n)
+} rs_track_out;
+
+void rs_track_out_free(rs_track_out *o);
+
+/// Matches the contacts c (from rs_surface_query on the same block, with gap_max =
+/// tr->tracking) to history, and fills out (out->n is reset). dt is the increment,
+/// m the master's motion after its advance (m->dQ is the increment's rotation), NULL
+/// for a fixed master. Returns RS_ERR_CAPACITY naming the particle when it has more
+/// contacts than slots.
+int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *m,
+                    double dt, const rs_particles *p, const rs_contacts *c,
+                    rs_track_out *out, rs_error *err);
+
+/// Stores the law's results in history: stress(ndir, n) and statev(nstatev, n) for the
+/// live contacts (either may be NULL), and frees the slots of leaving contacts.
+void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stress,
+                     const double *statev);
+
+/// Marks every slot of one particle empty.
+void rs_track_clear(const rs_tracker *tr, double *hist);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
