@@ -1,0 +1,211 @@
+/* rigidsurf: interface laws (Abaqus VUINTER calling convention).
+ *
+ * A law is a descriptor (rs_law) with one vectorized function over a block of at most
+ * RS_BLOCK contacts (rs_law_block). The block carries every VUINTER argument with its
+ * Abaqus meaning, stored in Fortran (column-major) layout so a Fortran shim passes the
+ * pointers on without copies (ARCHITECTURE.md, "Memory layout"). Index with the
+ * accessors of types.h: RS_A2(b->stress, b->nDir, i, k), RS_DROT(b->drot, i, j, k).
+ *
+ * Conventions (ARCHITECTURE.md, "rdisp, drdisp, drot" and "Stress, flux, energy signs"):
+ * - rdisp(1) > 0 is overlap (penetration), < 0 a gap. rdisp(2:3) is the accumulated
+ *   slip in (t1, t2); drdisp the increment. rdisp = drdisp = drot = RS_MAXVAL (1e30) on
+ *   the one call after a contact leaves the tracking thickness: a law must then return
+ *   zero stress and flux.
+ * - On entry stress holds the values of the previous increment, with stress(2:3) and
+ *   rdisp(2:3) already rotated by drot. Vector-valued state variables are the law's to
+ *   rotate (s <- drot s).
+ * - stress(1) > 0 is pressure on the master; stress(2:3) > 0 a traction on the master
+ *   along +t1 / +t2. The force on the particle is F = areaSlv (s1 n - s2 t1 - s3 t2).
+ * - fluxSlv, fluxMst > 0 is heat (per area and time) into that surface.
+ * - sed is the elastic strain energy density (a total); sfd, scd, spd, svd are
+ *   increments of frictional, creep, plastic and viscous dissipation density.
+ *
+ * Laws written for VUINTER ignore the DEM extension (radius ... setup). */
+#ifndef RIGIDSURF_LAW_H
+#define RIGIDSURF_LAW_H
+
+#include "rigidsurf/types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// Length of the VUINTER surface-name strings (CHARACTER*80, blank-padded).
+#define RS_LAW_NAMELEN 80
+
+/// Arguments of one law call. Arrays are Fortran layout; n means nSlvNod.
+/// Fortran INTEGER is int (gfortran integer*4), REAL*8 is double.
+typedef struct rs_law_block {
+    /* VUINTER integers. */
+    int kStep;     ///< step number (Abaqus: from 1)
+    int kInc;      ///< increment number
+    int nFacNod;   ///< master nodes per facet (1 here: jConMstid holds the feature id)
+    int nSlvNod;   ///< contacts in this block, 0 <= n <= RS_BLOCK
+    int nMstNod;   ///< entries of jMstUid
+    int nSurfDir;  ///< tangent directions: nDir - 1
+    int nDir;      ///< 2 (SEGMENTS) or 3
+    int nStateVar; ///< state variables per contact
+    int nProps;    ///< entries of props
+    int nTemp;     ///< 1 if temperatures are passed, else 0
+    int nPred;     ///< predefined field variables per node
+    int numDefTfv; ///< master nodes with temperature / field values (1: the wall)
+
+    const int *jSlvUid;   ///< (n) particle id of each contact
+    const int *jMstUid;   ///< (nMstNod) master ids (the surface index)
+    const int *jConMstid; ///< (nFacNod, n) feature id (RS_FEATURE) of each contact
+
+    double timStep; ///< step time at the start of the increment
+    double timGlb;  ///< total time at the start of the increment
+    double dTimCur; ///< time increment
+
+    char surfInt[RS_LAW_NAMELEN]; ///< interaction name, blank-padded, no NUL
+    char surfSlv[RS_LAW_NAMELEN]; ///< slave (particle group) name, blank-padded
+    char surfMst[RS_LAW_NAMELEN]; ///< master (wall) name, blank-padded
+
+    /* Read only. */
+    const double *rdisp;      ///< (nDir, n) penetration and accumulated slip
+    const double *drdisp;     ///< (nDir, n) their increments
+    const double *drot;       ///< (2, 2, n) tangent-basis rotation increment
+    const double *stiffDflt;  ///< (n) default penalty stiffness, rs_law_default_stiffness
+    const double *condDflt;   ///< (n) default conductance, rs_law_default_conductance
+    const double *shape;      ///< (nFacNod, n) master shape functions (1)
+    const double *coordSlv;   ///< (nDir, n) contact point on the particle
+    const double *coordMst;   ///< (nDir, n) closest master point
+    const double *alocaldir;  ///< (nDir, nDir, n) columns n, t1[, t2] (global)
+    const double *props;      ///< (nProps) law properties
+    const double *areaSlv;    ///< (n) area per contact (1: stress is force)
+    const double *tempSlv;    ///< (n) particle temperature at the end of the increment
+    const double *dtempSlv;   ///< (n) its increment
+    const double *preDefSlv;  ///< (nPred, n) particle field variables
+    const double *dpreDefSlv; ///< (nPred, n) their increments
+    const double *tempMst;    ///< (numDefTfv) wall temperature
+    const double *dtempMst;   ///< (numDefTfv) its increment
+    const double *preDefMst;  ///< (nPred, numDefTfv) wall field variables
+    const double *dpreDefMst; ///< (nPred, numDefTfv) their increments
+
+    /* Read / write. */
+    double *stress;  ///< (nDir, n) interface stress: previous on entry, new on exit
+    double *fluxSlv; ///< (n) heat flux into the particle per area
+    double *fluxMst; ///< (n) heat flux into the wall per area
+    double *sed;     ///< (n) elastic strain energy per area
+    double *statev;  ///< (nStateVar, n) law state
+
+    /* Write only (increments per area). */
+    double *sfd; ///< (n) frictional dissipation
+    double *scd; ///< (n) creep dissipation
+    double *spd; ///< (n) plastic dissipation
+    double *svd; ///< (n) viscous (damping) dissipation
+
+    /* DEM extension (not VUINTER; NULL where the engine has nothing to give). */
+    const double *radius; ///< (n) particle radius R
+    const double *mass;   ///< (n) particle mass m
+    const double *reff;   ///< (n) effective radius from R and curv (R on a plane)
+    const double *vrel;   ///< (nDir, n) velocity of the particle's contact point minus
+                          ///< the wall's, in (n, t1[, t2]); vrel(1) > 0 separates
+    const double *curv;   ///< (2, n) principal wall curvatures, > 0 convex toward the
+                          ///< particle, 0 for a plane
+    const int *slv_type;  ///< (n) particle material type (NULL: one material)
+    int wall_type;        ///< wall material type
+    int setup;            ///< nonzero on a setup call (LIGGGHTS setup, before step 1):
+                          ///< compute forces but do not advance history (statev)
+} rs_law_block;
+
+typedef struct rs_law rs_law;
+
+/// Validates props (count, sign, range). Optional (NULL: any finite values).
+typedef int (*rs_law_init_fn)(const rs_law *law, const double *props, int nprops,
+                              rs_error *err);
+
+/// One vectorized call over the block: reads the read-only arrays, updates stress,
+/// fluxes, sed, statev and writes sfd, scd, spd, svd for every contact. Returns RS_OK
+/// or fills err. A user C law loaded with rs_law_load_c has exactly this signature.
+typedef int (*rs_law_update_fn)(const rs_law *law, rs_law_block *b, rs_error *err);
+
+/// A law descriptor. Built-ins are static and const (rs_law_find); loaded laws are
+/// filled by the rs_law_load_* functions and released with rs_law_unload.
+struct rs_law {
+    const char *name;              ///< registry name (case-insensitive)
+    int nprops;                    ///< property count; -1 = any count (user laws)
+    int nstatev;                   ///< state variables per contact (user laws: caller)
+    const char *const *prop_names; ///< nprops names, in order (NULL for user laws)
+    rs_law_init_fn init;           ///< optional property check
+    rs_law_update_fn update;       ///< the block call (required)
+    void *ctx;                     ///< loader data (library handle, wrapped routines)
+    void (*destroy)(rs_law *law);  ///< optional: releases ctx
+};
+
+/* Registry of built-in laws. */
+
+/// Built-in law by name (case-insensitive), or NULL.
+const rs_law *rs_law_find(const char *name);
+
+/// Number of built-in laws.
+int rs_law_count(void);
+
+/// Built-in law i (0 <= i < rs_law_count()), or NULL.
+const rs_law *rs_law_at(int i);
+
+/* Calling a law. */
+
+/// Checks props against the descriptor: the count (unless law->nprops == -1), that every
+/// value is finite, then law->init. Messages name the law and the property by name.
+int rs_law_check_props(const rs_law *law, const double *props, int nprops, rs_error *err);
+
+/// Calls law->update on b, then checks stress(1:nDir), fluxSlv and fluxMst of every
+/// contact. The first non-finite value gives RS_ERR_NONFINITE naming the law, the
+/// particle id (jSlvUid), the feature id (jConMstid) and the output. Also rejects a
+/// malformed block (n outside 0..RS_BLOCK, nDir not 2 or 3, missing required arrays)
+/// with RS_ERR_ARG before calling the law.
+int rs_law_call(const rs_law *law, rs_law_block *b, rs_error *err);
+
+/// Default penalty stiffness (stress per length) for a contact of a particle of mass m
+/// and contact area A in an explicit step dt: k = 0.1 * 4 m / (A dt^2). A point mass on
+/// a spring of stiffness k A is stable in central differences for dt < 2 sqrt(m / (k A)),
+/// i.e. k A < 4 m / dt^2; the default sits ten times under that limit. Returns 0 if an
+/// argument is not positive.
+double rs_law_default_stiffness(double mass, double area, double dt);
+
+/// Default conductance per area (heat flux per area per kelvin) for a particle of heat
+/// capacity C = m c (energy per kelvin) and contact area A in an explicit step dt:
+/// h = 0.1 * C / (A dt). Forward-Euler heat exchange with a wall at fixed temperature,
+/// dT = -(h A / C) (T - Tw) dt, is monotone for h A dt / C <= 1 and stable below 2; the
+/// default sits ten times under the monotone limit. Returns 0 if an argument is not
+/// positive.
+double rs_law_default_conductance(double heat_capacity, double area, double dt);
+
+/// Zero-fills b and sets the Abaqus defaults: nFacNod = 1, nTemp = 1, numDefTfv = 1,
+/// nMstNod = 1, nPred = 0, kStep = 1, blank surface names, and points the optional
+/// read-only arrays (shape, areaSlv, tempSlv, dtempSlv, preDefSlv, dpreDefSlv, tempMst,
+/// dtempMst, preDefMst, dpreDefMst, jMstUid) at library constants (ones for shape and
+/// areaSlv, zeros for the rest), valid for up to RS_BLOCK contacts. The engine still
+/// sets nSlvNod, nDir, nSurfDir, the counts, jSlvUid, jConMstid, rdisp, drdisp, drot,
+/// stiffDflt, condDflt, props and every writable array.
+void rs_law_block_init(rs_law_block *b);
+
+/// Copies s into an 80-character VUINTER name, blank-padded, no NUL.
+void rs_law_block_set_name(char dst[RS_LAW_NAMELEN], const char *s);
+
+/* Loading user laws with dlopen (src/law_load.c). */
+
+/// Loads a C law: symbol is a function with the rs_law_update_fn signature in the
+/// shared library lib. out->nprops = -1 and out->nstatev = 0 (the caller sets it).
+int rs_law_load_c(const char *lib, const char *symbol, rs_law *out, rs_error *err);
+
+/// Loads a Fortran VUINTER (symbol vuinter_, built against vaba_param.inc) as a law.
+int rs_law_load_vuinter(const char *lib, rs_law *out, rs_error *err);
+
+/// Loads a Fortran UINTER (point-wise, symbol uinter_) as a block law. normal (may be
+/// NULL) supplies the normal response when the routine leaves it to the engine.
+int rs_law_load_uinter(const char *lib, const rs_law *normal, rs_law *out, rs_error *err);
+
+/// Loads a Fortran FRIC (symbol fric_, LM = 0/1/2 semantics) as a block law. normal
+/// supplies the pressure stress(1) before FRIC computes the shear.
+int rs_law_load_fric(const char *lib, const rs_law *normal, rs_law *out, rs_error *err);
+
+/// Releases a loaded law (calls destroy, closes the library) and zeroes it.
+void rs_law_unload(rs_law *law);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
