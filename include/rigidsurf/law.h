@@ -108,6 +108,14 @@ typedef struct rs_law_block {
     int wall_type;        ///< wall material type
     int setup;            ///< nonzero on a setup call (LIGGGHTS setup, before step 1):
                           ///< compute forces but do not advance history (statev)
+
+    /* Warning channel (rs_law_block_init leaves it NULL: warnings are dropped). */
+    /// Called by adapters for a condition an explicit step cannot honour (a UINTER or
+    /// FRIC asking for a smaller increment with PNEWDT < 1, a returned stiffness above
+    /// the stable limit for dt). k is the contact in the block; msg names the particle
+    /// id and feature id. The law call itself still succeeds.
+    void (*warn)(void *warn_ctx, const struct rs_law *law, int k, const char *msg);
+    void *warn_ctx; ///< passed to warn
 } rs_law_block;
 
 typedef struct rs_law rs_law;
