@@ -33,6 +33,8 @@ extern "C" {
 /// Length of the VUINTER surface-name strings (CHARACTER*80, blank-padded).
 #define RS_LAW_NAMELEN 80
 
+struct rs_law;
+
 /// Arguments of one law call. Arrays are Fortran layout; n means nSlvNod.
 /// Fortran INTEGER is int (gfortran integer*4), REAL*8 is double.
 typedef struct rs_law_block {
