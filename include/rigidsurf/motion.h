@@ -52,6 +52,7 @@ typedef struct rs_motion {
     void *ctx;          ///< passed to rates
     rs_pose pose;       ///< current pose
     double dQ[9];       ///< incremental rotation of the last rs_motion_advance (row-major)
+    double t_err, phi_err, disp_err[3]; ///< compensated-summation remainders of t, phi, disp
 } rs_motion;
 
 /// No motion: identity pose, zero rates, axis = z, centre at the origin.

@@ -1,0 +1,179 @@
+/* Rigid motion of a master surface: x(t) = C + D(t) + R(axis, phi(t)) (X - C).
+ * phi, D and t are accumulated with compensated summation and the pose
+ * is rebuilt from phi each step, so a constant rotation does not drift. */
+#include "rigidsurf/motion.h"
+
+#include <math.h>
+#include <string.h>
+
+void rs_pose_identity(rs_pose *p)
+{
+    memset(p, 0, sizeof *p);
+    p->R[0] = p->R[4] = p->R[8] = 1.0;
+}
+
+void rs_pose_to_global(const rs_pose *p, const double X[3], double x[3])
+{
+    double r[3];
+    rs_pose_rotate(p, X, r);
+    x[0] = r[0] + p->T[0];
+    x[1] = r[1] + p->T[1];
+    x[2] = r[2] + p->T[2];
+}
+
+void rs_pose_to_local(const rs_pose *p, const double x[3], double X[3])
+{
+    double d[3] = {x[0] - p->T[0], x[1] - p->T[1], x[2] - p->T[2]};
+    rs_pose_unrotate(p, d, X);
+}
+
+void rs_pose_rotate(const rs_pose *p, const double V[3], double v[3])
+{
+    const double *R = p->R;
+    double a = V[0], b = V[1], c = V[2];
+    v[0] = R[0] * a + R[1] * b + R[2] * c;
+    v[1] = R[3] * a + R[4] * b + R[5] * c;
+    v[2] = R[6] * a + R[7] * b + R[8] * c;
+}
+
+void rs_pose_unrotate(const rs_pose *p, const double v[3], double V[3])
+{
+    const double *R = p->R;
+    double a = v[0], b = v[1], c = v[2];
+    V[0] = R[0] * a + R[3] * b + R[6] * c;
+    V[1] = R[1] * a + R[4] * b + R[7] * c;
+    V[2] = R[2] * a + R[5] * b + R[8] * c;
+}
+
+/* Rodrigues: R = I + sin(a) K + (1 - cos(a)) K^2 with K = [axis]x; 1 - cos(a) is taken
+ * as 2 sin^2(a/2) so small angles keep full relative precision. */
+void rs_rotation_matrix(const double axis[3], double angle, double R[9])
+{
+    double x = axis[0], y = axis[1], z = axis[2];
+    double s = sin(angle), h = sin(0.5 * angle), c1 = 2.0 * h * h;
+    R[0] = 1.0 - c1 * (y * y + z * z);
+    R[1] = c1 * x * y - s * z;
+    R[2] = c1 * x * z + s * y;
+    R[3] = c1 * x * y + s * z;
+    R[4] = 1.0 - c1 * (x * x + z * z);
+    R[5] = c1 * y * z - s * x;
+    R[6] = c1 * x * z - s * y;
+    R[7] = c1 * y * z + s * x;
+    R[8] = 1.0 - c1 * (x * x + y * y);
+}
+
+/* Exact sum a + b = *s + *e (Knuth's TwoSum). */
+static void two_sum(double a, double b, double *s, double *e)
+{
+    double t = a + b, bv = t - a;
+    *s = t;
+    *e = (a - (t - bv)) + (b - bv);
+}
+
+/* Compensated accumulation: *sum is the correctly rounded running total and *err the
+ * remainder below its last bit, so the public fields (t, phi, disp) do not drift. */
+static void kahan_add(double *sum, double *err, double x)
+{
+    double s, e;
+    two_sum(*sum, x, &s, &e);
+    two_sum(s, *err + e, sum, err);
+}
+
+static void motion_update_pose(rs_motion *m)
+{
+    double RC[3];
+    rs_rotation_matrix(m->axis, m->phi, m->pose.R);
+    rs_pose_rotate(&m->pose, m->center0, RC);
+    for (int i = 0; i < 3; i++)
+        m->pose.T[i] = m->center0[i] + m->disp[i] - RC[i];
+}
+
+void rs_motion_init(rs_motion *m)
+{
+    memset(m, 0, sizeof *m);
+    m->axis[2] = 1.0;
+    rs_pose_identity(&m->pose);
+    m->dQ[0] = m->dQ[4] = m->dQ[8] = 1.0;
+}
+
+void rs_motion_set_translation(rs_motion *m, const double vel[3])
+{
+    m->vel[0] = vel[0];
+    m->vel[1] = vel[1];
+    m->vel[2] = vel[2];
+}
+
+int rs_motion_set_rotation(rs_motion *m, const double center[3], const double axis[3],
+                           double omega, rs_error *err)
+{
+    double len = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+    if (!isfinite(len) || len == 0.0)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_motion_set_rotation: axis (%g, %g, %g) must be a finite "
+                            "non-zero vector",
+                            axis[0], axis[1], axis[2]);
+    if (!isfinite(center[0]) || !isfinite(center[1]) || !isfinite(center[2]) ||
+        !isfinite(omega))
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_motion_set_rotation: centre and angular speed must be "
+                            "finite");
+    for (int i = 0; i < 3; i++) {
+        m->axis[i] = axis[i] / len;
+        m->center0[i] = center[i];
+    }
+    m->omega = omega;
+    motion_update_pose(m);
+    return RS_OK;
+}
+
+int rs_motion_advance(rs_motion *m, double dt, rs_error *err)
+{
+    if (!isfinite(dt))
+        return rs_error_set(err, RS_ERR_ARG, "rs_motion_advance: dt = %g is not finite",
+                            dt);
+    if (m->rates) {
+        double tmid = m->t + 0.5 * dt, vel[3], omega;
+        memcpy(vel, m->vel, sizeof vel);
+        omega = m->omega;
+        int rc = m->rates(tmid, vel, &omega, m->ctx);
+        if (rc != 0)
+            return rs_error_set(err, RS_ERR_ARG,
+                                "rs_motion_advance: rates callback stopped the run at "
+                                "t = %g (returned %d)",
+                                tmid, rc);
+        if (!isfinite(vel[0]) || !isfinite(vel[1]) || !isfinite(vel[2]) || !isfinite(omega))
+            return rs_error_set(err, RS_ERR_NONFINITE,
+                                "rs_motion_advance: rates callback returned a non-finite "
+                                "rate at t = %g",
+                                tmid);
+        memcpy(m->vel, vel, sizeof vel);
+        m->omega = omega;
+    }
+    double dphi = m->omega * dt;
+    kahan_add(&m->phi, &m->phi_err, dphi);
+    for (int i = 0; i < 3; i++)
+        kahan_add(&m->disp[i], &m->disp_err[i], m->vel[i] * dt);
+    kahan_add(&m->t, &m->t_err, dt);
+    rs_rotation_matrix(m->axis, dphi, m->dQ);
+    motion_update_pose(m);
+    return RS_OK;
+}
+
+void rs_motion_center(const rs_motion *m, double c[3])
+{
+    for (int i = 0; i < 3; i++)
+        c[i] = m->center0[i] + m->disp[i];
+}
+
+void rs_motion_velocity_at(const rs_motion *m, const double p[3], double v[3])
+{
+    double c[3], r[3];
+    rs_motion_center(m, c);
+    for (int i = 0; i < 3; i++)
+        r[i] = p[i] - c[i];
+    double wx = m->omega * m->axis[0], wy = m->omega * m->axis[1],
+           wz = m->omega * m->axis[2];
+    v[0] = m->vel[0] + wy * r[2] - wz * r[1];
+    v[1] = m->vel[1] + wz * r[0] - wx * r[2];
+    v[2] = m->vel[2] + wx * r[1] - wy * r[0];
+}

@@ -1,0 +1,244 @@
+/* Rigid motion (motion.h): x(t) = C + D(t) + R(axis, phi(t)) (X - C). Every reference
+ * answer here is an independent closed form: rotations by the quaternion formula
+ * v' = v + 2 q0 (q x v) + 2 q x (q x v), q = axis sin(a/2), q0 = cos(a/2). */
+#include "rigidsurf/motion.h"
+#include "rs_test.h"
+
+static void cross(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static void unit(double v[3])
+{
+    double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    v[0] /= l;
+    v[1] /= l;
+    v[2] /= l;
+}
+
+/* Rotates v about the unit axis by angle a (quaternion form). */
+static void quat_rotate(const double axis[3], double a, const double v[3], double r[3])
+{
+    double q[3] = {axis[0] * sin(0.5 * a), axis[1] * sin(0.5 * a), axis[2] * sin(0.5 * a)};
+    double q0 = cos(0.5 * a), qv[3], qqv[3];
+    cross(q, v, qv);
+    cross(q, qv, qqv);
+    for (int i = 0; i < 3; i++)
+        r[i] = v[i] + 2.0 * q0 * qv[i] + 2.0 * qqv[i];
+}
+
+/* Closed-form position of material point X: C + D + R(axis, phi)(X - C). */
+static void closed_form(const double C[3], const double D[3], const double axis[3],
+                        double phi, const double X[3], double x[3])
+{
+    double d[3] = {X[0] - C[0], X[1] - C[1], X[2] - C[2]}, r[3];
+    quat_rotate(axis, phi, d, r);
+    for (int i = 0; i < 3; i++)
+        x[i] = C[i] + D[i] + r[i];
+}
+
+/* After 1e6 steps of a constant rotation (200 rad in all) the pose is the closed-form
+ * rotation by omega t to 1e-12: phi is integrated without drift. */
+static void test_motion_no_drift(void)
+{
+    rs_motion m;
+    rs_error err;
+    double axis[3] = {1.0, -2.0, 0.5}, C[3] = {0.3, -0.2, 0.5}, omega = 2.0, dt = 1e-4;
+    const long N = 1000000;
+    rs_motion_init(&m);
+    ENSURE(rs_motion_set_rotation(&m, C, axis, omega, &err) == RS_OK);
+    unit(axis);
+    for (long k = 0; k < N; k++)
+        ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+    double t = (double)N * dt, zero[3] = {0, 0, 0};
+    ENSURE_NEAR(m.t, t, 1e-12);
+    /* Columns of R are the images of the basis vectors. */
+    for (int j = 0; j < 3; j++) {
+        double e[3] = {0, 0, 0}, r[3];
+        e[j] = 1.0;
+        quat_rotate(axis, omega * t, e, r);
+        for (int i = 0; i < 3; i++)
+            ENSURE_NEAR(m.pose.R[3 * i + j], r[i], 1e-12);
+    }
+    double X[3] = {1.0, 2.0, -0.7}, x[3], xr[3];
+    rs_pose_to_global(&m.pose, X, x);
+    closed_form(C, zero, axis, omega * t, X, xr);
+    for (int i = 0; i < 3; i++)
+        ENSURE_NEAR(x[i], xr[i], 1e-12);
+}
+
+/* v = V + omega axis x (p - (C + D)) equals the central difference of the pose's map of
+ * the material point at p. */
+static void test_motion_velocity_at(void)
+{
+    rs_motion m;
+    rs_error err;
+    double axis[3] = {0.2, 0.9, -0.4}, C[3] = {1.0, 0.5, -0.25}, V[3] = {0.3, -0.7, 1.1};
+    rs_motion_init(&m);
+    rs_motion_set_translation(&m, V);
+    ENSURE(rs_motion_set_rotation(&m, C, axis, 1.7, &err) == RS_OK);
+    for (int k = 0; k < 37; k++)
+        ENSURE(rs_motion_advance(&m, 0.01, &err) == RS_OK);
+    double p[3] = {0.4, -1.2, 2.0}, v[3], X[3], xa[3], xb[3];
+    rs_motion_velocity_at(&m, p, v);
+    rs_pose_to_local(&m.pose, p, X);
+    const double h = 1e-5;
+    rs_motion ma = m, mb = m;
+    ENSURE(rs_motion_advance(&ma, h, &err) == RS_OK);
+    ENSURE(rs_motion_advance(&mb, -h, &err) == RS_OK);
+    rs_pose_to_global(&ma.pose, X, xa);
+    rs_pose_to_global(&mb.pose, X, xb);
+    for (int i = 0; i < 3; i++)
+        ENSURE_NEAR(v[i], (xa[i] - xb[i]) / (2.0 * h), 1e-8);
+}
+
+/* Translation and rotation superpose: x = C + V t + R(axis, omega t)(X - C); the centre
+ * is C + V t and dQ is the rotation by omega dt. */
+static void test_motion_superposed_translation_rotation(void)
+{
+    rs_motion m;
+    rs_error err;
+    double axis[3] = {-1.0, 0.5, 2.0}, C[3] = {0.1, 0.2, 0.3}, V[3] = {2.0, -1.0, 0.5};
+    double omega = -3.0, dt = 2e-3;
+    const int N = 5000;
+    rs_motion_init(&m);
+    rs_motion_set_translation(&m, V);
+    ENSURE(rs_motion_set_rotation(&m, C, axis, omega, &err) == RS_OK);
+    unit(axis);
+    for (int k = 0; k < N; k++)
+        ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+    double t = N * dt, D[3] = {V[0] * t, V[1] * t, V[2] * t}, c[3];
+    rs_motion_center(&m, c);
+    for (int i = 0; i < 3; i++)
+        ENSURE_NEAR(c[i], C[i] + D[i], 1e-12);
+    const double pts[3][3] = {{0, 0, 0}, {1.5, -2.5, 0.5}, {-3, 1, 4}};
+    for (int q = 0; q < 3; q++) {
+        double x[3], xr[3];
+        rs_pose_to_global(&m.pose, pts[q], x);
+        closed_form(C, D, axis, omega * t, pts[q], xr);
+        for (int i = 0; i < 3; i++)
+            ENSURE_NEAR(x[i], xr[i], 1e-11);
+        double X[3];
+        rs_pose_to_local(&m.pose, x, X);
+        for (int i = 0; i < 3; i++)
+            ENSURE_NEAR(X[i], pts[q][i], 1e-12);
+    }
+    for (int j = 0; j < 3; j++) {
+        double e[3] = {0, 0, 0}, r[3];
+        e[j] = 1.0;
+        quat_rotate(axis, omega * dt, e, r);
+        for (int i = 0; i < 3; i++)
+            ENSURE_NEAR(m.dQ[3 * i + j], r[i], 1e-15);
+    }
+}
+
+/* Rates from a callback are taken at mid-step, which integrates linear rates exactly:
+ * omega = a + b t gives phi = a t + b t^2 / 2; V = (c t, 0, 0) gives D = (c t^2 / 2, 0, 0).
+ */
+typedef struct rates_log {
+    int calls;
+    double last_t;
+} rates_log;
+
+static int linear_rates(double t, double vel[3], double *omega, void *ctx)
+{
+    rates_log *log = (rates_log *)ctx;
+    log->calls++;
+    log->last_t = t;
+    vel[0] = 0.8 * t;
+    vel[1] = 0.0;
+    vel[2] = 0.0;
+    *omega = 1.5 - 0.4 * t;
+    return 0;
+}
+
+static int stop_rates(double t, double vel[3], double *omega, void *ctx)
+{
+    (void)vel;
+    (void)omega;
+    (void)ctx;
+    return t > 0.05;
+}
+
+static void test_motion_rates_callback(void)
+{
+    rs_motion m;
+    rs_error err;
+    rates_log log = {0, 0.0};
+    double axis[3] = {0, 0, 1}, C[3] = {0.5, 0, 0};
+    rs_motion_init(&m);
+    ENSURE(rs_motion_set_rotation(&m, C, axis, 0.0, &err) == RS_OK);
+    m.rates = linear_rates;
+    m.ctx = &log;
+    const int N = 400;
+    const double dt = 0.01;
+    for (int k = 0; k < N; k++)
+        ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+    double t = N * dt;
+    ENSURE(log.calls == N);
+    ENSURE_NEAR(log.last_t, t - 0.5 * dt, 1e-12);
+    ENSURE_NEAR(m.phi, 1.5 * t - 0.2 * t * t, 1e-12);
+    double X[3] = {1.5, 0.0, 0.0}, x[3], xr[3], D[3] = {0.4 * t * t, 0, 0};
+    rs_pose_to_global(&m.pose, X, x);
+    closed_form(C, D, axis, 1.5 * t - 0.2 * t * t, X, xr);
+    for (int i = 0; i < 3; i++)
+        ENSURE_NEAR(x[i], xr[i], 1e-12);
+
+    /* A callback that stops the run makes advance fail. */
+    rs_motion s;
+    rs_motion_init(&s);
+    s.rates = stop_rates;
+    int rc = RS_OK;
+    for (int k = 0; k < 20 && rc == RS_OK; k++)
+        rc = rs_motion_advance(&s, 0.01, &err);
+    ENSURE(rc != RS_OK);
+    ENSURE(err.code == rc);
+    ENSURE(strstr(err.msg, "rates") != NULL);
+}
+
+static void test_motion_rejects_zero_axis(void)
+{
+    rs_motion m;
+    rs_error err;
+    double zero[3] = {0, 0, 0}, bad[3] = {NAN, 0, 1};
+    rs_motion_init(&m);
+    ENSURE(rs_motion_set_rotation(&m, zero, zero, 1.0, &err) == RS_ERR_ARG);
+    ENSURE(strstr(err.msg, "axis") != NULL);
+    ENSURE(rs_motion_set_rotation(&m, zero, bad, 1.0, &err) == RS_ERR_ARG);
+    /* The failed calls left the default axis z. */
+    ENSURE(m.axis[2] == 1.0);
+}
+
+/* Rodrigues matrix against the quaternion rotation for a few axes and angles. */
+static void test_rotation_matrix_matches_quaternion(void)
+{
+    const double axes[3][3] = {{0, 0, 1}, {1, 1, 1}, {-0.3, 0.8, 0.1}};
+    const double angles[4] = {1e-9, 0.7, -2.9, 3.14159};
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 4; b++) {
+            double ax[3] = {axes[a][0], axes[a][1], axes[a][2]}, R[9];
+            unit(ax);
+            rs_rotation_matrix(ax, angles[b], R);
+            for (int j = 0; j < 3; j++) {
+                double e[3] = {0, 0, 0}, r[3];
+                e[j] = 1.0;
+                quat_rotate(ax, angles[b], e, r);
+                for (int i = 0; i < 3; i++)
+                    ENSURE_NEAR(R[3 * i + j], r[i], 1e-15);
+            }
+        }
+}
+
+int main(void)
+{
+    RS_RUN(test_motion_no_drift);
+    RS_RUN(test_motion_velocity_at);
+    RS_RUN(test_motion_superposed_translation_rotation);
+    RS_RUN(test_motion_rates_callback);
+    RS_RUN(test_motion_rejects_zero_axis);
+    RS_RUN(test_rotation_matrix_matches_quaternion);
+    return rs_test_summary();
+}
