@@ -80,7 +80,8 @@ typedef struct rs_law_block {
     const double *dtempSlv;   ///< (n) its increment
     const double *preDefSlv;  ///< (nPred, n) particle field variables
     const double *dpreDefSlv; ///< (nPred, n) their increments
-    const double *tempMst;    ///< (numDefTfv) wall temperature
+    const double *tempMst;    ///< (numDefTfv) wall temperature: one (numDefTfv = 1)
+                              ///< or one per contact (numDefTfv = n)
     const double *dtempMst;   ///< (numDefTfv) its increment
     const double *preDefMst;  ///< (nPred, numDefTfv) wall field variables
     const double *dpreDefMst; ///< (nPred, numDefTfv) their increments
@@ -144,7 +145,14 @@ struct rs_law {
     void (*destroy)(rs_law *law);  ///< optional: releases ctx
 };
 
-/* Registry of built-in laws. */
+/* Registry of built-in laws (props in order; statev count; src/laws/ documents each):
+ *   bonded_interface  gap_cutoff E nu yield_stress hardening thickness conductivity; 3
+ *   linear_softening  k; 0
+ *   hertz             Y_particle nu_particle Y_wall nu_wall restitution friction
+ *                     curvature (0: R, 1: reff); 2. Needs radius, mass, vrel (reff).
+ *   hooke             kn kt zeta_n zeta_t mu; 2. Needs mass, vrel.
+ *   coulomb           mu k_stick kn; 2 (self-contained: p = kn h).
+ * hertz and hooke give force (stress times areaSlv); the others stress. */
 
 /// Built-in law by name (case-insensitive), or NULL.
 const rs_law *rs_law_find(const char *name);
@@ -165,7 +173,8 @@ int rs_law_check_props(const rs_law *law, const double *props, int nprops, rs_er
 /// contact. The first non-finite value gives RS_ERR_NONFINITE naming the law, the
 /// particle id (jSlvUid), the feature id (jConMstid) and the output. Also rejects a
 /// malformed block (n outside 0..RS_BLOCK, nDir not 2 or 3, missing required arrays)
-/// with RS_ERR_ARG before calling the law.
+/// with RS_ERR_ARG before calling the law. sfd, scd, spd and svd are zeroed before the
+/// call, so a law writes only the energies it has.
 int rs_law_call(const rs_law *law, rs_law_block *b, rs_error *err);
 
 /// Default penalty stiffness (stress per length) for a contact of a particle of mass m

@@ -1,0 +1,84 @@
+/* rigidsurf: the built-in law descriptors (src/laws/) and helpers they share. */
+#ifndef RIGIDSURF_LAWS_BUILTIN_H
+#define RIGIDSURF_LAWS_BUILTIN_H
+
+#include "rigidsurf/law.h"
+
+#include <math.h>
+
+extern const rs_law rs_law_bonded_interface;
+extern const rs_law rs_law_linear_softening;
+extern const rs_law rs_law_hertz;
+extern const rs_law rs_law_hooke;
+extern const rs_law rs_law_coulomb;
+
+/// A contact that left the tracking thickness carries r_MaxVal in rdisp (Abaqus).
+#define RS_LAW_LEAVING(rdisp1) ((rdisp1) >= 0.5 * RS_MAXVAL)
+
+/// Zeroes the outputs of contact k: stress, fluxes and every energy density.
+static inline void rs_law_zero_contact(rs_law_block *b, int k)
+{
+    for (int i = 0; i < b->nDir; ++i) {
+        RS_A2(b->stress, b->nDir, i, k) = 0.0;
+    }
+    b->fluxSlv[k] = 0.0;
+    b->fluxMst[k] = 0.0;
+    b->sed[k] = 0.0;
+    b->sfd[k] = 0.0;
+    b->scd[k] = 0.0;
+    b->spd[k] = 0.0;
+    b->svd[k] = 0.0;
+}
+
+/// Carries the tangent vector s(1:nDir-1) of contact k into this increment's basis,
+/// s <- drot s (ARCHITECTURE.md, "rdisp, drdisp, drot"), then adds the slip increment
+/// drdisp(2:nDir). With nDir = 2, s[1] stays 0.
+static inline void rs_law_advance_slip(const rs_law_block *b, int k, double s[2])
+{
+    if (b->nDir == 3) {
+        const double s1 = s[0], s2 = s[1];
+        s[0] = RS_DROT(b->drot, 0, 0, k) * s1 + RS_DROT(b->drot, 0, 1, k) * s2;
+        s[1] = RS_DROT(b->drot, 1, 0, k) * s1 + RS_DROT(b->drot, 1, 1, k) * s2;
+        s[0] += RS_A2(b->drdisp, 3, 1, k);
+        s[1] += RS_A2(b->drdisp, 3, 2, k);
+    } else {
+        s[0] += RS_A2(b->drdisp, 2, 1, k);
+        s[1] = 0.0;
+    }
+}
+
+/// The LIGGGHTS history tangential model (tangential_model_history.h) in the local
+/// (t1, t2) frame: ft = -kt s; if kt |s| > mu |fn| then ft is scaled to mu |fn| and, when
+/// update, s is reset to -ft / kt; otherwise ft -= gt vt. ft is the force on the
+/// particle. *slip_work = mu |fn| times the slip beyond the elastic limit (0 without
+/// update); *damp_power = gt |vt|^2 while sticking. Operation order follows LIGGGHTS so
+/// a plane contact matches it bit for bit.
+static inline void rs_law_tangential_history(double kt, double gt, double mu, double fn,
+                                             const double vt[2], double s[2], int update,
+                                             double ft[2], double *slip_work,
+                                             double *damp_power)
+{
+    const double shrmag = sqrt(s[0] * s[0] + s[1] * s[1]);
+    ft[0] = -(kt * s[0]);
+    ft[1] = -(kt * s[1]);
+    const double ft_shear = kt * shrmag;
+    const double ft_friction = mu * fabs(fn);
+    *slip_work = 0.0;
+    *damp_power = 0.0;
+    if (ft_shear > ft_friction) {
+        const double ratio = ft_friction / ft_shear;
+        ft[0] *= ratio;
+        ft[1] *= ratio;
+        if (update) {
+            s[0] = -ft[0] / kt;
+            s[1] = -ft[1] / kt;
+            *slip_work = ft_friction * (shrmag - ft_friction / kt);
+        }
+    } else {
+        ft[0] -= gt * vt[0];
+        ft[1] -= gt * vt[1];
+        *damp_power = gt * (vt[0] * vt[0] + vt[1] * vt[1]);
+    }
+}
+
+#endif
