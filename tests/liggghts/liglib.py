@@ -1,0 +1,263 @@
+"""Shared helpers for the LIGGGHTS integration tests of fix wall/rigid.
+
+Every test script takes the same arguments:
+    test_x.py --exe PATH/liggghts-rigidsurf [--keep]
+The reference walls (fix wall/gran primitive/mesh) run in the same executable: it is a
+drop-in for Debian's liggghts and links the same libliggghts, so a difference between
+the two runs of a pair comes from the wall alone.
+"""
+import argparse
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+MPI_ENV = {
+    "OMPI_ALLOW_RUN_AS_ROOT": "1",
+    "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
+    "OMPI_MCA_rmaps_base_oversubscribe": "1",
+}
+
+
+class Checker:
+    """Counts named checks and ends the script with 'N passed, M failed'."""
+
+    def __init__(self):
+        self.passed = 0
+        self.failed = 0
+
+    def check(self, name, cond, detail="", why=""):
+        """detail (measured values) is printed always, why only on failure."""
+        if cond:
+            self.passed += 1
+            print("ok   " + name + (" (" + detail + ")" if detail else ""))
+        else:
+            self.failed += 1
+            msg = "; ".join(m for m in (detail, why) if m)
+            print("FAIL " + name + (": " + msg if msg else ""))
+        sys.stdout.flush()
+        return cond
+
+    def finish(self):
+        print("%d passed, %d failed" % (self.passed, self.failed))
+        sys.exit(1 if self.failed or not self.passed else 0)
+
+
+class Session:
+    """A scratch directory and the executable under test."""
+
+    def __init__(self, description):
+        ap = argparse.ArgumentParser(description=description)
+        ap.add_argument("--exe", required=True, help="liggghts-rigidsurf")
+        ap.add_argument("--keep", action="store_true", help="keep the scratch directory")
+        ap.add_argument("--mpirun", default="mpirun")
+        self.args = ap.parse_args()
+        self.exe = os.path.abspath(self.args.exe)
+        self.dir = tempfile.mkdtemp(prefix="rs_lig_")
+        self.ck = Checker()
+
+    def path(self, name):
+        return os.path.join(self.dir, name)
+
+    def write(self, name, text):
+        with open(self.path(name), "w") as f:
+            f.write(text)
+        return self.path(name)
+
+    def run(self, name, deck, np=1, timeout=300, prefix=None, expect_ok=True):
+        """Writes deck to NAME.in and runs it in the scratch directory.
+
+        Returns (returncode, stdout+stderr). With expect_ok a failed run is reported
+        with the tail of its output and raises RunError."""
+        inp = self.write(name + ".in", deck)
+        cmd = [self.exe, "-in", inp, "-log", name + ".log", "-echo", "none"]
+        if np > 1:
+            cmd = [self.args.mpirun, "-np", str(np)] + cmd
+        if prefix:
+            cmd = list(prefix) + cmd
+        env = dict(os.environ)
+        env.update(MPI_ENV)
+        try:
+            p = subprocess.run(cmd, cwd=self.dir, capture_output=True, text=True,
+                               timeout=timeout, env=env)
+        except subprocess.TimeoutExpired:
+            if expect_ok:
+                self.ck.check("run " + name, False, "timed out after %gs" % timeout)
+                raise RunError(name)
+            return None, "TIMEOUT"
+        out = p.stdout + p.stderr
+        if expect_ok and p.returncode != 0:
+            tail = "\n".join(out.splitlines()[-15:])
+            self.ck.check("run " + name, False, "exit %d\n%s" % (p.returncode, tail))
+            raise RunError(name)
+        return p.returncode, out
+
+    def done(self):
+        if self.args.keep or self.ck.failed:
+            print("scratch directory kept: " + self.dir)
+        else:
+            shutil.rmtree(self.dir, ignore_errors=True)
+        self.ck.finish()
+
+
+class RunError(Exception):
+    pass
+
+
+def main_guard(session, body):
+    """Runs body(session); a deck that failed to run counts as a failure, not a crash."""
+    try:
+        body(session)
+    except RunError:
+        pass
+    session.done()
+
+
+def read_dump(path):
+    """Reads a 'dump custom' file: a list of (step, {id: {column: value}}), in order."""
+    frames = []
+    with open(path) as f:
+        lines = f.read().splitlines()
+    i = 0
+    while i < len(lines):
+        if lines[i].startswith("ITEM: TIMESTEP"):
+            step = int(lines[i + 1])
+            n = int(lines[i + 3])
+            cols = lines[i + 8].split()[2:]
+            atoms = {}
+            for line in lines[i + 9:i + 9 + n]:
+                vals = line.split()
+                row = {c: float(v) for c, v in zip(cols, vals)}
+                atoms[int(row["id"])] = row
+            frames.append((step, atoms))
+            i += 9 + n
+        else:
+            i += 1
+    return frames
+
+
+def read_table(path):
+    """Rows of floats from a 'fix print' file ('#' lines skipped)."""
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            rows.append([float(v) for v in line.split()])
+    return rows
+
+
+DUMP_COLS = "id x y z vx vy vz omegax omegay omegaz"
+
+
+def dump_lines(dump_id, every, fname, cols=DUMP_COLS, group="all"):
+    """A 'dump custom' with full double precision, sorted by id."""
+    ncol = len(cols.split())
+    fmt = " ".join(["%d"] + ["%.17g"] * (ncol - 1))
+    return ("dump %s %s custom %d %s %s\n"
+            "dump_modify %s format \"%s\" sort id\n" % (dump_id, group, every, fname, cols,
+                                                         dump_id, fmt))
+
+
+def header(box, dt, young=(5.0e7, 2.0e8), poisson=(0.3, 0.25), e=0.7, mu=0.5,
+           ntypes=2, boundary="f f f", extra_props="", newton="off"):
+    """A granular deck head: SI units, particle type 1, wall type 2, Hertz pair style.
+
+    Wall and particle materials differ on purpose so a mix-up of the two types in the
+    property matrices shows."""
+    def per_type(v):
+        v = list(v) if isinstance(v, (list, tuple)) else [v] * ntypes
+        return " ".join("%.17g" % x for x in v[:ntypes])
+
+    def pair(v):
+        return "%d %s" % (ntypes, " ".join(["%.17g" % v] * (ntypes * ntypes)))
+
+    return f"""atom_style granular
+atom_modify map array
+boundary {boundary}
+newton {newton}
+communicate single vel yes
+units si
+region box block {box[0]} {box[1]} {box[2]} {box[3]} {box[4]} {box[5]} units box
+create_box {ntypes} box
+neighbor 0.002 bin
+neigh_modify delay 0
+fix m1 all property/global youngsModulus peratomtype {per_type(young)}
+fix m2 all property/global poissonsRatio peratomtype {per_type(poisson)}
+fix m3 all property/global coefficientRestitution peratomtypepair {pair(e)}
+fix m4 all property/global coefficientFriction peratomtypepair {pair(mu)}
+{extra_props}pair_style gran model hertz tangential history
+pair_coeff * *
+timestep {dt!r}
+"""
+
+
+def sphere(atom_id, x, r, rho, v=(0, 0, 0), omega=(0, 0, 0), atype=1):
+    """create_atoms + set lines for one sphere (ids are given in creation order)."""
+    return ("create_atoms %d single %.17g %.17g %.17g units box\n"
+            "set atom %d diameter %.17g density %.17g vx %.17g vy %.17g vz %.17g "
+            "omegax %.17g omegay %.17g omegaz %.17g\n"
+            % (atype, x[0], x[1], x[2], atom_id, 2 * r, rho, v[0], v[1], v[2],
+               omega[0], omega[1], omega[2]))
+
+
+# Surface files ---------------------------------------------------------------------
+
+def plane_z(z0=0.0, half=1.0, name="floor"):
+    """A plane z = z0 with n = +z: CYLINDER with a = (0,0,z0), local x = +x, generator
+    along -y, so local y = generator x local x = +z; a LINE travelling +x has n = +y_local."""
+    return (f"*SURFACE, TYPE=CYLINDER, NAME={name}\n"
+            f"0, 0, {z0!r}, 1, 0, {z0!r}, 0, -1, {z0!r}\n"
+            f"START, {-half!r}, 0\nLINE, {half!r}, 0\n")
+
+
+def drum(radius, zlo, zhi, name="mantle", caps=False):
+    """A drum about the z axis: REVOLUTION, profile (r, z) travelling +z at r = radius so
+    n = (-t_z, t_r) = (-1, 0) points inward. With caps the profile closes over the two
+    end discs (bottom cap travels +r at z = zlo: n = +z; top cap -r at z = zhi: n = -z)."""
+    if caps:
+        prof = (f"START, 0, {zlo!r}\nLINE, {radius!r}, {zlo!r}\n"
+                f"LINE, {radius!r}, {zhi!r}\nLINE, 0, {zhi!r}\n")
+    else:
+        prof = f"START, {radius!r}, {zlo!r}\nLINE, {radius!r}, {zhi!r}\n"
+    return f"*SURFACE, TYPE=REVOLUTION, NAME={name}\n0, 0, 0, 0, 0, 1\n" + prof
+
+
+def disc_z(radius, z0=0.0, name="disc"):
+    """An end disc z = z0 facing +z: REVOLUTION, profile travelling +r at z = z0, so
+    n = (-t_z, t_r) = (0, 1) = +z."""
+    return (f"*SURFACE, TYPE=REVOLUTION, NAME={name}\n0, 0, 0, 0, 0, 1\n"
+            f"START, 0, {z0!r}\nLINE, {radius!r}, {z0!r}\n")
+
+
+def rel_diff(a, b, scale):
+    """|a - b| relative to max(|a|, |b|, scale): scale keeps values near zero honest."""
+    return abs(a - b) / max(abs(a), abs(b), scale)
+
+
+def compare_frames(fa, fb, fields_scales):
+    """Largest relative difference per field over all common frames and atoms, and the
+    (step, id) where it occurs. Frames must match one to one."""
+    worst = {}
+    if len(fa) != len(fb):
+        return None
+    for (sa, aa), (sb, ab) in zip(fa, fb):
+        if sa != sb or set(aa) != set(ab):
+            return None
+        for i in aa:
+            for fld, scale in fields_scales.items():
+                d = rel_diff(aa[i][fld], ab[i][fld], scale)
+                if d > worst.get(fld, (-1.0,))[0]:
+                    worst[fld] = (d, sa, i)
+    return worst
+
+
+def error_lines(out):
+    return [l for l in out.splitlines() if l.startswith("ERROR")]
+
+
+def isfinite_all(vals):
+    return all(math.isfinite(v) for v in vals)
