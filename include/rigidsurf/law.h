@@ -208,6 +208,10 @@ void rs_law_block_set_name(char dst[RS_LAW_NAMELEN], const char *s);
 
 /// Loads a C law: symbol is a function with the rs_law_update_fn signature in the
 /// shared library lib. out->nprops = -1 and out->nstatev = 0 (the caller sets it).
+/// If lib also exports `const rs_law <symbol>_law`, its name, nprops, nstatev,
+/// prop_names, init (and update, if set) are taken from it.
+/// A missing library gives RS_ERR_IO, a missing symbol RS_ERR_NOTFOUND; both messages
+/// name the library and the symbol with the dynamic loader's text.
 int rs_law_load_c(const char *lib, const char *symbol, rs_law *out, rs_error *err);
 
 /// Loads a Fortran VUINTER (symbol vuinter_, built against vaba_param.inc) as a law.
@@ -215,7 +219,16 @@ int rs_law_load_vuinter(const char *lib, rs_law *out, rs_error *err);
 
 /// Loads a Fortran UINTER (point-wise, symbol uinter_) as a block law. normal (may be
 /// NULL) supplies the normal response when the routine leaves it to the engine.
+/// The argument list is Abaqus's current one (DVISCOUS, DSTRUCTURAL after DDSDDR, FREQR
+/// after DTIME). For the UINTER and FRIC adapters props are the normal law's first, then
+/// the routine's; out->nstatev counts the normal law's and the adapter's slots, and the
+/// caller adds the routine's NSTATV (which sit first in each contact's statev).
 int rs_law_load_uinter(const char *lib, const rs_law *normal, rs_law *out, rs_error *err);
+
+/// As rs_law_load_uinter, for a UINTER with the older argument list (no DVISCOUS,
+/// DSTRUCTURAL, FREQR).
+int rs_law_load_uinter_v6(const char *lib, const rs_law *normal, rs_law *out,
+                          rs_error *err);
 
 /// Loads a Fortran FRIC (symbol fric_, LM = 0/1/2 semantics) as a block law. normal
 /// supplies the pressure stress(1) before FRIC computes the shear.

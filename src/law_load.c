@@ -1,0 +1,255 @@
+/* Run-time loading of user laws with dlopen: C block laws, Fortran VUINTER, and the
+ * point-wise Fortran UINTER and FRIC routines wrapped as block laws. Failures name the
+ * library and the missing symbol with the dynamic loader's own message. */
+#define _POSIX_C_SOURCE 200809L
+
+#include "law_fortran.h"
+#include "rigidsurf/law.h"
+
+#include <dlfcn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void loaded_destroy(rs_law *law)
+{
+    rs_loaded_law *ld = (rs_loaded_law *)law->ctx;
+    if (!ld)
+        return;
+    if (ld->handle)
+        dlclose(ld->handle);
+    free(ld);
+    law->ctx = NULL;
+}
+
+static int open_library(const char *lib, rs_loaded_law **out, rs_error *err)
+{
+    *out = NULL;
+    if (!lib || !lib[0])
+        return rs_error_set(err, RS_ERR_ARG, "law library: no path given");
+    rs_loaded_law *ld = (rs_loaded_law *)calloc(1, sizeof *ld);
+    if (!ld)
+        return rs_error_set(err, RS_ERR_NOMEM, "law library %s: out of memory", lib);
+    dlerror();
+    ld->handle = dlopen(lib, RTLD_NOW | RTLD_LOCAL);
+    if (!ld->handle) {
+        const char *msg = dlerror();
+        free(ld);
+        return rs_error_set(err, RS_ERR_IO, "law library %s: cannot load: %s", lib,
+                            msg ? msg : "unknown dlopen error");
+    }
+    *out = ld;
+    return RS_OK;
+}
+
+/* Looks up the first of names[] that the library exports. On failure the message names
+ * the library, every name tried and the loader's text for the first. */
+static void *find_symbol(rs_loaded_law *ld, const char *lib, const char *const *names,
+                         int count, const char **found, rs_error *err)
+{
+    char first_msg[256] = "";
+    for (int i = 0; i < count; ++i) {
+        dlerror();
+        void *sym = dlsym(ld->handle, names[i]);
+        const char *msg = dlerror();
+        if (!msg && sym) {
+            if (found)
+                *found = names[i];
+            return sym;
+        }
+        if (i == 0)
+            snprintf(first_msg, sizeof first_msg, "%s", msg ? msg : "symbol is NULL");
+    }
+    char tried[160] = "";
+    size_t used = 0;
+    for (int i = 0; i < count && used < sizeof tried; ++i) {
+        int w = snprintf(tried + used, sizeof tried - used, "%s%s", i ? "' or '" : "",
+                         names[i]);
+        if (w < 0)
+            break;
+        used += (size_t)w;
+    }
+    rs_error_set(err, RS_ERR_NOTFOUND, "law library %s: no symbol '%s' (%s)", lib, tried,
+                 first_msg);
+    return NULL;
+}
+
+static void fill_common(rs_law *out, rs_loaded_law *ld, const char *kind, const char *lib)
+{
+    const char *base = strrchr(lib, '/');
+    base = base ? base + 1 : lib;
+    snprintf(ld->name, sizeof ld->name, "%s(%s)", kind, base);
+    memset(out, 0, sizeof *out);
+    out->name = ld->name;
+    out->nprops = -1;
+    out->nstatev = 0;
+    out->prop_names = NULL;
+    out->ctx = ld;
+    out->destroy = loaded_destroy;
+}
+
+static int fail_close(rs_loaded_law *ld, int code)
+{
+    if (ld->handle)
+        dlclose(ld->handle);
+    free(ld);
+    return code;
+}
+
+int rs_law_load_c(const char *lib, const char *symbol, rs_law *out, rs_error *err)
+{
+    if (!out)
+        return rs_error_set(err, RS_ERR_ARG, "rs_law_load_c: out is NULL");
+    if (!symbol || !symbol[0])
+        return rs_error_set(err, RS_ERR_ARG, "law library %s: no symbol name given",
+                            lib ? lib : "(null)");
+    rs_loaded_law *ld;
+    int rc = open_library(lib, &ld, err);
+    if (rc)
+        return rc;
+    const char *names[1] = {symbol};
+    void *sym = find_symbol(ld, lib, names, 1, NULL, err);
+    if (!sym)
+        return fail_close(ld, RS_ERR_NOTFOUND);
+    ld->kind = RS_LOADED_C;
+    ld->cfn = (rs_law_update_fn)sym;
+    fill_common(out, ld, symbol, lib);
+    out->update = ld->cfn;
+
+    /* Optional descriptor: a `const rs_law <symbol>_law` gives the name, property
+     * count, property names, state-variable count and property check. */
+    char dname[200];
+    snprintf(dname, sizeof dname, "%s_law", symbol);
+    dlerror();
+    const rs_law *desc = (const rs_law *)dlsym(ld->handle, dname);
+    if (!dlerror() && desc) {
+        if (desc->name && desc->name[0])
+            snprintf(ld->name, sizeof ld->name, "%s", desc->name);
+        out->nprops = desc->nprops;
+        out->nstatev = desc->nstatev;
+        out->prop_names = desc->prop_names;
+        out->init = desc->init;
+        if (desc->update)
+            out->update = desc->update;
+    }
+    return RS_OK;
+}
+
+int rs_law_load_vuinter(const char *lib, rs_law *out, rs_error *err)
+{
+    if (!out)
+        return rs_error_set(err, RS_ERR_ARG, "rs_law_load_vuinter: out is NULL");
+    rs_loaded_law *ld;
+    int rc = open_library(lib, &ld, err);
+    if (rc)
+        return rc;
+    static const char *const names[2] = {"vuinter_", "vuinter"};
+    void *sym = find_symbol(ld, lib, names, 2, NULL, err);
+    if (!sym)
+        return fail_close(ld, RS_ERR_NOTFOUND);
+    ld->kind = RS_LOADED_VUINTER;
+    ld->vuinter = (rs_vuinter_fn)sym;
+    fill_common(out, ld, "vuinter", lib);
+    out->update = rs_law_vuinter_update;
+    return RS_OK;
+}
+
+static int check_normal(const char *lib, const rs_law *normal, rs_error *err)
+{
+    if (!normal)
+        return RS_OK;
+    if (!normal->update)
+        return rs_error_set(err, RS_ERR_ARG, "law library %s: the normal law has no update",
+                            lib);
+    if (normal->nprops < 0)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "law library %s: the normal law '%s' must have a fixed "
+                            "property count (its properties come first)",
+                            lib, normal->name ? normal->name : "?");
+    if (normal->nstatev < 0 || normal->nstatev > RS_ADAPTER_MAX_NORMAL_NSV)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "law library %s: the normal law '%s' has %d state variables; "
+                            "expected 0..%d",
+                            lib, normal->name ? normal->name : "?", normal->nstatev,
+                            RS_ADAPTER_MAX_NORMAL_NSV);
+    return RS_OK;
+}
+
+static int load_uinter_kind(const char *lib, const rs_law *normal, rs_law *out,
+                            rs_loaded_kind kind, rs_error *err)
+{
+    if (!out)
+        return rs_error_set(err, RS_ERR_ARG, "rs_law_load_uinter: out is NULL");
+    int rc = check_normal(lib ? lib : "(null)", normal, err);
+    if (rc)
+        return rc;
+    rs_loaded_law *ld;
+    rc = open_library(lib, &ld, err);
+    if (rc)
+        return rc;
+    static const char *const names[2] = {"uinter_", "uinter"};
+    void *sym = find_symbol(ld, lib, names, 2, NULL, err);
+    if (!sym)
+        return fail_close(ld, RS_ERR_NOTFOUND);
+    ld->kind = kind;
+    if (kind == RS_LOADED_UINTER)
+        ld->uinter = (rs_uinter_fn)sym;
+    else
+        ld->uinter_v6 = (rs_uinter_v6_fn)sym;
+    ld->normal = normal;
+    ld->own_nsv = (normal ? normal->nstatev : 0) + RS_UINTER_OWN_NSV;
+    fill_common(out, ld, kind == RS_LOADED_UINTER ? "uinter" : "uinter_v6", lib);
+    out->nstatev = ld->own_nsv;
+    out->init = rs_law_adapter_init;
+    out->update = rs_law_uinter_update;
+    return RS_OK;
+}
+
+int rs_law_load_uinter(const char *lib, const rs_law *normal, rs_law *out, rs_error *err)
+{
+    return load_uinter_kind(lib, normal, out, RS_LOADED_UINTER, err);
+}
+
+int rs_law_load_uinter_v6(const char *lib, const rs_law *normal, rs_law *out, rs_error *err)
+{
+    return load_uinter_kind(lib, normal, out, RS_LOADED_UINTER_V6, err);
+}
+
+int rs_law_load_fric(const char *lib, const rs_law *normal, rs_law *out, rs_error *err)
+{
+    if (!out)
+        return rs_error_set(err, RS_ERR_ARG, "rs_law_load_fric: out is NULL");
+    if (!normal)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "law library %s: FRIC needs a normal law for the pressure",
+                            lib ? lib : "(null)");
+    int rc = check_normal(lib ? lib : "(null)", normal, err);
+    if (rc)
+        return rc;
+    rs_loaded_law *ld;
+    rc = open_library(lib, &ld, err);
+    if (rc)
+        return rc;
+    static const char *const names[2] = {"fric_", "fric"};
+    void *sym = find_symbol(ld, lib, names, 2, NULL, err);
+    if (!sym)
+        return fail_close(ld, RS_ERR_NOTFOUND);
+    ld->kind = RS_LOADED_FRIC;
+    ld->fric = (rs_fric_fn)sym;
+    ld->normal = normal;
+    ld->own_nsv = normal->nstatev + RS_FRIC_OWN_NSV;
+    fill_common(out, ld, "fric", lib);
+    out->nstatev = ld->own_nsv;
+    out->init = rs_law_adapter_init;
+    out->update = rs_law_fric_update;
+    return RS_OK;
+}
+
+void rs_law_unload(rs_law *law)
+{
+    if (!law)
+        return;
+    if (law->destroy)
+        law->destroy(law);
+    memset(law, 0, sizeof *law);
+}
