@@ -163,11 +163,11 @@ def dump_lines(dump_id, every, fname, cols=DUMP_COLS, group="all"):
 
 
 def header(box, dt, young=(5.0e7, 2.0e8), poisson=(0.3, 0.25), e=0.7, mu=0.5,
-           ntypes=2, boundary="f f f", extra_props="", newton="off"):
+           ntypes=2, boundary="f f f", extra_props="", newton="off", pre=""):
     """A granular deck head: SI units, particle type 1, wall type 2, Hertz pair style.
 
     Wall and particle materials differ on purpose so a mix-up of the two types in the
-    property matrices shows."""
+    property matrices shows. pre goes before create_box (processors, ...)."""
     def per_type(v):
         v = list(v) if isinstance(v, (list, tuple)) else [v] * ntypes
         return " ".join("%.17g" % x for x in v[:ntypes])
@@ -181,7 +181,7 @@ boundary {boundary}
 newton {newton}
 communicate single vel yes
 units si
-region box block {box[0]} {box[1]} {box[2]} {box[3]} {box[4]} {box[5]} units box
+{pre}region box block {box[0]} {box[1]} {box[2]} {box[3]} {box[4]} {box[5]} units box
 create_box {ntypes} box
 neighbor 0.002 bin
 neigh_modify delay 0

@@ -1,0 +1,78 @@
+#!/usr/bin/python3
+"""Contact history of fix wall/rigid survives write_restart / read_restart.
+
+Run 2N steps in one process, or N steps + write_restart and, in a new process,
+read_restart + N steps: every sphere's position, velocity and spin are identical (the
+restart file holds doubles in binary, and setup recomputes forces without updating the
+history, so nothing may change by even one bit).
+
+Case: a drum turning at 6 rad/s about z, gravity -y, three spheres that do not touch
+each other. Sphere 1 cannot spin (fix nve): the mantle drags it up to the
+friction-limited angle where it sticks and slips, so at the restart point its friction
+force lives only in the tangential history. Spheres 2 and 3 spin (fix nve/sphere).
+The drum's rotation angle must also carry over the restart.
+"""
+import math
+
+import liglib as L
+
+R, RHO, DT, RC, N = 0.004, 2500.0, 2.0e-5, 0.05, 3000
+WALL = "fix w all wall/rigid surface drum.inp law hertz type 2 rotate origin 0 0 0 axis 0 0 1 omega 6"
+
+
+def setup_lines(wall):
+    return ("fix grav all gravity 9.81 vector 0 -1 0\n" + wall + "\n"
+            "fix i1 g1 nve\nfix i2 g2 nve/sphere\n")
+
+
+def deck_atoms():
+    d = L.header((-0.06, 0.06, -0.06, 0.06, -0.05, 0.05), DT, mu=0.4)
+    for k, (ang, z) in enumerate(((-90.0, 0.0), (-100.0, 0.02), (-60.0, -0.02))):
+        r0 = RC - R + 1e-5
+        c, sn = math.cos(math.radians(ang)), math.sin(math.radians(ang))
+        d += L.sphere(k + 1, (r0 * c, r0 * sn, z), R, RHO)
+    d += "group g1 id 1\ngroup g2 id 2 3\n"
+    return d
+
+
+def body(s):
+    s.write("drum.inp", L.drum(RC, -0.05, 0.05))
+    for tag, wall in (("ours", WALL),):
+        full = deck_atoms() + setup_lines(wall)
+        full += L.dump_lines("mid", N, tag + "_mid.dump", L.DUMP_COLS + " f_w[2] f_w[3]")
+        full += "run %d\nundump mid\n" % N
+        full += L.dump_lines("d", N, tag + "_full.dump") + "run %d\n" % N
+        s.run(tag + "_full", full)
+
+        first = deck_atoms() + setup_lines(wall)
+        first += "run %d\nwrite_restart %s.restart\n" % (N, tag)
+        s.run(tag + "_first", first)
+
+        second = "atom_modify map array\ncommunicate single vel yes\n"
+        second += "read_restart %s.restart\n" % tag
+        head = L.header((0, 1, 0, 1, 0, 1), DT, mu=0.4)
+        # keep the material definitions, drop what read_restart already made
+        keep = [l for l in head.splitlines()
+                if l.startswith(("newton", "fix m", "pair_", "timestep", "neighbor", "neigh_modify"))]
+        second += "\n".join(keep) + "\n"
+        second += "group g1 id 1\ngroup g2 id 2 3\n" + setup_lines(wall)
+        second += L.dump_lines("d", N, tag + "_restarted.dump") + "run %d\n" % N
+        s.run(tag + "_restarted", second)
+
+        mid = L.read_dump(s.path(tag + "_mid.dump"))[-1][1]
+        ang = math.degrees(math.atan2(mid[1]["x"], -mid[1]["y"]))
+        slip = math.hypot(mid[1]["f_w[2]"], mid[1]["f_w[3]"])
+        s.ck.check(tag + ": at the restart point sphere 1 is held up by friction",
+                   ang > 5.0 and slip > 0, "%.2f deg from the bottom, |rdisp2:3| %.3g" % (ang, slip))
+        a = L.read_dump(s.path(tag + "_full.dump"))[-1]
+        b = L.read_dump(s.path(tag + "_restarted.dump"))[-1]
+        s.ck.check(tag + ": both runs end at step %d" % (2 * N), a[0] == b[0] == 2 * N,
+                   "%d, %d" % (a[0], b[0]))
+        diffs = [(abs(a[1][i][c] - b[1][i][c]), i, c) for i in a[1] for c in L.DUMP_COLS.split()[1:]]
+        worst = max(diffs)
+        s.ck.check(tag + ": restarted run identical to the continuous one", worst[0] == 0.0,
+                   "worst |diff| %.3g in %s of atom %d" % (worst[0], worst[2], worst[1]))
+
+
+if __name__ == "__main__":
+    L.main_guard(L.Session(__doc__), body)
