@@ -41,6 +41,9 @@ extern "C" {
 #define RS_HSTATE_ACTIVE 1
 #define RS_HSTATE_LEAVING 2 ///< emitted with RS_MAXVAL this call; freed on commit
 
+/// Largest per-particle capacity rs_track_update accepts.
+#define RS_TRACK_MAX_CAPACITY 64
+
 typedef struct rs_tracker {
     int capacity;    ///< history slots per particle per surface (default 4)
     int nstatev;     ///< law state variables per contact

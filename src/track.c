@@ -1,0 +1,458 @@
+/* The contact tracker: contacts of a query -> VUINTER kinematics (rdisp, drdisp, drot)
+ * with per-(particle, feature) history. Conventions: ARCHITECTURE.md, "rdisp, drdisp,
+ * drot"; slot layout: track.h.
+ *
+ * rs_track_update runs in two passes so that a capacity error leaves history untouched:
+ * pass 1 assigns a slot to every contact and lists the leaving slots, pass 2 computes the
+ * kinematics and writes the history (frame, slip, rdisp1). rs_track_commit adds the
+ * law's stress and statev and frees the leaving slots. */
+#include "rigidsurf/track.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+void rs_track_out_free(rs_track_out *o)
+{
+    free(o->point);
+    free(o->feature);
+    free(o->slot);
+    free(o->rdisp);
+    free(o->drdisp);
+    free(o->drot);
+    free(o->alocaldir);
+    free(o->coordslv);
+    free(o->coordmst);
+    free(o->vrel);
+    free(o->curv);
+    memset(o, 0, sizeof *o);
+}
+
+static int grow(void **p, size_t bytes)
+{
+    void *q = realloc(*p, bytes);
+    if (!q)
+        return 0;
+    *p = q;
+    return 1;
+}
+
+/* Arrays are sized for ndir = 3 so a change of ndir never needs a reallocation. */
+static int out_reserve(rs_track_out *o, int n, rs_error *err)
+{
+    if (n <= o->cap)
+        return RS_OK;
+    size_t c = (size_t)n, d = sizeof(double);
+    int ok =
+        grow((void **)&o->point, c * sizeof(int)) &&
+        grow((void **)&o->feature, c * sizeof(int)) &&
+        grow((void **)&o->slot, c * sizeof(double *)) &&
+        grow((void **)&o->rdisp, 3 * c * d) && grow((void **)&o->drdisp, 3 * c * d) &&
+        grow((void **)&o->drot, 4 * c * d) && grow((void **)&o->alocaldir, 9 * c * d) &&
+        grow((void **)&o->coordslv, 3 * c * d) && grow((void **)&o->coordmst, 3 * c * d) &&
+        grow((void **)&o->vrel, 3 * c * d) && grow((void **)&o->curv, 2 * c * d);
+    if (!ok)
+        return rs_error_set(err, RS_ERR_NOMEM,
+                            "rs_track_update: out of memory for %d contacts", n);
+    o->cap = n;
+    return RS_OK;
+}
+
+static inline double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static inline void cross3(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static inline void matvec(const double Q[9], const double v[3], double r[3])
+{
+    r[0] = Q[0] * v[0] + Q[1] * v[1] + Q[2] * v[2];
+    r[1] = Q[3] * v[0] + Q[4] * v[1] + Q[5] * v[2];
+    r[2] = Q[6] * v[0] + Q[7] * v[1] + Q[8] * v[2];
+}
+
+/* Below this value of 1 + a.b the normal has turned by ~180 deg and a.b x stops defining
+ * an axis; the minimal rotation is then the half turn about the carried t1. */
+#define RS_ANTIPARALLEL 1e-12
+
+/* Pass 1 for one particle: slots for its contacts kb..ke-1 (written to out entries from
+ * *ne on) and its leaving slots. out->point holds the contact index for a contact entry
+ * and -1 - i for a leaving slot of particle i until pass 2 decodes it. */
+static int assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_particles *p,
+                        const rs_contacts *c, int i, int kb, int ke, rs_track_out *out,
+                        int *ne, rs_error *err)
+{
+    const int cap = tr->capacity, hs = RS_HIST_SIZE(tr->nstatev);
+    double *h = p->hist[i];
+    const double rad = p->radius ? p->radius[i] : 0.0;
+    int kk[RS_TRACK_MAX_CAPACITY], sl[RS_TRACK_MAX_CAPACITY], nk = 0;
+    uint64_t used = 0;
+
+    /* Slots emitted as leaving by an earlier call that was not committed. */
+    for (int j = 0; j < cap; j++) {
+        double *hj = h + (size_t)j * hs;
+        if (hj[RS_H_STATE] == RS_HSTATE_LEAVING) {
+            hj[RS_H_STATE] = RS_HSTATE_EMPTY;
+            hj[RS_H_FEATURE] = RS_FEATURE_NONE;
+        }
+    }
+
+    for (int k = kb; k < ke; k++) {
+        if (c->dist[k] - rad > tr->tracking)
+            continue;
+        if (nk == cap)
+            goto full;
+        int f = c->feature[k], js = -1;
+        for (int j = 0; j < cap; j++) {
+            const double *hj = h + (size_t)j * hs;
+            if (hj[RS_H_STATE] == RS_HSTATE_ACTIVE && (int)hj[RS_H_FEATURE] == f &&
+                !((used >> j) & 1u)) {
+                js = j;
+                break;
+            }
+        }
+        if (js >= 0)
+            used |= (uint64_t)1 << js;
+        kk[nk] = k;
+        sl[nk++] = js;
+    }
+
+    /* Handover: an orphan slot whose feature is adjacent to the new one (smooth junction).
+     */
+    for (int q = 0; q < nk && s; q++) {
+        if (sl[q] >= 0)
+            continue;
+        for (int j = 0; j < cap; j++) {
+            const double *hj = h + (size_t)j * hs;
+            if (hj[RS_H_STATE] == RS_HSTATE_ACTIVE && !((used >> j) & 1u) &&
+                rs_surface_adjacent(s, (int)hj[RS_H_FEATURE], c->feature[kk[q]])) {
+                sl[q] = j;
+                used |= (uint64_t)1 << j;
+                break;
+            }
+        }
+    }
+
+    /* Orphans that were not handed over leave: they keep their slot for this call. */
+    uint64_t leaving = 0;
+    for (int j = 0; j < cap; j++)
+        if (h[(size_t)j * hs + RS_H_STATE] == RS_HSTATE_ACTIVE && !((used >> j) & 1u))
+            leaving |= (uint64_t)1 << j;
+    used |= leaving;
+
+    for (int q = 0; q < nk; q++) {
+        if (sl[q] >= 0)
+            continue;
+        int js = -1;
+        for (int j = 0; j < cap; j++)
+            if (!((used >> j) & 1u)) {
+                js = j;
+                break;
+            }
+        if (js < 0)
+            goto full;
+        sl[q] = js;
+        used |= (uint64_t)1 << js;
+    }
+
+    for (int q = 0; q < nk; q++) {
+        out->point[*ne] = kk[q];
+        out->slot[*ne] = h + (size_t)sl[q] * hs;
+        (*ne)++;
+    }
+    for (int j = 0; j < cap; j++)
+        if ((leaving >> j) & 1u) {
+            out->point[*ne] = -1 - i;
+            out->slot[*ne] = h + (size_t)j * hs;
+            (*ne)++;
+        }
+    return RS_OK;
+
+full:
+    return rs_error_set(err, RS_ERR_CAPACITY,
+                        "rs_track_update: particle %d touches surface '%s' at more "
+                        "features than its history capacity %d (raise the capacity)",
+                        p->id ? p->id[i] : i, s ? s->name : "", cap);
+}
+
+typedef struct master_rates {
+    double Q[9], V[3], W[3], C[3];
+} master_rates;
+
+static void put_frame(rs_track_out *o, int nd, int e, const double n[3], const double t1[3],
+                      const double t2[3])
+{
+    for (int a = 0; a < nd; a++) {
+        RS_A3(o->alocaldir, nd, a, 0, e) = n[a];
+        RS_A3(o->alocaldir, nd, a, 1, e) = t1[a];
+        if (nd == 3)
+            RS_A3(o->alocaldir, nd, a, 2, e) = t2[a];
+    }
+}
+
+/* Velocity of the particle's material point at xcp relative to the master's there. */
+static inline void rel_velocity(const rs_particles *p, int i, const master_rates *mr,
+                                const double xc[3], const double xcp[3], double vr[3])
+{
+    double r[3] = {xcp[0] - xc[0], xcp[1] - xc[1], xcp[2] - xc[2]};
+    double rm[3] = {xcp[0] - mr->C[0], xcp[1] - mr->C[1], xcp[2] - mr->C[2]};
+    double w[3] = {0, 0, 0}, wr[3], Wr[3];
+    if (p->wx) {
+        w[0] = p->wx[i];
+        w[1] = p->wy[i];
+        w[2] = p->wz[i];
+    }
+    cross3(w, r, wr);
+    cross3(mr->W, rm, Wr);
+    vr[0] = p->vx[i] + wr[0] - mr->V[0] - Wr[0];
+    vr[1] = p->vy[i] + wr[1] - mr->V[1] - Wr[1];
+    vr[2] = p->vz[i] + wr[2] - mr->V[2] - Wr[2];
+}
+
+static void emit_contact(const rs_tracker *tr, const master_rates *mr, double dt,
+                         const rs_particles *p, const rs_contacts *c, int k,
+                         rs_track_out *o, int e)
+{
+    const int nd = tr->ndir, i = c->point[k];
+    double *h = o->slot[e];
+    const double rad = p->radius ? p->radius[i] : 0.0;
+    const double n[3] = {c->nrm[0][k], c->nrm[1][k], c->nrm[2][k]};
+    const double t1[3] = {c->t1[0][k], c->t1[1][k], c->t1[2][k]};
+    const double t2[3] = {c->t2[0][k], c->t2[1][k], c->t2[2][k]};
+    const double xc[3] = {p->x[i], p->y[i], p->z[i]};
+    const double rd1 = rad - c->dist[k], arm = rad - 0.5 * rd1;
+    const double xcp[3] = {xc[0] - arm * n[0], xc[1] - arm * n[1], xc[2] - arm * n[2]};
+    double vr[3];
+    rel_velocity(p, i, mr, xc, xcp, vr);
+    const double vn = dot3(vr, n), v1 = dot3(vr, t1), v2 = nd == 3 ? dot3(vr, t2) : 0.0;
+    double d11 = 1, d12 = 0, d21 = 0, d22 = 1, s1, s2, ds1, ds2, drd1;
+
+    if (h[RS_H_STATE] == RS_HSTATE_ACTIVE) {
+        if (nd == 3) {
+            /* tau_j = P Q t_j,old, drot(i,j) = t_i,new . tau_j. With a = Q n_old,
+             * cs = a.n, w = a x n: P v = cs v + w x v + w (w.v) / (1 + cs). */
+            double a[3], q1[3], q2[3], tau1[3], tau2[3];
+            matvec(mr->Q, h + RS_H_N, a);
+            matvec(mr->Q, h + RS_H_T1, q1);
+            matvec(mr->Q, h + RS_H_T2, q2);
+            double cs = dot3(a, n);
+            if (1.0 + cs > RS_ANTIPARALLEL) {
+                double w[3], wq1[3], wq2[3];
+                cross3(a, n, w);
+                cross3(w, q1, wq1);
+                cross3(w, q2, wq2);
+                double f1 = dot3(w, q1) / (1.0 + cs), f2 = dot3(w, q2) / (1.0 + cs);
+                for (int b = 0; b < 3; b++) {
+                    tau1[b] = cs * q1[b] + wq1[b] + f1 * w[b];
+                    tau2[b] = cs * q2[b] + wq2[b] + f2 * w[b];
+                }
+            } else {
+                /* Half turn about q1 (orthogonal to a): q1 stays, q2 reverses. */
+                for (int b = 0; b < 3; b++) {
+                    tau1[b] = q1[b];
+                    tau2[b] = -q2[b];
+                }
+            }
+            d11 = dot3(t1, tau1);
+            d12 = dot3(t1, tau2);
+            d21 = dot3(t2, tau1);
+            d22 = dot3(t2, tau2);
+        }
+        double so1 = h[RS_H_SLIP], so2 = nd == 3 ? h[RS_H_SLIP + 1] : 0.0;
+        ds1 = v1 * dt;
+        ds2 = v2 * dt;
+        s1 = d11 * so1 + d12 * so2 + ds1;
+        s2 = d21 * so1 + d22 * so2 + ds2;
+        drd1 = rd1 - h[RS_H_RDISP1];
+    } else {
+        s1 = s2 = ds1 = ds2 = 0.0;
+        drd1 = -vn * dt;
+        for (int b = 0; b < 3 + tr->nstatev; b++)
+            h[RS_H_STRESS + b] = 0.0;
+    }
+
+    h[RS_H_FEATURE] = c->feature[k];
+    h[RS_H_STATE] = RS_HSTATE_ACTIVE;
+    for (int b = 0; b < 3; b++) {
+        h[RS_H_N + b] = n[b];
+        h[RS_H_T1 + b] = t1[b];
+        h[RS_H_T2 + b] = t2[b];
+    }
+    h[RS_H_SLIP] = s1;
+    h[RS_H_SLIP + 1] = s2;
+    h[RS_H_RDISP1] = rd1;
+
+    o->point[e] = i;
+    o->feature[e] = c->feature[k];
+    RS_A2(o->rdisp, nd, 0, e) = rd1;
+    RS_A2(o->rdisp, nd, 1, e) = s1;
+    RS_A2(o->drdisp, nd, 0, e) = drd1;
+    RS_A2(o->drdisp, nd, 1, e) = ds1;
+    RS_A2(o->vrel, nd, 0, e) = vn;
+    RS_A2(o->vrel, nd, 1, e) = v1;
+    if (nd == 3) {
+        RS_A2(o->rdisp, nd, 2, e) = s2;
+        RS_A2(o->drdisp, nd, 2, e) = ds2;
+        RS_A2(o->vrel, nd, 2, e) = v2;
+    }
+    RS_DROT(o->drot, 0, 0, e) = d11;
+    RS_DROT(o->drot, 0, 1, e) = d12;
+    RS_DROT(o->drot, 1, 0, e) = d21;
+    RS_DROT(o->drot, 1, 1, e) = d22;
+    put_frame(o, nd, e, n, t1, t2);
+    for (int b = 0; b < nd; b++) {
+        RS_A2(o->coordslv, nd, b, e) = xcp[b];
+        RS_A2(o->coordmst, nd, b, e) = c->xm[b][k];
+    }
+    RS_A2(o->curv, 2, 0, e) = c->curv[0][k];
+    RS_A2(o->curv, 2, 1, e) = c->curv[1][k];
+}
+
+/* A slot whose feature is gone: RS_MAXVAL in rdisp, drdisp and drot; the frame is the
+ * stored one carried by Q, the contact point the particle's surface point along -n. */
+static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
+                         const rs_particles *p, int i, rs_track_out *o, int e)
+{
+    const int nd = tr->ndir;
+    double *h = o->slot[e];
+    const double rad = p->radius ? p->radius[i] : 0.0;
+    const double xc[3] = {p->x[i], p->y[i], p->z[i]};
+    double n[3], t1[3], t2[3], xcp[3], vr[3];
+    matvec(mr->Q, h + RS_H_N, n);
+    matvec(mr->Q, h + RS_H_T1, t1);
+    matvec(mr->Q, h + RS_H_T2, t2);
+    for (int b = 0; b < 3; b++)
+        xcp[b] = xc[b] - rad * n[b];
+    rel_velocity(p, i, mr, xc, xcp, vr);
+
+    h[RS_H_STATE] = RS_HSTATE_LEAVING;
+    o->point[e] = i;
+    o->feature[e] = (int)h[RS_H_FEATURE];
+    for (int b = 0; b < nd; b++) {
+        RS_A2(o->rdisp, nd, b, e) = RS_MAXVAL;
+        RS_A2(o->drdisp, nd, b, e) = RS_MAXVAL;
+        RS_A2(o->coordslv, nd, b, e) = xcp[b];
+        RS_A2(o->coordmst, nd, b, e) = xcp[b];
+    }
+    for (int b = 0; b < 4; b++)
+        o->drot[(size_t)e * 4 + b] = RS_MAXVAL;
+    RS_A2(o->vrel, nd, 0, e) = dot3(vr, n);
+    RS_A2(o->vrel, nd, 1, e) = dot3(vr, t1);
+    if (nd == 3)
+        RS_A2(o->vrel, nd, 2, e) = dot3(vr, t2);
+    put_frame(o, nd, e, n, t1, t2);
+    RS_A2(o->curv, 2, 0, e) = 0.0;
+    RS_A2(o->curv, 2, 1, e) = 0.0;
+}
+
+int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *m,
+                    double dt, const rs_particles *p, const rs_contacts *c,
+                    rs_track_out *out, rs_error *err)
+{
+    if (!tr || !p || !out)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_track_update: tracker, particles and "
+                            "output must not be NULL");
+    if (tr->ndir != 2 && tr->ndir != 3)
+        return rs_error_set(err, RS_ERR_ARG, "rs_track_update: ndir = %d, expected 2 or 3",
+                            tr->ndir);
+    if (tr->capacity < 1 || tr->capacity > RS_TRACK_MAX_CAPACITY)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_track_update: capacity = %d, expected 1 to %d",
+                            tr->capacity, RS_TRACK_MAX_CAPACITY);
+    if (tr->nstatev < 0)
+        return rs_error_set(err, RS_ERR_ARG, "rs_track_update: nstatev = %d is negative",
+                            tr->nstatev);
+    const int nc = c ? c->n : 0;
+    for (int k = 0; k < nc; k++) {
+        int i = c->point[k];
+        if (i < 0 || i >= p->n || (k > 0 && i < c->point[k - 1]))
+            return rs_error_set(err, RS_ERR_ARG,
+                                "rs_track_update: contact %d names point %d; expected "
+                                "points in 0..%d in block order",
+                                k, i, p->n - 1);
+    }
+    for (int i = 0; i < p->n; i++)
+        if (!p->hist[i])
+            return rs_error_set(err, RS_ERR_ARG,
+                                "rs_track_update: particle %d has no history storage",
+                                p->id ? p->id[i] : i);
+    int rc = out_reserve(out, nc + p->n * tr->capacity, err);
+    if (rc)
+        return rc;
+
+    out->n = 0;
+    out->ndir = tr->ndir;
+    int ne = 0;
+    for (int i = 0, k = 0; i < p->n; i++) {
+        int kb = k;
+        while (k < nc && c->point[k] == i)
+            k++;
+        rc = assign_slots(tr, s, p, c, i, kb, k, out, &ne, err);
+        if (rc)
+            return rc;
+    }
+
+    master_rates mr;
+    memset(&mr, 0, sizeof mr);
+    if (m) {
+        memcpy(mr.Q, m->dQ, sizeof mr.Q);
+        for (int b = 0; b < 3; b++) {
+            mr.V[b] = m->vel[b];
+            mr.W[b] = m->omega * m->axis[b];
+        }
+        rs_motion_center(m, mr.C);
+    } else {
+        mr.Q[0] = mr.Q[4] = mr.Q[8] = 1.0;
+    }
+
+    for (int e = 0; e < ne; e++) {
+        int k = out->point[e];
+        if (k >= 0)
+            emit_contact(tr, &mr, dt, p, c, k, out, e);
+        else
+            emit_leaving(tr, &mr, p, -1 - k, out, e);
+    }
+    out->n = ne;
+    return RS_OK;
+}
+
+void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stress,
+                     const double *statev)
+{
+    const int nd = out->ndir, ns = tr->nstatev;
+    for (int e = 0; e < out->n; e++) {
+        double *h = out->slot[e];
+        if (h[RS_H_STATE] == RS_HSTATE_LEAVING) {
+            h[RS_H_STATE] = RS_HSTATE_EMPTY;
+            h[RS_H_FEATURE] = RS_FEATURE_NONE;
+            continue;
+        }
+        if (stress) {
+            for (int b = 0; b < nd; b++)
+                h[RS_H_STRESS + b] = RS_A2(stress, nd, b, e);
+            if (nd == 2)
+                h[RS_H_STRESS + 2] = 0.0;
+        }
+        if (statev)
+            for (int b = 0; b < ns; b++)
+                h[RS_H_STATEV + b] = RS_A2(statev, ns, b, e);
+    }
+}
+
+void rs_track_clear(const rs_tracker *tr, double *hist)
+{
+    const int hs = RS_HIST_SIZE(tr->nstatev);
+    memset(hist, 0, (size_t)tr->capacity * hs * sizeof *hist);
+    for (int j = 0; j < tr->capacity; j++) {
+        hist[(size_t)j * hs + RS_H_FEATURE] = RS_FEATURE_NONE;
+        hist[(size_t)j * hs + RS_H_STATE] = RS_HSTATE_EMPTY;
+    }
+}
