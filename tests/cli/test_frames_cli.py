@@ -1,0 +1,125 @@
+#!/usr/bin/python3
+"""Checks rigidsurf-frames against closed-form frames and for its error messages.
+
+Usage: test_frames_cli.py PATH/TO/rigidsurf-frames
+"""
+import math
+import os
+import random
+import subprocess
+import sys
+import tempfile
+
+EXE = sys.argv[1]
+TMP = tempfile.mkdtemp(prefix="rs_cli_")
+passed = failed = 0
+
+
+def check(name, cond, detail=""):
+    global passed, failed
+    if cond:
+        passed += 1
+        print("ok   " + name)
+    else:
+        failed += 1
+        print("FAIL " + name + (": " + detail if detail else ""))
+
+
+def write(name, text):
+    path = os.path.join(TMP, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def run(args, stdin=None):
+    p = subprocess.run([EXE] + args, input=stdin, capture_output=True, text=True, timeout=60)
+    return p.returncode, p.stdout, p.stderr
+
+
+def rows(out):
+    return [[float(v) for v in line.split()] for line in out.splitlines() if line.strip()]
+
+
+def close(a, b, tol=1e-12):
+    return all(abs(x - y) <= tol * max(1.0, abs(x), abs(y)) for x, y in zip(a, b))
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+# A drum mantle: REVOLUTION about z with a LINE at r = R travelling +z, so n points inward.
+R = 0.75
+drum = write("drum.inp", f"""** drum mantle
+*SURFACE, TYPE=REVOLUTION, NAME=mantle
+0, 0, 0, 0, 0, 1
+START, {R}, -1
+LINE, {R}, 1
+""")
+rng = random.Random(7)
+pts = []
+for _ in range(200):
+    r = rng.uniform(0.05, 0.7)
+    th = rng.uniform(-math.pi, math.pi)
+    pts.append((r * math.cos(th), r * math.sin(th), rng.uniform(-0.9, 0.9)))
+code, out, err = run([drum], "\n".join("%.17g %.17g %.17g" % p for p in pts) + "\n")
+check("revolution_cli_runs", code == 0 and len(rows(out)) == len(pts), err)
+ok = True
+for p, row in zip(pts, rows(out)):
+    r = math.hypot(p[0], p[1])
+    er = [p[0] / r, p[1] / r, 0.0]
+    n = [-er[0], -er[1], 0.0]                  # inward: left of travel +z in (r, z)
+    t2 = cross([0, 0, 1], er)                  # hoop
+    t1 = cross(t2, n)
+    expect = [r - R, R * er[0], R * er[1], p[2]] + n + t1 + t2
+    if len(row) != 13 or not close(row, expect):
+        ok = False
+        print("   point", p, "\n   got", row, "\n   expected", expect)
+        break
+check("revolution_closed_form_frame_t2_is_hoop", ok)
+
+# 2D SEGMENTS: a LINE along +x has n = +y (left of travel) and t1 = travel.
+seg = write("seg.inp", "*Surface, type=SEGMENTS, name=floor\nSTART, 0, 0\nLINE, 2, 0\n")
+code, out, err = run([seg], "0.5 0.25\n1.5 -0.125  # behind\n")
+r2 = rows(out)
+check("segments_cli_two_columns_sets", code == 0 and len(r2) == 2 and all(len(x) == 7 for x in r2), err)
+check("segments_penetration_sign",
+      code == 0 and close(r2[0], [-0.25, 0.5, 0, 0, 1, 1, 0]) and close(r2[1], [0.125, 1.5, 0, 0, 1, 1, 0]),
+      str(r2))
+
+# Points beyond --tracking print 1e30 in every column.
+code, out, err = run([drum, "--tracking", "0.1"], "0 0 0\n0.7 0 0\n")
+r3 = rows(out)
+check("tracking_beyond_prints_maxval",
+      code == 0 and len(r3) == 2 and all(v == 1e30 for v in r3[0]) and close(r3[1][:1], [0.7 - R]), str(r3))
+
+# Several surfaces in one file, chosen by name; points from a file.
+multi = write("multi.inp", "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, 0, 0\nLINE, 1, 0\n"
+              "*SURFACE, TYPE=SEGMENTS, NAME=b\nSTART, 0, 1\nLINE, 0, 0\n")
+ptsf = write("p.txt", "# x y\n-0.5 0.5\n")
+code, out, err = run([multi, ptsf, "--name", "b"])
+r4 = rows(out)
+# Travel (0,-1): n = (1, 0); the point is behind by 0.5.
+check("surface_chosen_by_name", code == 0 and close(r4[0], [0.5, 0, 0.5, 1, 0, 0, -1]), str(r4) + err)
+
+# VTK output.
+vtk = os.path.join(TMP, "f.vtk")
+code, out, err = run([drum, "--vtk", vtk], "0.5 0 0\n")
+text = open(vtk).read() if os.path.exists(vtk) else ""
+check("vtk_written", code == 0 and "DATASET POLYDATA" in text and "VECTORS t2 double" in text, err)
+
+# Errors: one line, naming the file and the line, non-zero exit.
+bad = write("bad.inp", "*SURFACE, TYPE=SEGMENTS, NAME=x\nSTART, 0, 0\nLINE, 1, zero\n")
+code, out, err = run([bad], "0 0\n")
+check("bad_surface_names_file_and_line", code != 0 and (bad + ":3") in err and err.count("\n") == 1, err)
+badp = write("badp.txt", "0 0\n1 2 3\n")
+code, out, err = run([seg, badp])
+check("bad_points_names_file_and_line", code != 0 and (badp + ":2") in err, err)
+code, out, err = run([os.path.join(TMP, "missing.inp")], "")
+check("missing_surface_file", code != 0 and "missing.inp" in err, err)
+code, out, err = run([drum, "--bogus"], "")
+check("unknown_option", code != 0 and "--bogus" in err, err)
+
+print("%d passed, %d failed" % (passed, failed))
+sys.exit(1 if failed else 0)
