@@ -73,7 +73,9 @@ class Session:
         Returns (returncode, stdout+stderr). With expect_ok a failed run is reported
         with the tail of its output and raises RunError."""
         inp = self.write(name + ".in", deck)
-        cmd = [self.exe, "-in", inp, "-log", name + ".log", "-echo", "none"]
+        # Unbuffered stdout: error->one ends with MPI_Abort, which drops buffered output
+        # (the ERROR line included).
+        cmd = ["stdbuf", "-o0", self.exe, "-in", inp, "-log", name + ".log", "-echo", "none"]
         if np > 1:
             cmd = [self.args.mpirun, "-np", str(np)] + cmd
         if prefix:
