@@ -265,9 +265,9 @@ static void test_law_default_stiffness_ten_times_under_stability_limit(void)
 {
     const double m = 2e-3, A = 0.5, dt = 1e-5;
     const double k = rs_law_default_stiffness(m, A, dt);
-    ENSURE_REL(k, 0.4 * m / (A * dt * dt), 1e-14);
+    ENSURE_RREL(k, 0.4 * m / (A * dt * dt), 1e-14);
     /* dt is sqrt(10) times under the critical 2 sqrt(m/(kA)). */
-    ENSURE_REL(2.0 * sqrt(m / (k * A)) / dt, sqrt(10.0), 1e-14);
+    ENSURE_RREL(2.0 * sqrt(m / (k * A)) / dt, sqrt(10.0), 1e-14);
     ENSURE(spring_amplitude(m, k * A, dt, 10000) < 1.5);
     ENSURE(spring_amplitude(m, 9.0 * k * A, dt, 10000) < 10.0);
     ENSURE(spring_amplitude(m, 11.0 * k * A, dt, 10000) > 1e6);
@@ -280,15 +280,15 @@ static void test_law_default_conductance_keeps_explicit_heat_step_monotone(void)
 {
     const double C = 0.8 * 500.0, A = 0.01, dt = 1e-4, Tw = 400.0;
     const double h = rs_law_default_conductance(C, A, dt);
-    ENSURE_REL(h * A * dt / C, 0.1, 1e-14);
+    ENSURE_RREL(h * A * dt / C, 0.1, 1e-14);
     double T = 300.0, prev = T;
-    for (int i = 0; i < 200; ++i) {
+    for (int i = 0; i < 50; ++i) {
         T += h * A * (Tw - T) / C * dt;
         ENSURE(T > prev && T < Tw);
         prev = T;
     }
     /* Closed form of the recursion: Tw - T_n = (Tw - T_0) 0.9^n. */
-    ENSURE_REL(Tw - T, 100.0 * pow(0.9, 200), 1e-9);
+    ENSURE_RREL(Tw - T, 100.0 * pow(0.9, 50), 1e-10);
     ENSURE(rs_law_default_conductance(C, 0.0, dt) == 0.0);
 }
 

@@ -62,8 +62,8 @@ static void test_bonded_normal_elastic_slope_is_E(void)
 {
     setup_block(1, 3, -0.005);
     ENSURE(step(0.01, 0.0, 0.0) == RS_OK);
-    ENSURE_REL(F.stress[0], E * 0.01 / T, 1e-14);
-    ENSURE_REL(F.sed[0], 4.0 * 4.0 / (2.0 * E) * T, 1e-14);
+    ENSURE_RREL(F.stress[0], E * 0.01 / T, 1e-14);
+    ENSURE_RREL(F.sed[0], 4.0 * 4.0 / (2.0 * E) * T, 1e-14);
     ENSURE(F.spd[0] == 0.0);
     ENSURE(F.statev[0] == 1.0 && F.statev[1] == 1.0 && F.statev[2] == SY0);
 }
@@ -87,9 +87,9 @@ static void test_bonded_yields_at_yield_stress_with_hardening_slope(void)
     ENSURE_NEAR(F.statev[2], s, 1e-9);
     /* Plastic work: sigma = sy0 + H eps_p, so int sigma deps_p = (sy0 + s)/2 eps_p. */
     const double eps_p = eps - s / E;
-    ENSURE_REL(spd_sum, 0.5 * (SY0 + s) * eps_p * T, 1e-9);
+    ENSURE_RREL(spd_sum, 0.5 * (SY0 + s) * eps_p * T, 1e-9);
     /* Energy balance: external work = elastic energy + plastic dissipation. */
-    ENSURE_REL(work, F.sed[0] + spd_sum, 1e-9);
+    ENSURE_RREL(work, F.sed[0] + spd_sum, 1e-9);
 }
 
 static void test_bonded_unloading_is_elastic_with_slope_E(void)
@@ -99,7 +99,7 @@ static void test_bonded_unloading_is_elastic_with_slope_E(void)
     const double s1 = F.stress[0], sy1 = F.statev[2];
     ENSURE_NEAR(s1, sigma_closed(0.1), 1e-12);
     ENSURE(step(-0.004, 0.0, 0.0) == RS_OK);
-    ENSURE_REL(F.stress[0], s1 - E * 0.008, 1e-13);
+    ENSURE_RREL(F.stress[0], s1 - E * 0.008, 1e-13);
     ENSURE(F.spd[0] == 0.0);
     ENSURE(F.statev[2] == sy1);
 }
@@ -108,12 +108,12 @@ static void test_bonded_stays_bonded_in_tension(void)
 {
     setup_block(1, 3, -0.005);
     ENSURE(step(-0.004, 0.0, 0.0) == RS_OK);
-    ENSURE_REL(F.stress[0], -E * 0.008, 1e-14);
+    ENSURE_RREL(F.stress[0], -E * 0.008, 1e-14);
     ENSURE(F.statev[1] == 1.0);
     /* Pulled one unit away in one increment: eps = -2, hardened tensile yield. */
     ENSURE(step(-0.996, 0.0, 0.0) == RS_OK);
     ENSURE(RS_A2(F.rdisp, 3, 0, 0) < -0.99);
-    ENSURE_REL(F.stress[0], sigma_closed(-2.0), 1e-12);
+    ENSURE_RREL(F.stress[0], sigma_closed(-2.0), 1e-12);
     ENSURE(F.stress[0] < 0.0);
     ENSURE(F.statev[1] == 1.0);
 }
@@ -123,22 +123,22 @@ static void test_bonded_shear_elastic_with_G(void)
     setup_block(1, 3, 0.0);
     const double G = E / (2.0 * (1.0 + NU));
     ENSURE(step(0.0, 0.01, -0.02) == RS_OK);
-    ENSURE_REL(F.stress[1], G * 0.01 / T, 1e-14);
-    ENSURE_REL(F.stress[2], -G * 0.02 / T, 1e-14);
+    ENSURE_RREL(F.stress[1], G * 0.01 / T, 1e-14);
+    ENSURE_RREL(F.stress[2], -G * 0.02 / T, 1e-14);
     ENSURE(F.stress[0] == 0.0);
     ENSURE(step(0.0, 0.01, 0.0) == RS_OK);
-    ENSURE_REL(F.stress[1], G * 0.02 / T, 1e-14);
-    ENSURE_REL(F.stress[2], -G * 0.02 / T, 1e-14);
+    ENSURE_RREL(F.stress[1], G * 0.02 / T, 1e-14);
+    ENSURE_RREL(F.stress[2], -G * 0.02 / T, 1e-14);
     const double tau2 = F.stress[1] * F.stress[1] + F.stress[2] * F.stress[2];
-    ENSURE_REL(F.sed[0], tau2 / (2.0 * G) * T, 1e-14);
+    ENSURE_RREL(F.sed[0], tau2 / (2.0 * G) * T, 1e-14);
     /* Shear beyond the normal yield stress stays elastic. */
     ENSURE(step(0.0, 1.0, 0.0) == RS_OK);
-    ENSURE_REL(F.stress[1], G * 1.02 / T, 1e-14);
+    ENSURE_RREL(F.stress[1], G * 1.02 / T, 1e-14);
     ENSURE(F.spd[0] == 0.0);
 
     setup_block(1, 2, 0.0);
     ENSURE(step(0.0, 0.01, 0.0) == RS_OK);
-    ENSURE_REL(F.stress[1], G * 0.01 / T, 1e-14);
+    ENSURE_RREL(F.stress[1], G * 0.01 / T, 1e-14);
 }
 
 static void test_bonded_heat_flux_through_layer(void)
@@ -148,15 +148,15 @@ static void test_bonded_heat_flux_through_layer(void)
     F.tempSlv[1] = 420.0;
     F.tempMst[0] = 350.0;
     ENSURE(step(0.0, 0.0, 0.0) == RS_OK);
-    ENSURE_REL(F.fluxSlv[0], K * 50.0 / T, 1e-14);
-    ENSURE_REL(F.fluxMst[0], -K * 50.0 / T, 1e-14);
-    ENSURE_REL(F.fluxSlv[1], -K * 70.0 / T, 1e-14);
-    ENSURE_REL(F.fluxMst[1], K * 70.0 / T, 1e-14);
+    ENSURE_RREL(F.fluxSlv[0], K * 50.0 / T, 1e-14);
+    ENSURE_RREL(F.fluxMst[0], -K * 50.0 / T, 1e-14);
+    ENSURE_RREL(F.fluxSlv[1], -K * 70.0 / T, 1e-14);
+    ENSURE_RREL(F.fluxMst[1], K * 70.0 / T, 1e-14);
     /* One wall temperature per contact (numDefTfv = n). */
     F.b.numDefTfv = 2;
     F.tempMst[1] = 400.0;
     ENSURE(step(0.0, 0.0, 0.0) == RS_OK);
-    ENSURE_REL(F.fluxSlv[1], -K * 20.0 / T, 1e-14);
+    ENSURE_RREL(F.fluxSlv[1], -K * 20.0 / T, 1e-14);
     /* No temperatures: no flux. */
     F.b.nTemp = 0;
     ENSURE(step(0.0, 0.0, 0.0) == RS_OK);

@@ -5,9 +5,13 @@
 
 #include "rigidsurf/law.h"
 
+#include <math.h>
 #include <string.h>
 
 #define LF_MAXSV 8
+
+/// |a - b| <= rtol |b|: a true relative check, also for values far below 1.
+#define ENSURE_RREL(a, b, rtol) ENSURE_NEAR(a, b, (rtol)*fabs((double)(b)))
 
 typedef struct law_fix {
     rs_law_block b;

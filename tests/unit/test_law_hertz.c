@@ -63,21 +63,22 @@ static void test_hertz_plane_step_matches_liggghts_formulas(void)
     const double s1 = 3e-7, s2 = 2e-7;
     ENSURE(r.kt * sqrt(s1 * s1 + s2 * s2) < 0.4 * r.fn); /* this step sticks */
     ENSURE(r.gn > 0.0 && r.gt > 0.0);
-    ENSURE_REL(F.stress[0], r.fn, 1e-12);
+    ENSURE_RREL(F.stress[0], r.fn, 1e-12);
     /* Ft = -kt s - gt vt on the particle; stress(2:3) = -Ft. */
-    ENSURE_REL(F.stress[1], r.kt * s1 + r.gt * 0.01, 1e-12);
-    ENSURE_REL(F.stress[2], r.kt * s2 + r.gt * 0.03, 1e-12);
-    ENSURE_REL(F.statev[0], s1, 1e-15);
-    ENSURE_REL(F.statev[1], s2, 1e-15);
+    ENSURE_RREL(F.stress[1], r.kt * s1 + r.gt * 0.01, 1e-12);
+    ENSURE_RREL(F.stress[2], r.kt * s2 + r.gt * 0.03, 1e-12);
+    ENSURE_RREL(F.statev[0], s1, 1e-15);
+    ENSURE_RREL(F.statev[1], s2, 1e-15);
     const double dt = F.b.dTimCur;
-    ENSURE_REL(F.svd[0], (r.gn * vn * vn + r.gt * (0.01 * 0.01 + 0.03 * 0.03)) * dt, 1e-12);
-    ENSURE_REL(F.sed[0], 0.4 * r.kn * delta * delta + 0.5 * r.kt * (s1 * s1 + s2 * s2),
-               1e-12);
+    ENSURE_RREL(F.svd[0], (r.gn * vn * vn + r.gt * (0.01 * 0.01 + 0.03 * 0.03)) * dt,
+                1e-12);
+    ENSURE_RREL(F.sed[0], 0.4 * r.kn * delta * delta + 0.5 * r.kt * (s1 * s1 + s2 * s2),
+                1e-12);
     ENSURE(F.sfd[0] == 0.0 && F.fluxSlv[0] == 0.0);
     /* Hertz elastic energy: 2/5 kn d^2 = int_0^d 4/3 Y* sqrt(R x) x dx. */
     const double ystar = 3.0 * r.kn / (4.0 * sqrt(R * delta));
-    ENSURE_REL(0.4 * r.kn * delta * delta, 8.0 / 15.0 * ystar * sqrt(R) * pow(delta, 2.5),
-               1e-12);
+    ENSURE_RREL(0.4 * r.kn * delta * delta, 8.0 / 15.0 * ystar * sqrt(R) * pow(delta, 2.5),
+                1e-12);
 }
 
 static void test_hertz_stress_is_force_per_area(void)
@@ -86,7 +87,7 @@ static void test_hertz_stress_is_force_per_area(void)
     F.area[0] = 4.0;
     rs_error err;
     ENSURE(rs_law_call(law(), &F.b, &err) == RS_OK);
-    ENSURE_REL(F.stress[0] * 4.0, hertz_formulas(P, 0.01, 1e-3, 1e-4, 0.0).fn, 1e-12);
+    ENSURE_RREL(F.stress[0] * 4.0, hertz_formulas(P, 0.01, 1e-3, 1e-4, 0.0).fn, 1e-12);
 }
 
 static void test_hertz_friction_cap_resets_shear_to_limit(void)
@@ -101,13 +102,13 @@ static void test_hertz_friction_cap_resets_shear_to_limit(void)
     const hertz_ref r = hertz_formulas(P, 0.01, 1e-3, delta, vn);
     const double mag = 5e-4, lim = 0.4 * fabs(r.fn);
     ENSURE(r.kt * mag > lim);
-    ENSURE_REL(hypot(F.stress[1], F.stress[2]), lim, 1e-12);
-    ENSURE_REL(F.stress[1] / F.stress[2], -0.75, 1e-12);
+    ENSURE_RREL(hypot(F.stress[1], F.stress[2]), lim, 1e-12);
+    ENSURE_RREL(F.stress[1] / F.stress[2], -0.75, 1e-12);
     ENSURE(F.stress[1] > 0.0); /* drags the master along the slip */
-    ENSURE_REL(hypot(F.statev[0], F.statev[1]), lim / r.kt, 1e-12);
-    ENSURE_REL(F.statev[0] / F.statev[1], -0.75, 1e-12);
-    ENSURE_REL(F.sfd[0], lim * (mag - lim / r.kt), 1e-12);
-    ENSURE_REL(F.svd[0], r.gn * vn * vn * F.b.dTimCur, 1e-12);
+    ENSURE_RREL(hypot(F.statev[0], F.statev[1]), lim / r.kt, 1e-12);
+    ENSURE_RREL(F.statev[0] / F.statev[1], -0.75, 1e-12);
+    ENSURE_RREL(F.sfd[0], lim * (mag - lim / r.kt), 1e-12);
+    ENSURE_RREL(F.svd[0], r.gn * vn * vn * F.b.dTimCur, 1e-12);
 }
 
 static void test_hertz_drot_carries_shear_history(void)
@@ -124,9 +125,9 @@ static void test_hertz_drot_carries_shear_history(void)
     ENSURE(rs_law_call(law(), &F.b, &err) == RS_OK);
     const hertz_ref r = hertz_formulas(P, 0.01, 1e-3, 1e-4, 0.0);
     ENSURE_SMALL(F.stress[1], 1e-20);
-    ENSURE_REL(F.stress[2], r.kt * 1e-7, 1e-12);
+    ENSURE_RREL(F.stress[2], r.kt * 1e-7, 1e-12);
     ENSURE_SMALL(F.statev[0], 1e-22);
-    ENSURE_REL(F.statev[1], 1e-7, 1e-15);
+    ENSURE_RREL(F.statev[1], 1e-7, 1e-15);
 }
 
 static void test_hertz_curvature_flag_uses_reff(void)
@@ -142,7 +143,7 @@ static void test_hertz_curvature_flag_uses_reff(void)
     one_contact(P, 1e-4, 0.0);
     F.reff[0] = 0.25 * F.radius[0];
     ENSURE(rs_law_call(law(), &F.b, &err) == RS_OK);
-    ENSURE_REL(f_reff / F.stress[0], 0.5, 1e-14); /* sqrt(reff / R) */
+    ENSURE_RREL(f_reff / F.stress[0], 0.5, 1e-14); /* sqrt(reff / R) */
     p[6] = 1.0;
     one_contact(p, 1e-4, 0.0);
     F.b.reff = NULL;
@@ -189,7 +190,7 @@ static void test_hertz_setup_call_does_not_advance_history(void)
     ENSURE(rs_law_call(law(), &F.b, &err) == RS_OK);
     const hertz_ref r = hertz_formulas(P, 0.01, 1e-3, 1e-4, 0.0);
     ENSURE(F.statev[0] == 1e-7 && F.statev[1] == 0.0);
-    ENSURE_REL(F.stress[1], r.kt * 1e-7 + r.gt * 0.05, 1e-12);
+    ENSURE_RREL(F.stress[1], r.kt * 1e-7 + r.gt * 0.05, 1e-12);
     ENSURE(F.svd[0] == 0.0 && F.sfd[0] == 0.0);
 }
 
