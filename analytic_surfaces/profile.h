@@ -1,0 +1,127 @@
+/* rigidsurf (private): profile geometry and the 2D closest-feature query shared by the
+ * SEGMENTS, CYLINDER and REVOLUTION surfaces.
+ *
+ * Feature ownership in the profile plane (ARCHITECTURE.md, "One contact"). For a point
+ * P and a vertex v, let dA = (P - v).tA and dB = (P - v).tB with tA the end tangent of
+ * the segment that ends at v and tB the start tangent of the one that starts there. A
+ * SMOOTH vertex uses one shared tangent for both, so the two tests are one number.
+ * - Segment k owns P when its closest point is interior: dB > 0 at its start vertex
+ *   (dB >= 0 when that vertex is SMOOTH or CONCAVE) and dA < 0 at its end vertex. For
+ *   LINE and CIRCL this is exactly the interior projection; for PARAB the same signs
+ *   bracket the roots of the closest-point cubic, so both ends agree with the vertices.
+ * - A CONVEX vertex owns dA >= 0 && dB <= 0 (the wedge in front), normal d/|d|.
+ * - A CONCAVE vertex owns dA >= 0 && dB < 0. That wedge lies behind the wall; with
+ *   SIDES=2 it is a convex vertex seen from the back (normal d/|d|, distance |d|), with
+ *   one side it is a penetration (normal -d/|d|, distance -|d|), so an embedded point
+ *   behind a pocket is never lost.
+ * - END vertices own the quarter plane beyond the end on the particle side (the half
+ *   plane with SIDES=2). A REVOLUTION end vertex on the axis hands the boundary ray
+ *   dA = 0 (the axis itself) to its segment: the surface closes smoothly there.
+ * - One side: behind a CONVEX vertex, when both faces project, only the face with the
+ *   larger signed distance (smaller penetration) keeps its contact.
+ * Fillets: FILLET RADIUS rounds corners between LINE and CIRCL segments only. A corner
+ * that touches a PARAB stays sharp. */
+#ifndef RS_PROFILE_H
+#define RS_PROFILE_H
+
+#include "rigidsurf/surface.h"
+
+/// Relative tolerance for tangent continuity (radians) and arc radius mismatch.
+#define RS_SMOOTH_ANGLE 1e-9
+#define RS_RADIUS_TOL 1e-9
+#define RS_PI 3.14159265358979323846
+
+/// LINE from p0 to p1. RS_ERR_GEOMETRY when it has zero length. where prefixes messages.
+int rs_segment_line(rs_segment *g, const double p0[2], const double p1[2],
+                    const char *where, rs_error *err);
+/// CIRCL about centre c from p0 to p1, the short way, under 180 degrees.
+int rs_segment_circl(rs_segment *g, const double p0[2], const double p1[2],
+                     const double c[2], const char *where, rs_error *err);
+/// PARAB through p0, pm (xi = 0) and p1.
+int rs_segment_parab(rs_segment *g, const double p0[2], const double pm[2],
+                     const double p1[2], const char *where, rs_error *err);
+
+/// Point, unit tangent (direction of travel) and signed curvature (> 0 turning left,
+/// toward n) at parameter u in [0, 1] along the segment (CIRCL: angle fraction, PARAB:
+/// xi = 2u - 1, LINE: length fraction).
+void rs_segment_eval(const rs_segment *g, double u, double x[2], double t[2], double *k);
+
+/// Lengths and s0, closed flag, nvert and vertex kinds. vkind is (re)allocated. When
+/// smooth is not NULL, vertices with smooth[j] != 0 are SMOOTH by construction.
+int rs_profile_finish(rs_profile *p, const unsigned char *smooth, rs_error *err);
+
+/// Largest coordinate extent of the profile (bounding box size or distance from the
+/// origin, whichever is larger); the scale of relative tolerances.
+double rs_profile_size(const rs_profile *p);
+
+/// Rounds the corners between LINE/CIRCL segments with tangent arcs of radius r.
+/// line[k] is the input line of segment k (for messages); it is updated to the new
+/// segment list. RS_ERR_GEOMETRY naming the vertex when a fillet does not fit.
+int rs_profile_fillet(rs_profile *p, double r, int **line, const char *origin,
+                      rs_error *err);
+
+/// Frees what the profile owns and zeroes it.
+void rs_profile_free(rs_profile *p);
+
+/* Query data, built once per surface (kept in rs_surface.impl for the analytic kinds). */
+typedef struct rs_pseg {
+    double bc[2], br;  ///< bounding circle of the segment
+    double t[2];       ///< LINE: unit tangent
+    double e[2];       ///< LINE: p1 - p0
+    double inv_len2;   ///< LINE: 1 / |p1 - p0|^2
+    double sgn;        ///< CIRCL: sign of the sweep
+    double B[2], C[2]; ///< PARAB: X(xi) = pm + xi B + xi^2 C
+} rs_pseg;
+
+typedef struct rs_pvert {
+    double v[2];
+    double ta[2], tb[2]; ///< end tangent of segment sa, start tangent of segment sb
+    double na[2], nb[2]; ///< the matching normals
+    double nfb[2];       ///< normal used when the point sits exactly on the vertex
+    int kind;            ///< rs_vertex_kind
+    int sa, sb;          ///< segment before / after, -1 when none
+    int seg_owns_edge;   ///< END on a revolution axis: the segment owns dA = 0 / dB = 0
+} rs_pvert;
+
+typedef struct rs_pcache {
+    int nseg, nvert, closed, sides;
+    double size;
+    const rs_segment *seg;
+    rs_pseg *ps;
+    rs_pvert *pv;
+} rs_pcache;
+
+/// Builds the query data of an analytic surface's profile (one malloc'ed block).
+int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err);
+
+/// One contact in the profile plane.
+typedef struct rs_hit2 {
+    int feature;  ///< RS_FEATURE(type, index)
+    double x[2];  ///< closest point
+    double n[2];  ///< unit normal toward the point's side (one side: the outward normal)
+    double dist;  ///< signed distance along n (SIDES=2: >= 0)
+    double kappa; ///< profile curvature, > 0 convex toward the point; 0 at vertices
+} rs_hit2;
+
+/// Scratch for rs_pcache_hits, sized by the profile. Stack storage covers small profiles.
+typedef struct rs_pscratch {
+    unsigned char *seg_state; ///< nseg
+    unsigned char *vtx_done;  ///< nvert
+    double *vd;               ///< 4 * nvert: dx, dy, dA, dB
+    rs_hit2 *cand;            ///< nseg
+    rs_hit2 *hits;            ///< nseg + nvert
+    void *heap;
+} rs_pscratch;
+
+int rs_pscratch_init(rs_pscratch *sc, const rs_pcache *pc, void *stack, size_t stack_bytes);
+void rs_pscratch_free(rs_pscratch *sc);
+/// Bytes of scratch a profile needs.
+size_t rs_pscratch_bytes(const rs_pcache *pc);
+
+/// Contacts of point (px, py) whose distance lies in [dlo, dhi] (dhi = gap_max + radius,
+/// dlo = dist_min), in profile order (vertex k before segment k). Returns the count;
+/// the hits are in sc->hits.
+int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double dhi,
+                   rs_pscratch *sc);
+
+#endif
