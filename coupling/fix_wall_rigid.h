@@ -1,0 +1,210 @@
+/* fix wall/rigid: a rigidsurf master surface as a LIGGGHTS wall (docs/fix_wall_rigid.md).
+ *
+ * Each step the particles of the group near the surface are queried in blocks, their
+ * contacts tracked (rs_track_update), handed to an interface law with the VUINTER
+ * calling convention (rs_law_call), and the resulting interface stress applied:
+ * F = A (s1 n - s2 t1 - s3 t2) at the contact point, the wall gets -F. The per-contact
+ * history lives in a per-atom array that migrates with the atoms and goes into restart
+ * files. */
+#ifdef FIX_CLASS
+
+FixStyle(wall / rigid, FixWallRigid)
+
+#else
+
+#ifndef RIGIDSURF_FIX_WALL_RIGID_H
+#define RIGIDSURF_FIX_WALL_RIGID_H
+
+#include "fix.h"
+
+#include "rigidsurf/law.h"
+#include "rigidsurf/motion.h"
+#include "rigidsurf/surface.h"
+#include "rigidsurf/track.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS
+{
+
+class FixWallRigid : public Fix
+{
+  public:
+    FixWallRigid(class LAMMPS *, int, char **);
+    ~FixWallRigid();
+
+    int setmask();
+    void init();
+    void setup(int);
+    void initial_integrate(int);
+    void pre_neighbor();
+    void post_force(int);
+    void end_of_step();
+
+    double compute_vector(int);
+    int min_type();
+    int max_type();
+
+    void write_restart(FILE *);
+    void restart(char *);
+    void grow_arrays(int);
+    void copy_arrays(int, int, int);
+    void set_arrays(int);
+    int pack_exchange(int, double *);
+    int unpack_exchange(int, double *);
+    int pack_restart(int, double *);
+    void unpack_restart(int, int);
+    int size_restart(int);
+    int maxsize_restart();
+    double memory_usage();
+
+    /// Used by the motion rates callback: the current values of the v_ variables.
+    void motion_rates(double vel[3], double *omega);
+
+  private:
+    enum AreaMode { AREA_NODE, AREA_PROJECTED, AREA_CONSTANT };
+    enum LawKind { LAW_BUILTIN, LAW_LOADED };
+
+    /* input */
+    void parse(int narg, char **arg);
+    int parse_surface(int narg, char **arg, int iarg);
+    int parse_law(int narg, char **arg, int iarg);
+    int parse_motion(int narg, char **arg, int iarg);
+    double number(const char *keyword, const char *what, const char *s);
+    int integer(const char *keyword, const char *what, const char *s);
+    bool is_keyword(const char *s) const;
+    [[noreturn]] void fail(const std::string &msg);
+    [[noreturn]] void fail_one(const std::string &msg);
+
+    /* setup of the run */
+    void init_hertz_props();
+    void init_variables();
+    void init_heat();
+    void init_predef();
+    void init_vtk_mesh();
+
+    /* the step */
+    void compute(bool setup_call);
+    void build_candidates();
+    bool wall_moved_beyond_skin() const;
+    void process_block(const int *idx, int n, bool setup_call);
+    void write_vtk();
+    void update_previous_fields();
+
+    /* per-atom row layout (doubles): tracker history (capacity slots of
+     * RS_HIST_SIZE(nstatev)), sed per slot (capacity), previous temperature (1), previous
+     * predefined fields (npred). */
+    int hist_size() const
+    {
+        return RS_HIST_SIZE(nstatev_);
+    }
+    int sed_offset() const
+    {
+        return capacity_ * hist_size();
+    }
+    int tprev_offset() const
+    {
+        return sed_offset() + capacity_;
+    }
+    int pred_offset() const
+    {
+        return tprev_offset() + 1;
+    }
+    int row_size() const
+    {
+        return pred_offset() + (int)predef_names_.size();
+    }
+    void clear_row(int i);
+
+    /* surface and motion */
+    rs_surface surf_;
+    std::string inline_text_; // keyword text of an inline surface
+    bool surf_ok_;
+    int ndir_;
+    rs_motion motion_;
+    bool moving_;
+    std::string var_vel_[3], var_omega_; // v_ names ("" = constant)
+    int ivar_vel_[3], ivar_omega_;
+    bool rot_by_period_;
+    double period_;
+    double disp_at_build_[3], phi_at_build_;
+
+    /* law */
+    LawKind law_kind_;
+    const rs_law *law_;
+    rs_law loaded_;
+    bool loaded_ok_;
+    std::string law_name_;
+    std::vector<double> props_;
+    bool props_given_;
+    bool hertz_;
+    std::vector<std::vector<double>> type_props_; // hertz: props per particle type
+    int nstatev_;
+    bool statev_given_;
+
+    /* contact settings */
+    int wall_type_;
+    int capacity_;
+    double tracking_;
+    bool tracking_given_;
+    AreaMode area_mode_;
+    double area_const_;
+    rs_tracker tracker_;
+
+    /* heat */
+    bool temp_given_;
+    double temp_wall_, dtemp_wall_;
+    double capacity_wall_; // 0: fixed temperature
+    double heat_wall_;     // accumulated heat into the wall (energy), this rank
+    double heat_step_;     // heat flow into the wall this step (power), this rank
+    class FixPropertyAtom *fix_temp_, *fix_heatflux_;
+    class FixPropertyGlobal *fix_heatcap_;
+
+    /* predefined fields */
+    std::vector<std::string> predef_names_;
+    std::vector<class FixPropertyAtom *> predef_fix_;
+
+    /* vtk */
+    std::string vtk_file_;
+    int vtk_every_;
+    rs_trimesh vtk_mesh_;
+    bool vtk_mesh_ok_;
+
+    /* per-atom storage */
+    double **row_;
+    int nmax_;
+
+    /* candidates: local atom indices near the surface, bucketed by type for hertz */
+    std::vector<int> cand_;
+    bool rebuild_;
+
+    /* scratch (sized per block) */
+    rs_contacts contacts_;
+    rs_track_out tout_;
+    std::vector<double> bx_, by_, bz_, bvx_, bvy_, bvz_, bwx_, bwy_, bwz_, brad_;
+    std::vector<int> bid_;
+    std::vector<double *> bhist_;
+    std::vector<double> saved_rows_;
+    std::vector<char> leaving_;
+    std::vector<int> slotj_, deepest_;
+    /* per contact of a block (grown to the tracker's output size) */
+    std::vector<int> c_uid_, c_type_;
+    std::vector<double> c_stress_, c_statev_, c_flux_slv_, c_flux_mst_, c_sed_, c_sfd_,
+        c_scd_, c_spd_, c_svd_, c_stiff_, c_cond_, c_area_, c_temp_, c_dtemp_, c_pred_,
+        c_dpred_, c_rad_, c_mass_, c_reff_;
+
+    /* per step, local sums; accumulated totals */
+    double f_wall_[3], m_wall_[3], se_now_;
+    int ncontact_;
+    double diss_[4]; // ALLFD, ALLPD, ALLVD, ALLCD (this rank's share since the start)
+    double out_[14];
+    bigint out_step_;
+    bool out_valid_;
+    double temp_mst_[1], dtemp_mst_[1];
+};
+
+} // namespace LAMMPS_NS
+
+#endif
+#endif
