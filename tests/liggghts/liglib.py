@@ -83,7 +83,7 @@ class Session:
         env = dict(os.environ)
         env.update(MPI_ENV)
         try:
-            p = subprocess.run(cmd, cwd=self.dir, capture_output=True, text=True,
+            p = subprocess.run(cmd, cwd=self.dir, capture_output=True, text=True, errors="replace",
                                timeout=timeout, env=env)
         except subprocess.TimeoutExpired:
             if expect_ok:
@@ -115,6 +115,10 @@ def main_guard(session, body):
         body(session)
     except RunError:
         pass
+    except Exception:  # a check script bug or unreadable output is a failure too
+        import traceback
+        traceback.print_exc()
+        session.ck.check("test script ran to the end", False)
     session.done()
 
 
@@ -212,7 +216,7 @@ def plane_z(z0=0.0, half=1.0, name="floor"):
     """A plane z = z0 with n = +z: CYLINDER with a = (0,0,z0), local x = +x, generator
     along -y, so local y = generator x local x = +z; a LINE travelling +x has n = +y_local."""
     return (f"*SURFACE, TYPE=CYLINDER, NAME={name}\n"
-            f"0, 0, {z0!r}, 1, 0, {z0!r}, 0, -1, {z0!r}\n"
+            f"0, 0, {z0!r}, 1, 0, {z0!r}\n0, -1, {z0!r}\n"
             f"START, {-half!r}, 0\nLINE, {half!r}, 0\n")
 
 
@@ -237,6 +241,8 @@ def disc_z(radius, z0=0.0, name="disc"):
 
 def rel_diff(a, b, scale):
     """|a - b| relative to max(|a|, |b|, scale): scale keeps values near zero honest."""
+    if a == b:
+        return 0.0
     return abs(a - b) / max(abs(a), abs(b), scale)
 
 
