@@ -1,0 +1,136 @@
+/* rigidsurf: a standalone explicit driver.
+ *
+ * Integrates a set of slave nodes (point masses, or spheres with a radius) against one
+ * analytic rigid master with the explicit central-difference scheme, and calls an
+ * interface law through rs_law_call on the blocks of the tracker, as Abaqus/Explicit
+ * does for VUINTER. It reproduces the Abaqus VUINTER verification cases without LIGGGHTS.
+ *
+ * Increment k (time t_k = k dt) of rs_driver_step:
+ *  1. The master moves to t_k (rs_motion_advance; not on the first increment).
+ *  2. Query and tracker at the positions x_k with the velocities v_{k-1/2} (the slip
+ *     increment of the tracker is then exactly the displacement x_k - x_{k-1}).
+ *  3. The law, in blocks of at most RS_BLOCK contacts. On entry stress is the previous
+ *     increment's, its shear rotated by drot (law.h). Temperatures are those at t_k.
+ *  4. Contact force on node i: F = areaSlv (s1 n - s2 t1 - s3 t2) summed over its
+ *     contacts (ARCHITECTURE.md, "Stress, flux, energy signs").
+ *  5. v_{k+1/2} = v_{k-1/2} + dt (F + f_ext) / m for free components; prescribed
+ *     components take vpres. x_{k+1} = x_k + dt v_{k+1/2}.
+ *  6. Heat (forward Euler): T_i += dt sum(areaSlv fluxSlv) / C_i for nodes with a heat
+ *     capacity C_i > 0; the master's temperature likewise with sum(areaSlv fluxMst) and
+ *     its capacity (0: fixed temperature).
+ * Energy totals (per the Abaqus output names) are areaSlv-weighted sums over contacts:
+ * ALLSE = sum(sed A) at the current increment; ALLFD, ALLPD, ALLVD, ALLCD accumulate
+ * sfd, spd, svd, scd times A. ALLKE = sum(m |v_{k+1/2}|^2 / 2). */
+#ifndef RIGIDSURF_DRIVER_H
+#define RIGIDSURF_DRIVER_H
+
+#include "rigidsurf/law.h"
+#include "rigidsurf/motion.h"
+#include "rigidsurf/surface.h"
+#include "rigidsurf/track.h"
+#include "rigidsurf/types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+struct rs_driver;
+
+/// Optional boundary-condition update, called at the start of every increment with the
+/// time t_k; it may change vpres, fixed, fext or the master's motion rates. Return 0, or
+/// non-zero to stop (fill err).
+typedef int (*rs_driver_bc_fn)(struct rs_driver *d, double t, void *ctx, rs_error *err);
+
+/// Energy totals (energy units; the Abaqus whole-model output names).
+typedef struct rs_driver_energy {
+    double allse;    ///< elastic strain energy in the interface (current)
+    double allfd;    ///< frictional dissipation (accumulated)
+    double allpd;    ///< plastic dissipation (accumulated)
+    double allvd;    ///< viscous dissipation (accumulated)
+    double allcd;    ///< creep dissipation (accumulated)
+    double allke;    ///< kinetic energy of the slave nodes
+    double heat_slv; ///< heat into the slave nodes, sum(areaSlv fluxSlv dt) (accumulated)
+    double heat_mst; ///< heat into the master, sum(areaSlv fluxMst dt) (accumulated)
+} rs_driver_energy;
+
+typedef struct rs_driver {
+    /* Set with rs_driver_init and rs_driver_set_law; then fill the node arrays. */
+    int n;                     ///< slave nodes
+    const rs_surface *surface; ///< the rigid master (not owned)
+    rs_motion motion;          ///< its rigid motion (rs_motion_init: fixed)
+    int moving;                ///< 1: pass the motion to the tracker (set it when the
+                               ///< master moves)
+    const rs_law *law;         ///< not owned
+    double props[64];          ///< law properties
+    int nprops;
+    int nstatev;     ///< state variables per contact (>= law->nstatev)
+    double dt;       ///< time increment (> 0)
+    double tracking; ///< tracking thickness: contacts kept while gap <= it
+    int capacity;    ///< contacts per node (tracker slots), default 4
+    char surfInt[RS_LAW_NAMELEN], surfSlv[RS_LAW_NAMELEN]; ///< names passed to the law
+
+    /* Node data (SoA, n each), allocated and zeroed by rs_driver_init. */
+    double *x, *y, *z;     ///< positions (z unused for SEGMENTS)
+    double *vx, *vy, *vz;  ///< velocities, v_{k-1/2} between increments
+    double *radius;        ///< sphere radius, 0 for a point node
+    double *mass;          ///< mass (default 1)
+    double *area;          ///< areaSlv (default 1)
+    double *fext;          ///< applied force (3, n)
+    double *vpres;         ///< prescribed velocity (3, n)
+    unsigned char *fixed;  ///< (3, n): 1 = component prescribed by vpres
+    double *temp;          ///< temperature
+    double *heatcap;       ///< heat capacity C (energy per kelvin); 0: fixed temperature
+    double *fcon;          ///< contact force of the last increment (3, n)
+    double tmaster;        ///< master temperature
+    double heatcap_master; ///< master heat capacity; 0: fixed temperature
+
+    rs_driver_bc_fn bc; ///< optional, see rs_driver_bc_fn
+    void *bc_ctx;
+    void (*warn)(void *warn_ctx, const rs_law *law, int k,
+                 const char *msg); ///< law warnings
+    void *warn_ctx;
+
+    /* State and results (read only). */
+    double t; ///< time t_k of the next increment
+    int inc;  ///< increments done
+    rs_driver_energy energy;
+    rs_tracker tracker;
+    rs_track_out trk; ///< contacts of the last increment (kinematics)
+    double *cstress;  ///< (nDir, trk.n) law stress of the last increment
+    double *cstatev;  ///< (nstatev, trk.n)
+    double *csed, *csfd, *cspd, *csvd, *cscd; ///< (trk.n) energy densities
+    double *cflux_slv, *cflux_mst;            ///< (trk.n) heat fluxes per area
+
+    /* Internal storage. */
+    int ccap;
+    double *hist; ///< n * capacity * RS_HIST_SIZE(nstatev)
+    double **hist_ptr;
+    int *id;
+    double *temp_prev;
+    double tmaster_prev;
+    rs_contacts contacts;
+    double *cwork; ///< per-contact scratch for the block's read-only arrays
+    int *cuid;     ///< per-contact node ids
+} rs_driver;
+
+/// Allocates n nodes on surface s (not owned): positions and velocities 0, mass 1,
+/// areaSlv 1, no prescribed components, temperatures 0, a fixed master, capacity 4,
+/// tracking thickness 0 (set it). Returns RS_ERR_ARG or RS_ERR_NOMEM.
+int rs_driver_init(rs_driver *d, const rs_surface *s, int n, rs_error *err);
+
+/// Sets the law and its properties (checked with rs_law_check_props) and the state
+/// variables per contact, nstatev >= law->nstatev. Call before the first increment.
+int rs_driver_set_law(rs_driver *d, const rs_law *law, const double *props, int nprops,
+                      int nstatev, rs_error *err);
+
+/// One increment (see the file comment). Returns the first error of the query, the
+/// tracker, the law or the boundary-condition callback.
+int rs_driver_step(rs_driver *d, rs_error *err);
+
+/// Frees everything rs_driver_init and the increments allocated, and zeroes d.
+void rs_driver_free(rs_driver *d);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,417 @@
+/* The standalone explicit driver: central differences for slave nodes against one
+ * analytic rigid master, the law called on the tracker's blocks (driver.h). */
+#include "rigidsurf/driver.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { W_TEMP, W_DTEMP, W_STIFF, W_COND, W_AREA, W_MASS, W_RADIUS, W_REFF, W_COUNT };
+
+static void *zalloc(size_t count, size_t size, int *ok)
+{
+    void *p = calloc(count ? count : 1, size);
+    if (!p)
+        *ok = 0;
+    return p;
+}
+
+int rs_driver_init(rs_driver *d, const rs_surface *s, int n, rs_error *err)
+{
+    memset(d, 0, sizeof *d);
+    if (!s || n < 1)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "driver: need a surface and at least one node");
+    d->n = n;
+    d->surface = s;
+    d->capacity = 4;
+    rs_motion_init(&d->motion);
+    rs_law_block_set_name(d->surfInt, "VUINTER");
+    rs_law_block_set_name(d->surfSlv, "SLAVE");
+    int ok = 1;
+    size_t un = (size_t)n;
+    d->x = zalloc(un, sizeof(double), &ok);
+    d->y = zalloc(un, sizeof(double), &ok);
+    d->z = zalloc(un, sizeof(double), &ok);
+    d->vx = zalloc(un, sizeof(double), &ok);
+    d->vy = zalloc(un, sizeof(double), &ok);
+    d->vz = zalloc(un, sizeof(double), &ok);
+    d->radius = zalloc(un, sizeof(double), &ok);
+    d->mass = zalloc(un, sizeof(double), &ok);
+    d->area = zalloc(un, sizeof(double), &ok);
+    d->fext = zalloc(3 * un, sizeof(double), &ok);
+    d->vpres = zalloc(3 * un, sizeof(double), &ok);
+    d->fixed = zalloc(3 * un, sizeof(unsigned char), &ok);
+    d->temp = zalloc(un, sizeof(double), &ok);
+    d->heatcap = zalloc(un, sizeof(double), &ok);
+    d->fcon = zalloc(3 * un, sizeof(double), &ok);
+    d->temp_prev = zalloc(un, sizeof(double), &ok);
+    d->id = zalloc(un, sizeof(int), &ok);
+    d->hist_ptr = zalloc(un, sizeof(double *), &ok);
+    if (!ok) {
+        rs_driver_free(d);
+        return rs_error_set(err, RS_ERR_NOMEM, "driver: out of memory for %d nodes", n);
+    }
+    for (int i = 0; i < n; ++i) {
+        d->mass[i] = 1.0;
+        d->area[i] = 1.0;
+        d->id[i] = i + 1;
+    }
+    return RS_OK;
+}
+
+int rs_driver_set_law(rs_driver *d, const rs_law *law, const double *props, int nprops,
+                      int nstatev, rs_error *err)
+{
+    if (!law)
+        return rs_error_set(err, RS_ERR_ARG, "driver: no law given");
+    if (nprops < 0 || nprops > (int)(sizeof d->props / sizeof d->props[0]))
+        return rs_error_set(err, RS_ERR_ARG, "driver: %d properties, expected 0..%d",
+                            nprops, (int)(sizeof d->props / sizeof d->props[0]));
+    if (nstatev < law->nstatev)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "driver: %d state variables, the law '%s' needs %d", nstatev,
+                            law->name, law->nstatev);
+    if (d->inc > 0)
+        return rs_error_set(err, RS_ERR_ARG, "driver: the law is set before increment 1");
+    int rc = rs_law_check_props(law, props, nprops, err);
+    if (rc)
+        return rc;
+    d->law = law;
+    d->nprops = nprops;
+    if (nprops)
+        memcpy(d->props, props, (size_t)nprops * sizeof(double));
+    d->nstatev = nstatev;
+    return RS_OK;
+}
+
+/* History storage, allocated on the first increment (capacity and nstatev are known). */
+static int alloc_history(rs_driver *d, rs_error *err)
+{
+    d->tracker.capacity = d->capacity;
+    d->tracker.nstatev = d->nstatev;
+    d->tracker.ndir = rs_surface_ndir(d->surface);
+    d->tracker.tracking = d->tracking;
+    size_t per = (size_t)d->capacity * (size_t)RS_HIST_SIZE(d->nstatev);
+    d->hist = (double *)malloc((size_t)d->n * per * sizeof(double));
+    if (!d->hist)
+        return rs_error_set(err, RS_ERR_NOMEM, "driver: out of memory for contact history");
+    for (int i = 0; i < d->n; ++i) {
+        d->hist_ptr[i] = d->hist + (size_t)i * per;
+        rs_track_clear(&d->tracker, d->hist_ptr[i]);
+        d->temp_prev[i] = d->temp[i];
+    }
+    d->tmaster_prev = d->tmaster;
+    return RS_OK;
+}
+
+static int grow_contacts(rs_driver *d, int nc, int nd, rs_error *err)
+{
+    if (nc <= d->ccap)
+        return RS_OK;
+    int cap = d->ccap ? d->ccap : 64;
+    while (cap < nc)
+        cap *= 2;
+    size_t uc = (size_t)cap;
+    double **arr[] = {&d->csed, &d->csfd,      &d->cspd,     &d->csvd,
+                      &d->cscd, &d->cflux_slv, &d->cflux_mst};
+    int ok = 1;
+    for (size_t a = 0; a < sizeof arr / sizeof arr[0]; ++a) {
+        double *p = (double *)realloc(*arr[a], uc * sizeof(double));
+        if (p)
+            *arr[a] = p;
+        else
+            ok = 0;
+    }
+    double *p = (double *)realloc(d->cstress, uc * (size_t)nd * sizeof(double));
+    if (p)
+        d->cstress = p;
+    else
+        ok = 0;
+    p = (double *)realloc(d->cstatev,
+                          uc * (size_t)(d->nstatev ? d->nstatev : 1) * sizeof(double));
+    if (p)
+        d->cstatev = p;
+    else
+        ok = 0;
+    p = (double *)realloc(d->cwork, uc * W_COUNT * sizeof(double));
+    if (p)
+        d->cwork = p;
+    else
+        ok = 0;
+    int *q = (int *)realloc(d->cuid, uc * sizeof(int));
+    if (q)
+        d->cuid = q;
+    else
+        ok = 0;
+    if (!ok)
+        return rs_error_set(err, RS_ERR_NOMEM, "driver: out of memory for %d contacts", nc);
+    d->ccap = cap;
+    return RS_OK;
+}
+
+/* Fills the per-contact inputs the block reads: previous stress (shear rotated by
+ * drot), state variables, temperatures and the DEM extension. */
+static void gather_contacts(rs_driver *d, int nd)
+{
+    const rs_track_out *o = &d->trk;
+    const int ns = d->nstatev;
+    const size_t uc = (size_t)d->ccap;
+    for (int e = 0; e < o->n; ++e) {
+        const double *h = o->slot[e];
+        const int i = o->point[e];
+        for (int b = 0; b < nd; ++b)
+            RS_A2(d->cstress, nd, b, e) = h[RS_H_STRESS + b];
+        if (nd == 3 && RS_A2(o->rdisp, nd, 0, e) < 0.5 * RS_MAXVAL) {
+            const double s2 = h[RS_H_STRESS + 1], s3 = h[RS_H_STRESS + 2];
+            RS_A2(d->cstress, 3, 1, e) =
+                RS_DROT(o->drot, 0, 0, e) * s2 + RS_DROT(o->drot, 0, 1, e) * s3;
+            RS_A2(d->cstress, 3, 2, e) =
+                RS_DROT(o->drot, 1, 0, e) * s2 + RS_DROT(o->drot, 1, 1, e) * s3;
+        }
+        for (int b = 0; b < ns; ++b)
+            RS_A2(d->cstatev, ns, b, e) = h[RS_H_STATEV + b];
+        double *w = d->cwork;
+        const double m = d->mass[i], a = d->area[i], r = d->radius[i];
+        w[W_TEMP * uc + e] = d->temp[i];
+        w[W_DTEMP * uc + e] = d->temp[i] - d->temp_prev[i];
+        w[W_STIFF * uc + e] = rs_law_default_stiffness(m, a, d->dt);
+        w[W_COND * uc + e] = rs_law_default_conductance(d->heatcap[i], a, d->dt);
+        w[W_AREA * uc + e] = a;
+        w[W_MASS * uc + e] = m;
+        w[W_RADIUS * uc + e] = r;
+        /* effective radius with the mean wall curvature, 1/reff = 1/R + kappa */
+        const double kap = 0.5 * (o->curv[2 * e] + o->curv[2 * e + 1]);
+        w[W_REFF * uc + e] = r > 0.0 && 1.0 + r * kap > 0.0 ? r / (1.0 + r * kap) : r;
+        d->cuid[e] = d->id[i];
+        d->csed[e] = 0.0; /* sed and the fluxes are not kept in history */
+        d->cflux_slv[e] = 0.0;
+        d->cflux_mst[e] = 0.0;
+    }
+}
+
+static int call_law(rs_driver *d, int nd, rs_error *err)
+{
+    const rs_track_out *o = &d->trk;
+    const int ns = d->nstatev;
+    const size_t uc = (size_t)d->ccap;
+    const double dtm = d->tmaster - d->tmaster_prev;
+    for (int e0 = 0; e0 < o->n; e0 += RS_BLOCK) {
+        const int nb = o->n - e0 < RS_BLOCK ? o->n - e0 : RS_BLOCK;
+        rs_law_block b;
+        rs_law_block_init(&b);
+        b.kStep = 1;
+        b.kInc = d->inc + 1;
+        b.nSlvNod = nb;
+        b.nDir = nd;
+        b.nSurfDir = nd - 1;
+        b.nStateVar = ns;
+        b.nProps = d->nprops;
+        b.jSlvUid = d->cuid + e0;
+        b.jConMstid = o->feature + e0;
+        b.timStep = b.timGlb = d->t;
+        b.dTimCur = d->dt;
+        memcpy(b.surfInt, d->surfInt, RS_LAW_NAMELEN);
+        memcpy(b.surfSlv, d->surfSlv, RS_LAW_NAMELEN);
+        rs_law_block_set_name(b.surfMst, d->surface->name);
+        b.rdisp = o->rdisp + (size_t)e0 * nd;
+        b.drdisp = o->drdisp + (size_t)e0 * nd;
+        b.drot = o->drot + (size_t)e0 * 4;
+        b.coordSlv = o->coordslv + (size_t)e0 * nd;
+        b.coordMst = o->coordmst + (size_t)e0 * nd;
+        b.alocaldir = o->alocaldir + (size_t)e0 * nd * nd;
+        b.props = d->props;
+        const double *w = d->cwork;
+        b.tempSlv = w + W_TEMP * uc + e0;
+        b.dtempSlv = w + W_DTEMP * uc + e0;
+        b.stiffDflt = w + W_STIFF * uc + e0;
+        b.condDflt = w + W_COND * uc + e0;
+        b.areaSlv = w + W_AREA * uc + e0;
+        b.mass = w + W_MASS * uc + e0;
+        b.radius = w + W_RADIUS * uc + e0;
+        b.reff = w + W_REFF * uc + e0;
+        b.tempMst = &d->tmaster;
+        b.dtempMst = &dtm;
+        b.vrel = o->vrel + (size_t)e0 * nd;
+        b.curv = o->curv + (size_t)e0 * 2;
+        b.stress = d->cstress + (size_t)e0 * nd;
+        b.statev = ns ? d->cstatev + (size_t)e0 * ns : NULL;
+        b.fluxSlv = d->cflux_slv + e0;
+        b.fluxMst = d->cflux_mst + e0;
+        b.sed = d->csed + e0;
+        b.sfd = d->csfd + e0;
+        b.scd = d->cscd + e0;
+        b.spd = d->cspd + e0;
+        b.svd = d->csvd + e0;
+        b.warn = d->warn;
+        b.warn_ctx = d->warn_ctx;
+        int rc = rs_law_call(d->law, &b, err);
+        if (rc)
+            return rc;
+    }
+    return RS_OK;
+}
+
+int rs_driver_step(rs_driver *d, rs_error *err)
+{
+    if (!d->law)
+        return rs_error_set(err, RS_ERR_ARG, "driver: no law set");
+    if (!(d->dt > 0.0))
+        return rs_error_set(err, RS_ERR_ARG, "driver: dt = %g, expected > 0", d->dt);
+    int rc;
+    const int n = d->n, nd = rs_surface_ndir(d->surface);
+    if (d->inc == 0) {
+        rc = alloc_history(d, err);
+        if (rc)
+            return rc;
+    } else {
+        rc = rs_motion_advance(&d->motion, d->dt, err);
+        if (rc)
+            return rc;
+    }
+    if (d->bc) {
+        rc = d->bc(d, d->t, d->bc_ctx, err);
+        if (rc)
+            return rc;
+    }
+
+    /* query and tracker at x_k with v_{k-1/2} */
+    rs_query q;
+    memset(&q, 0, sizeof q);
+    q.n = n;
+    q.x = d->x;
+    q.y = d->y;
+    q.z = d->z;
+    q.radius = d->radius;
+    q.pose = &d->motion.pose;
+    q.gap_max = d->tracking;
+    q.dist_min = -INFINITY;
+    d->contacts.n = 0;
+    rc = rs_surface_query(d->surface, &q, &d->contacts, err);
+    if (rc)
+        return rc;
+    rs_particles p;
+    memset(&p, 0, sizeof p);
+    p.n = n;
+    p.x = d->x;
+    p.y = d->y;
+    p.z = d->z;
+    p.vx = d->vx;
+    p.vy = d->vy;
+    p.vz = d->vz;
+    p.radius = d->radius;
+    p.id = d->id;
+    p.hist = d->hist_ptr;
+    rc = rs_track_update(&d->tracker, d->surface, d->moving ? &d->motion : NULL, d->dt, &p,
+                         &d->contacts, &d->trk, err);
+    if (rc)
+        return rc;
+    rc = grow_contacts(d, d->trk.n, nd, err);
+    if (rc)
+        return rc;
+    gather_contacts(d, nd);
+    rc = call_law(d, nd, err);
+    if (rc)
+        return rc;
+    rs_track_commit(&d->tracker, &d->trk, d->cstress, d->nstatev ? d->cstatev : NULL);
+
+    /* contact forces, heat and energies */
+    memset(d->fcon, 0, 3 * (size_t)n * sizeof(double));
+    double *qslv = d->temp_prev; /* reused below after the old temperatures are saved */
+    double qmst = 0.0, se = 0.0;
+    rs_driver_energy *en = &d->energy;
+    for (int i = 0; i < n; ++i)
+        qslv[i] = 0.0;
+    for (int e = 0; e < d->trk.n; ++e) {
+        const int i = d->trk.point[e];
+        const double a = d->area[i];
+        const double *al = d->trk.alocaldir + (size_t)e * nd * nd;
+        for (int c = 0; c < nd; ++c) {
+            double f = RS_A2(d->cstress, nd, 0, e) * al[c];
+            for (int j = 1; j < nd; ++j)
+                f -= RS_A2(d->cstress, nd, j, e) * al[j * nd + c];
+            d->fcon[3 * i + c] += a * f;
+        }
+        qslv[i] += a * d->cflux_slv[e];
+        qmst += a * d->cflux_mst[e];
+        se += a * d->csed[e];
+        en->allfd += a * d->csfd[e];
+        en->allpd += a * d->cspd[e];
+        en->allvd += a * d->csvd[e];
+        en->allcd += a * d->cscd[e];
+    }
+    en->allse = se;
+    en->heat_mst += qmst * d->dt;
+
+    /* central differences */
+    double ke = 0.0;
+    double *v[3] = {d->vx, d->vy, d->vz}, *x[3] = {d->x, d->y, d->z};
+    for (int i = 0; i < n; ++i) {
+        for (int c = 0; c < 3; ++c) {
+            double vc = v[c][i];
+            if (d->fixed[3 * i + c])
+                vc = d->vpres[3 * i + c];
+            else if (d->mass[i] > 0.0)
+                vc += d->dt * (d->fcon[3 * i + c] + d->fext[3 * i + c]) / d->mass[i];
+            v[c][i] = vc;
+            x[c][i] += d->dt * vc;
+            ke += 0.5 * d->mass[i] * vc * vc;
+        }
+    }
+    en->allke = ke;
+
+    /* heat, forward Euler */
+    for (int i = 0; i < n; ++i) {
+        const double qi = qslv[i] * d->dt;
+        en->heat_slv += qi;
+        qslv[i] = d->temp[i]; /* temp_prev now holds T_k */
+        if (d->heatcap[i] > 0.0)
+            d->temp[i] += qi / d->heatcap[i];
+    }
+    d->tmaster_prev = d->tmaster;
+    if (d->heatcap_master > 0.0)
+        d->tmaster += qmst * d->dt / d->heatcap_master;
+
+    d->inc++;
+    d->t = d->inc * d->dt;
+    return RS_OK;
+}
+
+void rs_driver_free(rs_driver *d)
+{
+    if (!d)
+        return;
+    free(d->x);
+    free(d->y);
+    free(d->z);
+    free(d->vx);
+    free(d->vy);
+    free(d->vz);
+    free(d->radius);
+    free(d->mass);
+    free(d->area);
+    free(d->fext);
+    free(d->vpres);
+    free(d->fixed);
+    free(d->temp);
+    free(d->heatcap);
+    free(d->fcon);
+    free(d->temp_prev);
+    free(d->id);
+    free(d->hist_ptr);
+    free(d->hist);
+    free(d->cstress);
+    free(d->cstatev);
+    free(d->csed);
+    free(d->csfd);
+    free(d->cspd);
+    free(d->csvd);
+    free(d->cscd);
+    free(d->cflux_slv);
+    free(d->cflux_mst);
+    free(d->cwork);
+    free(d->cuid);
+    rs_track_out_free(&d->trk);
+    rs_contacts_free(&d->contacts);
+    memset(d, 0, sizeof *d);
+}
