@@ -78,6 +78,12 @@ static inline void matvec(const double Q[9], const double v[3], double r[3])
     r[2] = Q[6] * v[0] + Q[7] * v[1] + Q[8] * v[2];
 }
 
+#if defined(__GNUC__)
+#define RS_INLINE static inline __attribute__((always_inline))
+#else
+#define RS_INLINE static inline
+#endif
+
 /* Below this value of 1 + a.b the normal has turned by ~180 deg and a.b x stops defining
  * an axis; the minimal rotation is then the half turn about the carried t1. */
 #define RS_ANTIPARALLEL 1e-12
@@ -92,13 +98,18 @@ static int assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_part
     const int cap = tr->capacity, hs = RS_HIST_SIZE(tr->nstatev);
     double *h = p->hist[i];
     const double rad = p->radius ? p->radius[i] : 0.0;
-    int kk[RS_TRACK_MAX_CAPACITY], sl[RS_TRACK_MAX_CAPACITY], nk = 0;
-    uint64_t used = 0;
+    int kk[RS_TRACK_MAX_CAPACITY], sl[RS_TRACK_MAX_CAPACITY], fe[RS_TRACK_MAX_CAPACITY];
+    int nk = 0, unmatched = 0;
+    uint64_t active = 0, used = 0;
 
-    /* Slots emitted as leaving by an earlier call that was not committed. */
+    /* One look at the slots: live features (fe[j] is valid where active has bit j);
+     * slots left LEAVING by an uncommitted call are freed (they were emitted once). */
     for (int j = 0; j < cap; j++) {
         double *hj = h + (size_t)j * hs;
-        if (hj[RS_H_STATE] == RS_HSTATE_LEAVING) {
+        if (hj[RS_H_STATE] == RS_HSTATE_ACTIVE) {
+            active |= (uint64_t)1 << j;
+            fe[j] = (int)hj[RS_H_FEATURE];
+        } else if (hj[RS_H_STATE] == RS_HSTATE_LEAVING) {
             hj[RS_H_STATE] = RS_HSTATE_EMPTY;
             hj[RS_H_FEATURE] = RS_FEATURE_NONE;
         }
@@ -110,56 +121,43 @@ static int assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_part
         if (nk == cap)
             goto full;
         int f = c->feature[k], js = -1;
-        for (int j = 0; j < cap; j++) {
-            const double *hj = h + (size_t)j * hs;
-            if (hj[RS_H_STATE] == RS_HSTATE_ACTIVE && (int)hj[RS_H_FEATURE] == f &&
-                !((used >> j) & 1u)) {
+        for (int j = 0; j < cap; j++)
+            if (fe[j] == f && ((active & ~used) >> j & 1u)) {
                 js = j;
+                used |= (uint64_t)1 << j;
                 break;
             }
-        }
-        if (js >= 0)
-            used |= (uint64_t)1 << js;
+        unmatched += js < 0;
         kk[nk] = k;
         sl[nk++] = js;
     }
 
-    /* Handover: an orphan slot whose feature is adjacent to the new one (smooth junction).
-     */
-    for (int q = 0; q < nk && s; q++) {
-        if (sl[q] >= 0)
-            continue;
-        for (int j = 0; j < cap; j++) {
-            const double *hj = h + (size_t)j * hs;
-            if (hj[RS_H_STATE] == RS_HSTATE_ACTIVE && !((used >> j) & 1u) &&
-                rs_surface_adjacent(s, (int)hj[RS_H_FEATURE], c->feature[kk[q]])) {
-                sl[q] = j;
-                used |= (uint64_t)1 << j;
-                break;
-            }
+    if (unmatched) {
+        /* Handover: an orphan slot whose feature is adjacent to the new one. */
+        for (int q = 0; q < nk && s; q++) {
+            if (sl[q] >= 0)
+                continue;
+            for (int j = 0; j < cap; j++)
+                if (((active & ~used) >> j & 1u) &&
+                    rs_surface_adjacent(s, fe[j], c->feature[kk[q]])) {
+                    sl[q] = j;
+                    used |= (uint64_t)1 << j;
+                    break;
+                }
         }
-    }
-
-    /* Orphans that were not handed over leave: they keep their slot for this call. */
-    uint64_t leaving = 0;
-    for (int j = 0; j < cap; j++)
-        if (h[(size_t)j * hs + RS_H_STATE] == RS_HSTATE_ACTIVE && !((used >> j) & 1u))
-            leaving |= (uint64_t)1 << j;
-    used |= leaving;
-
-    for (int q = 0; q < nk; q++) {
-        if (sl[q] >= 0)
-            continue;
-        int js = -1;
-        for (int j = 0; j < cap; j++)
-            if (!((used >> j) & 1u)) {
-                js = j;
-                break;
-            }
-        if (js < 0)
-            goto full;
-        sl[q] = js;
-        used |= (uint64_t)1 << js;
+        /* New contacts take free slots; orphans keep theirs for the leaving call. */
+        for (int q = 0; q < nk; q++) {
+            if (sl[q] >= 0)
+                continue;
+            int js = -1;
+            for (int j = 0; j < cap && js < 0; j++)
+                if (!((active | used) >> j & 1u))
+                    js = j;
+            if (js < 0)
+                goto full;
+            sl[q] = js;
+            used |= (uint64_t)1 << js;
+        }
     }
 
     for (int q = 0; q < nk; q++) {
@@ -167,8 +165,9 @@ static int assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_part
         out->slot[*ne] = h + (size_t)sl[q] * hs;
         (*ne)++;
     }
-    for (int j = 0; j < cap; j++)
-        if ((leaving >> j) & 1u) {
+    uint64_t leaving = active & ~used;
+    for (int j = 0; leaving && j < cap; j++)
+        if (leaving >> j & 1u) {
             out->point[*ne] = -1 - i;
             out->slot[*ne] = h + (size_t)j * hs;
             (*ne)++;
@@ -216,56 +215,71 @@ static inline void rel_velocity(const rs_particles *p, int i, const master_rates
     vr[2] = p->vz[i] + wr[2] - mr->V[2] - Wr[2];
 }
 
-static void emit_contact(const rs_tracker *tr, const master_rates *mr, double dt,
-                         const rs_particles *p, const rs_contacts *c, int k,
-                         rs_track_out *o, int e)
+/* One live contact, straight-line scalar code (the hot loop). nd is a constant in each
+ * inlined copy. */
+RS_INLINE void emit_contact(const rs_tracker *tr, const master_rates *mr, double dt,
+                            const rs_particles *p, const rs_contacts *c, int k,
+                            rs_track_out *o, int e, const int nd)
 {
-    const int nd = tr->ndir, i = c->point[k];
+    const int i = c->point[k];
     double *h = o->slot[e];
     const double rad = p->radius ? p->radius[i] : 0.0;
-    const double n[3] = {c->nrm[0][k], c->nrm[1][k], c->nrm[2][k]};
-    const double t1[3] = {c->t1[0][k], c->t1[1][k], c->t1[2][k]};
-    const double t2[3] = {c->t2[0][k], c->t2[1][k], c->t2[2][k]};
-    const double xc[3] = {p->x[i], p->y[i], p->z[i]};
+    const double nx = c->nrm[0][k], ny = c->nrm[1][k], nz = c->nrm[2][k];
+    const double ax = c->t1[0][k], ay = c->t1[1][k], az = c->t1[2][k];
+    const double bx = c->t2[0][k], by = c->t2[1][k], bz = c->t2[2][k];
     const double rd1 = rad - c->dist[k], arm = rad - 0.5 * rd1;
-    const double xcp[3] = {xc[0] - arm * n[0], xc[1] - arm * n[1], xc[2] - arm * n[2]};
-    double vr[3];
-    rel_velocity(p, i, mr, xc, xcp, vr);
-    const double vn = dot3(vr, n), v1 = dot3(vr, t1), v2 = nd == 3 ? dot3(vr, t2) : 0.0;
-    double d11 = 1, d12 = 0, d21 = 0, d22 = 1, s1, s2, ds1, ds2, drd1;
+
+    /* x_cp = x - arm n; v_rel = v + w x (x_cp - x) - (V + W x (x_cp - C)). */
+    const double rx = -arm * nx, ry = -arm * ny, rz = -arm * nz;
+    const double px = p->x[i] + rx, py = p->y[i] + ry, pz = p->z[i] + rz;
+    const double mx = px - mr->C[0], my = py - mr->C[1], mz = pz - mr->C[2];
+    double wx = 0.0, wy = 0.0, wz = 0.0;
+    if (p->wx) {
+        wx = p->wx[i];
+        wy = p->wy[i];
+        wz = p->wz[i];
+    }
+    const double *W = mr->W;
+    const double vx = p->vx[i] + (wy * rz - wz * ry) - mr->V[0] - (W[1] * mz - W[2] * my);
+    const double vy = p->vy[i] + (wz * rx - wx * rz) - mr->V[1] - (W[2] * mx - W[0] * mz);
+    const double vz = p->vz[i] + (wx * ry - wy * rx) - mr->V[2] - (W[0] * my - W[1] * mx);
+    const double vn = vx * nx + vy * ny + vz * nz;
+    const double v1 = vx * ax + vy * ay + vz * az;
+    const double v2 = nd == 3 ? vx * bx + vy * by + vz * bz : 0.0;
+    double d11 = 1.0, d12 = 0.0, d21 = 0.0, d22 = 1.0, s1, s2, ds1, ds2, drd1;
 
     if (h[RS_H_STATE] == RS_HSTATE_ACTIVE) {
         if (nd == 3) {
-            /* tau_j = P Q t_j,old, drot(i,j) = t_i,new . tau_j. With a = Q n_old,
-             * cs = a.n, w = a x n: P v = cs v + w x v + w (w.v) / (1 + cs). */
-            double a[3], q1[3], q2[3], tau1[3], tau2[3];
-            matvec(mr->Q, h + RS_H_N, a);
-            matvec(mr->Q, h + RS_H_T1, q1);
-            matvec(mr->Q, h + RS_H_T2, q2);
-            double cs = dot3(a, n);
-            if (1.0 + cs > RS_ANTIPARALLEL) {
-                double w[3], wq1[3], wq2[3];
-                cross3(a, n, w);
-                cross3(w, q1, wq1);
-                cross3(w, q2, wq2);
-                double f1 = dot3(w, q1) / (1.0 + cs), f2 = dot3(w, q2) / (1.0 + cs);
-                for (int b = 0; b < 3; b++) {
-                    tau1[b] = cs * q1[b] + wq1[b] + f1 * w[b];
-                    tau2[b] = cs * q2[b] + wq2[b] + f2 * w[b];
-                }
-            } else {
-                /* Half turn about q1 (orthogonal to a): q1 stays, q2 reverses. */
-                for (int b = 0; b < 3; b++) {
-                    tau1[b] = q1[b];
-                    tau2[b] = -q2[b];
-                }
+            /* a = Q n_old, q = Q t1_old; P v = cs v + w x v + w (w.v) / (1 + cs) with
+             * cs = a.n, w = a x n; tau1 = P q. Rotations keep cross products, so
+             * tau2 = P Q (n_old x t1_old) = n x tau1, and with t2 = n x t1 the matrix
+             * drot(i,j) = t_i . tau_j is [[d11, -d21], [d21, d11]]. */
+            const double *Q = mr->Q, *ho = h + RS_H_N;
+            double a[3], q[3], u[3];
+            for (int r = 0; r < 3; r++) {
+                a[r] = Q[3 * r] * ho[0] + Q[3 * r + 1] * ho[1] + Q[3 * r + 2] * ho[2];
+                q[r] = Q[3 * r] * ho[3] + Q[3 * r + 1] * ho[4] + Q[3 * r + 2] * ho[5];
             }
-            d11 = dot3(t1, tau1);
-            d12 = dot3(t1, tau2);
-            d21 = dot3(t2, tau1);
-            d22 = dot3(t2, tau2);
+            const double cs = a[0] * nx + a[1] * ny + a[2] * nz;
+            if (1.0 + cs > RS_ANTIPARALLEL) {
+                const double w0 = a[1] * nz - a[2] * ny, w1 = a[2] * nx - a[0] * nz,
+                             w2 = a[0] * ny - a[1] * nx;
+                const double f = (w0 * q[0] + w1 * q[1] + w2 * q[2]) / (1.0 + cs);
+                u[0] = cs * q[0] + (w1 * q[2] - w2 * q[1]) + f * w0;
+                u[1] = cs * q[1] + (w2 * q[0] - w0 * q[2]) + f * w1;
+                u[2] = cs * q[2] + (w0 * q[1] - w1 * q[0]) + f * w2;
+            } else {
+                /* Half turn about q (orthogonal to a): tau1 = q. */
+                u[0] = q[0];
+                u[1] = q[1];
+                u[2] = q[2];
+            }
+            d11 = ax * u[0] + ay * u[1] + az * u[2];
+            d21 = bx * u[0] + by * u[1] + bz * u[2];
+            d12 = -d21;
+            d22 = d11;
         }
-        double so1 = h[RS_H_SLIP], so2 = nd == 3 ? h[RS_H_SLIP + 1] : 0.0;
+        const double so1 = h[RS_H_SLIP], so2 = nd == 3 ? h[RS_H_SLIP + 1] : 0.0;
         ds1 = v1 * dt;
         ds2 = v2 * dt;
         s1 = d11 * so1 + d12 * so2 + ds1;
@@ -280,39 +294,53 @@ static void emit_contact(const rs_tracker *tr, const master_rates *mr, double dt
 
     h[RS_H_FEATURE] = c->feature[k];
     h[RS_H_STATE] = RS_HSTATE_ACTIVE;
-    for (int b = 0; b < 3; b++) {
-        h[RS_H_N + b] = n[b];
-        h[RS_H_T1 + b] = t1[b];
-        h[RS_H_T2 + b] = t2[b];
-    }
+    h[RS_H_N] = nx;
+    h[RS_H_N + 1] = ny;
+    h[RS_H_N + 2] = nz;
+    h[RS_H_T1] = ax;
+    h[RS_H_T1 + 1] = ay;
+    h[RS_H_T1 + 2] = az;
+    h[RS_H_T2] = bx;
+    h[RS_H_T2 + 1] = by;
+    h[RS_H_T2 + 2] = bz;
     h[RS_H_SLIP] = s1;
     h[RS_H_SLIP + 1] = s2;
     h[RS_H_RDISP1] = rd1;
 
     o->point[e] = i;
     o->feature[e] = c->feature[k];
+    RS_DROT(o->drot, 0, 0, e) = d11;
+    RS_DROT(o->drot, 1, 0, e) = d21;
+    RS_DROT(o->drot, 0, 1, e) = d12;
+    RS_DROT(o->drot, 1, 1, e) = d22;
+    RS_A2(o->curv, 2, 0, e) = c->curv[0][k];
+    RS_A2(o->curv, 2, 1, e) = c->curv[1][k];
     RS_A2(o->rdisp, nd, 0, e) = rd1;
     RS_A2(o->rdisp, nd, 1, e) = s1;
     RS_A2(o->drdisp, nd, 0, e) = drd1;
     RS_A2(o->drdisp, nd, 1, e) = ds1;
     RS_A2(o->vrel, nd, 0, e) = vn;
     RS_A2(o->vrel, nd, 1, e) = v1;
+    RS_A3(o->alocaldir, nd, 0, 0, e) = nx;
+    RS_A3(o->alocaldir, nd, 1, 0, e) = ny;
+    RS_A3(o->alocaldir, nd, 0, 1, e) = ax;
+    RS_A3(o->alocaldir, nd, 1, 1, e) = ay;
+    RS_A2(o->coordslv, nd, 0, e) = px;
+    RS_A2(o->coordslv, nd, 1, e) = py;
+    RS_A2(o->coordmst, nd, 0, e) = c->xm[0][k];
+    RS_A2(o->coordmst, nd, 1, e) = c->xm[1][k];
     if (nd == 3) {
         RS_A2(o->rdisp, nd, 2, e) = s2;
         RS_A2(o->drdisp, nd, 2, e) = ds2;
         RS_A2(o->vrel, nd, 2, e) = v2;
+        RS_A3(o->alocaldir, nd, 2, 0, e) = nz;
+        RS_A3(o->alocaldir, nd, 2, 1, e) = az;
+        RS_A3(o->alocaldir, nd, 0, 2, e) = bx;
+        RS_A3(o->alocaldir, nd, 1, 2, e) = by;
+        RS_A3(o->alocaldir, nd, 2, 2, e) = bz;
+        RS_A2(o->coordslv, nd, 2, e) = pz;
+        RS_A2(o->coordmst, nd, 2, e) = c->xm[2][k];
     }
-    RS_DROT(o->drot, 0, 0, e) = d11;
-    RS_DROT(o->drot, 0, 1, e) = d12;
-    RS_DROT(o->drot, 1, 0, e) = d21;
-    RS_DROT(o->drot, 1, 1, e) = d22;
-    put_frame(o, nd, e, n, t1, t2);
-    for (int b = 0; b < nd; b++) {
-        RS_A2(o->coordslv, nd, b, e) = xcp[b];
-        RS_A2(o->coordmst, nd, b, e) = c->xm[b][k];
-    }
-    RS_A2(o->curv, 2, 0, e) = c->curv[0][k];
-    RS_A2(o->curv, 2, 1, e) = c->curv[1][k];
 }
 
 /* A slot whose feature is gone: RS_MAXVAL in rdisp, drdisp and drot; the frame is the
@@ -413,12 +441,22 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
         mr.Q[0] = mr.Q[4] = mr.Q[8] = 1.0;
     }
 
-    for (int e = 0; e < ne; e++) {
-        int k = out->point[e];
-        if (k >= 0)
-            emit_contact(tr, &mr, dt, p, c, k, out, e);
-        else
-            emit_leaving(tr, &mr, p, -1 - k, out, e);
+    if (tr->ndir == 3) {
+        for (int e = 0; e < ne; e++) {
+            int k = out->point[e];
+            if (k >= 0)
+                emit_contact(tr, &mr, dt, p, c, k, out, e, 3);
+            else
+                emit_leaving(tr, &mr, p, -1 - k, out, e);
+        }
+    } else {
+        for (int e = 0; e < ne; e++) {
+            int k = out->point[e];
+            if (k >= 0)
+                emit_contact(tr, &mr, dt, p, c, k, out, e, 2);
+            else
+                emit_leaving(tr, &mr, p, -1 - k, out, e);
+        }
     }
     out->n = ne;
     return RS_OK;

@@ -1,0 +1,887 @@
+/* The contact tracker (track.h; ARCHITECTURE.md, "rdisp, drdisp, drot"). Contacts are
+ * built by hand from closed-form planes, cylinders and circles, so every expected value
+ * is independent of the surface query. */
+#include "rigidsurf/track.h"
+#include "rs_test.h"
+
+#include <stdlib.h>
+
+#define NS 2 /* state variables per contact in these tests */
+#define HS RS_HIST_SIZE(NS)
+#define CAP 4
+#define MAXC 16
+
+/* ---- small vector helpers (the test's own) ---- */
+static double dot(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+static void cross(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+static void unit(double v[3])
+{
+    double l = sqrt(dot(v, v));
+    v[0] /= l;
+    v[1] /= l;
+    v[2] /= l;
+}
+static void axpy(double *y, double a, const double x[3], const double b[3])
+{
+    for (int i = 0; i < 3; i++)
+        y[i] = b[i] + a * x[i];
+}
+static void matvec(const double R[9], const double v[3], double r[3])
+{
+    for (int i = 0; i < 3; i++)
+        r[i] = R[3 * i] * v[0] + R[3 * i + 1] * v[1] + R[3 * i + 2] * v[2];
+}
+/* A right-handed orthonormal frame n, t1, t2 = n x t1 from a normal and a hint. */
+static void make_frame(const double nin[3], const double hint[3], double n[3], double t1[3],
+                       double t2[3])
+{
+    for (int i = 0; i < 3; i++)
+        n[i] = nin[i];
+    unit(n);
+    double h = dot(hint, n);
+    for (int i = 0; i < 3; i++)
+        t1[i] = hint[i] - h * n[i];
+    unit(t1);
+    cross(n, t1, t2);
+}
+
+/* ---- fixtures: a block of particles and a hand-built contact list ---- */
+typedef struct block {
+    double x[4], y[4], z[4], vx[4], vy[4], vz[4], wx[4], wy[4], wz[4], r[4];
+    int id[4];
+    double hist[4][CAP * HS];
+    double *hp[4];
+    rs_particles p;
+} block;
+
+static void block_init(block *b, int n, const rs_tracker *tr)
+{
+    memset(b, 0, sizeof *b);
+    for (int i = 0; i < 4; i++) {
+        b->hp[i] = b->hist[i];
+        b->id[i] = 100 + i;
+        rs_track_clear(tr, b->hist[i]);
+    }
+    b->p = (rs_particles){n,     b->x,  b->y,  b->z, b->vx, b->vy, b->vz,
+                          b->wx, b->wy, b->wz, b->r, b->id, b->hp};
+}
+
+static void block_set(block *b, int i, const double x[3], const double v[3],
+                      const double w[3], double r)
+{
+    b->x[i] = x[0];
+    b->y[i] = x[1];
+    b->z[i] = x[2];
+    b->vx[i] = v[0];
+    b->vy[i] = v[1];
+    b->vz[i] = v[2];
+    b->wx[i] = w[0];
+    b->wy[i] = w[1];
+    b->wz[i] = w[2];
+    b->r[i] = r;
+}
+
+typedef struct clist {
+    int point[MAXC], feature[MAXC];
+    double xm[3][MAXC], nrm[3][MAXC], t1[3][MAXC], t2[3][MAXC], dist[MAXC], curv[2][MAXC];
+    rs_contacts c;
+} clist;
+
+static void clist_init(clist *l)
+{
+    memset(l, 0, sizeof *l);
+    l->c.cap = MAXC;
+    l->c.point = l->point;
+    l->c.feature = l->feature;
+    for (int d = 0; d < 3; d++) {
+        l->c.xm[d] = l->xm[d];
+        l->c.nrm[d] = l->nrm[d];
+        l->c.t1[d] = l->t1[d];
+        l->c.t2[d] = l->t2[d];
+    }
+    l->c.dist = l->dist;
+    l->c.curv[0] = l->curv[0];
+    l->c.curv[1] = l->curv[1];
+}
+
+static void clist_add(clist *l, int point, int feature, const double xm[3],
+                      const double n[3], const double t1[3], const double t2[3],
+                      double dist)
+{
+    int k = l->c.n++;
+    l->point[k] = point;
+    l->feature[k] = feature;
+    for (int d = 0; d < 3; d++) {
+        l->xm[d][k] = xm[d];
+        l->nrm[d][k] = n[d];
+        l->t1[d][k] = t1[d];
+        l->t2[d][k] = t2[d];
+    }
+    l->dist[k] = dist;
+    l->curv[0][k] = 0.0;
+    l->curv[1][k] = 0.0;
+}
+
+/* Contact of a sphere centre x with the plane through P with unit normal n. */
+static void add_plane(clist *l, int point, int feature, const double x[3],
+                      const double P[3], const double n[3], const double t1[3],
+                      const double t2[3])
+{
+    double d[3] = {x[0] - P[0], x[1] - P[1], x[2] - P[2]}, xm[3];
+    double dist = dot(d, n);
+    axpy(xm, -dist, n, x);
+    clist_add(l, point, feature, xm, n, t1, t2, dist);
+}
+
+/* Contact of a point x inside a drum: cylinder through A along unit g, radius Rc. The
+ * normal points inward (-e_r); CYLINDER frame t1 = g, t2 = n x t1. */
+static void add_drum(clist *l, int point, int feature, const double x[3], const double A[3],
+                     const double g[3], double Rc)
+{
+    double d[3] = {x[0] - A[0], x[1] - A[1], x[2] - A[2]}, rad[3], n[3], t2[3], xm[3];
+    double h = dot(d, g);
+    axpy(rad, -h, g, d);
+    double r = sqrt(dot(rad, rad));
+    for (int i = 0; i < 3; i++) {
+        n[i] = -rad[i] / r;
+        xm[i] = A[i] + h * g[i] + Rc * rad[i] / r;
+    }
+    cross(n, g, t2);
+    clist_add(l, point, feature, xm, n, g, t2, Rc - r);
+}
+
+static rs_tracker tracker(int ndir)
+{
+    rs_tracker tr = {CAP, NS, ndir, 1e-3};
+    return tr;
+}
+
+static int drot_is(const rs_track_out *o, int e, double a, double b, double c, double d,
+                   double tol)
+{
+    return fabs(RS_DROT(o->drot, 0, 0, e) - a) <= tol &&
+           fabs(RS_DROT(o->drot, 0, 1, e) - b) <= tol &&
+           fabs(RS_DROT(o->drot, 1, 0, e) - c) <= tol &&
+           fabs(RS_DROT(o->drot, 1, 1, e) - d) <= tol;
+}
+
+/* Plane master translating with V; the sphere rides along with it (x = x0 + V t): the
+ * frame does not turn, so drot = I, no slip accumulates and the penetration stays. */
+static void test_drot_identity_under_rigid_translation(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_motion m;
+    rs_error err;
+    double V[3] = {0.7, -1.3, 0.4}, P0[3] = {0.1, 0.2, 0.3}, nin[3] = {1, 2, 2};
+    double hint[3] = {1, 0, 0}, n[3], t1[3], t2[3], zero[3] = {0, 0, 0};
+    const double R = 0.01, pen = 2e-4, dt = 1e-3;
+    make_frame(nin, hint, n, t1, t2);
+    double x0[3];
+    axpy(x0, R - pen, n, P0);
+    rs_motion_init(&m);
+    rs_motion_set_translation(&m, V);
+    block_init(&b, 1, &tr);
+    for (int step = 1; step <= 3000; step++) {
+        ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+        double t = step * dt, x[3], P[3];
+        axpy(x, t, V, x0);
+        axpy(P, t, V, P0);
+        block_set(&b, 0, x, V, zero, R);
+        clist_init(&l);
+        add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1, t2);
+        ENSURE(rs_track_update(&tr, NULL, &m, dt, &b.p, &l.c, &o, &err) == RS_OK);
+        ENSURE(o.n == 1);
+        ENSURE(drot_is(&o, 0, 1, 0, 0, 1, 1e-12));
+        ENSURE_SMALL(RS_A2(o.rdisp, 3, 1, 0), 1e-12);
+        ENSURE_SMALL(RS_A2(o.rdisp, 3, 2, 0), 1e-12);
+        ENSURE_NEAR(RS_A2(o.rdisp, 3, 0, 0), pen, 1e-12);
+        rs_track_commit(&tr, &o, NULL, NULL);
+    }
+    rs_track_out_free(&o);
+}
+
+/* Drum (cylinder) master rotating about an arbitrary axis through an arbitrary point
+ * while translating; the sphere moves with the master's material motion and spins with
+ * it. The analytic frame turns with the master, so drot = I to 1e-12 over many steps
+ * and no slip accumulates (objectivity). */
+static void test_drot_identity_under_rigid_rotation(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_motion m;
+    rs_error err;
+    double axis[3] = {0.3, -1.0, 0.6}, C[3] = {0.2, 0.1, -0.3}, V[3] = {0.05, 0.0, -0.02};
+    double A0[3] = {0.0, 0.5, 0.1}, g0[3] = {0.2, 0.1, 1.0};
+    const double omega = 3.0, dt = 1e-3, Rc = 0.5, R = 0.02, pen = 3e-4;
+    unit(g0);
+    rs_motion_init(&m);
+    rs_motion_set_translation(&m, V);
+    ENSURE(rs_motion_set_rotation(&m, C, axis, omega, &err) == RS_OK);
+    double ax[3] = {axis[0], axis[1], axis[2]};
+    unit(ax);
+    /* Reference particle centre: on the drum's inner side at depth pen. */
+    double hint[3] = {1, 0, 0}, e0[3], e1[3], er[3], X0[3];
+    make_frame(g0, hint, e0, er, e1); /* er: a unit vector normal to g0 */
+    for (int i = 0; i < 3; i++)
+        X0[i] = A0[i] + 0.3 * g0[i] + (Rc - R + pen) * er[i];
+    block_init(&b, 1, &tr);
+    for (int step = 1; step <= 2000; step++) {
+        ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+        double x[3], A[3], g[3], c[3], v[3], w[3], r[3], wr[3];
+        rs_pose_to_global(&m.pose, X0, x);
+        rs_pose_to_global(&m.pose, A0, A);
+        matvec(m.pose.R, g0, g);
+        /* Material velocity of the master at x: V + omega axis x (x - (C + V t)). */
+        double t = step * dt;
+        for (int i = 0; i < 3; i++) {
+            c[i] = C[i] + V[i] * t;
+            r[i] = x[i] - c[i];
+            w[i] = omega * ax[i];
+        }
+        cross(w, r, wr);
+        for (int i = 0; i < 3; i++)
+            v[i] = V[i] + wr[i];
+        block_set(&b, 0, x, v, w, R);
+        clist_init(&l);
+        add_drum(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc);
+        ENSURE(rs_track_update(&tr, NULL, &m, dt, &b.p, &l.c, &o, &err) == RS_OK);
+        ENSURE(o.n == 1);
+        ENSURE(drot_is(&o, 0, 1, 0, 0, 1, 1e-12));
+        ENSURE_SMALL(RS_A2(o.rdisp, 3, 1, 0), 1e-12);
+        ENSURE_SMALL(RS_A2(o.rdisp, 3, 2, 0), 1e-12);
+        ENSURE_NEAR(RS_A2(o.rdisp, 3, 0, 0), pen, 1e-12);
+        rs_track_commit(&tr, &o, NULL, NULL);
+    }
+    rs_track_out_free(&o);
+}
+
+/* A faceted master spun by theta about the contact normal keeps its tangent basis tied
+ * to global x, so the basis does not move while the material under it turns by +theta:
+ * Q t1 = c t1 + s t2, Q t2 = -s t1 + c t2, P = I, and drot(i,j) = t_i . Q t_j gives
+ *     drot = [[c, -s], [s, c]]    (rotation by +theta).
+ * The same spin seen with a fixed master and a basis turned by +theta
+ * (t1' = c t1 + s t2, t2' = -s t1 + c t2, tau_j = t_j) gives drot(i,j) = t_i' . t_j =
+ *     [[c, s], [-s, c]]           (rotation by -theta):
+ * only the master's rotation relative to the basis counts. */
+static void test_drot_is_rotation_by_theta(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_motion m;
+    rs_error err;
+    double nin[3] = {0.3, -0.4, 1.0}, hint[3] = {1, 0, 0}, n[3], t1[3], t2[3];
+    double zero[3] = {0, 0, 0}, P[3] = {0.5, 0.5, 0.5}, x[3];
+    const double R = 0.01, theta = 0.3, dt = 1e-3, c = cos(theta), s = sin(theta);
+    make_frame(nin, hint, n, t1, t2);
+    axpy(x, R - 1e-4, n, P);
+
+    /* (a) Faceted master spun about n through the contact point. */
+    rs_motion_init(&m);
+    double xcp[3];
+    axpy(xcp, -R, n, x);
+    ENSURE(rs_motion_set_rotation(&m, xcp, n, theta / dt, &err) == RS_OK);
+    block_init(&b, 1, &tr);
+    block_set(&b, 0, x, zero, zero, R);
+    clist_init(&l);
+    add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 3), x, P, n, t1, t2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+    rs_track_commit(&tr, &o, NULL, NULL);
+    ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+    ENSURE(rs_track_update(&tr, NULL, &m, dt, &b.p, &l.c, &o, &err) == RS_OK);
+    ENSURE(o.n == 1);
+    ENSURE(drot_is(&o, 0, c, -s, s, c, 1e-14));
+
+    /* (b) Fixed master, basis turned by +theta about n. */
+    block_init(&b, 1, &tr);
+    block_set(&b, 0, x, zero, zero, R);
+    clist_init(&l);
+    add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 3), x, P, n, t1, t2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+    rs_track_commit(&tr, &o, NULL, NULL);
+    double u1[3], u2[3];
+    for (int i = 0; i < 3; i++) {
+        u1[i] = c * t1[i] + s * t2[i];
+        u2[i] = -s * t1[i] + c * t2[i];
+    }
+    clist_init(&l);
+    add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 3), x, P, n, u1, u2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+    ENSURE(o.n == 1);
+    ENSURE(drot_is(&o, 0, c, s, -s, c, 1e-14));
+    rs_track_out_free(&o);
+}
+
+/* Sliding along a fixed drum's generator: n and t1 = generator do not change, so
+ * drot = I and the slip is the distance slid along t1. */
+static void test_drot_identity_sliding_along_generator(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_error err;
+    double A[3] = {1, -1, 0.5}, g[3] = {1, 1, 1}, hint[3] = {1, 0, 0}, er[3], e0[3], e1[3];
+    const double Rc = 0.4, R = 0.05, u = 0.8, dt = 1e-3;
+    unit(g);
+    make_frame(g, hint, e0, er, e1);
+    double x0[3], v[3] = {u * g[0], u * g[1], u * g[2]}, zero[3] = {0, 0, 0};
+    for (int i = 0; i < 3; i++)
+        x0[i] = A[i] + (Rc - R + 1e-4) * er[i];
+    block_init(&b, 1, &tr);
+    const int N = 500;
+    for (int step = 0; step < N; step++) {
+        double x[3];
+        axpy(x, u * step * dt, g, x0);
+        block_set(&b, 0, x, v, zero, R);
+        clist_init(&l);
+        add_drum(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc);
+        ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+        ENSURE(o.n == 1);
+        ENSURE(drot_is(&o, 0, 1, 0, 0, 1, 1e-14));
+        rs_track_commit(&tr, &o, NULL, NULL);
+    }
+    /* New contact on the first call (slip 0), then N - 1 increments of u dt along t1. */
+    ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), (N - 1) * u * dt, 1e-12);
+    ENSURE_SMALL(RS_A2(o.rdisp, 3, 2, 0), 1e-14);
+    rs_track_out_free(&o);
+}
+
+/* Sliding around a fixed drum along the hoop: n turns about the generator by da per call
+ * and t2 = n x t1 turns with it. The minimal rotation P (about the generator) carries
+ * the old basis onto the new one, so drot = I; the slip grows along t2 only. */
+static void test_drot_identity_sliding_around_drum_hoop(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_error err;
+    double A[3] = {0.2, 0.1, -0.4}, g[3] = {0.5, -1, 0.3}, hint[3] = {1, 0, 0};
+    double e0[3], ea[3], eb[3], zero[3] = {0, 0, 0};
+    const double Rc = 0.3, R = 0.02, pen = 2e-4, u = 1.2, dt = 1e-3;
+    const double rho = Rc - R + pen, om = u / rho;
+    unit(g);
+    make_frame(g, hint, e0, ea, eb); /* ea, eb, g right-handed */
+    block_init(&b, 1, &tr);
+    const int N = 300;
+    for (int step = 0; step < N; step++) {
+        double a = om * step * dt, x[3], v[3];
+        for (int i = 0; i < 3; i++) {
+            double er = cos(a) * ea[i] + sin(a) * eb[i],
+                   et = -sin(a) * ea[i] + cos(a) * eb[i];
+            x[i] = A[i] + 0.1 * g[i] + rho * er;
+            v[i] = u * et;
+        }
+        block_set(&b, 0, x, v, zero, R);
+        clist_init(&l);
+        add_drum(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc);
+        ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+        ENSURE(o.n == 1);
+        ENSURE(drot_is(&o, 0, 1, 0, 0, 1, 1e-14));
+        rs_track_commit(&tr, &o, NULL, NULL);
+    }
+    /* t2 = n x g = -e_r x g = e_theta, since (e_r, e_theta, g) is right-handed. */
+    ENSURE_SMALL(RS_A2(o.rdisp, 3, 1, 0), 1e-14);
+    ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), (N - 1) * u * dt, 1e-12);
+    rs_track_out_free(&o);
+}
+
+/* A normal that flips (n_new = -Q n_old) has no unique minimal rotation; the tracker takes
+ * the half turn about the carried t1: tau1 = t1, tau2 = -t2. With the new basis
+ * (t1, -t2) that is drot = I, finite and deterministic. */
+static void test_drot_antiparallel_normal_is_half_turn_about_t1(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_error err;
+    double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
+    double nf[3] = {0, 0, -1}, t2f[3] = {0, -1, 0}, x[3] = {0, 0, 0.0099}, zero[3] = {0};
+    block_init(&b, 1, &tr);
+    block_set(&b, 0, x, zero, zero, 0.01);
+    clist_init(&l);
+    add_plane(&l, 0, 0, x, P, n, t1, t2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
+    rs_track_commit(&tr, &o, NULL, NULL);
+    double xf[3] = {0, 0, -0.0099};
+    block_set(&b, 0, xf, zero, zero, 0.01);
+    clist_init(&l);
+    add_plane(&l, 0, 0, xf, P, nf, t1, t2f);
+    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
+    ENSURE(o.n == 1);
+    ENSURE(drot_is(&o, 0, 1, 0, 0, 1, 0.0));
+    rs_track_out_free(&o);
+}
+
+/* Slip = sum of [(v + w x (x_cp - x)) - v_master]_t dt. Plane with basis (t1, t2, n);
+ * particle u = 0.3 t1 - 0.1 t2 + 0.05 n, spin w = t1 + 2 t2 + 3 n, master V = 0.1 t1 +
+ * 0.2 t2 + 0.05 n (same normal speed: constant penetration d = 1e-3). With
+ * x_cp - x = -a n, a = R - d/2 = 0.0095: w x (-a n) = -a (t1 x n + 2 t2 x n) = a t2 - 2a
+ * t1. So v_rel,t = (0.3 - 0.1 - 0.019, -0.1 - 0.2 + 0.0095) = (0.181, -0.2905), and after N
+ * calls (the first opens the contact with slip 0) slip = (N - 1) dt (0.181, -0.2905). */
+static void test_slip_equals_integrated_tangential_velocity(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_motion m;
+    rs_error err;
+    double nin[3] = {-1, 0.5, 2}, hint[3] = {0, 1, 0}, n[3], t1[3], t2[3];
+    const double R = 0.01, d = 1e-3, dt = 2e-4;
+    make_frame(nin, hint, n, t1, t2);
+    double u[3], w[3], V[3], P0[3] = {0.2, -0.1, 0.4}, x0[3];
+    for (int i = 0; i < 3; i++) {
+        u[i] = 0.3 * t1[i] - 0.1 * t2[i] + 0.05 * n[i];
+        w[i] = 1.0 * t1[i] + 2.0 * t2[i] + 3.0 * n[i];
+        V[i] = 0.1 * t1[i] + 0.2 * t2[i] + 0.05 * n[i];
+    }
+    axpy(x0, R - d, n, P0);
+    rs_motion_init(&m);
+    rs_motion_set_translation(&m, V);
+    block_init(&b, 1, &tr);
+    const int N = 1000;
+    for (int step = 1; step <= N; step++) {
+        ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+        double x[3], P[3];
+        axpy(x, step * dt, u, x0);
+        axpy(P, step * dt, V, P0);
+        block_set(&b, 0, x, u, w, R);
+        clist_init(&l);
+        add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1, t2);
+        ENSURE(rs_track_update(&tr, NULL, &m, dt, &b.p, &l.c, &o, &err) == RS_OK);
+        ENSURE(o.n == 1);
+        if (step > 1) {
+            ENSURE_NEAR(RS_A2(o.drdisp, 3, 1, 0), 0.181 * dt, 1e-13);
+            ENSURE_NEAR(RS_A2(o.drdisp, 3, 2, 0), -0.2905 * dt, 1e-13);
+        }
+        ENSURE_NEAR(RS_A2(o.vrel, 3, 0, 0), 0.0, 1e-12);
+        ENSURE_NEAR(RS_A2(o.vrel, 3, 1, 0), 0.181, 1e-12);
+        ENSURE_NEAR(RS_A2(o.vrel, 3, 2, 0), -0.2905, 1e-12);
+        rs_track_commit(&tr, &o, NULL, NULL);
+    }
+    ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), (N - 1) * dt * 0.181, 1e-11);
+    ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), (N - 1) * dt * -0.2905, 1e-11);
+    ENSURE_NEAR(RS_A2(o.rdisp, 3, 0, 0), d, 1e-12);
+    rs_track_out_free(&o);
+}
+
+/* The slip vector S (a global vector, fixed master) is re-expressed in the new basis
+ * before the increment is added: s_new = (S . t1', S . t2') + dt (v . t1', v . t2'). */
+static void test_slip_rotated_by_drot_before_increment(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_error err;
+    double nin[3] = {0, 0, 1}, hint[3] = {1, 0.2, 0}, n[3], t1[3], t2[3],
+           zero[3] = {0, 0, 0};
+    double P[3] = {0, 0, 0}, x[3];
+    const double R = 0.01, dt = 1e-3, theta = 0.9, c = cos(theta), s = sin(theta);
+    make_frame(nin, hint, n, t1, t2);
+    axpy(x, R - 1e-4, n, P);
+    double v1[3], v2[3];
+    for (int i = 0; i < 3; i++) {
+        v1[i] = 0.5 * t1[i] - 0.25 * t2[i];
+        v2[i] = -0.3 * t1[i] + 0.7 * t2[i];
+    }
+    block_init(&b, 1, &tr);
+    block_set(&b, 0, x, v1, zero, R);
+    clist_init(&l);
+    add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1, t2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+    rs_track_commit(&tr, &o, NULL, NULL);
+    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+    rs_track_commit(&tr, &o, NULL, NULL);
+    double S[3] = {v1[0] * dt, v1[1] * dt, v1[2] * dt}; /* slip vector after two calls */
+    ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), dot(S, t1), 1e-15);
+    ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), dot(S, t2), 1e-15);
+
+    double u1[3], u2[3];
+    for (int i = 0; i < 3; i++) {
+        u1[i] = c * t1[i] + s * t2[i];
+        u2[i] = -s * t1[i] + c * t2[i];
+    }
+    block_set(&b, 0, x, v2, zero, R);
+    clist_init(&l);
+    add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, u1, u2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+    ENSURE(o.n == 1);
+    ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), dot(S, u1) + dt * dot(v2, u1), 1e-15);
+    ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), dot(S, u2) + dt * dot(v2, u2), 1e-15);
+    ENSURE_NEAR(RS_A2(o.drdisp, 3, 1, 0), dt * dot(v2, u1), 1e-15);
+    ENSURE_NEAR(RS_A2(o.drdisp, 3, 2, 0), dt * dot(v2, u2), 1e-15);
+    rs_track_out_free(&o);
+}
+
+/* A contact that disappears is emitted exactly once with 1e30 in every entry of rdisp,
+ * drdisp and drot, then never again: after commit, and also when commit is skipped. */
+static void test_maxval_once_after_leaving(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_error err;
+    double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
+    double x[3] = {0, 0, 0.0095}, zero[3] = {0, 0, 0};
+    const int f = RS_FEATURE(RS_FEAT_FACE, 2);
+    for (int with_commit = 0; with_commit < 2; with_commit++) {
+        block_init(&b, 1, &tr);
+        block_set(&b, 0, x, zero, zero, 0.01);
+        clist_init(&l);
+        add_plane(&l, 0, f, x, P, n, t1, t2);
+        ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
+        rs_track_commit(&tr, &o, NULL, NULL);
+        l.c.n = 0;
+        ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
+        ENSURE(o.n == 1);
+        ENSURE(o.point[0] == 0 && o.feature[0] == f);
+        for (int i = 0; i < 3; i++) {
+            ENSURE(RS_A2(o.rdisp, 3, i, 0) == 1.0e30);
+            ENSURE(RS_A2(o.drdisp, 3, i, 0) == 1.0e30);
+        }
+        for (int i = 0; i < 2; i++)
+            for (int j = 0; j < 2; j++)
+                ENSURE(RS_DROT(o.drot, i, j, 0) == 1.0e30);
+        ENSURE(o.slot[0][RS_H_STATE] == RS_HSTATE_LEAVING);
+        if (with_commit) {
+            rs_track_commit(&tr, &o, NULL, NULL);
+            ENSURE(o.slot[0][RS_H_STATE] == RS_HSTATE_EMPTY);
+            ENSURE(o.slot[0][RS_H_FEATURE] == RS_FEATURE_NONE);
+        }
+        ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
+        ENSURE(o.n == 0);
+        for (int j = 0; j < CAP; j++)
+            ENSURE(b.hist[0][j * HS + RS_H_STATE] == RS_HSTATE_EMPTY);
+    }
+    rs_track_out_free(&o);
+}
+
+/* A contact whose gap exceeds the tracking thickness counts as gone. */
+static void test_contact_beyond_tracking_leaves(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_error err;
+    double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
+    double x[3] = {0, 0, 0.0095}, zero[3] = {0, 0, 0};
+    block_init(&b, 1, &tr);
+    block_set(&b, 0, x, zero, zero, 0.01);
+    clist_init(&l);
+    add_plane(&l, 0, 0, x, P, n, t1, t2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
+    rs_track_commit(&tr, &o, NULL, NULL);
+    x[2] = 0.01 + 0.9e-3; /* gap 0.9e-3 <= tracking 1e-3: kept */
+    clist_init(&l);
+    add_plane(&l, 0, 0, x, P, n, t1, t2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
+    ENSURE(o.n == 1 && RS_A2(o.rdisp, 3, 0, 0) < 0 && RS_A2(o.rdisp, 3, 0, 0) > -1e-3);
+    rs_track_commit(&tr, &o, NULL, NULL);
+    x[2] = 0.01 + 1.1e-3; /* gap 1.1e-3 > tracking */
+    clist_init(&l);
+    add_plane(&l, 0, 0, x, P, n, t1, t2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
+    ENSURE(o.n == 1 && RS_A2(o.rdisp, 3, 0, 0) == RS_MAXVAL);
+    rs_track_out_free(&o);
+}
+
+/* Fixture surface class: features FACE 0 and FACE 1 meet tangentially; FACE 2 does not. */
+static int fixture_adjacent(const rs_surface *s, int fa, int fb)
+{
+    (void)s;
+    int a = RS_FEATURE(RS_FEAT_FACE, 0), b = RS_FEATURE(RS_FEAT_FACE, 1);
+    return (fa == a && fb == b) || (fa == b && fb == a);
+}
+
+static const rs_surface_class fixture_class = {"fixture", NULL, fixture_adjacent, NULL};
+
+/* History (slot, slip, stress, statev) carries across a smooth junction; across a sharp
+ * one the old contact leaves (1e30) and the new one starts from zero. */
+static void test_history_handover_across_smooth_junction(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_error err;
+    rs_surface surf;
+    memset(&surf, 0, sizeof surf);
+    surf.kind = RS_SURF_FACETED;
+    surf.klass = &fixture_class;
+    double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
+    double x[3] = {0, 0, 0.0099}, v[3] = {0.2, 0.1, 0}, zero[3] = {0, 0, 0};
+    const double dt = 1e-3;
+    const int fa = RS_FEATURE(RS_FEAT_FACE, 0), fb = RS_FEATURE(RS_FEAT_FACE, 1),
+              fc = RS_FEATURE(RS_FEAT_FACE, 2);
+    const double stress[3] = {5, 6, 7}, statev[NS] = {8, 9};
+
+    for (int sharp = 0; sharp < 2; sharp++) {
+        block_init(&b, 1, &tr);
+        block_set(&b, 0, x, v, zero, 0.01);
+        for (int call = 0; call < 3; call++) {
+            clist_init(&l);
+            add_plane(&l, 0, fa, x, P, n, t1, t2);
+            ENSURE(rs_track_update(&tr, &surf, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+            ENSURE(o.n == 1);
+            rs_track_commit(&tr, &o, stress, statev);
+        }
+        double *slot = o.slot[0];
+        clist_init(&l);
+        add_plane(&l, 0, sharp ? fc : fb, x, P, n, t1, t2);
+        ENSURE(rs_track_update(&tr, &surf, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+        if (!sharp) {
+            ENSURE(o.n == 1);
+            ENSURE(o.slot[0] == slot && o.feature[0] == fb);
+            ENSURE(slot[RS_H_FEATURE] == fb);
+            ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), 3 * 0.2 * dt, 1e-15);
+            ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), 3 * 0.1 * dt, 1e-15);
+            ENSURE(slot[RS_H_STRESS] == 5 && slot[RS_H_STRESS + 2] == 7);
+            ENSURE(slot[RS_H_STATEV] == 8 && slot[RS_H_STATEV + 1] == 9);
+        } else {
+            ENSURE(o.n == 2);
+            ENSURE(o.feature[0] == fc && o.slot[0] != slot);
+            ENSURE(RS_A2(o.rdisp, 3, 1, 0) == 0.0 && RS_A2(o.rdisp, 3, 2, 0) == 0.0);
+            ENSURE(o.slot[0][RS_H_STRESS] == 0 && o.slot[0][RS_H_STATEV + 1] == 0);
+            ENSURE(o.feature[1] == fa && o.slot[1] == slot);
+            ENSURE(RS_A2(o.rdisp, 3, 0, 1) == RS_MAXVAL);
+        }
+    }
+    rs_track_out_free(&o);
+}
+
+/* More contacts than slots: RS_ERR_CAPACITY naming the particle's id and the capacity,
+ * and history untouched. A leaving contact still holds its slot on that call. */
+static void test_capacity_error_names_particle(void)
+{
+    rs_tracker tr = tracker(3);
+    tr.capacity = 2;
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_error err;
+    double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
+    double x[3] = {0, 0, 0.0099}, zero[3] = {0, 0, 0};
+    block_init(&b, 2, &tr);
+    b.id[1] = 4711;
+    block_set(&b, 0, x, zero, zero, 0.01);
+    block_set(&b, 1, x, zero, zero, 0.01);
+    clist_init(&l);
+    add_plane(&l, 0, 0, x, P, n, t1, t2);
+    add_plane(&l, 1, 0, x, P, n, t1, t2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
+    rs_track_commit(&tr, &o, NULL, NULL);
+
+    double before[2][CAP * HS];
+    memcpy(before, b.hist, sizeof before);
+    /* Particle 4711: feature 0 leaves, features 4 and 8 arrive: 3 slots needed, 2 held. */
+    clist_init(&l);
+    add_plane(&l, 0, 0, x, P, n, t1, t2);
+    add_plane(&l, 1, 4, x, P, n, t1, t2);
+    add_plane(&l, 1, 8, x, P, n, t1, t2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_ERR_CAPACITY);
+    ENSURE(err.code == RS_ERR_CAPACITY);
+    ENSURE(strstr(err.msg, "4711") != NULL);
+    ENSURE(strstr(err.msg, "capacity 2") != NULL);
+    ENSURE(memcmp(before, b.hist, sizeof before) == 0);
+
+    /* Three new contacts at once for a fresh particle. */
+    block_init(&b, 1, &tr);
+    b.id[0] = 99;
+    block_set(&b, 0, x, zero, zero, 0.01);
+    clist_init(&l);
+    for (int f = 0; f < 3; f++)
+        add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, f), x, P, n, t1, t2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_ERR_CAPACITY);
+    ENSURE(strstr(err.msg, "99") != NULL);
+    rs_track_out_free(&o);
+}
+
+/* nDir = 2 (SEGMENTS): a disc rolling-free sliding inside a fixed circular wall in the
+ * x-y plane. The normal turns with the position but drot = I; t1 = (0,0,-1) x n = e_theta,
+ * so a counter-clockwise speed u slides +u dt per call; alocaldir is 2x2 (n, t1). */
+static void test_ndir2_drot_identity(void)
+{
+    rs_tracker tr = tracker(2);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_error err;
+    const double Rw = 1.0, R = 0.05, pen = 1e-4, u = 0.6, dt = 1e-3;
+    const double rho = Rw - R + pen, om = u / rho, mz[3] = {0, 0, -1}, zero[3] = {0, 0, 0};
+    block_init(&b, 1, &tr);
+    const int N = 800;
+    for (int step = 0; step < N; step++) {
+        double a = om * step * dt, er[3] = {cos(a), sin(a), 0};
+        double x[3] = {rho * er[0], rho * er[1], 0}, v[3] = {-u * er[1], u * er[0], 0};
+        double n[3] = {-er[0], -er[1], 0}, t1[3], xm[3] = {Rw * er[0], Rw * er[1], 0};
+        cross(mz, n, t1);
+        block_set(&b, 0, x, v, zero, R);
+        clist_init(&l);
+        clist_add(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), xm, n, t1, mz, Rw - rho);
+        ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+        ENSURE(o.n == 1 && o.ndir == 2);
+        ENSURE(drot_is(&o, 0, 1, 0, 0, 1, 0.0));
+        ENSURE_NEAR(RS_A3(o.alocaldir, 2, 0, 0, 0), n[0], 1e-15);
+        ENSURE_NEAR(RS_A3(o.alocaldir, 2, 1, 0, 0), n[1], 1e-15);
+        ENSURE_NEAR(RS_A3(o.alocaldir, 2, 0, 1, 0), -er[1], 1e-15);
+        ENSURE_NEAR(RS_A3(o.alocaldir, 2, 1, 1, 0), er[0], 1e-15);
+        ENSURE_NEAR(RS_A2(o.rdisp, 2, 0, 0), pen, 1e-12);
+        ENSURE_NEAR(RS_A2(o.rdisp, 2, 1, 0), step * u * dt, 1e-12);
+        ENSURE_NEAR(RS_A2(o.coordmst, 2, 0, 0), xm[0], 1e-15);
+        ENSURE_NEAR(RS_A2(o.coordmst, 2, 1, 0), xm[1], 1e-15);
+        rs_track_commit(&tr, &o, NULL, NULL);
+    }
+    rs_track_out_free(&o);
+}
+
+/* drdisp(1) is the change of rdisp(1) since the last call; on the first call it is
+ * -v_rel.n dt. Particle at -0.2 n, plane moving +0.3 n: penetration grows 0.5 per time. */
+static void test_drdisp1_is_change_of_penetration(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_motion m;
+    rs_error err;
+    double nin[3] = {1, 1, 1}, hint[3] = {0, 0, 1}, n[3], t1[3], t2[3], zero[3] = {0, 0, 0};
+    const double R = 0.02, d0 = 1e-4, dt = 1e-4;
+    make_frame(nin, hint, n, t1, t2);
+    double P0[3] = {0.1, 0.1, 0.1}, x0[3], u[3], V[3];
+    axpy(x0, R - d0, n, P0);
+    for (int i = 0; i < 3; i++) {
+        u[i] = -0.2 * n[i] + 0.05 * t2[i];
+        V[i] = 0.3 * n[i];
+    }
+    rs_motion_init(&m);
+    rs_motion_set_translation(&m, V);
+    block_init(&b, 1, &tr);
+    for (int step = 1; step <= 50; step++) {
+        ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+        double x[3], P[3];
+        axpy(x, step * dt, u, x0);
+        axpy(P, step * dt, V, P0);
+        block_set(&b, 0, x, u, zero, R);
+        clist_init(&l);
+        add_plane(&l, 0, 0, x, P, n, t1, t2);
+        ENSURE(rs_track_update(&tr, NULL, &m, dt, &b.p, &l.c, &o, &err) == RS_OK);
+        ENSURE(o.n == 1);
+        ENSURE_NEAR(RS_A2(o.rdisp, 3, 0, 0), d0 + 0.5 * step * dt, 1e-14);
+        ENSURE_NEAR(RS_A2(o.drdisp, 3, 0, 0), 0.5 * dt, 1e-14);
+        ENSURE_NEAR(RS_A2(o.vrel, 3, 0, 0), -0.5, 1e-14);
+        rs_track_commit(&tr, &o, NULL, NULL);
+    }
+    rs_track_out_free(&o);
+}
+
+/* alocaldir columns are n, t1, t2 (component i of direction j at RS_A3(a, 3, i, j, k));
+ * coordslv is x_cp = x - (R - rdisp1/2) n and coordmst the master point; curvatures are
+ * copied. Two particles, the first with two contacts (a concave corner). */
+static void test_alocaldir_columns_and_contact_point(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_error err;
+    double na[3] = {0, 0, 1}, nb[3] = {1, 0, 0}, hint[3] = {0, 1, 0}, zero[3] = {0, 0, 0};
+    double fr[2][3][3], P[3] = {0, 0, 0};
+    make_frame(na, hint, fr[0][0], fr[0][1], fr[0][2]);
+    make_frame(nb, hint, fr[1][0], fr[1][1], fr[1][2]);
+    const double R = 0.01, x0[3] = {0.0098, 0.3, 0.0097}, x1[3] = {0.5, 0.5, 0.0095};
+    block_init(&b, 2, &tr);
+    block_set(&b, 0, x0, zero, zero, R);
+    block_set(&b, 1, x1, zero, zero, R);
+    clist_init(&l);
+    add_plane(&l, 0, 0, x0, P, fr[0][0], fr[0][1], fr[0][2]);
+    add_plane(&l, 0, 4, x0, P, fr[1][0], fr[1][1], fr[1][2]);
+    add_plane(&l, 1, 0, x1, P, fr[0][0], fr[0][1], fr[0][2]);
+    l.curv[0][1] = -2.0;
+    l.curv[1][1] = 0.5;
+    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
+    ENSURE(o.n == 3);
+    const int fk[3] = {0, 1, 0};
+    const double *xs[3] = {x0, x0, x1};
+    const double pen[3] = {R - x0[2], R - x0[0], R - x1[2]};
+    for (int e = 0; e < 3; e++) {
+        ENSURE_NEAR(RS_A2(o.rdisp, 3, 0, e), pen[e], 1e-15);
+        for (int j = 0; j < 3; j++)
+            for (int i = 0; i < 3; i++)
+                ENSURE(RS_A3(o.alocaldir, 3, i, j, e) == fr[fk[e]][j][i]);
+        for (int i = 0; i < 3; i++) {
+            double xcp = xs[e][i] - (R - 0.5 * pen[e]) * fr[fk[e]][0][i];
+            double xm = xs[e][i] - (R - pen[e]) * fr[fk[e]][0][i];
+            ENSURE_NEAR(RS_A2(o.coordslv, 3, i, e), xcp, 1e-15);
+            ENSURE_NEAR(RS_A2(o.coordmst, 3, i, e), xm, 1e-15);
+        }
+    }
+    ENSURE(o.point[0] == 0 && o.point[1] == 0 && o.point[2] == 1);
+    ENSURE(RS_A2(o.curv, 2, 0, 1) == -2.0 && RS_A2(o.curv, 2, 1, 1) == 0.5);
+    ENSURE(o.slot[0] != o.slot[1]);
+    /* A new contact's history starts at zero stress and statev. */
+    ENSURE(o.slot[2][RS_H_STRESS] == 0 && o.slot[2][RS_H_STATEV] == 0);
+    rs_track_out_free(&o);
+}
+
+/* Contacts must come in block order with valid point indices: a clear error otherwise. */
+static void test_rejects_unordered_contacts(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_error err;
+    double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
+    double x[3] = {0, 0, 0.0099};
+    block_init(&b, 2, &tr);
+    clist_init(&l);
+    add_plane(&l, 1, 0, x, P, n, t1, t2);
+    add_plane(&l, 0, 0, x, P, n, t1, t2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_ERR_ARG);
+    ENSURE(strstr(err.msg, "block order") != NULL);
+    clist_init(&l);
+    add_plane(&l, 2, 0, x, P, n, t1, t2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_ERR_ARG);
+    rs_track_out_free(&o);
+}
+
+int main(void)
+{
+    RS_RUN(test_drot_identity_under_rigid_translation);
+    RS_RUN(test_drot_identity_under_rigid_rotation);
+    RS_RUN(test_drot_is_rotation_by_theta);
+    RS_RUN(test_drot_identity_sliding_along_generator);
+    RS_RUN(test_drot_identity_sliding_around_drum_hoop);
+    RS_RUN(test_drot_antiparallel_normal_is_half_turn_about_t1);
+    RS_RUN(test_slip_equals_integrated_tangential_velocity);
+    RS_RUN(test_slip_rotated_by_drot_before_increment);
+    RS_RUN(test_maxval_once_after_leaving);
+    RS_RUN(test_contact_beyond_tracking_leaves);
+    RS_RUN(test_history_handover_across_smooth_junction);
+    RS_RUN(test_capacity_error_names_particle);
+    RS_RUN(test_ndir2_drot_identity);
+    RS_RUN(test_drdisp1_is_change_of_penetration);
+    RS_RUN(test_alocaldir_columns_and_contact_point);
+    RS_RUN(test_rejects_unordered_contacts);
+    return rs_test_summary();
+}
