@@ -321,6 +321,11 @@ static int data_line(const parser *ps, tok *t, int nt, draft *d)
         const char *what = d->ncoord == 0
                                ? "the points a, b (6 numbers: ax, ay, az, bx, by, bz)"
                                : "the point c (3 numbers: cx, cy, cz)";
+        normkey(&t[0], word, sizeof word);
+        if (strcmp(word, "START") == 0 || strcmp(word, "LINE") == 0 ||
+            strcmp(word, "CIRCL") == 0 || strcmp(word, "PARAB") == 0)
+            return perr(ps, RS_ERR_PARSE, "expected %s before the profile, found %s", what,
+                        word);
         if (nt != want) {
             char cnt[16];
             snprintf(cnt, sizeof cnt, "%d", nt);
@@ -579,6 +584,19 @@ int rs_surface_parse(const char *text, const char *origin, const char *name, rs_
         const char *ln = p + b;
         len -= b;
         int is_kw = len > 0 && ln[0] == '*' && !(len > 1 && ln[1] == '*');
+        if (is_kw) {
+            /* an unknown keyword is reported at its own line, before the surface that
+             * it ends is checked */
+            const char *c = memchr(ln, ',', (size_t)len);
+            tok kw = {ln, (int)((c ? c : ln + len) - ln)};
+            tok bare = {ln + 1, kw.len - 1};
+            char key[16];
+            normkey(&bare, key, sizeof key);
+            if (strcmp(key, "SURFACE") != 0) {
+                rc = keyword_line(&ps, &kw, 1, &d);
+                goto out;
+            }
+        }
         if ((at_end || is_kw) && d.active) {
             /* a surface ends here: check it whole */
             int saved = ps.line;
