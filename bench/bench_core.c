@@ -1,0 +1,317 @@
+/* Core microbenchmark: closest features + frame (rs_surface_query) + tracker
+ * (rs_track_update and rs_track_commit) per contact on a REVOLUTION drum whose profile
+ * has 1, 8 or 64 segments, against a bare closed-form cylinder distance on the same
+ * points in the same run. Repetitions are interleaved; medians are reported.
+ *
+ *   bench_core [--particles N] [--reps R] [--seed S]
+ *
+ * Drum: axis z through the origin, radius RD, half-height H. 1 segment: the mantle
+ * only. n >= 3 segments: bottom cap, n - 2 collinear mantle pieces, top cap. The
+ * mantle travels +z, so n = (-t_z, t_r) points inward. Every particle overlaps the
+ * mantle away from the caps, so every point yields exactly one contact. The drum turns
+ * about its axis (the query gets its pose, the tracker its motion). */
+#define _POSIX_C_SOURCE 200809L
+#include "rigidsurf/motion.h"
+#include "rigidsurf/surface.h"
+#include "rigidsurf/track.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#ifndef RS_BUILD_TYPE
+#define RS_BUILD_TYPE "unknown"
+#endif
+#ifndef RS_BUILD_FLAGS
+#define RS_BUILD_FLAGS ""
+#endif
+
+#define RD 0.15
+#define H 0.05
+#define RAD 0.004
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* xorshift64*: a fixed, portable stream so runs are reproducible. */
+static unsigned long long rng_state;
+static double urand(void)
+{
+    rng_state ^= rng_state >> 12;
+    rng_state ^= rng_state << 25;
+    rng_state ^= rng_state >> 27;
+    return (double)((rng_state * 2685821657736338717ULL) >> 11) *
+           (1.0 / 9007199254740992.0);
+}
+
+typedef struct cloud {
+    int n;
+    double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *r;
+    int *id;
+    double **hp, *hist;
+} cloud;
+
+static void *xmalloc(size_t bytes)
+{
+    void *p = malloc(bytes);
+    if (!p) {
+        fprintf(stderr, "bench_core: out of memory\n");
+        exit(1);
+    }
+    return p;
+}
+
+static void cloud_make(cloud *c, int n, const rs_tracker *tr)
+{
+    const int hs = RS_HIST_SIZE(tr->nstatev);
+    double **cols[] = {&c->x,  &c->y,  &c->z,  &c->vx, &c->vy,
+                       &c->vz, &c->wx, &c->wy, &c->wz, &c->r};
+    c->n = n;
+    for (size_t k = 0; k < sizeof cols / sizeof cols[0]; k++)
+        *cols[k] = xmalloc((size_t)n * sizeof(double));
+    c->id = xmalloc((size_t)n * sizeof(int));
+    c->hp = xmalloc((size_t)n * sizeof(double *));
+    c->hist = xmalloc((size_t)n * tr->capacity * hs * sizeof(double));
+    for (int i = 0; i < n; i++) {
+        double a = 2.0 * 3.14159265358979323846 * urand();
+        double pen = 0.1 * RAD * urand();
+        double rho = RD - RAD + pen;
+        c->x[i] = rho * cos(a);
+        c->y[i] = rho * sin(a);
+        c->z[i] = (H - 3.0 * RAD) * (2.0 * urand() - 1.0);
+        c->vx[i] = 0.1 * (urand() - 0.5);
+        c->vy[i] = 0.1 * (urand() - 0.5);
+        c->vz[i] = 0.1 * (urand() - 0.5);
+        c->wx[i] = urand() - 0.5;
+        c->wy[i] = urand() - 0.5;
+        c->wz[i] = urand() - 0.5;
+        c->r[i] = RAD;
+        c->id[i] = i + 1;
+        c->hp[i] = c->hist + (size_t)i * tr->capacity * hs;
+        rs_track_clear(tr, c->hp[i]);
+    }
+}
+
+static void cloud_free(cloud *c)
+{
+    double *cols[] = {c->x, c->y, c->z, c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->r};
+    for (size_t k = 0; k < sizeof cols / sizeof cols[0]; k++)
+        free(cols[k]);
+    free(c->id);
+    free(c->hp);
+    free(c->hist);
+}
+
+static void drum_text(int nseg, char *buf, size_t len)
+{
+    int o = snprintf(buf, len, "*SURFACE, TYPE=REVOLUTION, NAME=drum%d\n0, 0, 0, 0, 0, 1\n",
+                     nseg);
+    if (nseg == 1) {
+        snprintf(buf + o, len - (size_t)o, "START, %.17g, %.17g\nLINE, %.17g, %.17g\n", RD,
+                 -H, RD, H);
+        return;
+    }
+    o += snprintf(buf + o, len - (size_t)o, "START, 0, %.17g\nLINE, %.17g, %.17g\n", -H, RD,
+                  -H);
+    int nm = nseg - 2;
+    for (int k = 1; k <= nm; k++)
+        o += snprintf(buf + o, len - (size_t)o, "LINE, %.17g, %.17g\n", RD,
+                      -H + 2.0 * H * k / nm);
+    snprintf(buf + o, len - (size_t)o, "LINE, 0, %.17g\n", H);
+}
+
+/* The reference: a bare closed-form cylinder r = hypot(x, y), gap, inward normal. */
+static double sink;
+static void cylinder_baseline(const cloud *c, double *gap, double *nx, double *ny)
+{
+    for (int i = 0; i < c->n; i++) {
+        double r = hypot(c->x[i], c->y[i]);
+        gap[i] = RD - r - c->r[i];
+        nx[i] = -c->x[i] / r;
+        ny[i] = -c->y[i] / r;
+    }
+}
+
+typedef struct pipe {
+    rs_surface s;
+    rs_tracker tr;
+    rs_motion m;
+    rs_contacts c;
+    rs_track_out out;
+    double *stress;
+    long contacts; /* contacts of the last pass */
+} pipe;
+
+/* One pass over the cloud in blocks of RS_BLOCK: query (+frame), and optionally the
+ * tracker update and commit. Returns non-zero on error. */
+static int pipeline(pipe *pp, const cloud *cl, double dt, int track, rs_error *err)
+{
+    pp->contacts = 0;
+    for (int b0 = 0; b0 < cl->n; b0 += RS_BLOCK) {
+        int nb = cl->n - b0 < RS_BLOCK ? cl->n - b0 : RS_BLOCK;
+        rs_query q = {nb,         cl->x + b0,  cl->y + b0,      cl->z + b0,
+                      cl->r + b0, &pp->m.pose, pp->tr.tracking, -INFINITY};
+        pp->c.n = 0;
+        int rc = rs_surface_query(&pp->s, &q, &pp->c, err);
+        if (rc)
+            return rc;
+        pp->contacts += pp->c.n;
+        if (!track)
+            continue;
+        rs_particles p = {nb,          cl->x + b0,  cl->y + b0,  cl->z + b0,  cl->vx + b0,
+                          cl->vy + b0, cl->vz + b0, cl->wx + b0, cl->wy + b0, cl->wz + b0,
+                          cl->r + b0,  cl->id + b0, cl->hp + b0};
+        rc = rs_track_update(&pp->tr, &pp->s, &pp->m, dt, &p, &pp->c, &pp->out, err);
+        if (rc)
+            return rc;
+        rs_track_commit(&pp->tr, &pp->out, pp->stress, NULL);
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    int np = 8192, reps = 101;
+    unsigned long long seed = 12345;
+    for (int a = 1; a < argc; a++) {
+        char *end = NULL;
+        long v = 0;
+        if (a + 1 < argc)
+            v = strtol(argv[a + 1], &end, 10);
+        int ok = a + 1 < argc && end && *end == '\0' && v > 0;
+        if (ok && !strcmp(argv[a], "--particles"))
+            np = (int)v;
+        else if (ok && !strcmp(argv[a], "--reps"))
+            reps = (int)v;
+        else if (ok && !strcmp(argv[a], "--seed"))
+            seed = (unsigned long long)v;
+        else {
+            fprintf(stderr,
+                    "bench_core: bad argument '%s'; expected --particles N, --reps R or "
+                    "--seed S with positive integers\n",
+                    argv[a]);
+            return 2;
+        }
+        a++;
+    }
+    printf("command:");
+    for (int a = 0; a < argc; a++)
+        printf(" %s", argv[a]);
+    printf("\nbuild: %s %s\n", RS_BUILD_TYPE, RS_BUILD_FLAGS);
+    printf("particles %d, repetitions %d (interleaved; medians), block %d, drum R = %g, "
+           "particle radius %g\n",
+           np, reps, RS_BLOCK, RD, RAD);
+    printf("%6s %10s %12s %12s %12s %12s %10s\n", "nseg", "contacts", "cyl ns/pt",
+           "query ns/c", "track ns/c", "total ns/c", "ratio");
+
+    const int nsegs[3] = {1, 8, 64};
+    double *gap = xmalloc((size_t)np * sizeof(double));
+    double *nx = xmalloc((size_t)np * sizeof(double));
+    double *ny = xmalloc((size_t)np * sizeof(double));
+    double *tb = xmalloc((size_t)reps * sizeof(double));
+    double *tq = xmalloc((size_t)reps * sizeof(double));
+    double *tt = xmalloc((size_t)reps * sizeof(double));
+    char text[8192];
+    rs_error err;
+    const double dt = 1e-5, omega = 2.0;
+
+    for (int is = 0; is < 3; is++) {
+        pipe pp;
+        memset(&pp, 0, sizeof pp);
+        pp.tr = (rs_tracker){4, 0, 3, 0.1 * RAD};
+        drum_text(nsegs[is], text, sizeof text);
+        if (rs_surface_parse(text, "bench_core", NULL, &pp.s, &err)) {
+            fprintf(stderr, "bench_core: %s\n", err.msg);
+            return 1;
+        }
+        double zero[3] = {0, 0, 0}, zaxis[3] = {0, 0, 1};
+        rs_motion_init(&pp.m);
+        if (rs_motion_set_rotation(&pp.m, zero, zaxis, omega, &err) ||
+            rs_contacts_reserve(&pp.c, 4 * RS_BLOCK, &err)) {
+            fprintf(stderr, "bench_core: %s\n", err.msg);
+            return 1;
+        }
+        pp.stress = xmalloc((size_t)4 * RS_BLOCK * 3 * sizeof(double));
+        for (int k = 0; k < 4 * RS_BLOCK * 3; k++)
+            pp.stress[k] = 1.0;
+        rng_state = seed * 0x9E3779B97F4A7C15ULL + 1;
+        cloud cl;
+        cloud_make(&cl, np, &pp.tr);
+
+        /* Warm-up: opens every contact, so the timed passes see live history. */
+        for (int w = 0; w < 3; w++)
+            if (rs_motion_advance(&pp.m, dt, &err) || pipeline(&pp, &cl, dt, 1, &err)) {
+                fprintf(stderr, "bench_core: %s\n", err.msg);
+                return 1;
+            }
+        long nc = pp.contacts;
+        if (nc < np) {
+            fprintf(stderr, "bench_core: only %ld contacts for %d particles\n", nc, np);
+            return 1;
+        }
+        for (int r = 0; r < reps; r++) {
+            double t0 = now();
+            cylinder_baseline(&cl, gap, nx, ny);
+            double t1 = now();
+            sink += gap[r % np] + nx[r % np] + ny[r % np];
+            if (rs_motion_advance(&pp.m, dt, &err)) {
+                fprintf(stderr, "bench_core: %s\n", err.msg);
+                return 1;
+            }
+            double t2 = now();
+            int rc = pipeline(&pp, &cl, dt, 0, &err);
+            double t3 = now();
+            rc = rc ? rc : pipeline(&pp, &cl, dt, 1, &err);
+            double t4 = now();
+            if (rc) {
+                fprintf(stderr, "bench_core: %s\n", err.msg);
+                return 1;
+            }
+            tb[r] = t1 - t0;
+            tq[r] = t3 - t2;
+            tt[r] = t4 - t3;
+        }
+        double mb = median(tb, reps) / np * 1e9;
+        double mq = median(tq, reps) / (double)nc * 1e9;
+        double mt = median(tt, reps) / (double)nc * 1e9;
+        printf("%6d %10ld %12.2f %12.2f %12.2f %12.2f %10.2f\n", nsegs[is], nc, mb, mq,
+               mt - mq, mt, mt / mb);
+        cloud_free(&cl);
+        free(pp.stress);
+        rs_track_out_free(&pp.out);
+        rs_contacts_free(&pp.c);
+        rs_surface_free(&pp.s);
+    }
+    printf("cyl ns/pt: closed-form cylinder distance and normal per point (hypot).\n"
+           "query ns/c: rs_surface_query (closest features + frame) per contact.\n"
+           "track ns/c: rs_track_update + rs_track_commit per contact, as the difference\n"
+           "  of a query+track pass and a query-only pass in the same repetition.\n"
+           "total ns/c: query + frame + tracker per contact; ratio = total / cyl.\n");
+    if (sink == 12345.678)
+        printf("%g\n", sink);
+    free(gap);
+    free(nx);
+    free(ny);
+    free(tb);
+    free(tq);
+    free(tt);
+    return 0;
+}
