@@ -75,11 +75,11 @@ class Session:
         inp = self.write(name + ".in", deck)
         # Unbuffered stdout: error->one ends with MPI_Abort, which drops buffered output
         # (the ERROR line included).
-        cmd = ["stdbuf", "-o0", self.exe, "-in", inp, "-log", name + ".log", "-echo", "none"]
+        # prefix (valgrind, ...) wraps the executable itself.
+        cmd = ["stdbuf", "-o0"] + list(prefix or []) + [
+            self.exe, "-in", inp, "-log", name + ".log", "-echo", "none"]
         if np > 1:
             cmd = [self.args.mpirun, "-np", str(np)] + cmd
-        if prefix:
-            cmd = list(prefix) + cmd
         env = dict(os.environ)
         env.update(MPI_ENV)
         try:
