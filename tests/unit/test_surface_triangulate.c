@@ -1,0 +1,113 @@
+/* Display triangulation: every node lies on the surface and the node order of every
+ * triangle gives the outward normal (the side the particles live on). */
+#include "rigidsurf/surface.h"
+#include "rs_test.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+static const char *TXT =
+    "*SURFACE, TYPE=SEGMENTS, NAME=seg\nSTART, -1, 1\nLINE, 0, 0\n"
+    "CIRCL, 1, 0, 0.5, 1.2\nPARAB, 1.5, 0.6, 2, 0.4\n"
+    "*SURFACE, TYPE=CYLINDER, NAME=cyl\n0.5,0,0, 1.5,0.5,0\n0,0.3,2\n"
+    "START, 0.3, 0\nCIRCL, 0, 0.3, 0, 0\nCIRCL, -0.3, 0, 0, 0\n"
+    "CIRCL, 0, -0.3, 0, 0\nCIRCL, 0.3, 0, 0, 0\n"
+    "*SURFACE, TYPE=CYLINDER, NAME=cylb, EXTENT=-0.2, 0.7\n"
+    "0,0,0, 1,0,0\n0,0,1\nSTART, -1, 0\nLINE, 1, 0\n"
+    "*SURFACE, TYPE=REVOLUTION, NAME=rev, FILLET RADIUS=0.1\n"
+    "0,0,1, 0.2,0.1,2\nSTART, 0, 0\nLINE, 1, 0\nLINE, 1, 2\nLINE, 0, 2\n";
+
+static void check(const char *name)
+{
+    rs_surface s;
+    rs_error e;
+    ENSURE(rs_surface_parse(TXT, "tri", name, &s, &e) == 0);
+    rs_trimesh m;
+    ENSURE(rs_surface_triangulate(&s, 1.5, 24, &m, &e) == 0);
+    ENSURE(m.nvert > 0 && m.ntri > 0);
+    rs_contacts c = {0};
+    for (int v = 0; v < m.nvert; v++) {
+        double *p = m.xyz + 3 * v;
+        rs_query q = {1, p, p + 1, p + 2, NULL, NULL, 1e-6, -1e-6};
+        c.n = 0;
+        ENSURE(rs_surface_query(&s, &q, &c, &e) == 0);
+        double dmin = INFINITY;
+        for (int k = 0; k < c.n; k++)
+            dmin = fmin(dmin, fabs(c.dist[k]));
+        ENSURE(dmin <= 1e-12 * 4.0);
+    }
+    int checked = 0;
+    for (int t = 0; t < m.ntri; t++) {
+        const double *a = m.xyz + 3 * m.tri[3 * t], *b = m.xyz + 3 * m.tri[3 * t + 1],
+                     *d = m.xyz + 3 * m.tri[3 * t + 2];
+        double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        double w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+        double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                       u[0] * w[1] - u[1] * w[0]};
+        double nl = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        ENSURE(nl > 0.0);
+        double g[3];
+        for (int i = 0; i < 3; i++)
+            g[i] = (a[i] + b[i] + d[i]) / 3.0 + 0.02 * n[i] / nl; /* beyond the sagitta */
+        rs_query q = {1, g, g + 1, g + 2, NULL, NULL, 0.1, -0.1};
+        c.n = 0;
+        ENSURE(rs_surface_query(&s, &q, &c, &e) == 0);
+        int best = -1;
+        for (int k = 0; k < c.n; k++)
+            if (best < 0 || fabs(c.dist[k]) < fabs(c.dist[best]))
+                best = k;
+        ENSURE(best >= 0);
+        /* a point just off the triangle on its normal side is on the particle side */
+        ENSURE(c.dist[best] > 0.0);
+        double dp =
+            (c.nrm[0][best] * n[0] + c.nrm[1][best] * n[1] + c.nrm[2][best] * n[2]) / nl;
+        ENSURE(dp > 0.9);
+        checked++;
+    }
+    ENSURE(checked == m.ntri);
+    rs_contacts_free(&c);
+    rs_trimesh_free(&m);
+    rs_surface_free(&s);
+}
+
+static void test_surface_triangulate_segments_outward(void)
+{
+    check("seg");
+}
+
+static void test_surface_triangulate_cylinder_outward(void)
+{
+    check("cyl");
+}
+
+static void test_surface_triangulate_bounded_cylinder_outward(void)
+{
+    check("cylb");
+}
+
+static void test_surface_triangulate_revolution_outward(void)
+{
+    check("rev");
+}
+
+static void test_surface_triangulate_bad_arguments(void)
+{
+    rs_surface s;
+    rs_error e;
+    rs_trimesh m;
+    ENSURE(rs_surface_parse(TXT, "tri", "seg", &s, &e) == 0);
+    ENSURE(rs_surface_triangulate(&s, 1.0, 2, &m, &e) == RS_ERR_ARG);
+    ENSURE(rs_surface_triangulate(&s, 0.0, 8, &m, &e) == RS_ERR_ARG);
+    ENSURE(m.xyz == NULL && m.tri == NULL);
+    rs_surface_free(&s);
+}
+
+int main(void)
+{
+    RS_RUN(test_surface_triangulate_segments_outward);
+    RS_RUN(test_surface_triangulate_cylinder_outward);
+    RS_RUN(test_surface_triangulate_bounded_cylinder_outward);
+    RS_RUN(test_surface_triangulate_revolution_outward);
+    RS_RUN(test_surface_triangulate_bad_arguments);
+    return rs_test_summary();
+}
