@@ -79,6 +79,32 @@ static void dem_fields(const rs_law_block *b, int k, double f[RS_DEM_NPRED])
     f[7] = b->curv ? b->curv[(size_t)k * 2u + 1u] : 0.0;
 }
 
+/* The same for the whole block: predef(RS_DEM_NPRED, n), one contact's fields at a
+ * time, missing arrays read from zeros so the loop has no branches. */
+static void dem_block(const rs_law_block *b, double *restrict predef)
+{
+    const int n = b->nSlvNod, nd = b->nDir;
+    const double *restrict rad = b->radius ? b->radius : rs_fzeros;
+    const double *restrict mass = b->mass ? b->mass : rs_fzeros;
+    const double *restrict reff = b->reff ? b->reff : rs_fzeros;
+    const double *restrict vrel = b->vrel ? b->vrel : rs_fzeros;
+    const double *restrict curv = b->curv ? b->curv : rs_fzeros;
+    const double t2 = nd == 3 ? 1.0 : 0.0; /* 2D: no t2 component */
+    const int i2 = nd == 3 ? 2 : 1;
+    for (int k = 0; k < n; ++k) {
+        double *restrict p = predef + (size_t)k * RS_DEM_NPRED;
+        const double *restrict v = vrel + (size_t)k * (size_t)nd;
+        p[0] = rad[k];
+        p[1] = mass[k];
+        p[2] = reff[k];
+        p[3] = v[0];
+        p[4] = v[1];
+        p[5] = t2 * v[i2];
+        p[6] = curv[2 * k];
+        p[7] = curv[2 * k + 1];
+    }
+}
+
 /* Largest eigenvalue bound (Gershgorin: largest absolute row sum) of an m x m
  * column-major matrix. */
 static double stiffness_bound(const double *a, int m)
@@ -155,17 +181,14 @@ int rs_law_vuinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
     int n = b->nSlvNod;
     if (n <= 0)
         return RS_OK;
-    for (int k = 0; k < n; ++k)
-        b->sfd[k] = b->scd[k] = b->spd[k] = b->svd[k] = 0.0;
-
+    /* sfd, scd, spd, svd start at zero: rs_law_call clears them */
     int npred = b->nPred;
     const double *pred = b->preDefSlv, *dpred = b->dpreDefSlv;
     const double *predm = b->preDefMst, *dpredm = b->dpreDefMst;
     double dem[RS_DEM_NPRED * RS_BLOCK];
     if (npred == 0 && b->numDefTfv <= RS_BLOCK) {
         npred = RS_DEM_NPRED;
-        for (int k = 0; k < n; ++k)
-            dem_fields(b, k, dem + (size_t)k * RS_DEM_NPRED);
+        dem_block(b, dem);
         pred = dem;
         dpred = predm = dpredm = rs_fzeros;
     }
