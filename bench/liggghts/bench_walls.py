@@ -1,0 +1,266 @@
+#!/usr/bin/python3
+"""LIGGGHTS-side benchmarks of fix wall/rigid, measured side by side in one run.
+
+    bench_walls.py --exe liggghts-rigidsurf [--quick] [--max-n N] [--out FILE]
+
+1. Wall cost, cylinder. N spheres (R = 1 mm) form a monolayer on the inside of a
+   cylinder of radius 50 mm about z (rings of spheres 2.2 R apart, layers 2.2 R apart,
+   so spheres never touch each other), pressed on the wall by a radial body force
+   (fix addforce, 1 mN, atom-style variables), Hertz with tangential history, fix
+   nve/sphere, no gravity. Every sphere is in contact every step. Variants, same deck
+   otherwise:
+     none   no wall, radial force 0: the spheres sit still (the baseline)
+     prim   fix wall/gran ... primitive zcylinder
+     ours   fix wall/rigid, REVOLUTION: a LINE at r = 50 mm
+     mesh   fix wall/gran ... mesh, fix mesh/surface of a 4000-triangle STL cylinder
+   Wall cost per particle-step = (loop time with the wall - loop time of 'none') /
+   (N steps). The spheres move by micrometres (skin 0.5 mm), so no variant rebuilds its
+   neighbour lists during the run (checked: 'Neighbor list builds' is reported), and
+   the pair style, integrator and body force cost the same in all variants; the
+   difference is the wall. Each variant runs REPS times, interleaved, the fastest kept.
+2. Scaling: the same for N = 1e3 .. max-n (ours and prim; mesh at 1e4 only).
+3. Strong scaling: a rotating drum (REVOLUTION mantle and end caps, 2 rad/s, gravity)
+   with a settling bed of interacting spheres, 1 and 2 MPI ranks, loop time.
+"""
+import argparse
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+R, RHO, RC, F0, DT = 1.0e-3, 2500.0, 0.05, 1.0e-3, 1.0e-5
+GAP = 2.2 * R
+MPI_ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
+           "OMPI_MCA_rmaps_base_oversubscribe": "1"}
+
+
+def hertz_overlap(force):
+    """Equilibrium overlap of a sphere under a normal force (Hertz, the deck's materials)."""
+    y1, y2, n1, n2 = 1.0e7, 1.0e8, 0.3, 0.3
+    ystar = 1.0 / ((1 - n1 * n1) / y1 + (1 - n2 * n2) / y2)
+    return (3.0 * force / (4.0 * ystar * math.sqrt(R))) ** (2.0 / 3.0)
+
+
+def monolayer(n):
+    """Sphere centres: rings on r0 = RC - R + delta_eq, layers along z. Returns the
+    positions and the height of the layer stack."""
+    r0 = RC - R + hertz_overlap(F0)
+    per_ring = int(2 * math.pi * r0 / GAP)
+    layers = (n + per_ring - 1) // per_ring
+    pts = []
+    for k in range(layers):
+        z = (k + 0.5) * GAP
+        for j in range(per_ring):
+            if len(pts) == n:
+                break
+            a = 2 * math.pi * (j + 0.5 * (k % 2)) / per_ring
+            pts.append((r0 * math.cos(a), r0 * math.sin(a), z))
+    return pts, layers * GAP
+
+
+def write_data(path, pts, height):
+    b = RC + 0.005
+    with open(path, "w") as f:
+        f.write("monolayer on a cylinder\n\n%d atoms\n2 atom types\n\n" % len(pts))
+        f.write("%r %r xlo xhi\n%r %r ylo yhi\n%r %r zlo zhi\n\nAtoms\n\n"
+                % (-b, b, -b, b, -0.005, height + 0.005))
+        for i, (x, y, z) in enumerate(pts):
+            f.write("%d 1 %r %r %.12g %.12g %.12g\n" % (i + 1, 2 * R, RHO, x, y, z))
+
+
+def wall_deck(variant, data, steps, height):
+    d = """atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
+units si
+read_data %s
+neighbor 0.0005 bin
+neigh_modify delay 0
+fix m1 all property/global youngsModulus peratomtype 1e7 1e8
+fix m2 all property/global poissonsRatio peratomtype 0.3 0.3
+fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5
+fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
+pair_style gran model hertz tangential history
+pair_coeff * *
+timestep %r
+""" % (data, DT)
+    f0 = 0.0 if variant == "none" else F0
+    d += "variable f0 equal %r\n" % f0
+    d += "variable fx atom v_f0*x/sqrt(x*x+y*y)\nvariable fy atom v_f0*y/sqrt(x*x+y*y)\n"
+    d += "fix push all addforce v_fx v_fy 0\n"
+    if variant == "prim":
+        d += "fix w all wall/gran model hertz tangential history primitive type 2 zcylinder %r 0 0\n" % RC
+    elif variant == "ours":
+        d += "fix w all wall/rigid surface cyl.inp law hertz type 2\n"
+    elif variant == "mesh":
+        d += "fix cad all mesh/surface file cyl.stl type 2\n"
+        d += "fix w all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n"
+    d += "fix integr all nve/sphere\nthermo %d\n" % steps
+    d += "run %d\n" % steps
+    return d
+
+
+LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms")
+
+
+def run_deck(exe, workdir, name, deck, np=1):
+    path = os.path.join(workdir, name + ".in")
+    with open(path, "w") as f:
+        f.write(deck)
+    cmd = [exe, "-in", path, "-log", "none", "-echo", "none"]
+    if np > 1:
+        cmd = ["mpirun", "-np", str(np)] + cmd
+    env = dict(os.environ)
+    env.update(MPI_ENV)
+    p = subprocess.run(cmd, cwd=workdir, capture_output=True, text=True, errors="replace",
+                       env=env)
+    out = p.stdout + p.stderr
+    loops = LOOP.findall(out)
+    if p.returncode != 0 or not loops:
+        sys.exit("bench: %s failed (exit %d):\n%s" % (name, p.returncode,
+                                                      "\n".join(out.splitlines()[-12:])))
+    builds = re.findall(r"Neighbor list builds = (\d+)", out)
+    t, procs, steps, atoms = loops[-1]
+    return {"loop": float(t), "steps": int(steps), "atoms": int(atoms),
+            "builds": int(builds[-1]) if builds else -1}
+
+
+def wall_costs(exe, workdir, n, variants, reps, log):
+    pts, height = monolayer(n)
+    data = os.path.join(workdir, "mono_%d.data" % n)
+    write_data(data, pts, height)
+    with open(os.path.join(workdir, "cyl.inp"), "w") as f:
+        f.write("*SURFACE, TYPE=REVOLUTION, NAME=cyl\n0, 0, 0, 0, 0, 1\n"
+                "START, %r, -1\nLINE, %r, %r\n" % (RC, RC, height + 1.0))
+    if "mesh" in variants:
+        subprocess.run([sys.executable, os.path.join(HERE, "make_stl.py"),
+                        os.path.join(workdir, "cyl.stl"), repr(RC), "-0.002",
+                        repr(height + 0.002), "200", "10"], check=True)
+    steps = int(min(3000, max(100, 3.0e6 / n)))
+    best = {}
+    for rep in range(reps):
+        for v in ["none"] + variants:
+            r = run_deck(exe, workdir, "%s_%d" % (v, n), wall_deck(v, data, steps, height))
+            if r["atoms"] != n:
+                sys.exit("bench: %s lost atoms (%d of %d)" % (v, r["atoms"], n))
+            if v not in best or r["loop"] < best[v]["loop"]:
+                best[v] = r
+    os.remove(data)
+    res = {"n": n, "steps": steps, "loop": {v: best[v]["loop"] for v in best},
+           "builds": {v: best[v]["builds"] for v in best}}
+    base = best["none"]["loop"]
+    res["cost"] = {v: (best[v]["loop"] - base) / (n * steps) for v in variants}
+    line = "N=%-8d steps=%-5d baseline %.3g s/step-particle" % (n, steps, base / (n * steps))
+    for v in variants:
+        line += "  %s %.3g us" % (v, 1e6 * res["cost"][v])
+    line += "  (neighbour builds %s)" % ",".join("%s:%d" % kv for kv in res["builds"].items())
+    log(line)
+    return res
+
+
+def drum_deck(n_target):
+    """A drum (radius 50 mm, length 40 mm, REVOLUTION mantle + caps) turning at 2 rad/s
+    with gravity -y; spheres (R = 1 mm) start on a lattice in the lower half and settle."""
+    d = """atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
+units si
+processors * 1 1
+region box block -0.052 0.052 -0.052 0.052 -0.022 0.022 units box
+create_box 2 box
+neighbor 0.0005 bin
+neigh_modify delay 0
+fix m1 all property/global youngsModulus peratomtype 1e7 1e8
+fix m2 all property/global poissonsRatio peratomtype 0.3 0.3
+fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5
+fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
+pair_style gran model hertz tangential history
+pair_coeff * *
+timestep 1e-5
+lattice sc 0.00205
+region bed cylinder z 0 0 0.0475 -0.0185 0.0185 units box
+region low block INF INF INF 0.01 INF INF units box
+region fill intersect 2 bed low
+create_atoms 1 region fill
+set group all diameter 0.002 density 2500
+fix grav all gravity 9.81 vector 0 -1 0
+fix w all wall/rigid surface drum.inp law hertz type 2 rotate origin 0 0 0 axis 0 0 1 omega 2
+fix integr all nve/sphere
+thermo 500
+run 500
+run 1500
+"""
+    return d
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--quick", action="store_true", help="small sizes, one repetition")
+    ap.add_argument("--max-n", type=int, default=1000000)
+    ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--out", default=None, help="also write the report here")
+    args = ap.parse_args()
+    exe = os.path.abspath(args.exe)
+    work = tempfile.mkdtemp(prefix="rs_bench_lig_")
+    lines = []
+
+    def log(s):
+        print(s)
+        sys.stdout.flush()
+        lines.append(s)
+
+    reps = 1 if args.quick else args.reps
+    log("# LIGGGHTS walls benchmark, %s, %s" % (time.strftime("%Y-%m-%d %H:%M"), exe))
+    log("# wall cost per particle-step in microseconds (loop time minus the no-wall "
+        "baseline), fastest of %d" % reps)
+
+    log("## 1. cylinder wall cost, all walls side by side")
+    n1 = 2000 if args.quick else 10000
+    r = wall_costs(exe, work, n1, ["prim", "ours", "mesh"], reps, log)
+    c = r["cost"]
+    log("ours / prim = %.2f (target <= 1.5)   mesh / ours = %.1f (target >= 20)"
+        % (c["ours"] / c["prim"], c["mesh"] / c["ours"]))
+
+    log("## 2. scaling (ours and prim)")
+    sizes = [1000, 10000] if args.quick else [1000, 10000, 100000, 1000000]
+    rows = []
+    for n in sizes:
+        if n > args.max_n:
+            log("N=%d skipped (--max-n %d)" % (n, args.max_n))
+            continue
+        rows.append(wall_costs(exe, work, n, ["prim", "ours"], reps, log))
+    ours = [row["cost"]["ours"] for row in rows]
+    log("ours per particle-step: min %.3g us, max %.3g us, max/min = %.2f (target <= 1.3)"
+        % (1e6 * min(ours), 1e6 * max(ours), max(ours) / min(ours)))
+
+    log("## 3. strong scaling, rotating drum with a settling bed")
+    with open(os.path.join(work, "drum.inp"), "w") as f:
+        f.write("*SURFACE, TYPE=REVOLUTION, NAME=drum\n0, 0, 0, 0, 0, 1\n"
+                "START, 0, -0.02\nLINE, 0.05, -0.02\nLINE, 0.05, 0.02\nLINE, 0, 0.02\n")
+    t = {}
+    for np in (1, 2):
+        best = None
+        for rep in range(reps):
+            rr = run_deck(exe, work, "drum_np%d" % np, drum_deck(0), np=np)
+            if best is None or rr["loop"] < best["loop"]:
+                best = rr
+        t[np] = best
+        log("np=%d: %d atoms, %d steps, loop %.3f s" % (np, best["atoms"], best["steps"], best["loop"]))
+    log("speed-up %.2f, parallel efficiency %.0f %%"
+        % (t[1]["loop"] / t[2]["loop"], 100 * t[1]["loop"] / (2 * t[2]["loop"])))
+    if args.out:
+        with open(args.out, "w") as f:
+            f.write("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()
