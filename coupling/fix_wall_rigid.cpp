@@ -71,14 +71,14 @@ bool is_number(const char *s)
 
 FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg), surf_ok_(false), ndir_(3), moving_(false), ivar_omega_(-1),
-      rot_by_period_(false), period_(0.0), phi_at_build_(0.0), law_kind_(LAW_BUILTIN),
-      law_(NULL), loaded_ok_(false), props_given_(false), hertz_(false), nstatev_(0),
-      statev_given_(false), wall_type_(1), capacity_(4), tracking_(0.0),
-      tracking_given_(false), area_mode_(AREA_NODE), area_const_(1.0), temp_given_(false),
-      temp_wall_(0.0), dtemp_wall_(0.0), capacity_wall_(0.0), heat_wall_(0.0),
-      fix_temp_(NULL), fix_heatflux_(NULL), fix_heatcap_(NULL), vtk_every_(0),
-      vtk_mesh_ok_(false), row_(NULL), nmax_(0), rebuild_(true), se_now_(0.0), ncontact_(0),
-      out_step_(-1), out_valid_(false)
+      rot_by_period_(false), period_(0.0), phi_at_build_(0.0), spin_invariant_(false),
+      law_kind_(LAW_BUILTIN), law_(NULL), loaded_ok_(false), props_given_(false),
+      hertz_(false), nstatev_(0), statev_given_(false), wall_type_(1), capacity_(4),
+      tracking_(0.0), tracking_given_(false), area_mode_(AREA_NODE), area_const_(1.0),
+      temp_given_(false), temp_wall_(0.0), dtemp_wall_(0.0), capacity_wall_(0.0),
+      heat_wall_(0.0), heat_step_(0.0), fix_temp_(NULL), fix_heatflux_(NULL),
+      fix_heatcap_(NULL), vtk_every_(0), vtk_mesh_ok_(false), row_(NULL), nmax_(0),
+      rebuild_(true), se_now_(0.0), ncontact_(0), out_step_(-1), out_valid_(false)
 {
     std::memset(&surf_, 0, sizeof surf_);
     std::memset(&loaded_, 0, sizeof loaded_);
@@ -754,6 +754,22 @@ void FixWallRigid::init()
         tracking_ = neighbor->skin;
     tracker_.tracking = tracking_;
 
+    /* A surface of revolution spun about its own axis keeps its shape in space: the
+     * rotation then never moves it toward a particle. */
+    spin_invariant_ = false;
+    if (moving_ && surf_.kind == RS_SURF_REVOLUTION) {
+        double ax[3], r[3], rx[3];
+        cross3(motion_.axis, surf_.ez, ax);
+        for (int d = 0; d < 3; d++)
+            r[d] = motion_.center0[d] - surf_.a[d];
+        cross3(r, surf_.ez, rx);
+        const double scale = std::max(1.0, std::sqrt(domain->xprd * domain->xprd +
+                                                     domain->yprd * domain->yprd +
+                                                     domain->zprd * domain->zprd));
+        spin_invariant_ =
+            std::sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]) < 1e-12 &&
+            std::sqrt(rx[0] * rx[0] + rx[1] * rx[1] + rx[2] * rx[2]) < 1e-12 * scale;
+    }
     if (hertz_ && !props_given_)
         init_hertz_props();
     init_variables();
@@ -923,7 +939,7 @@ bool FixWallRigid::wall_moved_beyond_skin() const
         dd += (motion_.disp[d] - disp_at_build_[d]) * (motion_.disp[d] - disp_at_build_[d]);
     double bound = std::sqrt(dd);
     const double dphi = std::fabs(motion_.phi - phi_at_build_);
-    if (dphi > 0.0) {
+    if (dphi > 0.0 && !spin_invariant_) {
         double c[3], rmax2 = 0.0;
         rs_motion_center(&motion_, c);
         for (int k = 0; k < 8; k++) {

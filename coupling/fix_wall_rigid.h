@@ -129,6 +129,7 @@ class FixWallRigid : public Fix
     bool rot_by_period_;
     double period_;
     double disp_at_build_[3], phi_at_build_;
+    bool spin_invariant_; // REVOLUTION spun about its own axis
 
     /* law */
     LawKind law_kind_;
