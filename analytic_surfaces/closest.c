@@ -65,6 +65,8 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
         rs_pseg *q = &pc->ps[k];
         switch (g->type) {
         case RS_LINE:
+            q->o[0] = g->p0[0];
+            q->o[1] = g->p0[1];
             q->e[0] = g->p1[0] - g->p0[0];
             q->e[1] = g->p1[1] - g->p0[1];
             q->inv_len2 = 1.0 / (q->e[0] * q->e[0] + q->e[1] * q->e[1]);
@@ -78,6 +80,9 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
         case RS_CIRCL:
             /* An arc under 180 degrees lies inside the circle on its chord (Thales). */
             q->sgn = g->sweep > 0.0 ? 1.0 : -1.0;
+            q->o[0] = g->pm[0];
+            q->o[1] = g->pm[1];
+            q->rad = g->radius;
             q->bc[0] = 0.5 * (g->p0[0] + g->p1[0]);
             q->bc[1] = 0.5 * (g->p0[1] + g->p1[1]);
             q->br = 0.5 * hypot(g->p1[0] - g->p0[0], g->p1[1] - g->p0[1]);
@@ -162,8 +167,9 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
 size_t rs_pscratch_bytes(const rs_pcache *pc)
 {
     size_t n = (size_t)pc->nseg, nv = (size_t)pc->nvert;
-    size_t b = (n + nv + 15) & ~(size_t)15;
-    return b + 4 * nv * sizeof(double) + (2 * n + nv) * sizeof(rs_hit2) + 64;
+    size_t ints = (2 * n + nv) * sizeof(unsigned) + n;
+    ints = (ints + 15) & ~(size_t)15;
+    return ints + 4 * nv * sizeof(double) + (2 * n + nv) * sizeof(rs_hit2) + 64;
 }
 
 int rs_pscratch_init(rs_pscratch *sc, const rs_pcache *pc, void *stack, size_t stack_bytes)
@@ -177,16 +183,20 @@ int rs_pscratch_init(rs_pscratch *sc, const rs_pcache *pc, void *stack, size_t s
             return RS_ERR_NOMEM;
         sc->heap = m;
     }
-    /* align to 16 bytes */
     uintptr_t a = ((uintptr_t)m + 15u) & ~(uintptr_t)15u;
     m = (unsigned char *)a;
     size_t n = (size_t)pc->nseg, nv = (size_t)pc->nvert;
-    size_t b = (n + nv + 15) & ~(size_t)15;
-    sc->seg_state = m;
-    sc->vtx_done = m + n;
-    sc->vd = (double *)(m + b);
-    sc->cand = (rs_hit2 *)(m + b + 4 * nv * sizeof(double));
+    size_t ints = (2 * n + nv) * sizeof(unsigned) + n;
+    ints = (ints + 15) & ~(size_t)15;
+    sc->seg_stamp = (unsigned *)m;
+    sc->vtx_stamp = sc->seg_stamp + n;
+    sc->near = (int *)(sc->vtx_stamp + nv);
+    sc->seg_state = (unsigned char *)(sc->near + n);
+    sc->vd = (double *)(m + ints);
+    sc->cand = (rs_hit2 *)(m + ints + 4 * nv * sizeof(double));
     sc->hits = sc->cand + n;
+    memset(sc->seg_stamp, 0, (n + nv) * sizeof(unsigned));
+    sc->stamp = 0;
     return RS_OK;
 }
 
@@ -196,18 +206,30 @@ void rs_pscratch_free(rs_pscratch *sc)
     sc->heap = NULL;
 }
 
+/* Segment state for the current point (0 when not yet touched). */
+static inline unsigned seg_st(const rs_pscratch *sc, int k)
+{
+    return sc->seg_stamp[k] == sc->stamp ? sc->seg_state[k] : 0u;
+}
+
+static inline void seg_set(rs_pscratch *sc, int k, unsigned v)
+{
+    sc->seg_stamp[k] = sc->stamp;
+    sc->seg_state[k] = (unsigned char)v;
+}
+
 static inline const double *vtx_tests(const rs_pcache *pc, rs_pscratch *sc, int j,
                                       double px, double py)
 {
     double *o = sc->vd + 4 * j;
-    if (!sc->vtx_done[j]) {
+    if (sc->vtx_stamp[j] != sc->stamp) {
         const rs_pvert *v = &pc->pv[j];
         double dx = px - v->v[0], dy = py - v->v[1];
         o[0] = dx;
         o[1] = dy;
         o[2] = dx * v->ta[0] + dy * v->ta[1];
         o[3] = dx * v->tb[0] + dy * v->tb[1];
-        sc->vtx_done[j] = 1;
+        sc->vtx_stamp[j] = sc->stamp;
     }
     return o;
 }
@@ -325,14 +347,14 @@ static void eval_seg(const rs_pcache *pc, rs_pscratch *sc, int k, double px, dou
     const rs_segment *g = &pc->seg[k];
     const rs_pseg *q = &pc->ps[k];
     rs_hit2 *h = &sc->cand[k];
-    unsigned char st = sc->seg_state[k] & SEG_NEAR;
+    unsigned st = seg_st(sc, k) & SEG_NEAR;
     switch (g->type) {
     case RS_LINE: {
         if (!(in_start && in_end))
             goto none;
         double wx = px - g->p0[0], wy = py - g->p0[1];
         double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
-        tau = fmin(1.0, fmax(0.0, tau));
+        tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
         h->x[0] = g->p0[0] + tau * q->e[0];
         h->x[1] = g->p0[1] + tau * q->e[1];
         h->n[0] = -q->t[1];
@@ -344,7 +366,8 @@ static void eval_seg(const rs_pcache *pc, rs_pscratch *sc, int k, double px, dou
     case RS_CIRCL: {
         if (!(in_start && in_end))
             goto none;
-        double wx = px - g->pm[0], wy = py - g->pm[1], rho = hypot(wx, wy), ux, uy;
+        double wx = px - g->pm[0], wy = py - g->pm[1], rho = sqrt(wx * wx + wy * wy), ux,
+               uy;
         if (rho > 0.0) {
             ux = wx / rho;
             uy = wy / rho;
@@ -367,7 +390,7 @@ static void eval_seg(const rs_pcache *pc, rs_pscratch *sc, int k, double px, dou
         if (!parab_min(g, q, px, py, in_start, in_end, &xi))
             goto none;
         double d[2] = {q->B[0] + 2.0 * xi * q->C[0], q->B[1] + 2.0 * xi * q->C[1]};
-        double sp = hypot(d[0], d[1]);
+        double sp = sqrt(d[0] * d[0] + d[1] * d[1]);
         h->x[0] = g->pm[0] + xi * q->B[0] + xi * xi * q->C[0];
         h->x[1] = g->pm[1] + xi * q->B[1] + xi * xi * q->C[1];
         h->n[0] = -d[1] / sp;
@@ -386,15 +409,15 @@ static void eval_seg(const rs_pcache *pc, rs_pscratch *sc, int k, double px, dou
         h->kappa = -h->kappa;
     }
     h->feature = RS_FEATURE(RS_FEAT_FACE, k);
-    sc->seg_state[k] = st | SEG_HIT;
+    seg_set(sc, k, st | SEG_HIT);
     return;
 none:
-    sc->seg_state[k] = st | SEG_NONE;
+    seg_set(sc, k, st | SEG_NONE);
 }
 
 static inline int seg_hit(const rs_pscratch *sc, int k)
 {
-    return (sc->seg_state[k] & 3) == SEG_HIT;
+    return (seg_st(sc, k) & 3) == SEG_HIT;
 }
 
 /* Vertex contact of vertex j, if it owns the point. */
@@ -431,7 +454,7 @@ static int eval_vertex(const rs_pcache *pc, rs_pscratch *sc, int j, double px, d
         }
         break;
     }
-    double d = hypot(dx, dy);
+    double d = sqrt(dx * dx + dy * dy);
     h->feature = RS_FEATURE(RS_FEAT_VERTEX, j);
     h->x[0] = v->v[0];
     h->x[1] = v->v[1];
@@ -447,61 +470,91 @@ static int eval_vertex(const rs_pcache *pc, rs_pscratch *sc, int j, double px, d
     return 1;
 }
 
+/* Behind a convex vertex only the face with the smaller penetration keeps its contact
+ * (the Voronoi region of the solid); ties keep the lower index. */
+static void voronoi_pair(const rs_pcache *pc, rs_pscratch *sc, int j, double px, double py)
+{
+    const rs_pvert *v = &pc->pv[j];
+    if (v->kind != RS_VTX_CONVEX || v->sa < 0 || v->sb < 0 || v->sa == v->sb)
+        return;
+    int A = v->sa, B = v->sb;
+    if (!(seg_st(sc, A) & 3))
+        eval_seg(pc, sc, A, px, py);
+    if (!(seg_st(sc, B) & 3))
+        eval_seg(pc, sc, B, px, py);
+    if (!seg_hit(sc, A) || !seg_hit(sc, B))
+        return;
+    double da = sc->cand[A].dist, db = sc->cand[B].dist;
+    if (!(da < 0.0 || db < 0.0))
+        return;
+    int drop = (da < db || (da == db && A > B)) ? A : B;
+    sc->seg_state[drop] |= SEG_DROP;
+}
+
 int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double dhi,
                    rs_pscratch *sc)
 {
-    int n = pc->nseg, nv = pc->nvert, nh = 0;
-    double reach = pc->sides == 2 ? dhi : fmax(dhi, -dlo);
+    int n = pc->nseg, nh = 0, nnear = 0;
+    double reach = (pc->sides == 2 || dhi > -dlo) ? dhi : -dlo;
     if (!(reach >= 0.0) || dlo > dhi)
         return 0;
-    memset(sc->seg_state, 0, (size_t)n);
-    memset(sc->vtx_done, 0, (size_t)nv);
+    if (++sc->stamp == 0) {
+        memset(sc->seg_stamp, 0, (size_t)(n + pc->nvert) * sizeof(unsigned));
+        sc->stamp = 1;
+    }
+    /* A segment is within reach when the point is inside its bounding circle grown by
+     * reach and, for LINE and CIRCL, within reach of its line or circle. Its vertices
+     * lie on both, so a vertex is within reach only if both its segments are. */
     for (int k = 0; k < n; k++) {
         const rs_pseg *q = &pc->ps[k];
         double dx = px - q->bc[0], dy = py - q->bc[1], rr = q->br + reach;
-        if (dx * dx + dy * dy <= rr * rr) {
-            sc->seg_state[k] = SEG_NEAR;
-            eval_seg(pc, sc, k, px, py);
+        if (dx * dx + dy * dy > rr * rr)
+            continue;
+        int type = pc->seg[k].type;
+        if (type == RS_LINE) {
+            double sd = (px - q->o[0]) * (-q->t[1]) + (py - q->o[1]) * q->t[0];
+            if (fabs(sd) > reach)
+                continue;
+        } else if (type == RS_CIRCL) {
+            double wx = px - q->o[0], wy = py - q->o[1], r2 = wx * wx + wy * wy;
+            double hi = q->rad + reach, lo = q->rad - reach;
+            if (r2 > hi * hi || (lo > 0.0 && r2 < lo * lo))
+                continue;
         }
+        sc->near[nnear++] = k;
+        seg_set(sc, k, SEG_NEAR);
     }
+    if (nnear == 0)
+        return 0;
+    for (int i = 0; i < nnear; i++)
+        eval_seg(pc, sc, sc->near[i], px, py);
     if (pc->sides == 1) {
-        /* Behind a convex vertex only the face with the smaller penetration keeps its
-         * contact (the Voronoi region of the solid); ties keep the lower index. */
-        for (int j = 0; j < nv; j++) {
-            const rs_pvert *v = &pc->pv[j];
-            if (v->kind != RS_VTX_CONVEX || v->sa < 0 || v->sb < 0 || v->sa == v->sb)
+        for (int i = 0; i < nnear; i++) {
+            int k = sc->near[i];
+            if (!seg_hit(sc, k) || !(sc->cand[k].dist < 0.0))
                 continue;
-            int A = v->sa, B = v->sb;
-            int behind = (seg_hit(sc, A) && sc->cand[A].dist < 0.0) ||
-                         (seg_hit(sc, B) && sc->cand[B].dist < 0.0);
-            if (!behind)
-                continue;
-            if (!(sc->seg_state[A] & 3))
-                eval_seg(pc, sc, A, px, py);
-            if (!(sc->seg_state[B] & 3))
-                eval_seg(pc, sc, B, px, py);
-            if (!seg_hit(sc, A) || !seg_hit(sc, B))
-                continue;
-            double da = sc->cand[A].dist, db = sc->cand[B].dist;
-            int drop = (da < db || (da == db && A > B)) ? A : B;
-            sc->seg_state[drop] |= SEG_DROP;
+            voronoi_pair(pc, sc, k, px, py);
+            voronoi_pair(pc, sc, k + 1 == pc->nvert ? 0 : k + 1, px, py);
         }
     }
-    for (int k = 0; k <= n; k++) {
-        int j = k;
-        if (j < nv) {
-            const rs_pvert *v = &pc->pv[j];
-            int rel = (v->sa < 0 || (sc->seg_state[v->sa] & SEG_NEAR)) &&
-                      (v->sb < 0 || (sc->seg_state[v->sb] & SEG_NEAR));
+    for (int i = 0; i < nnear; i++) {
+        int k = sc->near[i];
+        /* vertex k (the start of segment k) is within reach when both its segments are */
+        const rs_pvert *v = &pc->pv[k];
+        if (v->sa < 0 || (seg_st(sc, v->sa) & SEG_NEAR)) {
             rs_hit2 *h = &sc->hits[nh];
-            if (rel && eval_vertex(pc, sc, j, px, py, h) && h->dist >= dlo &&
-                h->dist <= dhi)
+            if (eval_vertex(pc, sc, k, px, py, h) && h->dist >= dlo && h->dist <= dhi)
                 nh++;
         }
-        if (k < n && (sc->seg_state[k] & (3 | SEG_DROP)) == SEG_HIT) {
+        if ((seg_st(sc, k) & (3 | SEG_DROP)) == SEG_HIT) {
             const rs_hit2 *c = &sc->cand[k];
             if (c->dist >= dlo && c->dist <= dhi)
                 sc->hits[nh++] = *c;
+        }
+        if (k == n - 1 && !pc->closed) {
+            rs_hit2 *h = &sc->hits[nh];
+            if (eval_vertex(pc, sc, n, px, py, h) && h->dist >= dlo && h->dist <= dhi)
+                nh++;
         }
     }
     return nh;

@@ -66,6 +66,8 @@ void rs_profile_free(rs_profile *p);
 /* Query data, built once per surface (kept in rs_surface.impl for the analytic kinds). */
 typedef struct rs_pseg {
     double bc[2], br;  ///< bounding circle of the segment
+    double o[2];       ///< LINE: p0; CIRCL: centre (slab and annulus rejection)
+    double rad;        ///< CIRCL: radius
     double t[2];       ///< LINE: unit tangent
     double e[2];       ///< LINE: p1 - p0
     double inv_len2;   ///< LINE: 1 / |p1 - p0|^2
@@ -105,8 +107,11 @@ typedef struct rs_hit2 {
 
 /// Scratch for rs_pcache_hits, sized by the profile. Stack storage covers small profiles.
 typedef struct rs_pscratch {
+    unsigned stamp;           ///< current point; entries with another stamp are unset
+    unsigned *seg_stamp;      ///< nseg
+    unsigned *vtx_stamp;      ///< nvert
+    int *near;                ///< nseg: indices of the segments within reach
     unsigned char *seg_state; ///< nseg
-    unsigned char *vtx_done;  ///< nvert
     double *vd;               ///< 4 * nvert: dx, dy, dA, dB
     rs_hit2 *cand;            ///< nseg
     rs_hit2 *hits;            ///< nseg + nvert

@@ -81,9 +81,10 @@ int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
                 double rv[3] = {w[0] - zz * ez[0], w[1] - zz * ez[1], w[2] - zz * ez[2]};
                 double r = sqrt(rv[0] * rv[0] + rv[1] * rv[1] + rv[2] * rv[2]);
                 if (r > axis_tol) {
-                    er[0] = rv[0] / r;
-                    er[1] = rv[1] / r;
-                    er[2] = rv[2] / r;
+                    double inv = 1.0 / r;
+                    er[0] = rv[0] * inv;
+                    er[1] = rv[1] * inv;
+                    er[2] = rv[2] * inv;
                 } else {
                     /* on the axis: the surface's fixed ex, never NaN */
                     er[0] = ex[0];

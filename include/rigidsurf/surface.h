@@ -5,6 +5,8 @@
  *   CYLINDER that plane is the local (x, y) plane; for REVOLUTION it is (r, z).
  * - The outward normal lies to the left of travel: n2 = (-t_y, t_x). Particles live on
  *   the side n points to. One-sided unless SIDES=2.
+ * - FILLET RADIUS rounds the corners between LINE and CIRCL segments with tangent arcs;
+ *   a corner that touches a PARAB stays sharp.
  * - Frames:  SEGMENTS    t1 = (0,0,-1) x n  (= travel direction), t2 = (0,0,-1)
  *            CYLINDER    t1 = generator z^, t2 = n x t1
  *            REVOLUTION  t2 = hoop e_theta = z^ x e_r, t1 = t2 x n

@@ -328,6 +328,32 @@ static void test_corner_drum_fillet_sweep(void)
     rs_surface_free(&s);
 }
 
+/* History hand-over: faces across a SMOOTH vertex and a face with its own vertex; not
+ * across a sharp corner, not to another segment's vertex. */
+static void test_corner_adjacency_for_history(void)
+{
+    rs_surface s;
+    ENSURE(parse("*SURFACE, TYPE=SEGMENTS, NAME=pocket\nSTART, -2, 0\nLINE, 0, 0\n"
+                 "LINE, 0, 2\nLINE, 1, 3\n",
+                 &s) == 0);
+    int f0 = RS_FEATURE(RS_FEAT_FACE, 0), f1 = RS_FEATURE(RS_FEAT_FACE, 1);
+    ENSURE(rs_surface_adjacent(&s, f0, f1) == 0);
+    ENSURE(rs_surface_adjacent(&s, f0, RS_FEATURE(RS_FEAT_VERTEX, 1)) == 1);
+    ENSURE(rs_surface_adjacent(&s, RS_FEATURE(RS_FEAT_VERTEX, 0), f0) == 1);
+    ENSURE(rs_surface_adjacent(&s, f0, RS_FEATURE(RS_FEAT_VERTEX, 2)) == 0);
+    ENSURE(rs_surface_adjacent(&s, f1, RS_FEATURE(RS_FEAT_VERTEX, 2)) == 1); /* convex */
+    ENSURE(rs_surface_adjacent(&s, f0, RS_FEATURE(RS_FEAT_FACE, 2)) == 0);
+    rs_surface_free(&s);
+    ENSURE(parse("*SURFACE, TYPE=SEGMENTS, NAME=pocket, FILLET RADIUS=0.5\nSTART, -2, 0\n"
+                 "LINE, 0, 0\nLINE, 0, 2\n",
+                 &s) == 0);
+    ENSURE(s.profile.nseg == 3);
+    ENSURE(rs_surface_adjacent(&s, f0, f1) == 1);
+    ENSURE(rs_surface_adjacent(&s, f1, RS_FEATURE(RS_FEAT_FACE, 2)) == 1);
+    ENSURE(rs_surface_adjacent(&s, f1, RS_FEATURE(RS_FEAT_VERTEX, 1)) == 0); /* smooth */
+    rs_surface_free(&s);
+}
+
 int main(void)
 {
     RS_RUN(test_corner_concave_gives_two_contacts);
@@ -337,5 +363,6 @@ int main(void)
     RS_RUN(test_corner_sweep_rdisp1_is_lipschitz);
     RS_RUN(test_corner_rounded_box_distance);
     RS_RUN(test_corner_drum_fillet_sweep);
+    RS_RUN(test_corner_adjacency_for_history);
     return rs_test_summary();
 }
