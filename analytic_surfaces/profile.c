@@ -23,6 +23,13 @@ static double inf_norm2(const double a[2])
     return fmax(fabs(a[0]), fabs(a[1]));
 }
 
+static int too_large(const char *where, rs_error *err)
+{
+    return rs_error_set(err, RS_ERR_GEOMETRY,
+                        "%s: coordinates too large (expected a segment of finite length)",
+                        where);
+}
+
 int rs_segment_line(rs_segment *g, const double p0[2], const double p1[2],
                     const char *where, rs_error *err)
 {
@@ -34,6 +41,8 @@ int rs_segment_line(rs_segment *g, const double p0[2], const double p1[2],
                             "%s: zero-length LINE (expected an end point different from "
                             "the current point (%g, %g))",
                             where, p0[0], p0[1]);
+    if (!isfinite(len))
+        return too_large(where, err);
     memset(g, 0, sizeof *g);
     g->type = RS_LINE;
     memcpy(g->p0, p0, sizeof g->p0);
@@ -64,6 +73,8 @@ int rs_segment_circl(rs_segment *g, const double p0[2], const double p1[2],
                             "%s: CIRCL radius mismatch: start point at %.17g and end point "
                             "at %.17g from the centre (expected equal within %g relative)",
                             where, r0, r1, RS_RADIUS_TOL);
+    if (!isfinite(r0) || !isfinite(r1) || !isfinite(chord))
+        return too_large(where, err);
     double sweep = atan2(cross2(r0v, r1v), dot2(r0v, r1v));
     if (fabs(sweep) > RS_PI - 1e-9)
         return rs_error_set(
@@ -159,6 +170,8 @@ int rs_segment_parab(rs_segment *g, const double p0[2], const double pm[2],
                             "middle point (%g, %g) between the end points)",
                             where, pm[0], pm[1]);
     g->length = parab_length(B, C);
+    if (!isfinite(g->length) || !isfinite(smax))
+        return too_large(where, err);
     return RS_OK;
 }
 

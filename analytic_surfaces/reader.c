@@ -416,6 +416,10 @@ static int build_frame(parser *ps, const draft *d, rs_surface *s)
         return RS_OK;
     }
     ps->line = d->kline + 1;
+    if (!isfinite(lab) || !isfinite(norm3(d->c)) || !isfinite(norm3(d->ab)))
+        return rs_error_set(ps->err, RS_ERR_GEOMETRY,
+                            "%s:%d: coordinates too large (expected finite a, b, c)",
+                            ps->origin, d->kline + 1);
     if (!(lab > 1e-12 * scale) || lab == 0.0)
         return rs_error_set(
             ps->err, RS_ERR_GEOMETRY,

@@ -139,6 +139,9 @@ static const bad_case BAD[] = {
      RS_ERR_PARSE, 1, "twice"},
     {"empty value", "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, , 0\n", RS_ERR_PARSE, 2,
      "empty value"},
+    {"overflowing coordinates",
+     "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, 1e308, 0\nLINE, -1e308, 0\n", RS_ERR_GEOMETRY,
+     3, "too large"},
     {"no surface at all", "** only a comment\n", RS_ERR_NOTFOUND, 0, "no *SURFACE"},
 };
 
