@@ -24,6 +24,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
+#include <unistd.h>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -163,9 +164,25 @@ void FixWallRigid::fail(const std::string &msg)
     std::abort(); // not reached: error->all ends the run
 }
 
+/* Error::one ends with MPI_Abort, which drops whatever stdio still buffers: on a pipe or
+ * a file the message and the last thermo lines would be lost. They are flushed here, and
+ * the message written to the log, before Error::one runs. */
 void FixWallRigid::fail_one(const std::string &msg)
 {
     std::string m = std::string("Fix wall/rigid ") + id + ": " + msg;
+    if (screen) {
+        std::fflush(screen);
+        if (!isatty(fileno(screen))) {
+            std::fprintf(screen, "ERROR on proc %d: %s (%s:%d)\n", comm->me, m.c_str(),
+                         __FILE__, __LINE__);
+            std::fflush(screen);
+        }
+    }
+    if (logfile) {
+        std::fprintf(logfile, "ERROR on proc %d: %s (%s:%d)\n", comm->me, m.c_str(),
+                     __FILE__, __LINE__);
+        std::fflush(logfile);
+    }
     error->one(FLERR, m.c_str());
     std::abort();
 }
