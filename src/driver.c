@@ -302,8 +302,9 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     p.radius = d->radius;
     p.id = d->id;
     p.hist = d->hist_ptr;
-    rc = rs_track_update(&d->tracker, d->surface, d->moving ? &d->motion : NULL, d->dt, &p,
-                         &d->contacts, &d->trk, err);
+    /* The first call sees the initial state: no increment of motion lies behind it. */
+    rc = rs_track_update(&d->tracker, d->surface, d->moving ? &d->motion : NULL,
+                         d->inc == 0 ? 0.0 : d->dt, &p, &d->contacts, &d->trk, err);
     if (rc)
         return rc;
     rc = grow_contacts(d, d->trk.n, nd, err);

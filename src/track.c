@@ -122,7 +122,7 @@ static int assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_part
             goto full;
         int f = c->feature[k], js = -1;
         for (int j = 0; j < cap; j++)
-            if (fe[j] == f && ((active & ~used) >> j & 1u)) {
+            if (((active & ~used) >> j & 1u) && fe[j] == f) {
                 js = j;
                 used |= (uint64_t)1 << j;
                 break;
@@ -286,7 +286,11 @@ RS_INLINE void emit_contact(const rs_tracker *tr, const master_rates *mr, double
         s2 = d21 * so1 + d22 * so2 + ds2;
         drd1 = rd1 - h[RS_H_RDISP1];
     } else {
-        s1 = s2 = ds1 = ds2 = 0.0;
+        /* The first increment of a new contact: its slip and approach over this dt. */
+        ds1 = v1 * dt;
+        ds2 = v2 * dt;
+        s1 = ds1;
+        s2 = ds2;
         drd1 = -vn * dt;
         for (int b = 0; b < 3 + tr->nstatev; b++)
             h[RS_H_STRESS + b] = 0.0;

@@ -355,8 +355,8 @@ static void test_drot_identity_sliding_along_generator(void)
         ENSURE(drot_is(&o, 0, 1, 0, 0, 1, 1e-14));
         rs_track_commit(&tr, &o, NULL, NULL);
     }
-    /* New contact on the first call (slip 0), then N - 1 increments of u dt along t1. */
-    ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), (N - 1) * u * dt, 1e-12);
+    /* N increments of u dt along t1: a new contact's first call carries its increment. */
+    ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), N * u * dt, 1e-12);
     ENSURE_SMALL(RS_A2(o.rdisp, 3, 2, 0), 1e-14);
     rs_track_out_free(&o);
 }
@@ -397,7 +397,7 @@ static void test_drot_identity_sliding_around_drum_hoop(void)
     }
     /* t2 = n x g = -e_r x g = e_theta, since (e_r, e_theta, g) is right-handed. */
     ENSURE_SMALL(RS_A2(o.rdisp, 3, 1, 0), 1e-14);
-    ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), (N - 1) * u * dt, 1e-12);
+    ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), N * u * dt, 1e-12);
     rs_track_out_free(&o);
 }
 
@@ -434,7 +434,7 @@ static void test_drot_antiparallel_normal_is_half_turn_about_t1(void)
  * 0.2 t2 + 0.05 n (same normal speed: constant penetration d = 1e-3). With
  * x_cp - x = -a n, a = R - d/2 = 0.0095: w x (-a n) = -a (t1 x n + 2 t2 x n) = a t2 - 2a
  * t1. So v_rel,t = (0.3 - 0.1 - 0.019, -0.1 - 0.2 + 0.0095) = (0.181, -0.2905), and after N
- * calls (the first opens the contact with slip 0) slip = (N - 1) dt (0.181, -0.2905). */
+ * calls (the first opens the contact with its first increment) slip = N dt (0.181, -0.2905). */
 static void test_slip_equals_integrated_tangential_velocity(void)
 {
     rs_tracker tr = tracker(3);
@@ -467,17 +467,15 @@ static void test_slip_equals_integrated_tangential_velocity(void)
         add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1, t2);
         ENSURE(rs_track_update(&tr, NULL, &m, dt, &b.p, &l.c, &o, &err) == RS_OK);
         ENSURE(o.n == 1);
-        if (step > 1) {
-            ENSURE_NEAR(RS_A2(o.drdisp, 3, 1, 0), 0.181 * dt, 1e-13);
-            ENSURE_NEAR(RS_A2(o.drdisp, 3, 2, 0), -0.2905 * dt, 1e-13);
-        }
+        ENSURE_NEAR(RS_A2(o.drdisp, 3, 1, 0), 0.181 * dt, 1e-13);
+        ENSURE_NEAR(RS_A2(o.drdisp, 3, 2, 0), -0.2905 * dt, 1e-13);
         ENSURE_NEAR(RS_A2(o.vrel, 3, 0, 0), 0.0, 1e-12);
         ENSURE_NEAR(RS_A2(o.vrel, 3, 1, 0), 0.181, 1e-12);
         ENSURE_NEAR(RS_A2(o.vrel, 3, 2, 0), -0.2905, 1e-12);
         rs_track_commit(&tr, &o, NULL, NULL);
     }
-    ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), (N - 1) * dt * 0.181, 1e-11);
-    ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), (N - 1) * dt * -0.2905, 1e-11);
+    ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), N * dt * 0.181, 1e-11);
+    ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), N * dt * -0.2905, 1e-11);
     ENSURE_NEAR(RS_A2(o.rdisp, 3, 0, 0), d, 1e-12);
     rs_track_out_free(&o);
 }
@@ -510,7 +508,8 @@ static void test_slip_rotated_by_drot_before_increment(void)
     rs_track_commit(&tr, &o, NULL, NULL);
     ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
     rs_track_commit(&tr, &o, NULL, NULL);
-    double S[3] = {v1[0] * dt, v1[1] * dt, v1[2] * dt}; /* slip vector after two calls */
+    /* slip vector after two calls, each adding v1 dt */
+    double S[3] = {2 * v1[0] * dt, 2 * v1[1] * dt, 2 * v1[2] * dt};
     ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), dot(S, t1), 1e-15);
     ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), dot(S, t2), 1e-15);
 
@@ -653,14 +652,16 @@ static void test_history_handover_across_smooth_junction(void)
             ENSURE(o.n == 1);
             ENSURE(o.slot[0] == slot && o.feature[0] == fb);
             ENSURE(slot[RS_H_FEATURE] == fb);
-            ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), 3 * 0.2 * dt, 1e-15);
-            ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), 3 * 0.1 * dt, 1e-15);
+            ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), 4 * 0.2 * dt, 1e-15);
+            ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), 4 * 0.1 * dt, 1e-15);
             ENSURE(slot[RS_H_STRESS] == 5 && slot[RS_H_STRESS + 2] == 7);
             ENSURE(slot[RS_H_STATEV] == 8 && slot[RS_H_STATEV + 1] == 9);
         } else {
             ENSURE(o.n == 2);
             ENSURE(o.feature[0] == fc && o.slot[0] != slot);
-            ENSURE(RS_A2(o.rdisp, 3, 1, 0) == 0.0 && RS_A2(o.rdisp, 3, 2, 0) == 0.0);
+            /* fresh history: the slip is this call's increment only */
+            ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), 0.2 * dt, 1e-15);
+            ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), 0.1 * dt, 1e-15);
             ENSURE(o.slot[0][RS_H_STRESS] == 0 && o.slot[0][RS_H_STATEV + 1] == 0);
             ENSURE(o.feature[1] == fa && o.slot[1] == slot);
             ENSURE(RS_A2(o.rdisp, 3, 0, 1) == RS_MAXVAL);
@@ -746,7 +747,7 @@ static void test_ndir2_drot_identity(void)
         ENSURE_NEAR(RS_A3(o.alocaldir, 2, 0, 1, 0), -er[1], 1e-15);
         ENSURE_NEAR(RS_A3(o.alocaldir, 2, 1, 1, 0), er[0], 1e-15);
         ENSURE_NEAR(RS_A2(o.rdisp, 2, 0, 0), pen, 1e-12);
-        ENSURE_NEAR(RS_A2(o.rdisp, 2, 1, 0), step * u * dt, 1e-12);
+        ENSURE_NEAR(RS_A2(o.rdisp, 2, 1, 0), (step + 1) * u * dt, 1e-12);
         ENSURE_NEAR(RS_A2(o.coordmst, 2, 0, 0), xm[0], 1e-15);
         ENSURE_NEAR(RS_A2(o.coordmst, 2, 1, 0), xm[1], 1e-15);
         rs_track_commit(&tr, &o, NULL, NULL);

@@ -183,7 +183,7 @@ static void test_history_handover_across_fillet(void)
             for (int j = 0; j < 2; j++)
                 ENSURE_NEAR(RS_DROT(out.drot, i, j, 0), i == j, 1e-12);
         ENSURE_NEAR(RS_A2(out.rdisp, 3, 0, 0), pen, 1e-12);
-        ENSURE_NEAR(RS_A2(out.rdisp, 3, 1, 0), step * u * dt, 1e-12);
+        ENSURE_NEAR(RS_A2(out.rdisp, 3, 1, 0), (step + 1) * u * dt, 1e-12);
         ENSURE_SMALL(RS_A2(out.rdisp, 3, 2, 0), 1e-12);
         rs_track_commit(&tr, &out, NULL, NULL);
     }
