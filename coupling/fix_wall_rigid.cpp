@@ -1167,6 +1167,8 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         return;
     c_uid_.resize(ne), c_type_.resize(ne);
     c_stress_.resize((size_t)ne * nd), c_statev_.resize((size_t)ne * std::max(ns, 1));
+    /* Stress of the previous increment in this increment's basis, and the law state. */
+    rs_track_load(&tracker_, &tout_, c_stress_.data(), ns ? c_statev_.data() : NULL);
     c_flux_slv_.assign(ne, 0.0), c_flux_mst_.assign(ne, 0.0), c_sed_.resize(ne);
     c_sfd_.assign(ne, 0.0), c_scd_.assign(ne, 0.0), c_spd_.assign(ne, 0.0);
     c_svd_.assign(ne, 0.0), c_stiff_.resize(ne), c_cond_.resize(ne), c_area_.resize(ne);
@@ -1186,19 +1188,6 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         leaving_[e] = slot[RS_H_STATE] == RS_HSTATE_LEAVING;
         c_uid_[e] = tag[i];
         c_type_[e] = type[i];
-        /* Stress of the previous increment, carried into this increment's basis. */
-        double *s = &c_stress_[(size_t)e * nd];
-        s[0] = slot[RS_H_STRESS];
-        if (nd == 3 && !leaving_[e]) {
-            const double s2 = slot[RS_H_STRESS + 1], s3 = slot[RS_H_STRESS + 2];
-            s[1] = RS_DROT(tout_.drot, 0, 0, e) * s2 + RS_DROT(tout_.drot, 0, 1, e) * s3;
-            s[2] = RS_DROT(tout_.drot, 1, 0, e) * s2 + RS_DROT(tout_.drot, 1, 1, e) * s3;
-        } else {
-            for (int a = 1; a < nd; a++)
-                s[a] = slot[RS_H_STRESS + a];
-        }
-        for (int a = 0; a < ns; a++)
-            c_statev_[(size_t)e * ns + a] = slot[RS_H_STATEV + a];
         c_sed_[e] = row_[i][sed_offset() + j];
 
         const double R = radius[i], m = rmass[i];

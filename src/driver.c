@@ -150,27 +150,16 @@ static int grow_contacts(rs_driver *d, int nc, int nd, rs_error *err)
     return RS_OK;
 }
 
-/* Fills the per-contact inputs the block reads: previous stress (shear rotated by
- * drot), state variables, temperatures and the DEM extension. */
-static void gather_contacts(rs_driver *d, int nd)
+/* Fills the per-contact inputs the block reads: previous stress and state (from
+ * history, rs_track_load), temperatures and the DEM extension. */
+static void gather_contacts(rs_driver *d)
 {
     const rs_track_out *o = &d->trk;
     const int ns = d->nstatev;
     const size_t uc = (size_t)d->ccap;
+    rs_track_load(&d->tracker, o, d->cstress, ns ? d->cstatev : NULL);
     for (int e = 0; e < o->n; ++e) {
-        const double *h = o->slot[e];
         const int i = o->point[e];
-        for (int b = 0; b < nd; ++b)
-            RS_A2(d->cstress, nd, b, e) = h[RS_H_STRESS + b];
-        if (nd == 3 && RS_A2(o->rdisp, nd, 0, e) < 0.5 * RS_MAXVAL) {
-            const double s2 = h[RS_H_STRESS + 1], s3 = h[RS_H_STRESS + 2];
-            RS_A2(d->cstress, 3, 1, e) =
-                RS_DROT(o->drot, 0, 0, e) * s2 + RS_DROT(o->drot, 0, 1, e) * s3;
-            RS_A2(d->cstress, 3, 2, e) =
-                RS_DROT(o->drot, 1, 0, e) * s2 + RS_DROT(o->drot, 1, 1, e) * s3;
-        }
-        for (int b = 0; b < ns; ++b)
-            RS_A2(d->cstatev, ns, b, e) = h[RS_H_STATEV + b];
         double *w = d->cwork;
         const double m = d->mass[i], a = d->area[i], r = d->radius[i];
         w[W_TEMP * uc + e] = d->temp[i];
@@ -310,7 +299,7 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     rc = grow_contacts(d, d->trk.n, nd, err);
     if (rc)
         return rc;
-    gather_contacts(d, nd);
+    gather_contacts(d);
     rc = call_law(d, nd, err);
     if (rc)
         return rc;

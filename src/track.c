@@ -466,6 +466,34 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
     return RS_OK;
 }
 
+void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress,
+                   double *statev)
+{
+    const int nd = out->ndir, ns = tr->nstatev;
+    for (int e = 0; e < out->n; e++) {
+        const double *h = out->slot[e];
+        if (stress) {
+            RS_A2(stress, nd, 0, e) = h[RS_H_STRESS];
+            if (nd == 2) {
+                RS_A2(stress, nd, 1, e) = h[RS_H_STRESS + 1];
+            } else if (h[RS_H_STATE] == RS_HSTATE_LEAVING) {
+                RS_A2(stress, nd, 1, e) = h[RS_H_STRESS + 1];
+                RS_A2(stress, nd, 2, e) = h[RS_H_STRESS + 2];
+            } else {
+                /* The shear traction is carried into this increment's basis, as the slip. */
+                const double s2 = h[RS_H_STRESS + 1], s3 = h[RS_H_STRESS + 2];
+                RS_A2(stress, nd, 1, e) =
+                    RS_DROT(out->drot, 0, 0, e) * s2 + RS_DROT(out->drot, 0, 1, e) * s3;
+                RS_A2(stress, nd, 2, e) =
+                    RS_DROT(out->drot, 1, 0, e) * s2 + RS_DROT(out->drot, 1, 1, e) * s3;
+            }
+        }
+        if (statev)
+            for (int b = 0; b < ns; b++)
+                RS_A2(statev, ns, b, e) = h[RS_H_STATEV + b];
+    }
+}
+
 void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stress,
                      const double *statev)
 {

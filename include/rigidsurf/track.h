@@ -93,6 +93,13 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
                     double dt, const rs_particles *p, const rs_contacts *c,
                     rs_track_out *out, rs_error *err);
 
+/// Fills the law's read/write inputs from history, before the law call: stress(ndir, n)
+/// of the previous increment with its shear carried into this increment's basis
+/// (s(2:3) <- drot s(2:3); leaving contacts keep theirs unrotated) and statev(nstatev,
+/// n). Either may be NULL. New contacts read zeros.
+void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress,
+                   double *statev);
+
 /// Stores the law's results in history: stress(ndir, n) and statev(nstatev, n) for the
 /// live contacts (either may be NULL), and frees the slots of leaving contacts.
 void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stress,

@@ -326,6 +326,57 @@ static void test_drot_is_rotation_by_theta(void)
     rs_track_out_free(&o);
 }
 
+/* rs_track_load: the previous shear traction is a vector fixed in space on a fixed
+ * master; with the tangent basis turned by theta about n its components in the new basis
+ * are T . u_i, T = s2 t1 + s3 t2. The pressure and statev come back unchanged. */
+static void test_previous_stress_shear_carried_by_drot(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_error err;
+    double nin[3] = {-0.2, 0.7, 0.4}, hint[3] = {0, 0, 1}, n[3], t1[3], t2[3];
+    double zero[3] = {0, 0, 0}, P[3] = {0.1, 0.2, 0.3}, x[3];
+    const double R = 0.02, theta = -0.7, dt = 1e-3, c = cos(theta), s = sin(theta);
+    make_frame(nin, hint, n, t1, t2);
+    axpy(x, R - 1e-4, n, P);
+    block_init(&b, 1, &tr);
+    block_set(&b, 0, x, zero, zero, R);
+    clist_init(&l);
+    add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1, t2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+    const double stress[3] = {3.5, 2.0, -1.0}, statev[NS] = {4, 5};
+    rs_track_commit(&tr, &o, stress, statev);
+
+    double u1[3], u2[3], T[3];
+    for (int i = 0; i < 3; i++) {
+        u1[i] = c * t1[i] + s * t2[i];
+        u2[i] = -s * t1[i] + c * t2[i];
+        T[i] = stress[1] * t1[i] + stress[2] * t2[i];
+    }
+    clist_init(&l);
+    add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, u1, u2);
+    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+    ENSURE(o.n == 1);
+    double sl[3], sv[NS];
+    rs_track_load(&tr, &o, sl, sv);
+    ENSURE(sl[0] == stress[0]);
+    ENSURE_NEAR(sl[1], dot(T, u1), 1e-14);
+    ENSURE_NEAR(sl[2], dot(T, u2), 1e-14);
+    ENSURE(sv[0] == statev[0] && sv[1] == statev[1]);
+    rs_track_commit(&tr, &o, sl, sv);
+
+    /* Leaving: the stored stress comes back as it is (drot holds 1e30). */
+    clist_init(&l);
+    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+    ENSURE(o.n == 1 && RS_DROT(o.drot, 0, 0, 0) == RS_MAXVAL);
+    double sl2[3];
+    rs_track_load(&tr, &o, sl2, NULL);
+    ENSURE(sl2[0] == sl[0] && sl2[1] == sl[1] && sl2[2] == sl[2]);
+    rs_track_out_free(&o);
+}
+
 /* Sliding along a fixed drum's generator: n and t1 = generator do not change, so
  * drot = I and the slip is the distance slid along t1. */
 static void test_drot_identity_sliding_along_generator(void)
@@ -871,6 +922,7 @@ int main(void)
     RS_RUN(test_drot_identity_under_rigid_translation);
     RS_RUN(test_drot_identity_under_rigid_rotation);
     RS_RUN(test_drot_is_rotation_by_theta);
+    RS_RUN(test_previous_stress_shear_carried_by_drot);
     RS_RUN(test_drot_identity_sliding_along_generator);
     RS_RUN(test_drot_identity_sliding_around_drum_hoop);
     RS_RUN(test_drot_antiparallel_normal_is_half_turn_about_t1);
