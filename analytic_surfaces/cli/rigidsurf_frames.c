@@ -1,7 +1,8 @@
 /* rigidsurf-frames: prints the contact frame of the globally closest feature of an
  * analytic surface for each query point.
  *
- *   rigidsurf-frames SURFACE_FILE [POINTS_FILE] [--name NAME] [--tracking D] [--vtk OUT.vtk]
+ *   rigidsurf-frames SURFACE_FILE [POINTS_FILE] [--name NAME] [--tracking D] [--vtk
+ * OUT.vtk]
  *
  * Points come one per line, "x y z" ("x y" for SEGMENTS), '#' starts a comment.
  * Output, %.17g:  3D: rdisp1 xm ym zm n_x n_y n_z t1_x t1_y t1_z t2_x t2_y t2_z
@@ -84,9 +85,10 @@ static int read_points(FILE *f, const char *origin, int ndim, point_list *pts)
             if (!*s)
                 break;
             if (nv == ndim) {
-                fprintf(stderr,
-                        "rigidsurf-frames: %s:%ld: expected %d coordinates (%s), found more\n",
-                        origin, lineno, ndim, ndim == 2 ? "x y" : "x y z");
+                fprintf(
+                    stderr,
+                    "rigidsurf-frames: %s:%ld: expected %d coordinates (%s), found more\n",
+                    origin, lineno, ndim, ndim == 2 ? "x y" : "x y z");
                 return 1;
             }
             char *end;
@@ -96,7 +98,8 @@ static int read_points(FILE *f, const char *origin, int ndim, point_list *pts)
                 int w = 0;
                 while (s[w] && !isspace((unsigned char)s[w]) && w < 40)
                     w++;
-                fprintf(stderr, "rigidsurf-frames: %s:%ld: expected a finite number, got '%.*s'\n",
+                fprintf(stderr,
+                        "rigidsurf-frames: %s:%ld: expected a finite number, got '%.*s'\n",
                         origin, lineno, w, s);
                 return 1;
             }
@@ -106,7 +109,8 @@ static int read_points(FILE *f, const char *origin, int ndim, point_list *pts)
         if (nv == 0)
             continue;
         if (nv != ndim) {
-            fprintf(stderr, "rigidsurf-frames: %s:%ld: expected %d coordinates (%s), found %d\n",
+            fprintf(stderr,
+                    "rigidsurf-frames: %s:%ld: expected %d coordinates (%s), found %d\n",
                     origin, lineno, ndim, ndim == 2 ? "x y" : "x y z", nv);
             return 1;
         }
@@ -161,7 +165,8 @@ static void print_rows(const frame_row *rows, int npts, int ndir)
             for (int a = 0; a < ncol; a++)
                 v[a] = 1.0e30;
         } else if (ndir == 2) {
-            double w[7] = {r->rdisp1, r->xm[0], r->xm[1], r->n[0], r->n[1], r->t1[0], r->t1[1]};
+            double w[7] = {r->rdisp1, r->xm[0], r->xm[1], r->n[0],
+                           r->n[1],   r->t1[0], r->t1[1]};
             memcpy(v, w, sizeof w);
         } else {
             double w[13] = {r->rdisp1, r->xm[0], r->xm[1], r->xm[2], r->n[0],
@@ -198,8 +203,9 @@ static int write_vtk(const char *path, const rs_surface *s, const frame_row *row
         return rs_error_set(err, RS_ERR_IO, "%s: cannot open for writing: %s", path,
                             strerror(errno));
     }
-    fprintf(f, "# vtk DataFile Version 3.0\nrigidsurf surface %s and contact frames\n"
-               "ASCII\nDATASET POLYDATA\nPOINTS %d double\n",
+    fprintf(f,
+            "# vtk DataFile Version 3.0\nrigidsurf surface %s and contact frames\n"
+            "ASCII\nDATASET POLYDATA\nPOINTS %d double\n",
             s->name, m.nvert + nfound);
     for (int v = 0; v < m.nvert; v++)
         fprintf(f, "%.17g %.17g %.17g\n", m.xyz[3 * v], m.xyz[3 * v + 1], m.xyz[3 * v + 2]);
@@ -242,7 +248,8 @@ int main(int argc, char **argv)
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
             usage(stdout);
             return 0;
-        } else if (!strcmp(a, "--name") || !strcmp(a, "--tracking") || !strcmp(a, "--vtk")) {
+        } else if (!strcmp(a, "--name") || !strcmp(a, "--tracking") ||
+                   !strcmp(a, "--vtk")) {
             if (i + 1 >= argc) {
                 fprintf(stderr, "rigidsurf-frames: %s expects a value\n", a);
                 return 2;
@@ -319,7 +326,8 @@ int main(int argc, char **argv)
                       .pose = NULL,
                       .gap_max = tracking,
                       .dist_min = -INFINITY};
-        if (!rows || rs_contacts_reserve(&c, pts.n, &err) || rs_surface_query(&s, &q, &c, &err)) {
+        if (!rows || rs_contacts_reserve(&c, pts.n, &err) ||
+            rs_surface_query(&s, &q, &c, &err)) {
             fprintf(stderr, "rigidsurf-frames: %s\n", rows ? err.msg : "out of memory");
             rc = 1;
         } else {

@@ -30,8 +30,8 @@ enum rs_status {
 
 /// Error record filled by failing calls. The library never prints and never exits.
 typedef struct rs_error {
-    int code;       ///< one of rs_status
-    char msg[512];  ///< one line, "FILE:LINE: what was expected" for input errors
+    int code;      ///< one of rs_status
+    char msg[512]; ///< one line, "FILE:LINE: what was expected" for input errors
 } rs_error;
 
 /// Sets err (if not NULL) and returns code. printf-style message.
@@ -50,8 +50,8 @@ void rs_error_clear(rs_error *err);
 #define RS_FEAT_FACE 0
 #define RS_FEAT_EDGE 1
 #define RS_FEAT_VERTEX 2
-#define RS_FEATURE(type, index) ((int)(index) * 4 + (int)(type))
-#define RS_FEATURE_TYPE(f) ((f) & 3)
+#define RS_FEATURE(type, index) ((int)(index)*4 + (int)(type))
+#define RS_FEATURE_TYPE(f) ((f)&3)
 #define RS_FEATURE_INDEX(f) ((f) >> 2)
 #define RS_FEATURE_NONE (-1)
 
@@ -60,9 +60,9 @@ void rs_error_clear(rs_error *err);
  *   a(nd, nd, n):    RS_A3(a, nd, i, j, k)   component i of local direction j (alocaldir)
  *   drot(2, 2, n):   RS_DROT(a, i, j, k) */
 #define RS_A2(a, nd, i, k) ((a)[(size_t)(k) * (size_t)(nd) + (size_t)(i)])
-#define RS_A3(a, nd, i, j, k) \
+#define RS_A3(a, nd, i, j, k)                                                              \
     ((a)[((size_t)(k) * (size_t)(nd) + (size_t)(j)) * (size_t)(nd) + (size_t)(i)])
-#define RS_DROT(a, i, j, k) ((a)[(size_t)(k) * 4u + (size_t)(j) * 2u + (size_t)(i)])
+#define RS_DROT(a, i, j, k) ((a)[(size_t)(k)*4u + (size_t)(j)*2u + (size_t)(i)])
 
 #ifdef __cplusplus
 }

@@ -10,63 +10,63 @@
 
 static int rs_test_passed, rs_test_failed, rs_test_current_failed;
 
-#define ENSURE(c)                                                                    \
-    do {                                                                             \
-        if (!(c)) {                                                                  \
-            fprintf(stderr, "%s:%d: ENSURE(%s) failed\n", __FILE__, __LINE__, #c);   \
-            rs_test_current_failed = 1;                                              \
-            return;                                                                  \
-        }                                                                            \
+#define ENSURE(c)                                                                          \
+    do {                                                                                   \
+        if (!(c)) {                                                                        \
+            fprintf(stderr, "%s:%d: ENSURE(%s) failed\n", __FILE__, __LINE__, #c);         \
+            rs_test_current_failed = 1;                                                    \
+            return;                                                                        \
+        }                                                                                  \
     } while (0)
 
 /// |x| <= tol (NaN fails).
-#define ENSURE_SMALL(x, tol)                                                         \
-    do {                                                                             \
-        double rs_x_ = (double)(x), rs_t_ = (double)(tol);                           \
-        if (!(fabs(rs_x_) <= rs_t_)) {                                               \
-            fprintf(stderr, "%s:%d: ENSURE_SMALL(%s, %s) failed: %.17g\n", __FILE__, \
-                    __LINE__, #x, #tol, rs_x_);                                      \
-            rs_test_current_failed = 1;                                              \
-            return;                                                                  \
-        }                                                                            \
+#define ENSURE_SMALL(x, tol)                                                               \
+    do {                                                                                   \
+        double rs_x_ = (double)(x), rs_t_ = (double)(tol);                                 \
+        if (!(fabs(rs_x_) <= rs_t_)) {                                                     \
+            fprintf(stderr, "%s:%d: ENSURE_SMALL(%s, %s) failed: %.17g\n", __FILE__,       \
+                    __LINE__, #x, #tol, rs_x_);                                            \
+            rs_test_current_failed = 1;                                                    \
+            return;                                                                        \
+        }                                                                                  \
     } while (0)
 
 /// |a - b| <= tol (NaN fails).
-#define ENSURE_NEAR(a, b, tol)                                                       \
-    do {                                                                             \
-        double rs_a_ = (double)(a), rs_b_ = (double)(b), rs_t_ = (double)(tol);      \
-        if (!(fabs(rs_a_ - rs_b_) <= rs_t_)) {                                       \
-            fprintf(stderr, "%s:%d: ENSURE_NEAR(%s, %s, %s) failed: %.17g vs %.17g\n", \
-                    __FILE__, __LINE__, #a, #b, #tol, rs_a_, rs_b_);                 \
-            rs_test_current_failed = 1;                                              \
-            return;                                                                  \
-        }                                                                            \
+#define ENSURE_NEAR(a, b, tol)                                                             \
+    do {                                                                                   \
+        double rs_a_ = (double)(a), rs_b_ = (double)(b), rs_t_ = (double)(tol);            \
+        if (!(fabs(rs_a_ - rs_b_) <= rs_t_)) {                                             \
+            fprintf(stderr, "%s:%d: ENSURE_NEAR(%s, %s, %s) failed: %.17g vs %.17g\n",     \
+                    __FILE__, __LINE__, #a, #b, #tol, rs_a_, rs_b_);                       \
+            rs_test_current_failed = 1;                                                    \
+            return;                                                                        \
+        }                                                                                  \
     } while (0)
 
 /// |a - b| <= rtol * max(|a|, |b|, 1).
-#define ENSURE_REL(a, b, rtol)                                                       \
-    do {                                                                             \
-        double rs_a_ = (double)(a), rs_b_ = (double)(b);                             \
-        double rs_s_ = fmax(1.0, fmax(fabs(rs_a_), fabs(rs_b_)));                    \
-        if (!(fabs(rs_a_ - rs_b_) <= (double)(rtol) * rs_s_)) {                      \
-            fprintf(stderr, "%s:%d: ENSURE_REL(%s, %s, %s) failed: %.17g vs %.17g\n", \
-                    __FILE__, __LINE__, #a, #b, #rtol, rs_a_, rs_b_);                \
-            rs_test_current_failed = 1;                                              \
-            return;                                                                  \
-        }                                                                            \
+#define ENSURE_REL(a, b, rtol)                                                             \
+    do {                                                                                   \
+        double rs_a_ = (double)(a), rs_b_ = (double)(b);                                   \
+        double rs_s_ = fmax(1.0, fmax(fabs(rs_a_), fabs(rs_b_)));                          \
+        if (!(fabs(rs_a_ - rs_b_) <= (double)(rtol)*rs_s_)) {                              \
+            fprintf(stderr, "%s:%d: ENSURE_REL(%s, %s, %s) failed: %.17g vs %.17g\n",      \
+                    __FILE__, __LINE__, #a, #b, #rtol, rs_a_, rs_b_);                      \
+            rs_test_current_failed = 1;                                                    \
+            return;                                                                        \
+        }                                                                                  \
     } while (0)
 
-#define RS_RUN(fn)                                                                   \
-    do {                                                                             \
-        rs_test_current_failed = 0;                                                  \
-        fn();                                                                        \
-        if (rs_test_current_failed) {                                                \
-            rs_test_failed++;                                                        \
-            printf("FAIL %s\n", #fn);                                                \
-        } else {                                                                     \
-            rs_test_passed++;                                                        \
-            printf("ok   %s\n", #fn);                                                \
-        }                                                                            \
+#define RS_RUN(fn)                                                                         \
+    do {                                                                                   \
+        rs_test_current_failed = 0;                                                        \
+        fn();                                                                              \
+        if (rs_test_current_failed) {                                                      \
+            rs_test_failed++;                                                              \
+            printf("FAIL %s\n", #fn);                                                      \
+        } else {                                                                           \
+            rs_test_passed++;                                                              \
+            printf("ok   %s\n", #fn);                                                      \
+        }                                                                                  \
     } while (0)
 
 static inline int rs_test_summary(void)

@@ -485,7 +485,8 @@ static void test_drot_antiparallel_normal_is_half_turn_about_t1(void)
  * 0.2 t2 + 0.05 n (same normal speed: constant penetration d = 1e-3). With
  * x_cp - x = -a n, a = R - d/2 = 0.0095: w x (-a n) = -a (t1 x n + 2 t2 x n) = a t2 - 2a
  * t1. So v_rel,t = (0.3 - 0.1 - 0.019, -0.1 - 0.2 + 0.0095) = (0.181, -0.2905), and after N
- * calls (the first opens the contact with its first increment) slip = N dt (0.181, -0.2905). */
+ * calls (the first opens the contact with its first increment) slip = N dt (0.181,
+ * -0.2905). */
 static void test_slip_equals_integrated_tangential_velocity(void)
 {
     rs_tracker tr = tracker(3);
