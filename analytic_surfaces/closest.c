@@ -7,9 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { SEG_UNSEEN = 0, SEG_NONE = 1, SEG_HIT = 2 };
-#define SEG_NEAR 4
-#define SEG_DROP 8
+#define SEG_HIT 1
+#define SEG_DROP 2
 
 static void seg_end_tangent(const rs_segment *g, int at_end, double t[2])
 {
@@ -32,6 +31,91 @@ static void normalize2(double v[2])
     v[1] /= l;
 }
 
+/* Bucket range [b0, b1] of the interval [c0, c1] at width 1/inv_w, clamped to the grid;
+ * the ends are widened by 1e-6 w against rounding of the bucket of a query point. */
+static void bucket_span(const rs_pcache *pc, double c0, double c1, int *b0, int *b1)
+{
+    double f0 = (c0 - pc->lo) * pc->inv_w - 1e-6, f1 = (c1 - pc->lo) * pc->inv_w + 1e-6;
+    double top = (double)(pc->nbucket - 1);
+    f0 = f0 > 0.0 ? (f0 < top ? f0 : top) : 0.0;
+    f1 = f1 > 0.0 ? (f1 < top ? f1 : top) : 0.0;
+    *b0 = (int)f0;
+    *b1 = (int)f1;
+}
+
+/* Entries of one level; with bstart and blist, also the lists (bstart: nbucket + 1
+ * offsets). *sq (when not NULL) gets the sum of the squared list lengths, the cost of
+ * scanning a bucket summed over the buckets. */
+static long bucket_level(const rs_pcache *pc, double margin, int *bstart, int *blist,
+                         double *sq)
+{
+    int nb = pc->nbucket, ax = pc->axis;
+    long total = 0;
+    int *cnt = bstart;
+    if (cnt)
+        memset(cnt, 0, (size_t)(nb + 1) * sizeof(int));
+    for (int k = 0; k < pc->nseg; k++) {
+        int b0, b1;
+        const double *box = pc->ps[k].box + 2 * ax;
+        bucket_span(pc, box[0] - margin, box[1] + margin, &b0, &b1);
+        total += b1 - b0 + 1;
+        if (cnt)
+            for (int b = b0; b <= b1; b++)
+                cnt[b + 1]++;
+    }
+    if (!cnt)
+        return total;
+    if (sq) {
+        *sq = 0.0;
+        for (int b = 0; b < nb; b++)
+            *sq += (double)cnt[b + 1] * (double)cnt[b + 1];
+    }
+    if (!blist)
+        return total;
+    for (int b = 0; b < nb; b++)
+        bstart[b + 1] += bstart[b];
+    /* bstart[b] is the cursor of bucket b while filling, then the end of bucket b */
+    for (int k = 0; k < pc->nseg; k++) {
+        int b0, b1;
+        const double *box = pc->ps[k].box + 2 * ax;
+        bucket_span(pc, box[0] - margin, box[1] + margin, &b0, &b1);
+        for (int b = b0; b <= b1; b++)
+            blist[bstart[b]++] = k;
+    }
+    for (int b = nb; b > 0; b--)
+        bstart[b] = bstart[b - 1];
+    bstart[0] = 0;
+    return total;
+}
+
+/* Levels of the bucket index: margins w/4, w/2, w, 2w, ... while a level stays within
+ * budget entries and its margin is under the profile's extent along the axis. */
+static int bucket_levels(rs_pcache *pc, double extent, long budget, long *entries)
+{
+    double w = pc->inv_w > 0.0 ? 1.0 / pc->inv_w : 0.0;
+    int nl = 0;
+    long tot = 0;
+    for (double m = 0.25 * w; nl < RS_PC_MAXLEVEL; m *= 2.0) {
+        long e = bucket_level(pc, m, NULL, NULL, NULL);
+        if (e > budget)
+            break;
+        pc->margin[nl++] = m;
+        tot += e;
+        if (!(m < extent))
+            break;
+    }
+    *entries = tot;
+    return nl;
+}
+
+static void box_add(double box[4], double x, double y)
+{
+    box[0] = fmin(box[0], x);
+    box[1] = fmax(box[1], x);
+    box[2] = fmin(box[2], y);
+    box[3] = fmax(box[3], y);
+}
+
 int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
 {
     const rs_profile *p = &s->profile;
@@ -46,9 +130,11 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
                           : (n >= 2 && last->p1[0] == p->seg[0].p0[0] &&
                              last->p1[1] == p->seg[0].p0[1]);
     int nv = closed ? n : n + 1;
-    size_t bytes =
+    /* the geometry first (a scratch header), then the bucket index sized from it */
+    size_t head =
         sizeof(rs_pcache) + (size_t)n * sizeof(rs_pseg) + (size_t)nv * sizeof(rs_pvert);
-    unsigned char *blk = calloc(1, bytes);
+    head = (head + 15) & ~(size_t)15;
+    unsigned char *blk = calloc(1, head);
     if (!blk)
         return rs_error_set(err, RS_ERR_NOMEM, "out of memory for the query data");
     rs_pcache *pc = (rs_pcache *)blk;
@@ -60,9 +146,15 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
     pc->sides = s->sides == 2 ? 2 : 1;
     pc->size = size;
     pc->seg = p->seg;
+    double tol = 1e-12 * size;
     for (int k = 0; k < n; k++) {
         const rs_segment *g = &p->seg[k];
         rs_pseg *q = &pc->ps[k];
+        q->type = g->type;
+        q->box[0] = q->box[2] = INFINITY;
+        q->box[1] = q->box[3] = -INFINITY;
+        box_add(q->box, g->p0[0], g->p0[1]);
+        box_add(q->box, g->p1[0], g->p1[1]);
         switch (g->type) {
         case RS_LINE:
             q->o[0] = g->p0[0];
@@ -73,38 +165,34 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
             q->t[0] = q->e[0];
             q->t[1] = q->e[1];
             normalize2(q->t);
-            q->bc[0] = 0.5 * (g->p0[0] + g->p1[0]);
-            q->bc[1] = 0.5 * (g->p0[1] + g->p1[1]);
-            q->br = 0.5 * hypot(q->e[0], q->e[1]);
             break;
-        case RS_CIRCL:
+        case RS_CIRCL: {
             /* An arc under 180 degrees lies inside the circle on its chord (Thales). */
             q->sgn = g->sweep > 0.0 ? 1.0 : -1.0;
             q->o[0] = g->pm[0];
             q->o[1] = g->pm[1];
             q->rad = g->radius;
-            q->bc[0] = 0.5 * (g->p0[0] + g->p1[0]);
-            q->bc[1] = 0.5 * (g->p0[1] + g->p1[1]);
-            q->br = 0.5 * hypot(g->p1[0] - g->p0[0], g->p1[1] - g->p0[1]);
+            double bc[2] = {0.5 * (g->p0[0] + g->p1[0]), 0.5 * (g->p0[1] + g->p1[1])};
+            double br = 0.5 * hypot(g->p1[0] - g->p0[0], g->p1[1] - g->p0[1]);
+            box_add(q->box, bc[0] - br, bc[1] - br);
+            box_add(q->box, bc[0] + br, bc[1] + br);
             break;
-        case RS_PARAB: {
-            /* Bezier hull: p0, 2 pm - (p0 + p1)/2, p1. */
-            double ctl[3][2];
+        }
+        case RS_PARAB:
+            /* The curve lies in the hull of its Bezier points p0, 2 pm - (p0 + p1)/2, p1.
+             */
+            q->o[0] = g->pm[0];
+            q->o[1] = g->pm[1];
             for (int i = 0; i < 2; i++) {
                 q->B[i] = 0.5 * (g->p1[i] - g->p0[i]);
                 q->C[i] = 0.5 * (g->p0[i] + g->p1[i]) - g->pm[i];
-                ctl[0][i] = g->p0[i];
-                ctl[1][i] = 2.0 * g->pm[i] - 0.5 * (g->p0[i] + g->p1[i]);
-                ctl[2][i] = g->p1[i];
             }
-            q->bc[0] = (ctl[0][0] + ctl[1][0] + ctl[2][0]) / 3.0;
-            q->bc[1] = (ctl[0][1] + ctl[1][1] + ctl[2][1]) / 3.0;
-            for (int i = 0; i < 3; i++)
-                q->br = fmax(q->br, hypot(ctl[i][0] - q->bc[0], ctl[i][1] - q->bc[1]));
+            box_add(q->box, 2.0 * g->pm[0] - 0.5 * (g->p0[0] + g->p1[0]),
+                    2.0 * g->pm[1] - 0.5 * (g->p0[1] + g->p1[1]));
             break;
         }
-        }
-        q->br = q->br * (1.0 + 1e-12) + 1e-12 * size;
+        for (int i = 0; i < 4; i++)
+            q->box[i] += (i & 1 ? 1.0 : -1.0) * (1e-12 * fabs(q->box[i]) + tol);
     }
     for (int j = 0; j < nv; j++) {
         rs_pvert *v = &pc->pv[j];
@@ -160,78 +248,94 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
         v->seg_owns_edge = s->kind == RS_SURF_REVOLUTION && v->kind == RS_VTX_END &&
                            fabs(v->v[0]) <= 1e-12 * size;
     }
+    /* each segment carries the ownership tests of its two vertices */
+    for (int k = 0; k < n; k++) {
+        rs_pseg *q = &pc->ps[k];
+        const rs_pvert *v0 = &pc->pv[k], *v1 = &pc->pv[k + 1 == nv ? 0 : k + 1];
+        q->start_incl =
+            v0->kind == RS_VTX_SMOOTH || v0->kind == RS_VTX_CONCAVE || v0->seg_owns_edge;
+        q->end_incl = v1->seg_owns_edge;
+        for (int i = 0; i < 2; i++) {
+            q->v0[i] = v0->v[i];
+            q->tb0[i] = v0->tb[i];
+            q->v1[i] = v1->v[i];
+            q->ta1[i] = v1->ta[i];
+        }
+    }
+
+    /* Bucket axis: the one whose finest level costs less to scan (a drum's mantle
+     * pieces spread along z, not along r). */
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int k = 0; k < n; k++)
+        for (int a = 0; a < 2; a++) {
+            lo[a] = fmin(lo[a], pc->ps[k].box[2 * a]);
+            hi[a] = fmax(hi[a], pc->ps[k].box[2 * a + 1]);
+        }
+    double best = -1.0;
+    int best_axis = 0;
+    pc->nbucket = n;
+    int *cnt = n > 1 ? malloc((size_t)(n + 1) * sizeof(int)) : NULL;
+    for (int a = 0; a < 2 && cnt; a++) {
+        double ext = hi[a] - lo[a], sq = 0.0;
+        if (!(ext > 0.0) || !isfinite(ext))
+            continue;
+        pc->axis = a;
+        pc->lo = lo[a];
+        pc->inv_w = (double)n / ext;
+        bucket_level(pc, 0.25 * ext / n, cnt, NULL, &sq);
+        if (best < 0.0 || sq < best) {
+            best = sq;
+            best_axis = a;
+        }
+    }
+    free(cnt);
+    long entries = 0;
+    if (best < 0.0) {
+        /* one bucket that lists every segment at any reach */
+        pc->axis = 0;
+        pc->nbucket = 1;
+        pc->lo = 0.0;
+        pc->inv_w = 0.0;
+        pc->nlevel = 1;
+        pc->margin[0] = INFINITY;
+        entries = n;
+    } else {
+        pc->axis = best_axis;
+        pc->lo = lo[best_axis];
+        pc->inv_w = (double)n / (hi[best_axis] - lo[best_axis]);
+        pc->nlevel =
+            bucket_levels(pc, hi[best_axis] - lo[best_axis], 32L * n + 64, &entries);
+    }
+    size_t ints = (size_t)pc->nlevel * (size_t)(pc->nbucket + 1) + (size_t)entries;
+    unsigned char *nblk = realloc(blk, head + ints * sizeof(int));
+    if (!nblk) {
+        free(blk);
+        return rs_error_set(err, RS_ERR_NOMEM, "out of memory for the query data");
+    }
+    blk = nblk;
+    pc = (rs_pcache *)blk;
+    pc->ps = (rs_pseg *)(blk + sizeof(rs_pcache));
+    pc->pv = (rs_pvert *)(blk + sizeof(rs_pcache) + (size_t)n * sizeof(rs_pseg));
+    pc->bstart = (int *)(blk + head);
+    pc->blist = pc->bstart + (size_t)pc->nlevel * (size_t)(pc->nbucket + 1);
+    long off = 0;
+    for (int l = 0; l < pc->nlevel; l++) {
+        int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
+        if (pc->nbucket == 1 && !isfinite(pc->margin[l])) {
+            bs[0] = (int)off;
+            bs[1] = (int)off + n;
+            for (int k = 0; k < n; k++)
+                pc->blist[off + k] = k;
+            off += n;
+            continue;
+        }
+        long e = bucket_level(pc, pc->margin[l], bs, pc->blist + off, NULL);
+        for (int b = 0; b <= pc->nbucket; b++)
+            bs[b] += (int)off;
+        off += e;
+    }
     *out = pc;
     return RS_OK;
-}
-
-size_t rs_pscratch_bytes(const rs_pcache *pc)
-{
-    size_t n = (size_t)pc->nseg, nv = (size_t)pc->nvert;
-    size_t ints = (2 * n + nv) * sizeof(unsigned) + n;
-    ints = (ints + 15) & ~(size_t)15;
-    return ints + 4 * nv * sizeof(double) + (2 * n + nv) * sizeof(rs_hit2) + 64;
-}
-
-int rs_pscratch_init(rs_pscratch *sc, const rs_pcache *pc, void *stack, size_t stack_bytes)
-{
-    size_t need = rs_pscratch_bytes(pc);
-    unsigned char *m = stack;
-    sc->heap = NULL;
-    if (!m || stack_bytes < need) {
-        m = malloc(need);
-        if (!m)
-            return RS_ERR_NOMEM;
-        sc->heap = m;
-    }
-    uintptr_t a = ((uintptr_t)m + 15u) & ~(uintptr_t)15u;
-    m = (unsigned char *)a;
-    size_t n = (size_t)pc->nseg, nv = (size_t)pc->nvert;
-    size_t ints = (2 * n + nv) * sizeof(unsigned) + n;
-    ints = (ints + 15) & ~(size_t)15;
-    sc->seg_stamp = (unsigned *)m;
-    sc->vtx_stamp = sc->seg_stamp + n;
-    sc->near = (int *)(sc->vtx_stamp + nv);
-    sc->seg_state = (unsigned char *)(sc->near + n);
-    sc->vd = (double *)(m + ints);
-    sc->cand = (rs_hit2 *)(m + ints + 4 * nv * sizeof(double));
-    sc->hits = sc->cand + n;
-    memset(sc->seg_stamp, 0, (n + nv) * sizeof(unsigned));
-    sc->stamp = 0;
-    return RS_OK;
-}
-
-void rs_pscratch_free(rs_pscratch *sc)
-{
-    free(sc->heap);
-    sc->heap = NULL;
-}
-
-/* Segment state for the current point (0 when not yet touched). */
-static inline unsigned seg_st(const rs_pscratch *sc, int k)
-{
-    return sc->seg_stamp[k] == sc->stamp ? sc->seg_state[k] : 0u;
-}
-
-static inline void seg_set(rs_pscratch *sc, int k, unsigned v)
-{
-    sc->seg_stamp[k] = sc->stamp;
-    sc->seg_state[k] = (unsigned char)v;
-}
-
-static inline const double *vtx_tests(const rs_pcache *pc, rs_pscratch *sc, int j,
-                                      double px, double py)
-{
-    double *o = sc->vd + 4 * j;
-    if (sc->vtx_stamp[j] != sc->stamp) {
-        const rs_pvert *v = &pc->pv[j];
-        double dx = px - v->v[0], dy = py - v->v[1];
-        o[0] = dx;
-        o[1] = dy;
-        o[2] = dx * v->ta[0] + dy * v->ta[1];
-        o[3] = dx * v->tb[0] + dy * v->tb[1];
-        sc->vtx_stamp[j] = sc->stamp;
-    }
-    return o;
 }
 
 /* f'(xi)/1 = (X(xi) - P).X'(xi) = a3 xi^3 + a2 xi^2 + a1 xi + a0 */
@@ -272,10 +376,10 @@ static double cubic_root(const double a[4], double lo, double hi)
 /* Closest interior point of a PARAB. The signs of the cubic at xi = -1 and xi = 1 come
  * from the vertex tests (in_start: decreasing at -1; in_end: increasing at 1) so that
  * segment and vertex ownership agree exactly. Returns 0 when no interior minimum. */
-static int parab_min(const rs_segment *g, const rs_pseg *q, double px, double py,
-                     int in_start, int in_end, double *xi_out)
+static int parab_min(const rs_pseg *q, double px, double py, int in_start, int in_end,
+                     double *xi_out)
 {
-    double D[2] = {g->pm[0] - px, g->pm[1] - py};
+    double D[2] = {q->o[0] - px, q->o[1] - py};
     const double *B = q->B, *C = q->C;
     double a[4];
     a[3] = 2.0 * (C[0] * C[0] + C[1] * C[1]);
@@ -331,32 +435,62 @@ static int parab_min(const rs_segment *g, const rs_pseg *q, double px, double py
     return found;
 }
 
-/* Candidate contact of segment k (before the side and distance filters). */
-static void eval_seg(const rs_pcache *pc, rs_pscratch *sc, int k, double px, double py)
+size_t rs_pscratch_bytes(const rs_pcache *pc)
 {
-    int j0 = k, j1 = k + 1 == pc->nvert ? 0 : k + 1;
-    const double *t0 = vtx_tests(pc, sc, j0, px, py);
-    const double *t1 = vtx_tests(pc, sc, j1, px, py);
-    const rs_pvert *v0 = &pc->pv[j0], *v1 = &pc->pv[j1];
-    double dB = t0[3], dA = t1[2];
-    int in_start =
-        (v0->kind == RS_VTX_SMOOTH || v0->kind == RS_VTX_CONCAVE || v0->seg_owns_edge)
-            ? dB >= 0.0
-            : dB > 0.0;
-    int in_end = v1->seg_owns_edge ? dA <= 0.0 : dA < 0.0;
-    const rs_segment *g = &pc->seg[k];
+    size_t n = (size_t)pc->nseg, nv = (size_t)pc->nvert;
+    size_t ints = 2 * n * sizeof(unsigned) + n;
+    ints = (ints + 15) & ~(size_t)15;
+    return ints + (2 * n + nv) * sizeof(rs_hit2) + 64;
+}
+
+int rs_pscratch_init(rs_pscratch *sc, const rs_pcache *pc, void *stack, size_t stack_bytes)
+{
+    size_t need = rs_pscratch_bytes(pc);
+    unsigned char *m = stack;
+    sc->heap = NULL;
+    if (!m || stack_bytes < need) {
+        m = malloc(need);
+        if (!m)
+            return RS_ERR_NOMEM;
+        sc->heap = m;
+    }
+    uintptr_t a = ((uintptr_t)m + 15u) & ~(uintptr_t)15u;
+    m = (unsigned char *)a;
+    size_t n = (size_t)pc->nseg;
+    size_t ints = 2 * n * sizeof(unsigned) + n;
+    ints = (ints + 15) & ~(size_t)15;
+    sc->seg_stamp = (unsigned *)m;
+    sc->near = (int *)(sc->seg_stamp + n);
+    sc->state = (unsigned char *)(sc->near + n);
+    sc->cand = (rs_hit2 *)(m + ints);
+    sc->hits = sc->cand + n;
+    return RS_OK;
+}
+
+void rs_pscratch_free(rs_pscratch *sc)
+{
+    free(sc->heap);
+    sc->heap = NULL;
+}
+
+/* Candidate contact of segment k (before the side and distance filters); 1 when the
+ * segment owns the point. */
+static inline int eval_seg(const rs_pcache *pc, int k, double px, double py, rs_hit2 *h)
+{
     const rs_pseg *q = &pc->ps[k];
-    rs_hit2 *h = &sc->cand[k];
-    unsigned st = seg_st(sc, k) & SEG_NEAR;
-    switch (g->type) {
+    double dB = (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
+    double dA = (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
+    int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
+    int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
+    switch (q->type) {
     case RS_LINE: {
         if (!(in_start && in_end))
-            goto none;
-        double wx = px - g->p0[0], wy = py - g->p0[1];
+            return 0;
+        double wx = px - q->o[0], wy = py - q->o[1];
         double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
         tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
-        h->x[0] = g->p0[0] + tau * q->e[0];
-        h->x[1] = g->p0[1] + tau * q->e[1];
+        h->x[0] = q->o[0] + tau * q->e[0];
+        h->x[1] = q->o[1] + tau * q->e[1];
         h->n[0] = -q->t[1];
         h->n[1] = q->t[0];
         h->dist = wx * h->n[0] + wy * h->n[1];
@@ -365,34 +499,34 @@ static void eval_seg(const rs_pcache *pc, rs_pscratch *sc, int k, double px, dou
     }
     case RS_CIRCL: {
         if (!(in_start && in_end))
-            goto none;
-        double wx = px - g->pm[0], wy = py - g->pm[1], rho = sqrt(wx * wx + wy * wy), ux,
-               uy;
+            return 0;
+        double wx = px - q->o[0], wy = py - q->o[1], rho = sqrt(wx * wx + wy * wy), ux, uy;
         if (rho > 0.0) {
             ux = wx / rho;
             uy = wy / rho;
         } else {
+            const rs_segment *g = &pc->seg[k];
             double th = g->ang0 + 0.5 * g->sweep;
             ux = cos(th);
             uy = sin(th);
         }
-        h->x[0] = g->pm[0] + g->radius * ux;
-        h->x[1] = g->pm[1] + g->radius * uy;
+        h->x[0] = q->o[0] + q->rad * ux;
+        h->x[1] = q->o[1] + q->rad * uy;
         /* n points to the centre when the sweep is counter-clockwise */
         h->n[0] = -q->sgn * ux;
         h->n[1] = -q->sgn * uy;
-        h->dist = q->sgn * (g->radius - rho);
-        h->kappa = -q->sgn / g->radius;
+        h->dist = q->sgn * (q->rad - rho);
+        h->kappa = -q->sgn / q->rad;
         break;
     }
     default: {
         double xi;
-        if (!parab_min(g, q, px, py, in_start, in_end, &xi))
-            goto none;
+        if (!parab_min(q, px, py, in_start, in_end, &xi))
+            return 0;
         double d[2] = {q->B[0] + 2.0 * xi * q->C[0], q->B[1] + 2.0 * xi * q->C[1]};
         double sp = sqrt(d[0] * d[0] + d[1] * d[1]);
-        h->x[0] = g->pm[0] + xi * q->B[0] + xi * xi * q->C[0];
-        h->x[1] = g->pm[1] + xi * q->B[1] + xi * xi * q->C[1];
+        h->x[0] = q->o[0] + xi * q->B[0] + xi * xi * q->C[0];
+        h->x[1] = q->o[1] + xi * q->B[1] + xi * xi * q->C[1];
         h->n[0] = -d[1] / sp;
         h->n[1] = d[0] / sp;
         h->dist = (px - h->x[0]) * h->n[0] + (py - h->x[1]) * h->n[1];
@@ -409,26 +543,18 @@ static void eval_seg(const rs_pcache *pc, rs_pscratch *sc, int k, double px, dou
         h->kappa = -h->kappa;
     }
     h->feature = RS_FEATURE(RS_FEAT_FACE, k);
-    seg_set(sc, k, st | SEG_HIT);
-    return;
-none:
-    seg_set(sc, k, st | SEG_NONE);
-}
-
-static inline int seg_hit(const rs_pscratch *sc, int k)
-{
-    return (seg_st(sc, k) & 3) == SEG_HIT;
+    return 1;
 }
 
 /* Vertex contact of vertex j, if it owns the point. */
-static int eval_vertex(const rs_pcache *pc, rs_pscratch *sc, int j, double px, double py,
-                       rs_hit2 *h)
+static int eval_vertex(const rs_pcache *pc, int j, double px, double py, rs_hit2 *h)
 {
     const rs_pvert *v = &pc->pv[j];
     if (v->kind == RS_VTX_SMOOTH)
         return 0;
-    const double *t = vtx_tests(pc, sc, j, px, py);
-    double dx = t[0], dy = t[1], dA = t[2], dB = t[3], sign = 1.0;
+    double dx = px - v->v[0], dy = py - v->v[1];
+    double dA = dx * v->ta[0] + dy * v->ta[1], dB = dx * v->tb[0] + dy * v->tb[1];
+    double sign = 1.0;
     int two = pc->sides == 2;
     switch (v->kind) {
     case RS_VTX_CONVEX:
@@ -470,90 +596,119 @@ static int eval_vertex(const rs_pcache *pc, rs_pscratch *sc, int j, double px, d
     return 1;
 }
 
+/* Position of segment k in the near list (sorted), -1 when it is not near. */
+static inline int near_pos(const rs_pscratch *sc, int nnear, int k)
+{
+    for (int i = 0; i < nnear; i++)
+        if (sc->near[i] >= k)
+            return sc->near[i] == k ? i : -1;
+    return -1;
+}
+
 /* Behind a convex vertex only the face with the smaller penetration keeps its contact
  * (the Voronoi region of the solid); ties keep the lower index. */
-static void voronoi_pair(const rs_pcache *pc, rs_pscratch *sc, int j, double px, double py)
+static void voronoi_pair(const rs_pcache *pc, rs_pscratch *sc, int nnear, int j, double px,
+                         double py)
 {
     const rs_pvert *v = &pc->pv[j];
     if (v->kind != RS_VTX_CONVEX || v->sa < 0 || v->sb < 0 || v->sa == v->sb)
         return;
-    int A = v->sa, B = v->sb;
-    if (!(seg_st(sc, A) & 3))
-        eval_seg(pc, sc, A, px, py);
-    if (!(seg_st(sc, B) & 3))
-        eval_seg(pc, sc, B, px, py);
-    if (!seg_hit(sc, A) || !seg_hit(sc, B))
+    int A = v->sa, B = v->sb, ia = near_pos(sc, nnear, A), ib = near_pos(sc, nnear, B);
+    rs_hit2 ha, hb;
+    int hit_a = ia >= 0 ? sc->state[ia] & SEG_HIT : eval_seg(pc, A, px, py, &ha);
+    int hit_b = ib >= 0 ? sc->state[ib] & SEG_HIT : eval_seg(pc, B, px, py, &hb);
+    if (!hit_a || !hit_b)
         return;
-    double da = sc->cand[A].dist, db = sc->cand[B].dist;
+    double da = ia >= 0 ? sc->cand[ia].dist : ha.dist;
+    double db = ib >= 0 ? sc->cand[ib].dist : hb.dist;
     if (!(da < 0.0 || db < 0.0))
         return;
-    int drop = (da < db || (da == db && A > B)) ? A : B;
-    sc->seg_state[drop] |= SEG_DROP;
+    int drop = (da < db || (da == db && A > B)) ? ia : ib;
+    if (drop >= 0)
+        sc->state[drop] |= SEG_DROP;
+}
+
+/* Whether the point is within reach of segment k: its bounding box and, for LINE and
+ * CIRCL, its line or circle. A superset of the segments within reach is enough (the
+ * vertices of a segment lie on both). */
+static inline int seg_near(const rs_pseg *q, double px, double py, double reach)
+{
+    if (q->box[0] - px > reach || px - q->box[1] > reach || q->box[2] - py > reach ||
+        py - q->box[3] > reach)
+        return 0;
+    if (q->type == RS_LINE) {
+        double sd = (px - q->o[0]) * (-q->t[1]) + (py - q->o[1]) * q->t[0];
+        return fabs(sd) <= reach;
+    }
+    if (q->type == RS_CIRCL) {
+        double wx = px - q->o[0], wy = py - q->o[1], r2 = wx * wx + wy * wy;
+        double hi = q->rad + reach, lo = q->rad - reach;
+        return !(r2 > hi * hi || (lo > 0.0 && r2 < lo * lo));
+    }
+    return 1;
 }
 
 int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double dhi,
                    rs_pscratch *sc)
 {
-    int n = pc->nseg, nh = 0, nnear = 0;
+    const int n = pc->nseg;
+    int nh = 0, nnear = 0;
     double reach = (pc->sides == 2 || dhi > -dlo) ? dhi : -dlo;
     if (!(reach >= 0.0) || dlo > dhi)
         return 0;
-    if (++sc->stamp == 0) {
-        memset(sc->seg_stamp, 0, (size_t)(n + pc->nvert) * sizeof(unsigned));
-        sc->stamp = 1;
-    }
-    /* A segment is within reach when the point is inside its bounding circle grown by
-     * reach and, for LINE and CIRCL, within reach of its line or circle. Its vertices
-     * lie on both, so a vertex is within reach only if both its segments are. */
-    for (int k = 0; k < n; k++) {
-        const rs_pseg *q = &pc->ps[k];
-        double dx = px - q->bc[0], dy = py - q->bc[1], rr = q->br + reach;
-        if (dx * dx + dy * dy > rr * rr)
-            continue;
-        int type = pc->seg[k].type;
-        if (type == RS_LINE) {
-            double sd = (px - q->o[0]) * (-q->t[1]) + (py - q->o[1]) * q->t[0];
-            if (fabs(sd) > reach)
-                continue;
-        } else if (type == RS_CIRCL) {
-            double wx = px - q->o[0], wy = py - q->o[1], r2 = wx * wx + wy * wy;
-            double hi = q->rad + reach, lo = q->rad - reach;
-            if (r2 > hi * hi || (lo > 0.0 && r2 < lo * lo))
-                continue;
+    /* the candidates: one bucket's list at the first level whose margin covers reach,
+     * else every segment */
+    int l = 0;
+    while (l < pc->nlevel && pc->margin[l] < reach)
+        l++;
+    if (l < pc->nlevel) {
+        double c = pc->axis ? py : px;
+        double f = (c - pc->lo) * pc->inv_w, top = (double)(pc->nbucket - 1);
+        int b = f > 0.0 ? (int)(f < top ? f : top) : 0;
+        const int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
+        for (int e = bs[b]; e < bs[b + 1]; e++) {
+            int k = pc->blist[e];
+            if (seg_near(&pc->ps[k], px, py, reach))
+                sc->near[nnear++] = k;
         }
-        sc->near[nnear++] = k;
-        seg_set(sc, k, SEG_NEAR);
+    } else {
+        for (int k = 0; k < n; k++)
+            if (seg_near(&pc->ps[k], px, py, reach))
+                sc->near[nnear++] = k;
     }
     if (nnear == 0)
         return 0;
     for (int i = 0; i < nnear; i++)
-        eval_seg(pc, sc, sc->near[i], px, py);
+        sc->state[i] =
+            (unsigned char)(eval_seg(pc, sc->near[i], px, py, &sc->cand[i]) ? SEG_HIT : 0);
     if (pc->sides == 1) {
         for (int i = 0; i < nnear; i++) {
             int k = sc->near[i];
-            if (!seg_hit(sc, k) || !(sc->cand[k].dist < 0.0))
+            if (!(sc->state[i] & SEG_HIT) || !(sc->cand[i].dist < 0.0))
                 continue;
-            voronoi_pair(pc, sc, k, px, py);
-            voronoi_pair(pc, sc, k + 1 == pc->nvert ? 0 : k + 1, px, py);
+            voronoi_pair(pc, sc, nnear, k, px, py);
+            voronoi_pair(pc, sc, nnear, k + 1 == pc->nvert ? 0 : k + 1, px, py);
         }
     }
     for (int i = 0; i < nnear; i++) {
         int k = sc->near[i];
         /* vertex k (the start of segment k) is within reach when both its segments are */
         const rs_pvert *v = &pc->pv[k];
-        if (v->sa < 0 || (seg_st(sc, v->sa) & SEG_NEAR)) {
+        int sa_near =
+            v->sa < 0 || (i > 0 ? sc->near[i - 1] == v->sa : sc->near[nnear - 1] == v->sa);
+        if (sa_near) {
             rs_hit2 *h = &sc->hits[nh];
-            if (eval_vertex(pc, sc, k, px, py, h) && h->dist >= dlo && h->dist <= dhi)
+            if (eval_vertex(pc, k, px, py, h) && h->dist >= dlo && h->dist <= dhi)
                 nh++;
         }
-        if ((seg_st(sc, k) & (3 | SEG_DROP)) == SEG_HIT) {
-            const rs_hit2 *c = &sc->cand[k];
+        if (sc->state[i] == SEG_HIT) {
+            const rs_hit2 *c = &sc->cand[i];
             if (c->dist >= dlo && c->dist <= dhi)
                 sc->hits[nh++] = *c;
         }
         if (k == n - 1 && !pc->closed) {
             rs_hit2 *h = &sc->hits[nh];
-            if (eval_vertex(pc, sc, n, px, py, h) && h->dist >= dlo && h->dist <= dhi)
+            if (eval_vertex(pc, n, px, py, h) && h->dist >= dlo && h->dist <= dhi)
                 nh++;
         }
     }

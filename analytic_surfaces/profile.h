@@ -65,14 +65,19 @@ void rs_profile_free(rs_profile *p);
 
 /* Query data, built once per surface (kept in rs_surface.impl for the analytic kinds). */
 typedef struct rs_pseg {
-    double bc[2], br;  ///< bounding circle of the segment
-    double o[2];       ///< LINE: p0; CIRCL: centre (slab and annulus rejection)
-    double rad;        ///< CIRCL: radius
-    double t[2];       ///< LINE: unit tangent
-    double e[2];       ///< LINE: p1 - p0
-    double inv_len2;   ///< LINE: 1 / |p1 - p0|^2
-    double sgn;        ///< CIRCL: sign of the sweep
-    double B[2], C[2]; ///< PARAB: X(xi) = pm + xi B + xi^2 C
+    int type;             ///< rs_segment_type
+    int start_incl;       ///< start vertex SMOOTH, CONCAVE or on a revolution axis: dB >= 0
+    int end_incl;         ///< end vertex on a revolution axis: dA <= 0
+    double v0[2], tb0[2]; ///< start vertex and its start tangent (the vertex's tb)
+    double v1[2], ta1[2]; ///< end vertex and its end tangent (the vertex's ta)
+    double box[4];        ///< bounding box xmin, xmax, ymin, ymax (grown by a tolerance)
+    double o[2];          ///< LINE: p0; CIRCL: centre; PARAB: middle point
+    double rad;           ///< CIRCL: radius
+    double t[2];          ///< LINE: unit tangent
+    double e[2];          ///< LINE: p1 - p0
+    double inv_len2;      ///< LINE: 1 / |p1 - p0|^2
+    double sgn;           ///< CIRCL: sign of the sweep
+    double B[2], C[2];    ///< PARAB: X(xi) = pm + xi B + xi^2 C
 } rs_pseg;
 
 typedef struct rs_pvert {
@@ -85,12 +90,24 @@ typedef struct rs_pvert {
     int seg_owns_edge;   ///< END on a revolution axis: the segment owns dA = 0 / dB = 0
 } rs_pvert;
 
+/* 1D bucket index along one profile axis (the one that spreads the segments best).
+ * Bucket b covers [lo + b w, lo + (b + 1) w). Level l lists, in profile order, the
+ * segments whose bounding box comes within margin[l] of the bucket, so a point within
+ * reach <= margin[l] of a segment finds it in its own bucket's list at level l. Reaches
+ * beyond the last level scan every segment. */
+#define RS_PC_MAXLEVEL 12
 typedef struct rs_pcache {
     int nseg, nvert, closed, sides;
     double size;
     const rs_segment *seg;
     rs_pseg *ps;
     rs_pvert *pv;
+    int axis; ///< 0: buckets along x (or r), 1: along y (or z)
+    int nbucket, nlevel;
+    double lo, inv_w;              ///< bucket of coordinate c: floor((c - lo) inv_w)
+    double margin[RS_PC_MAXLEVEL]; ///< increasing
+    int *bstart;                   ///< level l, bucket b: [l (nbucket + 1) + b], into blist
+    int *blist;                    ///< segment indices
 } rs_pcache;
 
 /// Builds the query data of an analytic surface's profile (one malloc'ed block).
@@ -107,14 +124,12 @@ typedef struct rs_hit2 {
 
 /// Scratch for rs_pcache_hits, sized by the profile. Stack storage covers small profiles.
 typedef struct rs_pscratch {
-    unsigned stamp;           ///< current point; entries with another stamp are unset
-    unsigned *seg_stamp;      ///< nseg
-    unsigned *vtx_stamp;      ///< nvert
-    int *near;                ///< nseg: indices of the segments within reach
-    unsigned char *seg_state; ///< nseg
-    double *vd;               ///< 4 * nvert: dx, dy, dA, dB
-    rs_hit2 *cand;            ///< nseg
-    rs_hit2 *hits;            ///< nseg + nvert
+    unsigned stamp;       ///< dedup stamp of the multi-bucket gather
+    unsigned *seg_stamp;  ///< nseg
+    int *near;            ///< nseg: the segments within reach, in profile order
+    unsigned char *state; ///< nseg: per near entry, hit / drop flags
+    rs_hit2 *cand;        ///< nseg: per near entry, its candidate contact
+    rs_hit2 *hits;        ///< nseg + nvert
     void *heap;
 } rs_pscratch;
 

@@ -10,12 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int grow(rs_contacts *out, rs_error *err)
-{
-    int cap = out->cap > 0 ? 2 * out->cap : 64;
-    return rs_contacts_reserve(out, cap, err);
-}
-
 int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
                      rs_error *err)
 {
@@ -51,118 +45,100 @@ int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
         return rs_error_set(err, RS_ERR_NOMEM, "out of memory for the query scratch");
     }
 
+    /* One transform per block: the local axes and origin in the current configuration,
+     * EX = R ex, ..., A = R a + T (SEGMENTS: the global axes about the origin), so a
+     * point's local coordinates are EX.(x - A), ... and results map back along them. */
     const rs_pose *pose = q->pose;
-    const double *a = s->a, *ex = s->ex, *ey = s->ey, *ez = s->ez;
-    double axis_tol = 1e-12 * pc->size;
+    double A[3], EX[3], EY[3], EZ[3];
+    {
+        static const double I[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        const double *a0 = s->a, *x0 = s->ex, *y0 = s->ey, *z0 = s->ez;
+        const double zero[3] = {0.0, 0.0, 0.0};
+        if (kind == RS_SURF_SEGMENTS) {
+            a0 = zero;
+            x0 = I[0];
+            y0 = I[1];
+            z0 = I[2];
+        }
+        for (int d = 0; d < 3; d++) {
+            if (pose) {
+                const double *R = pose->R + 3 * d;
+                A[d] = R[0] * a0[0] + R[1] * a0[1] + R[2] * a0[2] + pose->T[d];
+                EX[d] = R[0] * x0[0] + R[1] * x0[1] + R[2] * x0[2];
+                EY[d] = R[0] * y0[0] + R[1] * y0[1] + R[2] * y0[2];
+                EZ[d] = R[0] * z0[0] + R[1] * z0[1] + R[2] * z0[2];
+            } else {
+                A[d] = a0[d];
+                EX[d] = x0[d];
+                EY[d] = y0[d];
+                EZ[d] = z0[d];
+            }
+        }
+    }
+    const double axis_tol = 1e-12 * pc->size;
+    const double *qz = q->z;
     int rc = RS_OK;
     for (int i = 0; i < q->n; i++) {
-        double P[3] = {q->x[i], q->y[i], q->z ? q->z[i] : 0.0};
-        if (pose) {
-            double w[3] = {P[0] - pose->T[0], P[1] - pose->T[1], P[2] - pose->T[2]};
-            const double *R = pose->R;
-            P[0] = R[0] * w[0] + R[3] * w[1] + R[6] * w[2];
-            P[1] = R[1] * w[0] + R[4] * w[1] + R[7] * w[2];
-            P[2] = R[2] * w[0] + R[5] * w[1] + R[8] * w[2];
-        }
-        double u, v, zz = 0.0, er[3] = {0.0, 0.0, 0.0};
-        if (kind == RS_SURF_SEGMENTS) {
-            u = P[0];
-            v = P[1];
-            zz = P[2];
-        } else {
-            double w[3] = {P[0] - a[0], P[1] - a[1], P[2] - a[2]};
-            zz = w[0] * ez[0] + w[1] * ez[1] + w[2] * ez[2];
-            if (kind == RS_SURF_CYLINDER) {
-                if (s->bounded && !(zz >= s->zmin && zz <= s->zmax))
-                    continue;
-                u = w[0] * ex[0] + w[1] * ex[1] + w[2] * ex[2];
-                v = w[0] * ey[0] + w[1] * ey[1] + w[2] * ey[2];
-            } else {
-                double rv[3] = {w[0] - zz * ez[0], w[1] - zz * ez[1], w[2] - zz * ez[2]};
-                double r = sqrt(rv[0] * rv[0] + rv[1] * rv[1] + rv[2] * rv[2]);
-                if (r > axis_tol) {
-                    double inv = 1.0 / r;
-                    er[0] = rv[0] * inv;
-                    er[1] = rv[1] * inv;
-                    er[2] = rv[2] * inv;
-                } else {
-                    /* on the axis: the surface's fixed ex, never NaN */
-                    er[0] = ex[0];
-                    er[1] = ex[1];
-                    er[2] = ex[2];
+        const double wx = q->x[i] - A[0], wy = q->y[i] - A[1],
+                     wz = (qz ? qz[i] : 0.0) - A[2];
+        const double lx = wx * EX[0] + wy * EX[1] + wz * EX[2];
+        const double ly = wx * EY[0] + wy * EY[1] + wz * EY[2];
+        const double lz = wx * EZ[0] + wy * EZ[1] + wz * EZ[2];
+        /* REVOLUTION: the radial and hoop directions, e_theta = ez x e_r; on the axis
+         * e_r falls back to the surface's fixed ex, never NaN */
+        double u = lx, v = ly, er[3] = {EX[0], EX[1], EX[2]}, hp[3] = {EY[0], EY[1], EY[2]};
+        if (kind == RS_SURF_REVOLUTION) {
+            double r = sqrt(lx * lx + ly * ly);
+            if (r > axis_tol) {
+                double cx = lx / r, cy = ly / r;
+                for (int d = 0; d < 3; d++) {
+                    er[d] = cx * EX[d] + cy * EY[d];
+                    hp[d] = cx * EY[d] - cy * EX[d];
                 }
-                u = r;
-                v = zz;
             }
+            u = r;
+            v = lz;
+        } else if (kind == RS_SURF_CYLINDER && s->bounded &&
+                   !(lz >= s->zmin && lz <= s->zmax)) {
+            continue;
         }
         double rad = q->radius ? q->radius[i] : 0.0;
         int nh = rs_pcache_hits(pc, u, v, q->dist_min, q->gap_max + rad, &sc);
+        if (out->n + nh > out->cap &&
+            (rc = rs_contacts_reserve(out, 2 * (out->n + nh) + 64, err)) != RS_OK)
+            goto done;
         for (int h = 0; h < nh; h++) {
             const rs_hit2 *ht = &sc.hits[h];
-            if (out->n >= out->cap && (rc = grow(out, err)) != RS_OK)
-                goto done;
-            double xm[3], n[3], t1[3], t2[3], c0, c1;
-            switch (kind) {
-            case RS_SURF_SEGMENTS:
-                xm[0] = ht->x[0];
-                xm[1] = ht->x[1];
-                xm[2] = zz;
-                n[0] = ht->n[0];
-                n[1] = ht->n[1];
-                n[2] = 0.0;
-                rs_frame_segments(n, t1, t2);
-                c0 = ht->kappa;
-                c1 = 0.0;
-                break;
-            case RS_SURF_CYLINDER:
-                for (int d = 0; d < 3; d++) {
-                    xm[d] = a[d] + ht->x[0] * ex[d] + ht->x[1] * ey[d] + zz * ez[d];
-                    n[d] = ht->n[0] * ex[d] + ht->n[1] * ey[d];
-                }
-                rs_frame_cylinder(n, ez, t1, t2);
-                c0 = 0.0;
-                c1 = ht->kappa;
-                break;
-            default: {
-                double hoop[3] = {ez[1] * er[2] - ez[2] * er[1],
-                                  ez[2] * er[0] - ez[0] * er[2],
-                                  ez[0] * er[1] - ez[1] * er[0]};
-                for (int d = 0; d < 3; d++) {
-                    xm[d] = a[d] + ht->x[0] * er[d] + ht->x[1] * ez[d];
-                    n[d] = ht->n[0] * er[d] + ht->n[1] * ez[d];
-                }
-                rs_frame_revolution(n, hoop, t1, t2);
-                c0 = ht->kappa;
-                /* hoop curvature n_r / r at the contact point, 0 on the axis */
-                c1 = ht->x[0] > axis_tol ? ht->n[0] / ht->x[0] : 0.0;
-                break;
-            }
-            }
+            const double hx = ht->x[0], hy = ht->x[1], nx = ht->n[0], ny = ht->n[1];
             int k = out->n++;
             out->point[k] = i;
             out->feature[k] = ht->feature;
-            if (pose) {
-                const double *R = pose->R;
-                double *vin[4] = {xm, n, t1, t2};
-                double **vout[4] = {out->xm, out->nrm, out->t1, out->t2};
-                for (int m = 0; m < 4; m++) {
-                    const double *w = vin[m];
-                    double off = m == 0 ? 1.0 : 0.0;
-                    for (int d = 0; d < 3; d++)
-                        vout[m][d][k] = R[3 * d] * w[0] + R[3 * d + 1] * w[1] +
-                                        R[3 * d + 2] * w[2] + off * pose->T[d];
-                }
-            } else {
-                for (int d = 0; d < 3; d++) {
-                    out->xm[d][k] = xm[d];
-                    out->nrm[d][k] = n[d];
-                    out->t1[d][k] = t1[d];
-                    out->t2[d][k] = t2[d];
-                }
-            }
             out->dist[k] = ht->dist;
-            out->curv[0][k] = c0;
-            out->curv[1][k] = c1;
+            if (kind == RS_SURF_REVOLUTION) {
+                /* n = n_r e_r + n_z ez; t2 = hoop, t1 = t2 x n = n_z e_r - n_r ez */
+                for (int d = 0; d < 3; d++) {
+                    out->xm[d][k] = A[d] + hx * er[d] + hy * EZ[d];
+                    out->nrm[d][k] = nx * er[d] + ny * EZ[d];
+                    out->t1[d][k] = ny * er[d] - nx * EZ[d];
+                    out->t2[d][k] = hp[d];
+                }
+                out->curv[0][k] = ht->kappa;
+                /* hoop curvature n_r / r at the contact point, 0 on the axis */
+                out->curv[1][k] = hx > axis_tol ? nx / hx : 0.0;
+            } else {
+                /* CYLINDER: t1 = ez, t2 = n x ez = n_y ex - n_x ey. SEGMENTS: t1 =
+                 * (0,0,-1) x n = n_y ex - n_x ey, t2 = -ez. */
+                const int cyl = kind == RS_SURF_CYLINDER;
+                for (int d = 0; d < 3; d++) {
+                    double tr = ny * EX[d] - nx * EY[d];
+                    out->xm[d][k] = A[d] + hx * EX[d] + hy * EY[d] + lz * EZ[d];
+                    out->nrm[d][k] = nx * EX[d] + ny * EY[d];
+                    out->t1[d][k] = cyl ? EZ[d] : tr;
+                    out->t2[d][k] = cyl ? tr : -EZ[d];
+                }
+                out->curv[0][k] = cyl ? 0.0 : ht->kappa;
+                out->curv[1][k] = cyl ? ht->kappa : 0.0;
+            }
         }
     }
 done:
