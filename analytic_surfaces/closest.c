@@ -7,6 +7,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#if defined(__GNUC__)
+#define RS_INLINE static inline __attribute__((always_inline))
+#else
+#define RS_INLINE static inline
+#endif
+
 #define SEG_HIT 1
 #define SEG_DROP 2
 
@@ -255,6 +261,8 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
         q->start_incl =
             v0->kind == RS_VTX_SMOOTH || v0->kind == RS_VTX_CONCAVE || v0->seg_owns_edge;
         q->end_incl = v1->seg_owns_edge;
+        q->vtx_start = v0->kind != RS_VTX_SMOOTH;
+        q->vtx_end = k == n - 1 && !closed;
         for (int i = 0; i < 2; i++) {
             q->v0[i] = v0->v[i];
             q->tb0[i] = v0->tb[i];
@@ -473,9 +481,40 @@ void rs_pscratch_free(rs_pscratch *sc)
     sc->heap = NULL;
 }
 
+static int eval_curve(const rs_pcache *pc, int k, double px, double py, rs_hit2 *h);
+
 /* Candidate contact of segment k (before the side and distance filters); 1 when the
- * segment owns the point. */
-static inline int eval_seg(const rs_pcache *pc, int k, double px, double py, rs_hit2 *h)
+ * segment owns the point. LINE here, CIRCL and PARAB in eval_curve. */
+RS_INLINE int eval_seg(const rs_pcache *pc, int k, double px, double py, rs_hit2 *h)
+{
+    const rs_pseg *q = &pc->ps[k];
+    if (q->type != RS_LINE)
+        return eval_curve(pc, k, px, py, h);
+    double dB = (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
+    double dA = (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
+    int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
+    int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
+    if (!(in_start && in_end))
+        return 0;
+    double wx = px - q->o[0], wy = py - q->o[1];
+    double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
+    tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
+    h->x[0] = q->o[0] + tau * q->e[0];
+    h->x[1] = q->o[1] + tau * q->e[1];
+    h->n[0] = -q->t[1];
+    h->n[1] = q->t[0];
+    h->dist = wx * h->n[0] + wy * h->n[1];
+    h->kappa = 0.0;
+    if (pc->sides == 2 && h->dist < 0.0) {
+        h->dist = -h->dist;
+        h->n[0] = -h->n[0];
+        h->n[1] = -h->n[1];
+    }
+    h->feature = RS_FEATURE(RS_FEAT_FACE, k);
+    return 1;
+}
+
+static int eval_curve(const rs_pcache *pc, int k, double px, double py, rs_hit2 *h)
 {
     const rs_pseg *q = &pc->ps[k];
     double dB = (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
@@ -483,20 +522,6 @@ static inline int eval_seg(const rs_pcache *pc, int k, double px, double py, rs_
     int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
     int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
     switch (q->type) {
-    case RS_LINE: {
-        if (!(in_start && in_end))
-            return 0;
-        double wx = px - q->o[0], wy = py - q->o[1];
-        double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
-        tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
-        h->x[0] = q->o[0] + tau * q->e[0];
-        h->x[1] = q->o[1] + tau * q->e[1];
-        h->n[0] = -q->t[1];
-        h->n[1] = q->t[0];
-        h->dist = wx * h->n[0] + wy * h->n[1];
-        h->kappa = 0.0;
-        break;
-    }
     case RS_CIRCL: {
         if (!(in_start && in_end))
             return 0;
@@ -631,7 +656,7 @@ static void voronoi_pair(const rs_pcache *pc, rs_pscratch *sc, int nnear, int j,
 /* Whether the point is within reach of segment k: its bounding box and, for LINE and
  * CIRCL, its line or circle. A superset of the segments within reach is enough (the
  * vertices of a segment lie on both). */
-static inline int seg_near(const rs_pseg *q, double px, double py, double reach)
+RS_INLINE int seg_near(const rs_pseg *q, double px, double py, double reach)
 {
     if (q->box[0] - px > reach || px - q->box[1] > reach || q->box[2] - py > reach ||
         py - q->box[3] > reach)
@@ -661,27 +686,27 @@ int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double
     int l = 0;
     while (l < pc->nlevel && pc->margin[l] < reach)
         l++;
+    const int *list = NULL, *end = NULL;
     if (l < pc->nlevel) {
         double c = pc->axis ? py : px;
         double f = (c - pc->lo) * pc->inv_w, top = (double)(pc->nbucket - 1);
         int b = f > 0.0 ? (int)(f < top ? f : top) : 0;
         const int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
-        for (int e = bs[b]; e < bs[b + 1]; e++) {
-            int k = pc->blist[e];
-            if (seg_near(&pc->ps[k], px, py, reach))
-                sc->near[nnear++] = k;
-        }
-    } else {
-        for (int k = 0; k < n; k++)
-            if (seg_near(&pc->ps[k], px, py, reach))
-                sc->near[nnear++] = k;
+        list = pc->blist + bs[b];
+        end = pc->blist + bs[b + 1];
     }
-    if (nnear == 0)
-        return 0;
-    for (int i = 0; i < nnear; i++)
-        sc->state[i] =
-            (unsigned char)(eval_seg(pc, sc->near[i], px, py, &sc->cand[i]) ? SEG_HIT : 0);
-    if (pc->sides == 1) {
+    int neg = 0;
+    for (int e = 0; list ? list + e < end : e < n; e++) {
+        int k = list ? list[e] : e;
+        if (!seg_near(&pc->ps[k], px, py, reach))
+            continue;
+        sc->near[nnear] = k;
+        int hit = eval_seg(pc, k, px, py, &sc->cand[nnear]);
+        sc->state[nnear] = (unsigned char)(hit ? SEG_HIT : 0);
+        neg |= hit && sc->cand[nnear].dist < 0.0;
+        nnear++;
+    }
+    if (pc->sides == 1 && neg) {
         for (int i = 0; i < nnear; i++) {
             int k = sc->near[i];
             if (!(sc->state[i] & SEG_HIT) || !(sc->cand[i].dist < 0.0))
@@ -692,13 +717,15 @@ int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double
     }
     for (int i = 0; i < nnear; i++) {
         int k = sc->near[i];
+        const rs_pseg *q = &pc->ps[k];
         /* vertex k (the start of segment k) is within reach when both its segments are */
-        const rs_pvert *v = &pc->pv[k];
-        int sa_near =
-            v->sa < 0 || (i > 0 ? sc->near[i - 1] == v->sa : sc->near[nnear - 1] == v->sa);
-        if (sa_near) {
+        if (q->vtx_start) {
+            int sa = pc->pv[k].sa;
+            int sa_near =
+                sa < 0 || (i > 0 ? sc->near[i - 1] == sa : sc->near[nnear - 1] == sa);
             rs_hit2 *h = &sc->hits[nh];
-            if (eval_vertex(pc, k, px, py, h) && h->dist >= dlo && h->dist <= dhi)
+            if (sa_near && eval_vertex(pc, k, px, py, h) && h->dist >= dlo &&
+                h->dist <= dhi)
                 nh++;
         }
         if (sc->state[i] == SEG_HIT) {
@@ -706,7 +733,7 @@ int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double
             if (c->dist >= dlo && c->dist <= dhi)
                 sc->hits[nh++] = *c;
         }
-        if (k == n - 1 && !pc->closed) {
+        if (q->vtx_end) {
             rs_hit2 *h = &sc->hits[nh];
             if (eval_vertex(pc, n, px, py, h) && h->dist >= dlo && h->dist <= dhi)
                 nh++;
