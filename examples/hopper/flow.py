@@ -58,7 +58,7 @@ def fit_line(x, y):
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "out"
     rows = read_table(os.path.join(out, "post", "mass.txt"))
-    with open(os.path.join(out, "log.liggghts")) as f:
+    with open(os.path.join(out, "log_hopper.liggghts")) as f:
         t_open = float(re.search(r"OPEN at t = ([0-9.eE+-]+)", f.read()).group(1))
     t = [r[0] for r in rows]
     m = [r[1] for r in rows]

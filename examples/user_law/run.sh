@@ -7,31 +7,14 @@
 # compares the three runs with each other and with the closed forms.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-build=${BUILD_DIR:-$root/build}
-exe=$build/coupling/liggghts-rigidsurf
-start=$(date +%s)
-
-if [ ! -f "$build/CMakeCache.txt" ]; then
-    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
-fi
-cmake --build "$build" -j"$(nproc)" --target liggghts-rigidsurf > /dev/null
-
-out=$here/out
-rm -rf "$out"
-mkdir -p "$out/post"
-cd "$out"
+source "$here/../lib.sh"
 # The user's side: plain compiler calls, against the public header and vaba_param.inc.
 gcc -O2 -Wall -Wextra -Werror -shared -fPIC -I"$root/include" "$here/mylaw.c" -o libmylaw.so
 gfortran -O2 -Wall -Werror -Wno-unused-dummy-argument -shared -fPIC -I"$root/src" \
     "$here/myvuinter.f" -o libmyvuinter.so
 echo "user_law: 8 spheres on a 30 degree incline, 0.25 s, three times (built-in, C, VUINTER)"
 for law in builtin c vuinter; do
-    if ! stdbuf -o0 "$exe" -in ../in.slide -var law "$law" -echo none \
-        -log "log_$law.liggghts" > "screen_$law.txt" 2>&1; then
-        grep -E "ERROR|WARNING" "screen_$law.txt" || tail -20 "screen_$law.txt"
-        exit 1
-    fi
+    NP=1 rs_run "$law" ../in.slide -var law "$law"
 done
 /usr/bin/python3 "$here/compare.py" "$out"
 echo "wall time: $(( $(date +%s) - start )) s"
