@@ -1,4 +1,4 @@
-/* Surface files: Abaqus-style keyword text (ARCHITECTURE.md, "Profiles and surfaces").
+/* Surface files: Abaqus-style keyword text (docs/conventions.md, "Profiles and surfaces").
  *
  *   ** comment
  *   *SURFACE, TYPE=SEGMENTS|CYLINDER|REVOLUTION, NAME=name [, FILLET RADIUS=r]

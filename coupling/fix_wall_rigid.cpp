@@ -1,5 +1,5 @@
 /* fix wall/rigid: a rigidsurf master surface as a LIGGGHTS wall.
- * Syntax, keywords and output: docs/fix_wall_rigid.md. Conventions: ARCHITECTURE.md. */
+ * Syntax, keywords and output: docs/fix_wall_rigid.md. Conventions: docs/conventions.md. */
 #include "fix_wall_rigid.h"
 
 #include "atom.h"

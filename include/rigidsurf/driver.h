@@ -12,7 +12,7 @@
  *  3. The law, in blocks of at most RS_BLOCK contacts. On entry stress is the previous
  *     increment's, its shear rotated by drot (law.h). Temperatures are those at t_k.
  *  4. Contact force on node i: F = areaSlv (s1 n - s2 t1 - s3 t2) summed over its
- *     contacts (ARCHITECTURE.md, "Stress, flux, energy signs").
+ *     contacts (docs/conventions.md, "Stress, flux, energy signs").
  *  5. v_{k+1/2} = v_{k-1/2} + dt (F + f_ext) / m for free components; prescribed
  *     components take vpres. x_{k+1} = x_k + dt v_{k+1/2}.
  *  6. Heat (forward Euler): T_i += dt sum(areaSlv fluxSlv) / C_i for nodes with a heat

@@ -3,10 +3,10 @@
  * A law is a descriptor (rs_law) with one vectorized function over a block of at most
  * RS_BLOCK contacts (rs_law_block). The block carries every VUINTER argument with its
  * Abaqus meaning, stored in Fortran (column-major) layout so a Fortran shim passes the
- * pointers on without copies (ARCHITECTURE.md, "Memory layout"). Index with the
+ * pointers on without copies (docs/conventions.md, "Memory layout"). Index with the
  * accessors of types.h: RS_A2(b->stress, b->nDir, i, k), RS_DROT(b->drot, i, j, k).
  *
- * Conventions (ARCHITECTURE.md, "rdisp, drdisp, drot" and "Stress, flux, energy signs"):
+ * Conventions (docs/conventions.md, "rdisp, drdisp, drot" and "Stress, flux, energy signs"):
  * - rdisp(1) > 0 is overlap (penetration), < 0 a gap. rdisp(2:3) is the accumulated
  *   slip in (t1, t2); drdisp the increment. rdisp = drdisp = drot = RS_MAXVAL (1e30) on
  *   the one call after a contact leaves the tracking thickness: a law must then return

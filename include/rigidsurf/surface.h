@@ -1,6 +1,6 @@
 /* rigidsurf: master surfaces and the closest-feature query.
  *
- * Conventions (ARCHITECTURE.md, "Profiles and surfaces"):
+ * Conventions (docs/conventions.md, "Profiles and surfaces"):
  * - A profile is a chain of LINE, CIRCL and PARAB segments in a 2D plane (x, y). For
  *   CYLINDER that plane is the local (x, y) plane; for REVOLUTION it is (r, z).
  * - The outward normal lies to the left of travel: n2 = (-t_y, t_x). Particles live on

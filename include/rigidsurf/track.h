@@ -3,7 +3,7 @@
  * One contact is (particle, surface, feature). Each has a history slot that the caller
  * owns (per particle, `capacity` slots of RS_HIST_SIZE(nstatev) doubles), so an engine
  * can migrate and restart it as plain doubles. The tracker turns the contacts of a
- * query into the VUINTER kinematics (ARCHITECTURE.md, "rdisp, drdisp, drot"):
+ * query into the VUINTER kinematics (docs/conventions.md, "rdisp, drdisp, drot"):
  * - rdisp(1) = R - (x_c - x_m).n, > 0 overlap. drdisp(1) = its change since the last call
  *   (for a new contact: -v_rel.n dt).
  * - The old frame is carried by the master's incremental rotation Q, then by the minimal

@@ -31,7 +31,7 @@ static inline void rs_law_zero_contact(rs_law_block *b, int k)
 }
 
 /// Carries the tangent vector s(1:nDir-1) of contact k into this increment's basis,
-/// s <- drot s (ARCHITECTURE.md, "rdisp, drdisp, drot"), then adds the slip increment
+/// s <- drot s (docs/conventions.md, "rdisp, drdisp, drot"), then adds the slip increment
 /// drdisp(2:nDir). With nDir = 2, s[1] stays 0.
 static inline void rs_law_advance_slip(const rs_law_block *b, int k, double s[2])
 {

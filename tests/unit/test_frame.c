@@ -1,4 +1,4 @@
-/* Frame conventions (ARCHITECTURE.md, "Profiles and surfaces"): {n, t1, t2} orthonormal
+/* Frame conventions (docs/conventions.md, "Profiles and surfaces"): {n, t1, t2} orthonormal
  * and right-handed; SEGMENTS t1 = (0,0,-1) x n; CYLINDER t1 = generator; REVOLUTION
  * t2 = hoop; FACETED t1 = global x on the tangent plane; the frame turns with the
  * master under a pose. */

@@ -1,4 +1,4 @@
-/* hertz against the LIGGGHTS Hertz wall formulas of ARCHITECTURE.md, evaluated
+/* hertz against the LIGGGHTS Hertz wall formulas of docs/conventions.md, evaluated
  * independently here; restitution of an integrated 1-DOF impact; friction cap and
  * history reset; drot carrying the history; setup calls; r_MaxVal. */
 #include "rs_test.h"
@@ -13,7 +13,7 @@ static const rs_law *law(void)
     return rs_law_find("hertz");
 }
 
-/* ARCHITECTURE.md, "LIGGGHTS Hertz wall model", for one contact. */
+/* docs/conventions.md, "LIGGGHTS Hertz wall model", for one contact. */
 typedef struct hertz_ref {
     double kn, kt, gn, gt, fn;
 } hertz_ref;

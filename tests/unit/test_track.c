@@ -1,4 +1,4 @@
-/* The contact tracker (track.h; ARCHITECTURE.md, "rdisp, drdisp, drot"). Contacts are
+/* The contact tracker (track.h; docs/conventions.md, "rdisp, drdisp, drot"). Contacts are
  * built by hand from closed-form planes, cylinders and circles, so every expected value
  * is independent of the surface query. */
 #include "rigidsurf/track.h"

@@ -1,4 +1,4 @@
-/* The tracker fed by rs_surface_query on a REVOLUTION drum (ARCHITECTURE.md, "rdisp,
+/* The tracker fed by rs_surface_query on a REVOLUTION drum (docs/conventions.md, "rdisp,
  * drdisp, drot"): objectivity under the master's rigid motion, and history carried
  * across the tangent-continuous junctions of a filleted profile. Expected values are
  * closed forms of the drum geometry. */
