@@ -314,7 +314,8 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
         pc->nlevel =
             bucket_levels(pc, hi[best_axis] - lo[best_axis], 32L * n + 64, &entries);
     }
-    size_t ints = (size_t)pc->nlevel * (size_t)(pc->nbucket + 1) + (size_t)entries;
+    size_t ints =
+        (size_t)pc->nlevel * (size_t)(pc->nbucket + 1) + (size_t)entries + (size_t)n;
     unsigned char *nblk = realloc(blk, head + ints * sizeof(int));
     if (!nblk) {
         free(blk);
@@ -326,6 +327,9 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
     pc->pv = (rs_pvert *)(blk + sizeof(rs_pcache) + (size_t)n * sizeof(rs_pseg));
     pc->bstart = (int *)(blk + head);
     pc->blist = pc->bstart + (size_t)pc->nlevel * (size_t)(pc->nbucket + 1);
+    pc->all = pc->blist + entries;
+    for (int k = 0; k < n; k++)
+        pc->all[k] = k;
     long off = 0;
     for (int l = 0; l < pc->nlevel; l++) {
         int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
@@ -686,7 +690,7 @@ int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double
     int l = 0;
     while (l < pc->nlevel && pc->margin[l] < reach)
         l++;
-    const int *list = NULL, *end = NULL;
+    const int *list = pc->all, *end = pc->all + n;
     if (l < pc->nlevel) {
         double c = pc->axis ? py : px;
         double f = (c - pc->lo) * pc->inv_w, top = (double)(pc->nbucket - 1);
@@ -696,14 +700,46 @@ int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double
         end = pc->blist + bs[b + 1];
     }
     int neg = 0;
-    for (int e = 0; list ? list + e < end : e < n; e++) {
-        int k = list ? list[e] : e;
-        if (!seg_near(&pc->ps[k], px, py, reach))
+    for (; list < end; list++) {
+        const int k = *list;
+        const rs_pseg *q = &pc->ps[k];
+        if (q->box[0] - px > reach || px - q->box[1] > reach || q->box[2] - py > reach ||
+            py - q->box[3] > reach)
             continue;
+        rs_hit2 *h = &sc->cand[nnear];
+        int hit;
+        if (q->type == RS_LINE) {
+            /* within reach of the line, then owned (profile.h): the signed distance is
+             * the candidate's */
+            double wx = px - q->o[0], wy = py - q->o[1];
+            double nx = -q->t[1], ny = q->t[0], sd = wx * nx + wy * ny;
+            if (fabs(sd) > reach)
+                continue;
+            double dB = (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
+            double dA = (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
+            int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
+            int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
+            hit = in_start && in_end;
+            if (hit) {
+                double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
+                tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
+                h->x[0] = q->o[0] + tau * q->e[0];
+                h->x[1] = q->o[1] + tau * q->e[1];
+                int flip = pc->sides == 2 && sd < 0.0;
+                h->n[0] = flip ? -nx : nx;
+                h->n[1] = flip ? -ny : ny;
+                h->dist = flip ? -sd : sd;
+                h->kappa = 0.0;
+                h->feature = RS_FEATURE(RS_FEAT_FACE, k);
+            }
+        } else {
+            if (!seg_near(q, px, py, reach))
+                continue;
+            hit = eval_curve(pc, k, px, py, h);
+        }
         sc->near[nnear] = k;
-        int hit = eval_seg(pc, k, px, py, &sc->cand[nnear]);
         sc->state[nnear] = (unsigned char)(hit ? SEG_HIT : 0);
-        neg |= hit && sc->cand[nnear].dist < 0.0;
+        neg |= hit && h->dist < 0.0;
         nnear++;
     }
     if (pc->sides == 1 && neg) {

@@ -110,6 +110,7 @@ typedef struct rs_pcache {
     double margin[RS_PC_MAXLEVEL]; ///< increasing
     int *bstart;                   ///< level l, bucket b: [l (nbucket + 1) + b], into blist
     int *blist;                    ///< segment indices
+    int *all;                      ///< 0 .. nseg - 1 (reaches beyond the last level)
 } rs_pcache;
 
 /// Builds the query data of an analytic surface's profile (one malloc'ed block).

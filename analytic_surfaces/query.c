@@ -91,10 +91,12 @@ int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
             double r = sqrt(lx * lx + ly * ly);
             if (r > axis_tol) {
                 double cx = lx / r, cy = ly / r;
-                for (int d = 0; d < 3; d++) {
-                    er[d] = cx * EX[d] + cy * EY[d];
-                    hp[d] = cx * EY[d] - cy * EX[d];
-                }
+                er[0] = cx * EX[0] + cy * EY[0];
+                er[1] = cx * EX[1] + cy * EY[1];
+                er[2] = cx * EX[2] + cy * EY[2];
+                hp[0] = cx * EY[0] - cy * EX[0];
+                hp[1] = cx * EY[1] - cy * EX[1];
+                hp[2] = cx * EY[2] - cy * EX[2];
             }
             u = r;
             v = lz;
@@ -116,12 +118,17 @@ int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
             out->dist[k] = ht->dist;
             if (kind == RS_SURF_REVOLUTION) {
                 /* n = n_r e_r + n_z ez; t2 = hoop, t1 = t2 x n = n_z e_r - n_r ez */
-                for (int d = 0; d < 3; d++) {
-                    out->xm[d][k] = A[d] + hx * er[d] + hy * EZ[d];
-                    out->nrm[d][k] = nx * er[d] + ny * EZ[d];
-                    out->t1[d][k] = ny * er[d] - nx * EZ[d];
-                    out->t2[d][k] = hp[d];
-                }
+#define RS_REV_OUT(d)                                                                      \
+    do {                                                                                   \
+        out->xm[d][k] = A[d] + hx * er[d] + hy * EZ[d];                                    \
+        out->nrm[d][k] = nx * er[d] + ny * EZ[d];                                          \
+        out->t1[d][k] = ny * er[d] - nx * EZ[d];                                           \
+        out->t2[d][k] = hp[d];                                                             \
+    } while (0)
+                RS_REV_OUT(0);
+                RS_REV_OUT(1);
+                RS_REV_OUT(2);
+#undef RS_REV_OUT
                 out->curv[0][k] = ht->kappa;
                 /* hoop curvature n_r / r at the contact point, 0 on the axis */
                 out->curv[1][k] = hx > axis_tol ? nx / hx : 0.0;
