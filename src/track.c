@@ -215,6 +215,138 @@ static inline void rel_velocity(const rs_particles *p, int i, const master_rates
     vr[2] = p->vz[i] + wr[2] - mr->V[2] - Wr[2];
 }
 
+/* One live contact, straight-line scalar code (the hot loop). nd is a constant in each
+ * inlined copy. */
+RS_INLINE void emit_contact(const rs_tracker *tr, const master_rates *mr, double dt,
+                            const rs_particles *p, const rs_contacts *c, int k,
+                            rs_track_out *o, int e, const int nd)
+{
+    const int i = c->point[k];
+    double *h = o->slot[e];
+    const double rad = p->radius ? p->radius[i] : 0.0;
+    const double nx = c->nrm[0][k], ny = c->nrm[1][k], nz = c->nrm[2][k];
+    const double ax = c->t1[0][k], ay = c->t1[1][k], az = c->t1[2][k];
+    const double bx = c->t2[0][k], by = c->t2[1][k], bz = c->t2[2][k];
+    const double rd1 = rad - c->dist[k], arm = rad - 0.5 * rd1;
+
+    /* x_cp = x - arm n; v_rel = v + w x (x_cp - x) - (V + W x (x_cp - C)). */
+    const double rx = -arm * nx, ry = -arm * ny, rz = -arm * nz;
+    const double px = p->x[i] + rx, py = p->y[i] + ry, pz = p->z[i] + rz;
+    const double mx = px - mr->C[0], my = py - mr->C[1], mz = pz - mr->C[2];
+    double wx = 0.0, wy = 0.0, wz = 0.0;
+    if (p->wx) {
+        wx = p->wx[i];
+        wy = p->wy[i];
+        wz = p->wz[i];
+    }
+    const double *W = mr->W;
+    const double vx = p->vx[i] + (wy * rz - wz * ry) - mr->V[0] - (W[1] * mz - W[2] * my);
+    const double vy = p->vy[i] + (wz * rx - wx * rz) - mr->V[1] - (W[2] * mx - W[0] * mz);
+    const double vz = p->vz[i] + (wx * ry - wy * rx) - mr->V[2] - (W[0] * my - W[1] * mx);
+    const double vn = vx * nx + vy * ny + vz * nz;
+    const double v1 = vx * ax + vy * ay + vz * az;
+    const double v2 = nd == 3 ? vx * bx + vy * by + vz * bz : 0.0;
+    double d11 = 1.0, d12 = 0.0, d21 = 0.0, d22 = 1.0, s1, s2, ds1, ds2, drd1;
+
+    if (h[RS_H_STATE] == RS_HSTATE_ACTIVE) {
+        if (nd == 3) {
+            /* a = Q n_old, q = Q t1_old; P v = cs v + w x v + w (w.v) / (1 + cs) with
+             * cs = a.n, w = a x n; tau1 = P q. Rotations keep cross products, so
+             * tau2 = P Q (n_old x t1_old) = n x tau1, and with t2 = n x t1 the matrix
+             * drot(i,j) = t_i . tau_j is [[d11, -d21], [d21, d11]]. */
+            const double *Q = mr->Q, *ho = h + RS_H_N;
+            double a[3], q[3], u[3];
+            for (int r = 0; r < 3; r++) {
+                a[r] = Q[3 * r] * ho[0] + Q[3 * r + 1] * ho[1] + Q[3 * r + 2] * ho[2];
+                q[r] = Q[3 * r] * ho[3] + Q[3 * r + 1] * ho[4] + Q[3 * r + 2] * ho[5];
+            }
+            const double cs = a[0] * nx + a[1] * ny + a[2] * nz;
+            if (1.0 + cs > RS_ANTIPARALLEL) {
+                const double w0 = a[1] * nz - a[2] * ny, w1 = a[2] * nx - a[0] * nz,
+                             w2 = a[0] * ny - a[1] * nx;
+                const double f = (w0 * q[0] + w1 * q[1] + w2 * q[2]) / (1.0 + cs);
+                u[0] = cs * q[0] + (w1 * q[2] - w2 * q[1]) + f * w0;
+                u[1] = cs * q[1] + (w2 * q[0] - w0 * q[2]) + f * w1;
+                u[2] = cs * q[2] + (w0 * q[1] - w1 * q[0]) + f * w2;
+            } else {
+                /* Half turn about q (orthogonal to a): tau1 = q. */
+                u[0] = q[0];
+                u[1] = q[1];
+                u[2] = q[2];
+            }
+            d11 = ax * u[0] + ay * u[1] + az * u[2];
+            d21 = bx * u[0] + by * u[1] + bz * u[2];
+            d12 = -d21;
+            d22 = d11;
+        }
+        const double so1 = h[RS_H_SLIP], so2 = nd == 3 ? h[RS_H_SLIP + 1] : 0.0;
+        ds1 = v1 * dt;
+        ds2 = v2 * dt;
+        s1 = d11 * so1 + d12 * so2 + ds1;
+        s2 = d21 * so1 + d22 * so2 + ds2;
+        drd1 = rd1 - h[RS_H_RDISP1];
+    } else {
+        /* The first increment of a new contact: its slip and approach over this dt. */
+        ds1 = v1 * dt;
+        ds2 = v2 * dt;
+        s1 = ds1;
+        s2 = ds2;
+        drd1 = -vn * dt;
+        for (int b = 0; b < 3 + tr->nstatev; b++)
+            h[RS_H_STRESS + b] = 0.0;
+    }
+
+    h[RS_H_FEATURE] = c->feature[k];
+    h[RS_H_STATE] = RS_HSTATE_ACTIVE;
+    h[RS_H_N] = nx;
+    h[RS_H_N + 1] = ny;
+    h[RS_H_N + 2] = nz;
+    h[RS_H_T1] = ax;
+    h[RS_H_T1 + 1] = ay;
+    h[RS_H_T1 + 2] = az;
+    h[RS_H_T2] = bx;
+    h[RS_H_T2 + 1] = by;
+    h[RS_H_T2 + 2] = bz;
+    h[RS_H_SLIP] = s1;
+    h[RS_H_SLIP + 1] = s2;
+    h[RS_H_RDISP1] = rd1;
+
+    o->point[e] = i;
+    o->feature[e] = c->feature[k];
+    RS_DROT(o->drot, 0, 0, e) = d11;
+    RS_DROT(o->drot, 1, 0, e) = d21;
+    RS_DROT(o->drot, 0, 1, e) = d12;
+    RS_DROT(o->drot, 1, 1, e) = d22;
+    RS_A2(o->curv, 2, 0, e) = c->curv[0][k];
+    RS_A2(o->curv, 2, 1, e) = c->curv[1][k];
+    RS_A2(o->rdisp, nd, 0, e) = rd1;
+    RS_A2(o->rdisp, nd, 1, e) = s1;
+    RS_A2(o->drdisp, nd, 0, e) = drd1;
+    RS_A2(o->drdisp, nd, 1, e) = ds1;
+    RS_A2(o->vrel, nd, 0, e) = vn;
+    RS_A2(o->vrel, nd, 1, e) = v1;
+    RS_A3(o->alocaldir, nd, 0, 0, e) = nx;
+    RS_A3(o->alocaldir, nd, 1, 0, e) = ny;
+    RS_A3(o->alocaldir, nd, 0, 1, e) = ax;
+    RS_A3(o->alocaldir, nd, 1, 1, e) = ay;
+    RS_A2(o->coordslv, nd, 0, e) = px;
+    RS_A2(o->coordslv, nd, 1, e) = py;
+    RS_A2(o->coordmst, nd, 0, e) = c->xm[0][k];
+    RS_A2(o->coordmst, nd, 1, e) = c->xm[1][k];
+    if (nd == 3) {
+        RS_A2(o->rdisp, nd, 2, e) = s2;
+        RS_A2(o->drdisp, nd, 2, e) = ds2;
+        RS_A2(o->vrel, nd, 2, e) = v2;
+        RS_A3(o->alocaldir, nd, 2, 0, e) = nz;
+        RS_A3(o->alocaldir, nd, 2, 1, e) = az;
+        RS_A3(o->alocaldir, nd, 0, 2, e) = bx;
+        RS_A3(o->alocaldir, nd, 1, 2, e) = by;
+        RS_A3(o->alocaldir, nd, 2, 2, e) = bz;
+        RS_A2(o->coordslv, nd, 2, e) = pz;
+        RS_A2(o->coordmst, nd, 2, e) = c->xm[2][k];
+    }
+}
+
 /* A slot whose feature is gone: RS_MAXVAL in rdisp, drdisp and drot; the frame is the
  * stored one carried by Q, the contact point the particle's surface point along -n. */
 static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
@@ -250,170 +382,6 @@ static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
     put_frame(o, nd, e, n, t1, t2);
     RS_A2(o->curv, 2, 0, e) = 0.0;
     RS_A2(o->curv, 2, 1, e) = 0.0;
-}
-
-/* Pass 2 over the entries of a block, straight-line scalar code (the hot loop). nd is
- * a constant in each inlined copy. The block's arrays and the master's rates are held in
- * locals: the outputs are the tracker's own arrays, so they alias no input. */
-RS_INLINE void emit_block(const rs_tracker *tr, const master_rates *mr, double dt,
-                          const rs_particles *p, const rs_contacts *c, rs_track_out *o,
-                          int ne, const int nd)
-{
-    const double Q0 = mr->Q[0], Q1 = mr->Q[1], Q2 = mr->Q[2], Q3 = mr->Q[3], Q4 = mr->Q[4],
-                 Q5 = mr->Q[5], Q6 = mr->Q[6], Q7 = mr->Q[7], Q8 = mr->Q[8];
-    const double V0 = mr->V[0], V1 = mr->V[1], V2 = mr->V[2];
-    const double W0 = mr->W[0], W1 = mr->W[1], W2 = mr->W[2];
-    const double C0 = mr->C[0], C1 = mr->C[1], C2 = mr->C[2];
-    const int nzero = 3 + tr->nstatev;
-    const double *restrict X = p->x, *restrict Y = p->y, *restrict Z = p->z;
-    const double *restrict VX = p->vx, *restrict VY = p->vy, *restrict VZ = p->vz;
-    const double *restrict WX = p->wx, *restrict WY = p->wy, *restrict WZ = p->wz;
-    const double *restrict RAD = p->radius;
-    const int *restrict cpoint = c ? c->point : NULL, *restrict cfeat =
-                                                          c ? c->feature : NULL;
-    const double *restrict cn0 = c ? c->nrm[0] : NULL, *restrict cn1 = c ? c->nrm[1] : NULL,
-                           *restrict cn2 = c ? c->nrm[2] : NULL;
-    const double *restrict ca0 = c ? c->t1[0] : NULL, *restrict ca1 = c ? c->t1[1] : NULL,
-                           *restrict ca2 = c ? c->t1[2] : NULL;
-    const double *restrict cb0 = c ? c->t2[0] : NULL, *restrict cb1 = c ? c->t2[1] : NULL,
-                           *restrict cb2 = c ? c->t2[2] : NULL;
-    const double *restrict cx0 = c ? c->xm[0] : NULL, *restrict cx1 = c ? c->xm[1] : NULL,
-                           *restrict cx2 = c ? c->xm[2] : NULL;
-    const double *restrict cdist = c ? c->dist : NULL;
-    const double *restrict ck0 = c ? c->curv[0] : NULL, *restrict ck1 =
-                                                            c ? c->curv[1] : NULL;
-    int *opoint = o->point, *restrict ofeat = o->feature;
-    double *const *oslot = o->slot;
-    double *restrict drot = o->drot, *restrict curv = o->curv, *restrict rdisp = o->rdisp,
-                     *restrict drdisp = o->drdisp, *restrict vrel = o->vrel,
-                     *restrict adir = o->alocaldir, *restrict cslv = o->coordslv,
-                     *restrict cmst = o->coordmst;
-
-    for (int e = 0; e < ne; e++) {
-        const int k = opoint[e];
-        if (k < 0) {
-            emit_leaving(tr, mr, p, -1 - k, o, e);
-            continue;
-        }
-        const int i = cpoint[k], f = cfeat[k];
-        double *h = oslot[e];
-        const double rad = RAD ? RAD[i] : 0.0;
-        const double nx = cn0[k], ny = cn1[k], nz = cn2[k];
-        const double ax = ca0[k], ay = ca1[k], az = ca2[k];
-        const double bx = cb0[k], by = cb1[k], bz = cb2[k];
-        const double rd1 = rad - cdist[k], arm = rad - 0.5 * rd1;
-
-        /* x_cp = x - arm n; v_rel = v + w x (x_cp - x) - (V + W x (x_cp - C)). */
-        const double rx = -arm * nx, ry = -arm * ny, rz = -arm * nz;
-        const double px = X[i] + rx, py = Y[i] + ry, pz = Z[i] + rz;
-        const double mx = px - C0, my = py - C1, mz = pz - C2;
-        double wx = 0.0, wy = 0.0, wz = 0.0;
-        if (WX) {
-            wx = WX[i];
-            wy = WY[i];
-            wz = WZ[i];
-        }
-        const double vx = VX[i] + (wy * rz - wz * ry) - V0 - (W1 * mz - W2 * my);
-        const double vy = VY[i] + (wz * rx - wx * rz) - V1 - (W2 * mx - W0 * mz);
-        const double vz = VZ[i] + (wx * ry - wy * rx) - V2 - (W0 * my - W1 * mx);
-        const double vn = vx * nx + vy * ny + vz * nz;
-        const double v1 = vx * ax + vy * ay + vz * az;
-        const double v2 = nd == 3 ? vx * bx + vy * by + vz * bz : 0.0;
-        double d11 = 1.0, d12 = 0.0, d21 = 0.0, d22 = 1.0, s1, s2, drd1;
-        const double ds1 = v1 * dt, ds2 = v2 * dt;
-
-        if (h[RS_H_STATE] == RS_HSTATE_ACTIVE) {
-            if (nd == 3) {
-                /* a = Q n_old, q = Q t1_old; P v = cs v + w x v + w (w.v) / (1 + cs) with
-                 * cs = a.n, w = a x n; tau1 = P q. Rotations keep cross products, so
-                 * tau2 = P Q (n_old x t1_old) = n x tau1, and with t2 = n x t1 the matrix
-                 * drot(i,j) = t_i . tau_j is [[d11, -d21], [d21, d11]]. */
-                const double o0 = h[RS_H_N], o1 = h[RS_H_N + 1], o2 = h[RS_H_N + 2];
-                const double g0 = h[RS_H_T1], g1 = h[RS_H_T1 + 1], g2 = h[RS_H_T1 + 2];
-                const double a0 = Q0 * o0 + Q1 * o1 + Q2 * o2,
-                             a1 = Q3 * o0 + Q4 * o1 + Q5 * o2,
-                             a2 = Q6 * o0 + Q7 * o1 + Q8 * o2;
-                const double q0 = Q0 * g0 + Q1 * g1 + Q2 * g2,
-                             q1 = Q3 * g0 + Q4 * g1 + Q5 * g2,
-                             q2 = Q6 * g0 + Q7 * g1 + Q8 * g2;
-                const double cs = a0 * nx + a1 * ny + a2 * nz;
-                double u0 = q0, u1 = q1, u2 = q2; /* half turn about q: tau1 = q */
-                if (1.0 + cs > RS_ANTIPARALLEL) {
-                    const double w0 = a1 * nz - a2 * ny, w1 = a2 * nx - a0 * nz,
-                                 w2 = a0 * ny - a1 * nx;
-                    const double fw = (w0 * q0 + w1 * q1 + w2 * q2) / (1.0 + cs);
-                    u0 = cs * q0 + (w1 * q2 - w2 * q1) + fw * w0;
-                    u1 = cs * q1 + (w2 * q0 - w0 * q2) + fw * w1;
-                    u2 = cs * q2 + (w0 * q1 - w1 * q0) + fw * w2;
-                }
-                d11 = ax * u0 + ay * u1 + az * u2;
-                d21 = bx * u0 + by * u1 + bz * u2;
-                d12 = -d21;
-                d22 = d11;
-            }
-            const double so1 = h[RS_H_SLIP], so2 = nd == 3 ? h[RS_H_SLIP + 1] : 0.0;
-            s1 = d11 * so1 + d12 * so2 + ds1;
-            s2 = d21 * so1 + d22 * so2 + ds2;
-            drd1 = rd1 - h[RS_H_RDISP1];
-        } else {
-            /* The first increment of a new contact: its slip and approach over this dt. */
-            s1 = ds1;
-            s2 = ds2;
-            drd1 = -vn * dt;
-            for (int b = 0; b < nzero; b++)
-                h[RS_H_STRESS + b] = 0.0;
-        }
-
-        h[RS_H_FEATURE] = f;
-        h[RS_H_STATE] = RS_HSTATE_ACTIVE;
-        h[RS_H_N] = nx;
-        h[RS_H_N + 1] = ny;
-        h[RS_H_N + 2] = nz;
-        h[RS_H_T1] = ax;
-        h[RS_H_T1 + 1] = ay;
-        h[RS_H_T1 + 2] = az;
-        h[RS_H_T2] = bx;
-        h[RS_H_T2 + 1] = by;
-        h[RS_H_T2 + 2] = bz;
-        h[RS_H_SLIP] = s1;
-        h[RS_H_SLIP + 1] = s2;
-        h[RS_H_RDISP1] = rd1;
-
-        opoint[e] = i;
-        ofeat[e] = f;
-        RS_DROT(drot, 0, 0, e) = d11;
-        RS_DROT(drot, 1, 0, e) = d21;
-        RS_DROT(drot, 0, 1, e) = d12;
-        RS_DROT(drot, 1, 1, e) = d22;
-        RS_A2(curv, 2, 0, e) = ck0[k];
-        RS_A2(curv, 2, 1, e) = ck1[k];
-        RS_A2(rdisp, nd, 0, e) = rd1;
-        RS_A2(rdisp, nd, 1, e) = s1;
-        RS_A2(drdisp, nd, 0, e) = drd1;
-        RS_A2(drdisp, nd, 1, e) = ds1;
-        RS_A2(vrel, nd, 0, e) = vn;
-        RS_A2(vrel, nd, 1, e) = v1;
-        RS_A3(adir, nd, 0, 0, e) = nx;
-        RS_A3(adir, nd, 1, 0, e) = ny;
-        RS_A3(adir, nd, 0, 1, e) = ax;
-        RS_A3(adir, nd, 1, 1, e) = ay;
-        RS_A2(cslv, nd, 0, e) = px;
-        RS_A2(cslv, nd, 1, e) = py;
-        RS_A2(cmst, nd, 0, e) = cx0[k];
-        RS_A2(cmst, nd, 1, e) = cx1[k];
-        if (nd == 3) {
-            RS_A2(rdisp, nd, 2, e) = s2;
-            RS_A2(drdisp, nd, 2, e) = ds2;
-            RS_A2(vrel, nd, 2, e) = v2;
-            RS_A3(adir, nd, 2, 0, e) = nz;
-            RS_A3(adir, nd, 2, 1, e) = az;
-            RS_A3(adir, nd, 0, 2, e) = bx;
-            RS_A3(adir, nd, 1, 2, e) = by;
-            RS_A3(adir, nd, 2, 2, e) = bz;
-            RS_A2(cslv, nd, 2, e) = pz;
-            RS_A2(cmst, nd, 2, e) = cx2[k];
-        }
-    }
 }
 
 int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *m,
@@ -477,10 +445,23 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
         mr.Q[0] = mr.Q[4] = mr.Q[8] = 1.0;
     }
 
-    if (tr->ndir == 3)
-        emit_block(tr, &mr, dt, p, c, out, ne, 3);
-    else
-        emit_block(tr, &mr, dt, p, c, out, ne, 2);
+    if (tr->ndir == 3) {
+        for (int e = 0; e < ne; e++) {
+            int k = out->point[e];
+            if (k >= 0)
+                emit_contact(tr, &mr, dt, p, c, k, out, e, 3);
+            else
+                emit_leaving(tr, &mr, p, -1 - k, out, e);
+        }
+    } else {
+        for (int e = 0; e < ne; e++) {
+            int k = out->point[e];
+            if (k >= 0)
+                emit_contact(tr, &mr, dt, p, c, k, out, e, 2);
+            else
+                emit_leaving(tr, &mr, p, -1 - k, out, e);
+        }
+    }
     out->n = ne;
     return RS_OK;
 }
@@ -499,8 +480,7 @@ void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress
                 RS_A2(stress, nd, 1, e) = h[RS_H_STRESS + 1];
                 RS_A2(stress, nd, 2, e) = h[RS_H_STRESS + 2];
             } else {
-                /* The shear traction is carried into this increment's basis, as the slip.
-                 */
+                /* The shear traction is carried into this increment's basis, as the slip. */
                 const double s2 = h[RS_H_STRESS + 1], s3 = h[RS_H_STRESS + 2];
                 RS_A2(stress, nd, 1, e) =
                     RS_DROT(out->drot, 0, 0, e) * s2 + RS_DROT(out->drot, 0, 1, e) * s3;
