@@ -142,7 +142,7 @@ def wall_costs(exe, workdir, n, variants, reps, log):
         subprocess.run([sys.executable, os.path.join(HERE, "make_stl.py"),
                         os.path.join(workdir, "cyl.stl"), repr(RC), "-0.002",
                         repr(height + 0.002), "200", "10"], check=True)
-    steps = int(min(3000, max(100, 3.0e6 / n)))
+    steps = int(min(10000, max(100, 1.0e7 / n)))
     best = {}
     for rep in range(reps):
         for v in ["none"] + variants:
