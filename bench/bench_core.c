@@ -1,7 +1,9 @@
 /* Core microbenchmark: closest features + frame (rs_surface_query) + tracker
  * (rs_track_update and rs_track_commit) per contact on a REVOLUTION drum whose profile
  * has 1, 8 or 64 segments, against a bare closed-form cylinder distance on the same
- * points in the same run. Repetitions are interleaved; medians are reported.
+ * points in the same run. The tracker pass is what fix wall/rigid runs around its law
+ * call: rs_track_update, rs_track_load (previous stress, shear carried by drot) and
+ * rs_track_commit. Repetitions are interleaved; medians are reported.
  *
  *   bench_core [--particles N] [--reps R] [--seed S] [--nseg 1|8|64]
  *
@@ -166,8 +168,8 @@ typedef struct pipe {
 } pipe;
 
 /* One step over the cloud in blocks of RS_BLOCK: a query pass (closest features and
- * frame) over every block, then a tracker pass (update and commit) over every block;
- * each pass is timed as a whole. */
+ * frame) over every block, then a tracker pass (update, load, commit; no law) over every
+ * block; each pass is timed as a whole. */
 static int pipeline(pipe *pp, const cloud *cl, double dt, double *tq, double *tt,
                     rs_error *err)
 {
@@ -192,6 +194,11 @@ static int pipeline(pipe *pp, const cloud *cl, double dt, double *tq, double *tt
         int rc = rs_track_update(&pp->tr, &pp->s, &pp->m, dt, &p, &pp->c[b], &pp->out, err);
         if (rc)
             return rc;
+        if (pp->out.n > 4 * RS_BLOCK) {
+            fprintf(stderr, "bench_core: %d tracker entries in a block\n", pp->out.n);
+            return 1;
+        }
+        rs_track_load(&pp->tr, &pp->out, pp->stress, NULL);
         rs_track_commit(&pp->tr, &pp->out, pp->stress, NULL);
     }
     double t2 = now();
@@ -329,7 +336,7 @@ int main(int argc, char **argv)
     }
     printf("cyl ns/pt: closed-form cylinder distance and normal per point (hypot).\n"
            "query ns/c: rs_surface_query (closest features + frame) per contact.\n"
-           "track ns/c: rs_track_update + rs_track_commit per contact.\n"
+           "track ns/c: rs_track_update + rs_track_load + rs_track_commit per contact.\n"
            "total ns/c: query + frame + tracker per contact (median of the per-repetition\n"
            "  sums, so not exactly query + track); ratio = total / cyl.\n"
            "Times: thread CPU time of whole passes over the cloud.\n");
