@@ -480,7 +480,8 @@ void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress
                 RS_A2(stress, nd, 1, e) = h[RS_H_STRESS + 1];
                 RS_A2(stress, nd, 2, e) = h[RS_H_STRESS + 2];
             } else {
-                /* The shear traction is carried into this increment's basis, as the slip. */
+                /* The shear traction is carried into this increment's basis, as the slip.
+                 */
                 const double s2 = h[RS_H_STRESS + 1], s3 = h[RS_H_STRESS + 2];
                 RS_A2(stress, nd, 1, e) =
                     RS_DROT(out->drot, 0, 0, e) * s2 + RS_DROT(out->drot, 0, 1, e) * s3;
