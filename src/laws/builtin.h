@@ -47,6 +47,29 @@ static inline void rs_law_advance_slip(const rs_law_block *b, int k, double s[2]
     }
 }
 
+/// Writes contact k's stress from the normal force fn and tangential force ft on the
+/// particle: stress(1) = fn / area, stress(2:nDir) = -ft / area (the traction on the
+/// master, docs/conventions.md, "Stress, flux, energy signs").
+static inline void rs_law_put_force(rs_law_block *b, int k, double fn, const double ft[2],
+                                    double area)
+{
+    const int nd = b->nDir;
+    RS_A2(b->stress, nd, 0, k) = fn / area;
+    RS_A2(b->stress, nd, 1, k) = -ft[0] / area;
+    if (nd == 3) {
+        RS_A2(b->stress, nd, 2, k) = -ft[1] / area;
+    }
+}
+
+/// Stores the tangent vector s(1:nDir-1) in the state variables sv of one contact.
+static inline void rs_law_keep_shear(const rs_law_block *b, double *sv, const double s[2])
+{
+    sv[0] = s[0];
+    if (b->nDir == 3) {
+        sv[1] = s[1];
+    }
+}
+
 /// The LIGGGHTS history tangential model (tangential_model_history.h) in the local
 /// (t1, t2) frame: ft = -kt s; if kt |s| > mu |fn| then ft is scaled to mu |fn| and, when
 /// update, s is reset to -ft / kt; otherwise ft -= gt vt. ft is the force on the

@@ -80,10 +80,7 @@ static int rs_coulomb_update(const rs_law *law, rs_law_block *b, rs_error *err)
         }
         b->sed[c] = 0.5 * kn * h * h + (tau[0] * tau[0] + tau[1] * tau[1]) / (2.0 * ks);
         if (update) {
-            sv[0] = s[0];
-            if (nd == 3) {
-                sv[1] = s[1];
-            }
+            rs_law_keep_shear(b, sv, s);
         }
     }
     return RS_OK;

@@ -118,19 +118,12 @@ static int rs_hertz_update(const rs_law *law, rs_law_block *b, rs_error *err)
         rs_law_tangential_history(kt, gammat, mu, Fn, vt, s, update, ft, &slip_work,
                                   &damp_power);
 
-        RS_A2(b->stress, nd, 0, c) = Fn / area;
-        RS_A2(b->stress, nd, 1, c) = -ft[0] / area;
-        if (nd == 3) {
-            RS_A2(b->stress, nd, 2, c) = -ft[1] / area;
-        }
+        rs_law_put_force(b, c, Fn, ft, area);
         b->sed[c] = (0.4 * kn * d * d + 0.5 * kt * (s[0] * s[0] + s[1] * s[1])) / area;
         if (update) {
             b->svd[c] = (Fn_damping * -vn + damp_power) * dt / area;
             b->sfd[c] = slip_work / area;
-            sv[0] = s[0];
-            if (nd == 3) {
-                sv[1] = s[1];
-            }
+            rs_law_keep_shear(b, sv, s);
         }
     }
     return RS_OK;

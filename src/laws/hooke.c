@@ -80,19 +80,12 @@ static int rs_hooke_update(const rs_law *law, rs_law_block *b, rs_error *err)
             s[0] = s[1] = 0.0;
         }
 
-        RS_A2(b->stress, nd, 0, c) = fn / area;
-        RS_A2(b->stress, nd, 1, c) = -ft[0] / area;
-        if (nd == 3) {
-            RS_A2(b->stress, nd, 2, c) = -ft[1] / area;
-        }
+        rs_law_put_force(b, c, fn, ft, area);
         b->sed[c] = 0.5 * (kn * d * d + kt * (s[0] * s[0] + s[1] * s[1])) / area;
         if (update) {
             b->svd[c] = (gn * vn * vn + damp_power) * dt / area;
             b->sfd[c] = slip_work / area;
-            sv[0] = s[0];
-            if (nd == 3) {
-                sv[1] = s[1];
-            }
+            rs_law_keep_shear(b, sv, s);
         }
     }
     return RS_OK;
