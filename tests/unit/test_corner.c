@@ -4,22 +4,10 @@
  * wall sees rdisp1 change by no more than the step (distance is 1-Lipschitz). */
 #include "rigidsurf/surface.h"
 #include "rs_test.h"
+#include "rs_test_geom.h"
 
 #include <math.h>
 #include <stdlib.h>
-
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-
-static int parse(const char *txt, rs_surface *s)
-{
-    rs_error e;
-    int rc = rs_surface_parse(txt, "test", NULL, s, &e);
-    if (rc)
-        fprintf(stderr, "%s\n", e.msg);
-    return rc;
-}
 
 static int query(const rs_surface *s, double x, double y, double rad, double gap,
                  rs_contacts *c)

@@ -4,13 +4,10 @@
  * master under a pose. */
 #include "rigidsurf/surface.h"
 #include "rs_test.h"
+#include "rs_test_geom.h"
 
 #include <math.h>
 #include <stdlib.h>
-
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static unsigned long long rng_state = 0x9E3779B97F4A7C15ull;
 static double urand(void)
@@ -19,18 +16,6 @@ static double urand(void)
     rng_state ^= rng_state >> 7;
     rng_state ^= rng_state << 17;
     return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
-}
-
-static void cross(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 static void normalize(double a[3])
@@ -102,15 +87,6 @@ static void random_points(double *x, double *y, double *z, double span)
         y[i] = span * (2.0 * urand() - 1.0);
         z[i] = span * (2.0 * urand() - 1.0);
     }
-}
-
-static int parse(const char *txt, rs_surface *s)
-{
-    rs_error e;
-    int rc = rs_surface_parse(txt, "test", NULL, s, &e);
-    if (rc)
-        fprintf(stderr, "%s\n", e.msg);
-    return rc;
 }
 
 static void test_frame_segments_t1_is_minus_z_cross_n(void)

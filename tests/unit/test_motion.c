@@ -3,21 +3,7 @@
  * v' = v + 2 q0 (q x v) + 2 q x (q x v), q = axis sin(a/2), q0 = cos(a/2). */
 #include "rigidsurf/motion.h"
 #include "rs_test.h"
-
-static void cross(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static void unit(double v[3])
-{
-    double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    v[0] /= l;
-    v[1] /= l;
-    v[2] /= l;
-}
+#include "rs_test_geom.h"
 
 /* Rotates v about the unit axis by angle a (quaternion form). */
 static void quat_rotate(const double axis[3], double a, const double v[3], double r[3])

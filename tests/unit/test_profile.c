@@ -3,22 +3,10 @@
  * corners touching a PARAB left sharp. */
 #include "rigidsurf/surface.h"
 #include "rs_test.h"
+#include "rs_test_geom.h"
 
 #include <math.h>
 #include <stdlib.h>
-
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-
-static int parse(const char *txt, rs_surface *s)
-{
-    rs_error e;
-    int rc = rs_surface_parse(txt, "test", NULL, s, &e);
-    if (rc)
-        fprintf(stderr, "%s\n", e.msg);
-    return rc;
-}
 
 /* End tangent of a segment from its defining points (independent of the library). */
 static void tangent(const rs_segment *g, int at_end, double t[2])

@@ -3,13 +3,10 @@
  * sphere of arcs, and a parabola (known closest points and a brute-force search). */
 #include "rigidsurf/surface.h"
 #include "rs_test.h"
+#include "rs_test_geom.h"
 
 #include <math.h>
 #include <stdlib.h>
-
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static unsigned long long rng_state = 88172645463325252ull;
 static double urand(void)
@@ -18,15 +15,6 @@ static double urand(void)
     rng_state ^= rng_state >> 7;
     rng_state ^= rng_state << 17;
     return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
-}
-
-static int parse(const char *txt, rs_surface *s)
-{
-    rs_error e;
-    int rc = rs_surface_parse(txt, "test", NULL, s, &e);
-    if (rc)
-        fprintf(stderr, "parse: %s\n", e.msg);
-    return rc;
 }
 
 static int query1(const rs_surface *s, double x, double y, double z, double gap,

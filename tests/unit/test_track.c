@@ -3,6 +3,7 @@
  * is independent of the surface query. */
 #include "rigidsurf/track.h"
 #include "rs_test.h"
+#include "rs_test_geom.h"
 
 #include <stdlib.h>
 
@@ -12,23 +13,6 @@
 #define MAXC 16
 
 /* ---- small vector helpers (the test's own) ---- */
-static double dot(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-static void cross(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-static void unit(double v[3])
-{
-    double l = sqrt(dot(v, v));
-    v[0] /= l;
-    v[1] /= l;
-    v[2] /= l;
-}
 static void axpy(double *y, double a, const double x[3], const double b[3])
 {
     for (int i = 0; i < 3; i++)

@@ -4,6 +4,7 @@
  * closed forms of the drum geometry. */
 #include "rigidsurf/track.h"
 #include "rs_test.h"
+#include "rs_test_geom.h"
 
 #include <stdlib.h>
 
@@ -20,13 +21,6 @@ static const char *drum_text = "*SURFACE, TYPE=REVOLUTION, NAME=drum, FILLET RAD
                                "LINE, 0.15, -0.05\n"
                                "LINE, 0.15, 0.05\n"
                                "LINE, 0, 0.05\n";
-
-static void cross(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 typedef struct one {
     double x, y, z, vx, vy, vz, wx, wy, wz, r;
