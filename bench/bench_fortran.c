@@ -14,6 +14,8 @@
 
 #include <dlfcn.h>
 
+#include "bench_clock.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -25,25 +27,6 @@
 #endif
 
 #define N RS_BLOCK
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 typedef struct blk {
     rs_law_block b;
@@ -125,7 +108,7 @@ static double time_law(const rs_law *law, blk *k, int calls)
     memcpy(k->stress, k->stress0, sizeof k->stress);
     memcpy(k->statev, k->statev0, sizeof k->statev);
     rs_error err;
-    double t0 = now();
+    double t0 = rs_bench_now();
     for (int c = 0; c < calls; ++c) {
         k->b.drdisp = (c & 1) ? k->dminus : k->dplus;
         if (rs_law_call(law, &k->b, &err) != RS_OK) {
@@ -133,7 +116,7 @@ static double time_law(const rs_law *law, blk *k, int calls)
             exit(1);
         }
     }
-    return (now() - t0) * 1e9 / ((double)calls * N);
+    return (rs_bench_now() - t0) * 1e9 / ((double)calls * N);
 }
 
 /* The same calls straight into vuinter_ (no rs_law_call, no shim, no DEM fields). */
@@ -193,8 +176,8 @@ int main(int argc, char **argv)
         ratio[r] = tf[r] / tc[r];
         rraw[r] = tf[r] / tr[r];
     }
-    double mc = median(tc, reps), mf = median(tf, reps), mr = median(ratio, reps);
-    double mraw = median(tr, reps), mshim = median(rraw, reps);
+    double mc = rs_bench_median(tc, reps), mf = rs_bench_median(tf, reps), mr = rs_bench_median(ratio, reps);
+    double mraw = rs_bench_median(tr, reps), mshim = rs_bench_median(rraw, reps);
     double minc = tc[0], minf = tf[0], minr = tr[0];
     for (int r = 1; r < reps; ++r) {
         minc = fmin(minc, tc[r]);

@@ -12,6 +12,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "rigidsurf/law.h"
 
+#include "bench_clock.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,25 +28,6 @@
 #endif
 
 #define N RS_BLOCK
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 static unsigned long long rng_state = 0x9e3779b97f4a7c15ull;
 static double urand(void)
@@ -131,7 +114,7 @@ static double time_calls(bench_block *k, int calls, int guarded)
     rs_error err;
     memcpy(k->stress, k->stress0, sizeof k->stress);
     memcpy(k->statev, k->statev0, sizeof k->statev);
-    const double t0 = now();
+    const double t0 = rs_bench_now();
     for (int i = 0; i < calls; ++i) {
         int rc = guarded ? rs_law_call(k->law, &k->b, &err)
                          : k->law->update(k->law, &k->b, &err);
@@ -140,7 +123,7 @@ static double time_calls(bench_block *k, int calls, int guarded)
             exit(1);
         }
     }
-    return (now() - t0) * 1e9 / ((double)calls * N);
+    return (rs_bench_now() - t0) * 1e9 / ((double)calls * N);
 }
 
 int main(int argc, char **argv)
@@ -198,7 +181,7 @@ int main(int argc, char **argv)
     printf("build: %s (%s)\n", RS_BUILD_TYPE, RS_BUILD_FLAGS);
     for (int r = 0; r < 4; ++r) {
         printf("  %-32s %7.2f ns/contact (median)\n", runs[r].what,
-               median(runs[r].t, reps));
+               rs_bench_median(runs[r].t, reps));
     }
     return 0;
 }

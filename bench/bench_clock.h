@@ -1,0 +1,30 @@
+/* Timing helpers shared by the microbenchmarks: a monotonic clock and the median of a
+ * set of repetitions (sorted in place). */
+#ifndef RS_BENCH_CLOCK_H
+#define RS_BENCH_CLOCK_H
+
+#include <stdlib.h>
+#include <time.h>
+
+/// Seconds on the monotonic clock.
+static inline double rs_bench_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static inline int rs_bench_cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/// Median of v[0..n-1]; sorts v.
+static inline double rs_bench_median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, rs_bench_cmp_double);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+#endif
