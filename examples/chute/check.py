@@ -20,29 +20,12 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from liggghts_out import read_dump  # noqa: E402
+
 G, RC, R = 9.81, 0.2, 0.002
 RP = RC - R
 TOL_V, TOL_SLIP, TOL_SPIN = 0.005, 0.01, 1e-3
-
-
-def read_dump(path):
-    frames = []
-    with open(path) as f:
-        lines = f.read().splitlines()
-    i = 0
-    while i < len(lines):
-        if lines[i].startswith("ITEM: TIMESTEP"):
-            n = int(lines[i + 3])
-            cols = lines[i + 8].split()[2:]
-            atoms = {}
-            for line in lines[i + 9:i + 9 + n]:
-                row = dict(zip(cols, (float(v) for v in line.split())))
-                atoms[int(row["id"])] = row
-            frames.append(atoms)
-            i += 9 + n
-        else:
-            i += 1
-    return frames
 
 
 def angle(a):
@@ -51,7 +34,7 @@ def angle(a):
 
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "out"
-    frames = read_dump(os.path.join(out, "post", "spheres.dump"))
+    frames = [atoms for _, atoms in read_dump(os.path.join(out, "post", "spheres.dump"))]
     fig, ax = plt.subplots(figsize=(8, 5))
     ok = True
     print("%-8s %6s %12s %12s %8s %10s" % ("sphere", "phi0", "v_bottom", "closed form",

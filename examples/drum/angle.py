@@ -24,6 +24,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from liggghts_out import read_dump  # noqa: E402
+
 R_DRUM = 0.05
 STRIP = 0.004
 MARGIN = 0.008
@@ -40,29 +43,6 @@ def read_com(path):
             th.append(math.degrees(math.atan2(v[1], -v[2])))
             om.append(v[3])
     return t, th, om
-
-
-def read_dump(path):
-    """Frames of a 'dump custom id x y z radius': list of (step, [(x, y, r), ...])."""
-    frames = []
-    with open(path) as f:
-        lines = f.read().splitlines()
-    i = 0
-    while i < len(lines):
-        if lines[i].startswith("ITEM: TIMESTEP"):
-            step = int(lines[i + 1])
-            n = int(lines[i + 3])
-            cols = lines[i + 8].split()[2:]
-            ix, iy, ir = cols.index("x"), cols.index("y"), cols.index("radius")
-            pts = []
-            for line in lines[i + 9:i + 9 + n]:
-                v = line.split()
-                pts.append((float(v[ix]), float(v[iy]), float(v[ir])))
-            frames.append((step, pts))
-            i += 9 + n
-        else:
-            i += 1
-    return frames
 
 
 def surface_fit(pts):
@@ -94,7 +74,8 @@ def main():
     dt = 3.0e-5
     t_rot = float(sys.argv[2]) if len(sys.argv) > 2 else None
     t, th, om = read_com(os.path.join(out, "post", "com.txt"))
-    frames = read_dump(os.path.join(out, "post", "particles.dump"))
+    frames = [(step, [(a["x"], a["y"], a["radius"]) for a in atoms.values()])
+              for step, atoms in read_dump(os.path.join(out, "post", "particles.dump"))]
     tf, thf, last_fit = [], [], None
     for step, pts in frames:
         a, fit = surface_fit(pts)

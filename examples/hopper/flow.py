@@ -28,22 +28,15 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from liggghts_out import read_table  # noqa: E402
+
 G = 9.81
 D0 = 0.015                      # outlet diameter (hopper.inp)
 THETA = math.radians(30.0)      # cone half-angle from the vertical (hopper.inp)
 RADII = (0.00115, 0.00135)      # the two sphere sizes, 50 % of the mass each (in.hopper)
 FRUSTUM = (0.0103868, 0.0219338, 0.020)   # region frustum: r_lo, r_hi, height
 C_BEV, K_BEV = 0.58, 1.5
-
-
-def read_table(path):
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            rows.append([float(v) for v in line.split()])
-    return rows
 
 
 def fit_line(x, y):

@@ -18,31 +18,13 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from liggghts_out import read_dump  # noqa: E402
+
 G, R, RHO, THETA, DT = 9.81, 0.002, 2500.0, math.radians(30.0), 1.0e-5
 MU = {1: 0.3, 2: 0.1}
 LAWS = ("builtin", "c", "vuinter")
 TOL_EQ, TOL = 1e-12, 5e-3
-
-
-def read_dump(path):
-    frames = []
-    with open(path) as f:
-        lines = f.read().splitlines()
-    i = 0
-    while i < len(lines):
-        if lines[i].startswith("ITEM: TIMESTEP"):
-            step = int(lines[i + 1])
-            n = int(lines[i + 3])
-            cols = lines[i + 8].split()[2:]
-            atoms = {}
-            for line in lines[i + 9:i + 9 + n]:
-                row = dict(zip(cols, (float(v) for v in line.split())))
-                atoms[int(row["id"])] = row
-            frames.append((step, atoms))
-            i += 9 + n
-        else:
-            i += 1
-    return frames
 
 
 def main():

@@ -15,6 +15,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from liggghts_out import read_dump, read_table  # noqa: E402
+
 MPI_ENV = {
     "OMPI_ALLOW_RUN_AS_ROOT": "1",
     "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
@@ -120,40 +123,6 @@ def main_guard(session, body):
         traceback.print_exc()
         session.ck.check("test script ran to the end", False)
     session.done()
-
-
-def read_dump(path):
-    """Reads a 'dump custom' file: a list of (step, {id: {column: value}}), in order."""
-    frames = []
-    with open(path) as f:
-        lines = f.read().splitlines()
-    i = 0
-    while i < len(lines):
-        if lines[i].startswith("ITEM: TIMESTEP"):
-            step = int(lines[i + 1])
-            n = int(lines[i + 3])
-            cols = lines[i + 8].split()[2:]
-            atoms = {}
-            for line in lines[i + 9:i + 9 + n]:
-                vals = line.split()
-                row = {c: float(v) for c, v in zip(cols, vals)}
-                atoms[int(row["id"])] = row
-            frames.append((step, atoms))
-            i += 9 + n
-        else:
-            i += 1
-    return frames
-
-
-def read_table(path):
-    """Rows of floats from a 'fix print' file ('#' lines skipped)."""
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            rows.append([float(v) for v in line.split()])
-    return rows
 
 
 DUMP_COLS = "id x y z vx vy vz omegax omegay omegaz"
