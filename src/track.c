@@ -2,9 +2,10 @@
  * with per-(particle, feature) history. Conventions: ARCHITECTURE.md, "rdisp, drdisp,
  * drot"; slot layout: track.h.
  *
- * rs_track_update runs in two passes so that a capacity error leaves history untouched:
- * pass 1 assigns a slot to every contact and lists the leaving slots, pass 2 computes the
- * kinematics and writes the history (frame, slip, rdisp1). rs_track_commit adds the
+ * rs_track_update runs in two passes so that an input or capacity error leaves history
+ * untouched (bar freeing slots an uncommitted call left LEAVING): pass 1 assigns a slot
+ * to every contact, lists the leaving slots and checks the block order, pass 2 computes
+ * the kinematics and writes the history (frame, slip, rdisp1). rs_track_commit adds the
  * law's stress and statev and frees the leaving slots. */
 #include "rigidsurf/track.h"
 
@@ -97,6 +98,10 @@ static int assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_part
 {
     const int cap = tr->capacity, hs = RS_HIST_SIZE(tr->nstatev);
     double *h = p->hist[i];
+    if (!h)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_track_update: particle %d has no history storage",
+                            p->id ? p->id[i] : i);
     const double rad = p->radius ? p->radius[i] : 0.0;
     int kk[RS_TRACK_MAX_CAPACITY], sl[RS_TRACK_MAX_CAPACITY], fe[RS_TRACK_MAX_CAPACITY];
     int nk = 0, unmatched = 0;
@@ -215,11 +220,12 @@ static inline void rel_velocity(const rs_particles *p, int i, const master_rates
     vr[2] = p->vz[i] + wr[2] - mr->V[2] - Wr[2];
 }
 
-/* One live contact, straight-line scalar code (the hot loop). nd is a constant in each
- * inlined copy. */
+/* One live contact, straight-line scalar code (the hot loop). nd and fixed are
+ * constants in each inlined copy; fixed: the master does not move (Q = I, V = W = 0), so
+ * Q n_old = n_old, and P = I where n_new equals n_old bit for bit. */
 RS_INLINE void emit_contact(const rs_tracker *tr, const master_rates *mr, double dt,
                             const rs_particles *p, const rs_contacts *c, int k,
-                            rs_track_out *o, int e, const int nd)
+                            rs_track_out *o, int e, const int nd, const int fixed)
 {
     const int i = c->point[k];
     double *h = o->slot[e];
@@ -232,17 +238,22 @@ RS_INLINE void emit_contact(const rs_tracker *tr, const master_rates *mr, double
     /* x_cp = x - arm n; v_rel = v + w x (x_cp - x) - (V + W x (x_cp - C)). */
     const double rx = -arm * nx, ry = -arm * ny, rz = -arm * nz;
     const double px = p->x[i] + rx, py = p->y[i] + ry, pz = p->z[i] + rz;
-    const double mx = px - mr->C[0], my = py - mr->C[1], mz = pz - mr->C[2];
     double wx = 0.0, wy = 0.0, wz = 0.0;
     if (p->wx) {
         wx = p->wx[i];
         wy = p->wy[i];
         wz = p->wz[i];
     }
-    const double *W = mr->W;
-    const double vx = p->vx[i] + (wy * rz - wz * ry) - mr->V[0] - (W[1] * mz - W[2] * my);
-    const double vy = p->vy[i] + (wz * rx - wx * rz) - mr->V[1] - (W[2] * mx - W[0] * mz);
-    const double vz = p->vz[i] + (wx * ry - wy * rx) - mr->V[2] - (W[0] * my - W[1] * mx);
+    double vx = p->vx[i] + (wy * rz - wz * ry);
+    double vy = p->vy[i] + (wz * rx - wx * rz);
+    double vz = p->vz[i] + (wx * ry - wy * rx);
+    if (!fixed) {
+        const double mx = px - mr->C[0], my = py - mr->C[1], mz = pz - mr->C[2];
+        const double *W = mr->W;
+        vx = vx - mr->V[0] - (W[1] * mz - W[2] * my);
+        vy = vy - mr->V[1] - (W[2] * mx - W[0] * mz);
+        vz = vz - mr->V[2] - (W[0] * my - W[1] * mx);
+    }
     const double vn = vx * nx + vy * ny + vz * nz;
     const double v1 = vx * ax + vy * ay + vz * az;
     const double v2 = nd == 3 ? vx * bx + vy * by + vz * bz : 0.0;
@@ -256,12 +267,29 @@ RS_INLINE void emit_contact(const rs_tracker *tr, const master_rates *mr, double
              * drot(i,j) = t_i . tau_j is [[d11, -d21], [d21, d11]]. */
             const double *Q = mr->Q, *ho = h + RS_H_N;
             double a[3], q[3], u[3];
-            for (int r = 0; r < 3; r++) {
-                a[r] = Q[3 * r] * ho[0] + Q[3 * r + 1] * ho[1] + Q[3 * r + 2] * ho[2];
-                q[r] = Q[3 * r] * ho[3] + Q[3 * r + 1] * ho[4] + Q[3 * r + 2] * ho[5];
+            if (fixed) {
+                for (int r = 0; r < 3; r++) {
+                    a[r] = ho[r];
+                    q[r] = ho[3 + r];
+                }
+            } else {
+                /* Written out: GCC at -O2 keeps the row loop rolled. */
+                const double n0 = ho[0], n1 = ho[1], n2 = ho[2];
+                const double t0 = ho[3], t1 = ho[4], t2 = ho[5];
+                a[0] = Q[0] * n0 + Q[1] * n1 + Q[2] * n2;
+                q[0] = Q[0] * t0 + Q[1] * t1 + Q[2] * t2;
+                a[1] = Q[3] * n0 + Q[4] * n1 + Q[5] * n2;
+                q[1] = Q[3] * t0 + Q[4] * t1 + Q[5] * t2;
+                a[2] = Q[6] * n0 + Q[7] * n1 + Q[8] * n2;
+                q[2] = Q[6] * t0 + Q[7] * t1 + Q[8] * t2;
             }
             const double cs = a[0] * nx + a[1] * ny + a[2] * nz;
-            if (1.0 + cs > RS_ANTIPARALLEL) {
+            if (fixed && a[0] == nx && a[1] == ny && a[2] == nz) {
+                /* The normal did not turn: P = I. */
+                u[0] = q[0];
+                u[1] = q[1];
+                u[2] = q[2];
+            } else if (1.0 + cs > RS_ANTIPARALLEL) {
                 const double w0 = a[1] * nz - a[2] * ny, w1 = a[2] * nx - a[0] * nz,
                              w2 = a[0] * ny - a[1] * nx;
                 const double f = (w0 * q[0] + w1 * q[1] + w2 * q[2]) / (1.0 + cs);
@@ -403,33 +431,33 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
         return rs_error_set(err, RS_ERR_ARG, "rs_track_update: nstatev = %d is negative",
                             tr->nstatev);
     const int nc = c ? c->n : 0;
-    for (int k = 0; k < nc; k++) {
-        int i = c->point[k];
-        if (i < 0 || i >= p->n || (k > 0 && i < c->point[k - 1]))
-            return rs_error_set(err, RS_ERR_ARG,
-                                "rs_track_update: contact %d names point %d; expected "
-                                "points in 0..%d in block order",
-                                k, i, p->n - 1);
-    }
-    for (int i = 0; i < p->n; i++)
-        if (!p->hist[i])
-            return rs_error_set(err, RS_ERR_ARG,
-                                "rs_track_update: particle %d has no history storage",
-                                p->id ? p->id[i] : i);
     int rc = out_reserve(out, nc + p->n * tr->capacity, err);
     if (rc)
         return rc;
 
     out->n = 0;
     out->ndir = tr->ndir;
-    int ne = 0;
-    for (int i = 0, k = 0; i < p->n; i++) {
+    /* Pass 1, grouping the contacts by particle: it takes every contact exactly when
+     * they name points 0..n-1 in block order (checked here, not in a separate pass). */
+    int ne = 0, k = 0;
+    for (int i = 0; i < p->n; i++) {
         int kb = k;
         while (k < nc && c->point[k] == i)
             k++;
         rc = assign_slots(tr, s, p, c, i, kb, k, out, &ne, err);
         if (rc)
             return rc;
+    }
+    if (k < nc) {
+        for (k = 0; k < nc; k++) {
+            int i = c->point[k];
+            if (i < 0 || i >= p->n || (k > 0 && i < c->point[k - 1]))
+                break;
+        }
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_track_update: contact %d names point %d; expected "
+                            "points in 0..%d in block order",
+                            k, c->point[k], p->n - 1);
     }
 
     master_rates mr;
@@ -445,23 +473,29 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
         mr.Q[0] = mr.Q[4] = mr.Q[8] = 1.0;
     }
 
-    if (tr->ndir == 3) {
-        for (int e = 0; e < ne; e++) {
-            int k = out->point[e];
-            if (k >= 0)
-                emit_contact(tr, &mr, dt, p, c, k, out, e, 3);
-            else
-                emit_leaving(tr, &mr, p, -1 - k, out, e);
-        }
-    } else {
-        for (int e = 0; e < ne; e++) {
-            int k = out->point[e];
-            if (k >= 0)
-                emit_contact(tr, &mr, dt, p, c, k, out, e, 2);
-            else
-                emit_leaving(tr, &mr, p, -1 - k, out, e);
-        }
+    /* A master at rest (or none): exactly Q = I and V = W = 0. */
+    int fixed = mr.V[0] == 0.0 && mr.V[1] == 0.0 && mr.V[2] == 0.0 && mr.W[0] == 0.0 &&
+                mr.W[1] == 0.0 && mr.W[2] == 0.0;
+    for (int b = 0; b < 9; b++)
+        fixed = fixed && mr.Q[b] == (b % 4 == 0 ? 1.0 : 0.0);
+
+#define RS_EMIT_ALL(ND, FIXED)                                                             \
+    for (int e = 0; e < ne; e++) {                                                         \
+        int ke = out->point[e];                                                            \
+        if (ke >= 0)                                                                       \
+            emit_contact(tr, &mr, dt, p, c, ke, out, e, ND, FIXED);                        \
+        else                                                                               \
+            emit_leaving(tr, &mr, p, -1 - ke, out, e);                                     \
     }
+    if (tr->ndir == 3 && fixed)
+        RS_EMIT_ALL(3, 1)
+    else if (tr->ndir == 3)
+        RS_EMIT_ALL(3, 0)
+    else if (fixed)
+        RS_EMIT_ALL(2, 1)
+    else
+        RS_EMIT_ALL(2, 0)
+#undef RS_EMIT_ALL
     out->n = ne;
     return RS_OK;
 }
@@ -507,10 +541,10 @@ void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stre
             continue;
         }
         if (stress) {
-            for (int b = 0; b < nd; b++)
-                h[RS_H_STRESS + b] = RS_A2(stress, nd, b, e);
-            if (nd == 2)
-                h[RS_H_STRESS + 2] = 0.0;
+            const double *se = stress + (size_t)nd * e;
+            h[RS_H_STRESS] = se[0];
+            h[RS_H_STRESS + 1] = se[1];
+            h[RS_H_STRESS + 2] = nd == 3 ? se[2] : 0.0;
         }
         if (statev)
             for (int b = 0; b < ns; b++)
