@@ -5,7 +5,10 @@
  * call: rs_track_update, rs_track_load (previous stress, shear carried by drot) and
  * rs_track_commit. Repetitions are interleaved; medians are reported.
  *
- *   bench_core [--particles N] [--reps R] [--seed S] [--nseg 1|8|64]
+ *   bench_core [--particles N] [--reps R] [--seed S] [--nseg 1|8|64] [--still 1]
+ *
+ * --still 1: the drum stands still and the tracker gets no motion (NULL), as for a
+ * fixed wall in fix wall/rigid.
  *
  * Drum: axis z through the origin, radius RD, half-height H. 1 segment: the mantle
  * only. n >= 3 segments: bottom cap, n - 2 collinear mantle pieces, top cap. The
@@ -165,6 +168,7 @@ typedef struct pipe {
     rs_track_out out;
     double *stress;
     long contacts; /* contacts of the last pass */
+    int still;     /* fixed drum: the tracker gets no motion */
 } pipe;
 
 /* One step over the cloud in blocks of RS_BLOCK: a query pass (closest features and
@@ -191,7 +195,8 @@ static int pipeline(pipe *pp, const cloud *cl, double dt, double *tq, double *tt
         rs_particles p = {nb,          cl->x + b0,  cl->y + b0,  cl->z + b0,  cl->vx + b0,
                           cl->vy + b0, cl->vz + b0, cl->wx + b0, cl->wy + b0, cl->wz + b0,
                           cl->r + b0,  cl->id + b0, cl->hp + b0};
-        int rc = rs_track_update(&pp->tr, &pp->s, &pp->m, dt, &p, &pp->c[b], &pp->out, err);
+        int rc = rs_track_update(&pp->tr, &pp->s, pp->still ? NULL : &pp->m, dt, &p,
+                                 &pp->c[b], &pp->out, err);
         if (rc)
             return rc;
         if (pp->out.n > 4 * RS_BLOCK) {
@@ -209,7 +214,7 @@ static int pipeline(pipe *pp, const cloud *cl, double dt, double *tq, double *tt
 
 int main(int argc, char **argv)
 {
-    int np = 8192, reps = 101, only = 0;
+    int np = 8192, reps = 101, only = 0, still = 0;
     unsigned long long seed = 12345;
     for (int a = 1; a < argc; a++) {
         char *end = NULL;
@@ -225,10 +230,12 @@ int main(int argc, char **argv)
             seed = (unsigned long long)v;
         else if (ok && !strcmp(argv[a], "--nseg") && (v == 1 || v == 8 || v == 64))
             only = (int)v;
+        else if (ok && !strcmp(argv[a], "--still") && v == 1)
+            still = 1;
         else {
             fprintf(stderr,
                     "bench_core: bad argument '%s'; expected --particles N, --reps R, "
-                    "--seed S (positive integers) or --nseg 1, 8 or 64\n",
+                    "--seed S (positive integers), --nseg 1, 8 or 64, or --still 1\n",
                     argv[a]);
             return 2;
         }
@@ -254,13 +261,14 @@ int main(int argc, char **argv)
     double *ts = xmalloc((size_t)reps * sizeof(double));
     char text[8192];
     rs_error err;
-    const double dt = 1e-5, omega = 2.0;
+    const double dt = 1e-5, omega = still ? 0.0 : 2.0;
 
     for (int is = 0; is < 3; is++) {
         if (only && nsegs[is] != only)
             continue;
         pipe pp;
         memset(&pp, 0, sizeof pp);
+        pp.still = still;
         pp.tr = (rs_tracker){4, 0, 3, 0.1 * RAD};
         drum_text(nsegs[is], text, sizeof text);
         if (rs_surface_parse(text, "bench_core", NULL, &pp.s, &err)) {
