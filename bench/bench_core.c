@@ -22,6 +22,8 @@
 #include "rigidsurf/surface.h"
 #include "rigidsurf/track.h"
 
+#include "bench_clock.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -38,27 +40,6 @@
 #define RD 0.15
 #define H 0.05
 #define RAD 0.004
-
-/* Thread CPU time: time the scheduler gives other processes is not counted, so the
- * numbers hold on a shared machine (cache interference from them still shows). */
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /* xorshift64*: a fixed, portable stream so runs are reproducible. */
 static unsigned long long rng_state;
@@ -178,7 +159,7 @@ static int pipeline(pipe *pp, const cloud *cl, double dt, double *tq, double *tt
                     rs_error *err)
 {
     pp->contacts = 0;
-    double t0 = now();
+    double t0 = rs_bench_thread_now();
     for (int b = 0; b < pp->nblock; b++) {
         int b0 = b * RS_BLOCK, nb = cl->n - b0 < RS_BLOCK ? cl->n - b0 : RS_BLOCK;
         rs_query q = {nb,         cl->x + b0,  cl->y + b0,      cl->z + b0,
@@ -189,7 +170,7 @@ static int pipeline(pipe *pp, const cloud *cl, double dt, double *tq, double *tt
             return rc;
         pp->contacts += pp->c[b].n;
     }
-    double t1 = now();
+    double t1 = rs_bench_thread_now();
     for (int b = 0; b < pp->nblock; b++) {
         int b0 = b * RS_BLOCK, nb = cl->n - b0 < RS_BLOCK ? cl->n - b0 : RS_BLOCK;
         rs_particles p = {nb,          cl->x + b0,  cl->y + b0,  cl->z + b0,  cl->vx + b0,
@@ -206,7 +187,7 @@ static int pipeline(pipe *pp, const cloud *cl, double dt, double *tq, double *tt
         rs_track_load(&pp->tr, &pp->out, pp->stress, NULL);
         rs_track_commit(&pp->tr, &pp->out, pp->stress, NULL);
     }
-    double t2 = now();
+    double t2 = rs_bench_thread_now();
     *tq = t1 - t0;
     *tt = t2 - t1;
     return 0;
@@ -309,9 +290,9 @@ int main(int argc, char **argv)
             return 1;
         }
         for (int r = 0; r < reps; r++) {
-            double t0 = now();
+            double t0 = rs_bench_thread_now();
             cylinder_baseline(&cl, gap, nx, ny);
-            double t1 = now();
+            double t1 = rs_bench_thread_now();
             sink += gap[r % np] + nx[r % np] + ny[r % np];
             if (rs_motion_advance(&pp.m, dt, &err) ||
                 pipeline(&pp, &cl, dt, &dq, &dtr, &err)) {
@@ -328,10 +309,10 @@ int main(int argc, char **argv)
             tt[r] = dtr;
             ts[r] = dq + dtr;
         }
-        double mb = median(tb, reps) / np * 1e9;
-        double mq = median(tq, reps) / (double)nc * 1e9;
-        double mt = median(tt, reps) / (double)nc * 1e9;
-        double ms = median(ts, reps) / (double)nc * 1e9;
+        double mb = rs_bench_median(tb, reps) / np * 1e9;
+        double mq = rs_bench_median(tq, reps) / (double)nc * 1e9;
+        double mt = rs_bench_median(tt, reps) / (double)nc * 1e9;
+        double ms = rs_bench_median(ts, reps) / (double)nc * 1e9;
         printf("%6d %10ld %12.2f %12.2f %12.2f %12.2f %10.2f\n", nsegs[is], nc, mb, mq, mt,
                ms, ms / mb);
         cloud_free(&cl);
