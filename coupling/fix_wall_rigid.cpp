@@ -87,6 +87,7 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
     std::memset(&tout_, 0, sizeof tout_);
     std::memset(&vtk_mesh_, 0, sizeof vtk_mesh_);
     std::memset(&tracker_, 0, sizeof tracker_);
+    rs_law_block_init(&blk_);
     rs_motion_init(&motion_);
     for (int d = 0; d < 3; d++) {
         ivar_vel_[d] = -1;
@@ -794,6 +795,7 @@ void FixWallRigid::init()
     init_predef();
     if (vtk_every_ > 0 && !vtk_mesh_ok_)
         init_vtk_mesh();
+    init_scratch();
     rebuild_ = true;
 }
 
@@ -973,6 +975,41 @@ bool FixWallRigid::wall_moved_beyond_skin() const
     return bound > 0.5 * neighbor->skin;
 }
 
+/* Scratch of one block, sized once for RS_BLOCK particles and RS_BLOCK * capacity
+ * contacts (the tracker never emits more: a particle with more contacts than slots is an
+ * error), so the step itself allocates and fills nothing it does not need. */
+void FixWallRigid::init_scratch()
+{
+    const size_t np = RS_BLOCK, nc = (size_t)RS_BLOCK * capacity_, nd = ndir_;
+    const size_t ns = std::max(nstatev_, 1), npred = std::max((int)predef_names_.size(), 1);
+    for (std::vector<double> *a :
+         {&bx_, &by_, &bz_, &bvx_, &bvy_, &bvz_, &bwx_, &bwy_, &bwz_, &brad_})
+        a->resize(np);
+    bid_.resize(np), bhist_.resize(np), bidx_.resize(np), take_.resize(np);
+    deepest_.resize(np);
+    for (std::vector<double> *a :
+         {&c_flux_slv_, &c_flux_mst_, &c_sed_, &c_sfd_, &c_scd_, &c_spd_, &c_svd_,
+          &c_stiff_, &c_cond_, &c_area_, &c_temp_, &c_dtemp_, &c_rad_, &c_mass_, &c_reff_})
+        a->resize(nc);
+    c_uid_.resize(nc), c_type_.resize(nc), leaving_.resize(nc), slotj_.resize(nc);
+    c_stress_.resize(nc * nd), c_statev_.resize(nc * ns);
+    c_pred_.resize(nc * npred), c_dpred_.resize(nc * npred);
+
+    /* The law block's fields that stay for the run. */
+    rs_law_block_init(&blk_);
+    blk_.kStep = 1;
+    blk_.nSurfDir = ndir_ - 1;
+    blk_.nDir = ndir_;
+    blk_.nStateVar = nstatev_;
+    blk_.nPred = (int)predef_names_.size();
+    rs_law_block_set_name(blk_.surfInt, id);
+    rs_law_block_set_name(blk_.surfSlv, group->names[igroup]);
+    rs_law_block_set_name(blk_.surfMst, surf_.name[0] ? surf_.name : id);
+    blk_.tempMst = temp_mst_;
+    blk_.dtempMst = dtemp_mst_;
+    blk_.wall_type = wall_type_;
+}
+
 /* Candidates: group atoms whose gap to the surface is within tracking + skin, and every
  * atom that still holds a contact (it must see its contact leave). */
 void FixWallRigid::build_candidates()
@@ -986,28 +1023,22 @@ void FixWallRigid::build_candidates()
     rs_error err;
     rs_error_clear(&err);
 
-    std::vector<int> idx;
-    idx.reserve(RS_BLOCK);
-    bx_.resize(RS_BLOCK);
-    by_.resize(RS_BLOCK);
-    bz_.resize(RS_BLOCK);
-    brad_.resize(RS_BLOCK);
+    int n = 0;
     auto flush = [&]() {
-        if (idx.empty())
+        if (n == 0)
             return;
-        const int n = (int)idx.size();
         double rmax = 0.0;
-        std::vector<char> take(n, 0);
         for (int k = 0; k < n; k++) {
-            const int i = idx[k];
+            const int i = bidx_[k];
             bx_[k] = x[i][0];
             by_[k] = x[i][1];
             bz_[k] = x[i][2];
             brad_[k] = radius[i];
             rmax = std::max(rmax, radius[i]);
+            char held = 0;
             for (int j = 0; j < capacity_; j++)
-                if (row_[i][j * hs + RS_H_STATE] != RS_HSTATE_EMPTY)
-                    take[k] = 1;
+                held |= row_[i][j * hs + RS_H_STATE] != RS_HSTATE_EMPTY;
+            take_[k] = held;
         }
         rs_query q;
         q.n = n;
@@ -1022,17 +1053,17 @@ void FixWallRigid::build_candidates()
         if (rs_surface_query(&surf_, &q, &contacts_, &err) != RS_OK)
             fail_one(std::string("surface query: ") + err.msg);
         for (int c = 0; c < contacts_.n; c++)
-            take[contacts_.point[c]] = 1;
+            take_[contacts_.point[c]] = 1;
         for (int k = 0; k < n; k++)
-            if (take[k])
-                cand_.push_back(idx[k]);
-        idx.clear();
+            if (take_[k])
+                cand_.push_back(bidx_[k]);
+        n = 0;
     };
     for (int i = 0; i < nlocal; i++) {
         if (!(mask[i] & groupbit))
             continue;
-        idx.push_back(i);
-        if ((int)idx.size() == RS_BLOCK)
+        bidx_[n++] = i;
+        if (n == RS_BLOCK)
             flush();
     }
     flush();
@@ -1056,12 +1087,24 @@ void FixWallRigid::compute(bool setup_call)
     ncontact_ = 0;
     out_valid_ = false;
     heat_step_ = 0.0;
-    const int nlocal = atom->nlocal;
-    for (int i = 0; i < nlocal; i++)
-        for (int c = 0; c < 6; c++)
-            array_atom[i][c] = 0.0;
 
-    if (rebuild_ || setup_call || wall_moved_beyond_skin())
+    /* Per-atom output: every candidate's row is written by its block each step, so only
+     * the rows that may stop being candidates are zeroed here: all of them after a
+     * reneighbouring (local indices change), the old candidates' before a refresh the
+     * wall's motion asks for. Between the two, indices and candidates are fixed. */
+    bool refresh = rebuild_ || setup_call;
+    if (refresh) {
+        const int nlocal = atom->nlocal;
+        for (int i = 0; i < nlocal; i++)
+            for (int c = 0; c < 6; c++)
+                array_atom[i][c] = 0.0;
+    } else if (wall_moved_beyond_skin()) {
+        for (int i : cand_)
+            for (int c = 0; c < 6; c++)
+                array_atom[i][c] = 0.0;
+        refresh = true;
+    }
+    if (refresh)
         build_candidates();
 
     /* Blocks of at most RS_BLOCK particles; with per-type properties a block holds one
@@ -1100,7 +1143,6 @@ void FixWallRigid::compute(bool setup_call)
 void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
 {
     double **x = atom->x, **v = atom->v, **omega = atom->omega;
-    double **f = atom->f, **torque = atom->torque;
     const double *radius = atom->radius, *rmass = atom->rmass;
     const int *tag = atom->tag, *type = atom->type;
     const int nd = ndir_, ns = nstatev_, hs = hist_size(), rs = row_size();
@@ -1109,9 +1151,6 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     rs_error err;
     rs_error_clear(&err);
 
-    bx_.resize(n), by_.resize(n), bz_.resize(n), bvx_.resize(n), bvy_.resize(n);
-    bvz_.resize(n), bwx_.resize(n), bwy_.resize(n), bwz_.resize(n), brad_.resize(n);
-    bid_.resize(n), bhist_.resize(n);
     double rmax = 0.0;
     for (int k = 0; k < n; k++) {
         const int i = idx[k];
@@ -1163,63 +1202,90 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         fail_one(err.msg);
 
     const int ne = tout_.n;
-    if (ne == 0)
+    if (ne > (int)c_sed_.size()) // not reached: at most capacity contacts per particle
+        fail_one("internal: block has more contacts than its scratch");
+    if (ne == 0) {
+        for (int k = 0; k < n; k++)
+            for (int c = 0; c < 6; c++)
+                array_atom[idx[k]][c] = 0.0;
+        if (setup_call)
+            for (int k = 0; k < n; k++)
+                std::memcpy(row_[idx[k]], &saved_rows_[(size_t)k * rs],
+                            sizeof(double) * rs);
         return;
-    c_uid_.resize(ne), c_type_.resize(ne);
-    c_stress_.resize((size_t)ne * nd), c_statev_.resize((size_t)ne * std::max(ns, 1));
+    }
     /* Stress of the previous increment in this increment's basis, and the law state. */
     rs_track_load(&tracker_, &tout_, c_stress_.data(), ns ? c_statev_.data() : NULL);
-    c_flux_slv_.assign(ne, 0.0), c_flux_mst_.assign(ne, 0.0), c_sed_.resize(ne);
-    c_sfd_.assign(ne, 0.0), c_scd_.assign(ne, 0.0), c_spd_.assign(ne, 0.0);
-    c_svd_.assign(ne, 0.0), c_stiff_.resize(ne), c_cond_.resize(ne), c_area_.resize(ne);
-    c_temp_.resize(ne), c_dtemp_.resize(ne), c_rad_.resize(ne), c_mass_.resize(ne);
-    c_reff_.resize(ne);
-    c_pred_.resize((size_t)ne * std::max(npred, 1)),
-        c_dpred_.resize((size_t)ne * std::max(npred, 1));
-    leaving_.resize(ne), slotj_.resize(ne);
+    /* fluxSlv and fluxMst are read/write and enter at zero (no flux history is kept);
+     * rs_law_call zeroes the write-only sfd, scd, spd and svd itself. */
+    std::fill_n(c_flux_slv_.begin(), ne, 0.0);
+    std::fill_n(c_flux_mst_.begin(), ne, 0.0);
 
     const double *Temp = fix_temp_ ? fix_temp_->vector_atom : NULL;
     const double *cp = fix_heatcap_ ? fix_heatcap_->get_values() : NULL;
+    const int sed0 = sed_offset(), tp0 = tprev_offset(), pd0 = pred_offset();
+    double A = 1.0;
+    if (area_mode_ == AREA_CONSTANT)
+        A = area_const_;
+    /* Stiffness, conductance and effective radius depend on a few per-particle values
+     * only: each is recomputed when its inputs differ from the previous contact's (a
+     * monodisperse bed computes them once per block), with the same functions. */
+    double last_m = NAN, last_mA = NAN, stiff = 0.0;
+    double last_C = NAN, last_CA = NAN, cond = 0.0;
+    double last_R = NAN, last_k1 = NAN, last_k2 = NAN, reff = 0.0;
+    const double *curv = tout_.curv;
     for (int e = 0; e < ne; e++) {
         const int k = tout_.point[e], i = idx[k];
+        double *row = row_[i];
         const double *slot = tout_.slot[e];
-        const int j = (int)((slot - row_[i]) / hs);
+        const int j = (int)((slot - row) / hs);
         slotj_[e] = j;
         leaving_[e] = slot[RS_H_STATE] == RS_HSTATE_LEAVING;
         c_uid_[e] = tag[i];
         c_type_[e] = type[i];
-        c_sed_[e] = row_[i][sed_offset() + j];
+        c_sed_[e] = row[sed0 + j];
 
         const double R = radius[i], m = rmass[i];
-        double A = 1.0;
         if (area_mode_ == AREA_PROJECTED)
             A = kPi * R * R;
-        else if (area_mode_ == AREA_CONSTANT)
-            A = area_const_;
         c_area_[e] = A;
         c_rad_[e] = R;
         c_mass_[e] = m;
         /* Effective radius of a sphere on a surface with principal curvatures k1, k2
          * (> 0 convex toward the particle): the geometric mean of the two principal
          * relative radii 1/(1/R + k). A plane gives R. */
-        const double k1 = RS_A2(tout_.curv, 2, 0, e), k2 = RS_A2(tout_.curv, 2, 1, e);
-        const double floor_c = 1e-6 / R;
-        const double c1 = std::max(1.0 / R + k1, floor_c),
-                     c2 = std::max(1.0 / R + k2, floor_c);
-        c_reff_[e] = (k1 == 0.0 && k2 == 0.0) ? R : 1.0 / std::sqrt(c1 * c2);
-        c_stiff_[e] = rs_law_default_stiffness(m, A, dt);
-        c_cond_[e] = cp ? rs_law_default_conductance(m * cp[type[i] - 1], A, dt) : 0.0;
+        const double k1 = curv[2 * e], k2 = curv[2 * e + 1];
+        if (!(R == last_R && k1 == last_k1 && k2 == last_k2)) {
+            const double floor_c = 1e-6 / R;
+            const double c1 = std::max(1.0 / R + k1, floor_c),
+                         c2 = std::max(1.0 / R + k2, floor_c);
+            reff = (k1 == 0.0 && k2 == 0.0) ? R : 1.0 / std::sqrt(c1 * c2);
+            last_R = R, last_k1 = k1, last_k2 = k2;
+        }
+        c_reff_[e] = reff;
+        if (!(m == last_m && A == last_mA)) {
+            stiff = rs_law_default_stiffness(m, A, dt);
+            last_m = m, last_mA = A;
+        }
+        c_stiff_[e] = stiff;
+        if (cp) {
+            const double C = m * cp[type[i] - 1];
+            if (!(C == last_C && A == last_CA)) {
+                cond = rs_law_default_conductance(C, A, dt);
+                last_C = C, last_CA = A;
+            }
+            c_cond_[e] = cond;
+        } else {
+            c_cond_[e] = 0.0;
+        }
         if (Temp) {
-            const double Tp = row_[i][tprev_offset()];
+            const double Tp = row[tp0];
             c_temp_[e] = Temp[i];
             c_dtemp_[e] = (setup_call || std::isnan(Tp)) ? 0.0 : Temp[i] - Tp;
-        } else {
-            c_temp_[e] = 0.0;
-            c_dtemp_[e] = 0.0;
         }
         for (int a = 0; a < npred; a++) {
             const double val = predef_fix_[a]->vector_atom[i];
-            const double prev = row_[i][pred_offset() + a];
+            const double prev = row[pd0 + a];
             c_pred_[(size_t)e * npred + a] = val;
             c_dpred_[(size_t)e * npred + a] =
                 (setup_call || std::isnan(prev)) ? 0.0 : val - prev;
@@ -1244,24 +1310,15 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     const double time_end = update->atime + (update->ntimestep - update->atimestep) * dt;
     for (int k0 = 0; k0 < ne; k0 += RS_BLOCK) {
         const int nk = std::min(RS_BLOCK, ne - k0);
-        rs_law_block b;
-        rs_law_block_init(&b);
-        b.kStep = 1;
+        rs_law_block b = blk_;
         b.kInc = (int)update->ntimestep;
         b.nSlvNod = nk;
-        b.nSurfDir = nd - 1;
-        b.nDir = nd;
-        b.nStateVar = ns;
         b.nProps = nprops;
         b.nTemp = (Temp || temp_given_) ? 1 : 0;
-        b.nPred = npred;
         b.jSlvUid = &c_uid_[k0];
         b.jConMstid = tout_.feature + k0;
         b.timStep = b.timGlb = setup_call ? time_end : time_end - dt;
         b.dTimCur = dt;
-        rs_law_block_set_name(b.surfInt, id);
-        rs_law_block_set_name(b.surfSlv, group->names[igroup]);
-        rs_law_block_set_name(b.surfMst, surf_.name[0] ? surf_.name : id);
         b.rdisp = tout_.rdisp + (size_t)k0 * nd;
         b.drdisp = tout_.drdisp + (size_t)k0 * nd;
         b.drot = tout_.drot + (size_t)k0 * 4;
@@ -1272,14 +1329,14 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         b.alocaldir = tout_.alocaldir + (size_t)k0 * nd * nd;
         b.props = nprops ? props : NULL;
         b.areaSlv = &c_area_[k0];
-        b.tempSlv = &c_temp_[k0];
-        b.dtempSlv = &c_dtemp_[k0];
+        if (Temp) { // otherwise the block's defaults: zeros
+            b.tempSlv = &c_temp_[k0];
+            b.dtempSlv = &c_dtemp_[k0];
+        }
         if (npred) {
             b.preDefSlv = &c_pred_[(size_t)k0 * npred];
             b.dpreDefSlv = &c_dpred_[(size_t)k0 * npred];
         }
-        b.tempMst = temp_mst_;
-        b.dtempMst = dtemp_mst_;
         b.stress = &c_stress_[(size_t)k0 * nd];
         b.fluxSlv = &c_flux_slv_[k0];
         b.fluxMst = &c_flux_mst_[k0];
@@ -1295,79 +1352,15 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         b.vrel = tout_.vrel + (size_t)k0 * nd;
         b.curv = tout_.curv + (size_t)k0 * 2;
         b.slv_type = &c_type_[k0];
-        b.wall_type = wall_type_;
         b.setup = setup_call ? 1 : 0;
         if (rs_law_call(law_, &b, &err) != RS_OK)
             fail_one(err.msg);
     }
 
-    /* Scatter: F = A (s1 n - s2 t1 - s3 t2) on the particle at x_cp, -F on the wall. */
-    double origin[3];
-    rs_pose_to_global(&motion_.pose, surf_.a, origin);
-    double *heatflux = (fix_heatflux_ && !setup_call) ? fix_heatflux_->vector_atom : NULL;
-    deepest_.assign(n, -1);
-    for (int e = 0; e < ne; e++) {
-        if (leaving_[e])
-            continue;
-        const int k = tout_.point[e], i = idx[k];
-        const double A = c_area_[e];
-        const double *s = &c_stress_[(size_t)e * nd];
-        double nrm[3] = {0, 0, 0}, t1[3] = {0, 0, 0}, t2[3] = {0, 0, -1}, xcp[3];
-        for (int a = 0; a < nd; a++) {
-            nrm[a] = RS_A3(tout_.alocaldir, nd, a, 0, e);
-            t1[a] = RS_A3(tout_.alocaldir, nd, a, 1, e);
-            if (nd == 3)
-                t2[a] = RS_A3(tout_.alocaldir, nd, a, 2, e);
-            xcp[a] = RS_A2(tout_.coordslv, nd, a, e);
-        }
-        if (nd == 2)
-            xcp[2] = x[i][2];
-        const double s3 = nd == 3 ? s[2] : 0.0;
-        double F[3], r[3], T[3], rw[3], Mw[3], Fw[3];
-        for (int a = 0; a < 3; a++) {
-            F[a] = A * (s[0] * nrm[a] - s[1] * t1[a] - s3 * t2[a]);
-            r[a] = xcp[a] - x[i][a];
-            rw[a] = xcp[a] - origin[a];
-            Fw[a] = -F[a];
-        }
-        cross3(r, F, T);
-        cross3(rw, Fw, Mw);
-        for (int a = 0; a < 3; a++) {
-            f[i][a] += F[a];
-            torque[i][a] += T[a];
-            f_wall_[a] += Fw[a];
-            m_wall_[a] += Mw[a];
-        }
-        const double rd1 = RS_A2(tout_.rdisp, nd, 0, e);
-        if (rd1 > 0.0)
-            ncontact_++;
-        se_now_ += c_sed_[e] * A;
-        if (!setup_call) {
-            diss_[0] += c_sfd_[e] * A;
-            diss_[1] += c_spd_[e] * A;
-            diss_[2] += c_svd_[e] * A;
-            diss_[3] += c_scd_[e] * A;
-            heat_step_ += c_flux_mst_[e] * A;
-            if (heatflux)
-                heatflux[i] += c_flux_slv_[e] * A;
-        }
-        if (deepest_[k] < 0 || rd1 > RS_A2(tout_.rdisp, nd, 0, deepest_[k]))
-            deepest_[k] = e;
-    }
-    /* Per-atom output: the deepest live contact of each particle with this wall. */
-    for (int k = 0; k < n; k++) {
-        const int e = deepest_[k];
-        if (e < 0)
-            continue;
-        const double *s = &c_stress_[(size_t)e * nd];
-        double *o = array_atom[idx[k]];
-        o[0] = RS_A2(tout_.rdisp, nd, 0, e);
-        o[1] = RS_A2(tout_.rdisp, nd, 1, e);
-        o[2] = nd == 3 ? RS_A2(tout_.rdisp, nd, 2, e) : 0.0;
-        o[3] = s[0];
-        o[4] = s[1];
-        o[5] = nd == 3 ? s[2] : 0.0;
-    }
+    if (nd == 3)
+        scatter<3>(idx, n, ne, setup_call);
+    else
+        scatter<2>(idx, n, ne, setup_call);
 
     if (setup_call) {
         for (int k = 0; k < n; k++)
@@ -1375,9 +1368,111 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         return;
     }
     rs_track_commit(&tracker_, &tout_, c_stress_.data(), ns ? c_statev_.data() : NULL);
+    const int sed0w = sed_offset();
     for (int e = 0; e < ne; e++) {
         const int i = idx[tout_.point[e]];
-        row_[i][sed_offset() + slotj_[e]] = leaving_[e] ? 0.0 : c_sed_[e];
+        row_[i][sed0w + slotj_[e]] = leaving_[e] ? 0.0 : c_sed_[e];
+    }
+}
+
+/* Scatter: F = A (s1 n - s2 t1 - s3 t2) on the particle at x_cp, -F on the wall; the
+ * wall's sums, energies and the per-atom output of the block's particles. ND = 2: the
+ * plane is z = const, t2 = -ez and the contact point keeps the particle's z. */
+template <int ND> void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
+{
+    double **x = atom->x, **f = atom->f, **torque = atom->torque;
+    double origin[3];
+    rs_pose_to_global(&motion_.pose, surf_.a, origin);
+    double *heatflux = (fix_heatflux_ && !setup_call) ? fix_heatflux_->vector_atom : NULL;
+    double fw[3] = {f_wall_[0], f_wall_[1], f_wall_[2]};
+    double mw[3] = {m_wall_[0], m_wall_[1], m_wall_[2]};
+    double se = se_now_, d0 = diss_[0], d1 = diss_[1], d2 = diss_[2], d3 = diss_[3];
+    double heat = heat_step_;
+    int ncontact = ncontact_;
+    int *deepest = deepest_.data();
+    for (int k = 0; k < n; k++)
+        deepest[k] = -1;
+    const double *alocal = tout_.alocaldir, *coord = tout_.coordslv, *rdisp = tout_.rdisp;
+    const double *stress = c_stress_.data();
+    for (int e = 0; e < ne; e++) {
+        if (leaving_[e])
+            continue;
+        const int k = tout_.point[e], i = idx[k];
+        const double A = c_area_[e];
+        const double *s = stress + (size_t)e * ND;
+        const double *L = alocal + (size_t)e * ND * ND; // columns n, t1[, t2]
+        const double *xc = coord + (size_t)e * ND;
+        double F[3], xcp[3];
+        if (ND == 3) {
+            for (int a = 0; a < 3; a++) {
+                F[a] = A * (s[0] * L[a] - s[1] * L[3 + a] - s[2] * L[6 + a]);
+                xcp[a] = xc[a];
+            }
+        } else {
+            const double nrm[3] = {L[0], L[1], 0.0}, t1[3] = {L[2], L[3], 0.0},
+                         t2[3] = {0.0, 0.0, -1.0};
+            for (int a = 0; a < 3; a++)
+                F[a] = A * (s[0] * nrm[a] - s[1] * t1[a] - 0.0 * t2[a]);
+            xcp[0] = xc[0], xcp[1] = xc[1], xcp[2] = x[i][2];
+        }
+        double r[3], rw[3], Fw[3], T[3], Mw[3];
+        for (int a = 0; a < 3; a++) {
+            r[a] = xcp[a] - x[i][a];
+            rw[a] = xcp[a] - origin[a];
+            Fw[a] = -F[a];
+        }
+        cross3(r, F, T);
+        cross3(rw, Fw, Mw);
+        double *fi = f[i], *ti = torque[i];
+        for (int a = 0; a < 3; a++) {
+            fi[a] += F[a];
+            ti[a] += T[a];
+            fw[a] += Fw[a];
+            mw[a] += Mw[a];
+        }
+        const double rd1 = rdisp[(size_t)e * ND];
+        if (rd1 > 0.0)
+            ncontact++;
+        se += c_sed_[e] * A;
+        if (!setup_call) {
+            d0 += c_sfd_[e] * A;
+            d1 += c_spd_[e] * A;
+            d2 += c_svd_[e] * A;
+            d3 += c_scd_[e] * A;
+            heat += c_flux_mst_[e] * A;
+            if (heatflux)
+                heatflux[i] += c_flux_slv_[e] * A;
+        }
+        if (deepest[k] < 0 || rd1 > rdisp[(size_t)deepest[k] * ND])
+            deepest[k] = e;
+    }
+    for (int a = 0; a < 3; a++) {
+        f_wall_[a] = fw[a];
+        m_wall_[a] = mw[a];
+    }
+    se_now_ = se;
+    diss_[0] = d0, diss_[1] = d1, diss_[2] = d2, diss_[3] = d3;
+    heat_step_ = heat;
+    ncontact_ = ncontact;
+
+    /* Per-atom output: the deepest live contact of each particle with this wall, zeros
+     * for a particle without one. */
+    for (int k = 0; k < n; k++) {
+        const int e = deepest[k];
+        double *o = array_atom[idx[k]];
+        if (e < 0) {
+            for (int c = 0; c < 6; c++)
+                o[c] = 0.0;
+            continue;
+        }
+        const double *s = stress + (size_t)e * ND;
+        const double *rd = rdisp + (size_t)e * ND;
+        o[0] = rd[0];
+        o[1] = rd[1];
+        o[2] = ND == 3 ? rd[2] : 0.0;
+        o[3] = s[0];
+        o[4] = s[1];
+        o[5] = ND == 3 ? s[2] : 0.0;
     }
 }
 

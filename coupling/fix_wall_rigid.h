@@ -86,9 +86,11 @@ class FixWallRigid : public Fix
 
     /* the step */
     void compute(bool setup_call);
+    void init_scratch();
     void build_candidates();
     bool wall_moved_beyond_skin() const;
     void process_block(const int *idx, int n, bool setup_call);
+    template <int ND> void scatter(const int *idx, int n, int ne, bool setup_call);
     void write_vtk();
     void update_previous_fields();
 
@@ -180,16 +182,17 @@ class FixWallRigid : public Fix
     std::vector<int> cand_;
     bool rebuild_;
 
-    /* scratch (sized per block) */
+    /* scratch of one block, sized once in init() (init_scratch) */
     rs_contacts contacts_;
     rs_track_out tout_;
     std::vector<double> bx_, by_, bz_, bvx_, bvy_, bvz_, bwx_, bwy_, bwz_, brad_;
-    std::vector<int> bid_;
+    std::vector<int> bid_, bidx_;
     std::vector<double *> bhist_;
     std::vector<double> saved_rows_;
-    std::vector<char> leaving_;
+    std::vector<char> leaving_, take_;
     std::vector<int> slotj_, deepest_;
-    /* per contact of a block (grown to the tracker's output size) */
+    rs_law_block blk_; // the law block's fields that stay for the run
+    /* per contact of a block (RS_BLOCK * capacity) */
     std::vector<int> c_uid_, c_type_;
     std::vector<double> c_stress_, c_statev_, c_flux_slv_, c_flux_mst_, c_sed_, c_sfd_,
         c_scd_, c_spd_, c_svd_, c_stiff_, c_cond_, c_area_, c_temp_, c_dtemp_, c_pred_,
