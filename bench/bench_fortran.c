@@ -176,7 +176,8 @@ int main(int argc, char **argv)
         ratio[r] = tf[r] / tc[r];
         rraw[r] = tf[r] / tr[r];
     }
-    double mc = rs_bench_median(tc, reps), mf = rs_bench_median(tf, reps), mr = rs_bench_median(ratio, reps);
+    double mc = rs_bench_median(tc, reps), mf = rs_bench_median(tf, reps),
+           mr = rs_bench_median(ratio, reps);
     double mraw = rs_bench_median(tr, reps), mshim = rs_bench_median(rraw, reps);
     double minc = tc[0], minf = tf[0], minr = tr[0];
     for (int r = 1; r < reps; ++r) {

@@ -6,7 +6,8 @@
  * pointers on without copies (docs/conventions.md, "Memory layout"). Index with the
  * accessors of types.h: RS_A2(b->stress, b->nDir, i, k), RS_DROT(b->drot, i, j, k).
  *
- * Conventions (docs/conventions.md, "rdisp, drdisp, drot" and "Stress, flux, energy signs"):
+ * Conventions (docs/conventions.md, "rdisp, drdisp, drot" and "Stress, flux, energy
+ * signs"):
  * - rdisp(1) > 0 is overlap (penetration), < 0 a gap. rdisp(2:3) is the accumulated
  *   slip in (t1, t2); drdisp the increment. rdisp = drdisp = drot = RS_MAXVAL (1e30) on
  *   the one call after a contact leaves the tracking thickness: a law must then return

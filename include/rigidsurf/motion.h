@@ -41,18 +41,19 @@ void rs_rotation_matrix(const double axis[3], double angle, double R[9]);
 typedef int (*rs_motion_rates_fn)(double t, double vel[3], double *omega, void *ctx);
 
 typedef struct rs_motion {
-    double t;           ///< current time
-    double vel[3];      ///< translation velocity V (length/time)
-    double omega;       ///< angular speed about axis (rad/time), right-hand rule
-    double axis[3];     ///< unit rotation axis
-    double center0[3];  ///< a point on the axis, reference configuration
-    double disp[3];     ///< accumulated translation D
-    double phi;         ///< accumulated rotation angle
+    double t;                 ///< current time
+    double vel[3];            ///< translation velocity V (length/time)
+    double omega;             ///< angular speed about axis (rad/time), right-hand rule
+    double axis[3];           ///< unit rotation axis
+    double center0[3];        ///< a point on the axis, reference configuration
+    double disp[3];           ///< accumulated translation D
+    double phi;               ///< accumulated rotation angle
     rs_motion_rates_fn rates; ///< NULL for constant rates
-    void *ctx;          ///< passed to rates
-    rs_pose pose;       ///< current pose
-    double dQ[9];       ///< incremental rotation of the last rs_motion_advance (row-major)
-    double t_err, phi_err, disp_err[3]; ///< compensated-summation remainders of t, phi, disp
+    void *ctx;                ///< passed to rates
+    rs_pose pose;             ///< current pose
+    double dQ[9]; ///< incremental rotation of the last rs_motion_advance (row-major)
+    double t_err, phi_err,
+        disp_err[3]; ///< compensated-summation remainders of t, phi, disp
 } rs_motion;
 
 /// No motion: identity pose, zero rates, axis = z, centre at the origin.

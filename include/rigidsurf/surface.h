@@ -31,14 +31,14 @@ typedef enum rs_segment_type { RS_LINE = 1, RS_CIRCL = 2, RS_PARAB = 3 } rs_segm
 /// One profile segment in its plane.
 typedef struct rs_segment {
     rs_segment_type type;
-    double p0[2];   ///< start point
-    double p1[2];   ///< end point
-    double pm[2];   ///< CIRCL: centre; PARAB: middle point (on the curve, xi = 0)
-    double radius;  ///< CIRCL: radius
-    double ang0;    ///< CIRCL: polar angle of p0 about the centre
-    double sweep;   ///< CIRCL: signed sweep, |sweep| < pi (positive = counter-clockwise)
-    double length;  ///< arc length
-    double s0;      ///< arc length of the profile at p0
+    double p0[2];  ///< start point
+    double p1[2];  ///< end point
+    double pm[2];  ///< CIRCL: centre; PARAB: middle point (on the curve, xi = 0)
+    double radius; ///< CIRCL: radius
+    double ang0;   ///< CIRCL: polar angle of p0 about the centre
+    double sweep;  ///< CIRCL: signed sweep, |sweep| < pi (positive = counter-clockwise)
+    double length; ///< arc length
+    double s0;     ///< arc length of the profile at p0
 } rs_segment;
 
 /// How the profile turns at a vertex, seen from the particle side (the side n points to).
@@ -51,10 +51,10 @@ typedef enum rs_vertex_kind {
 
 typedef struct rs_profile {
     int nseg;
-    rs_segment *seg;   ///< nseg segments
-    int closed;        ///< last end point coincides with the first start point
-    int nvert;         ///< nseg + 1 (open) or nseg (closed)
-    int *vkind;        ///< rs_vertex_kind for each vertex
+    rs_segment *seg; ///< nseg segments
+    int closed;      ///< last end point coincides with the first start point
+    int nvert;       ///< nseg + 1 (open) or nseg (closed)
+    int *vkind;      ///< rs_vertex_kind for each vertex
 } rs_profile;
 
 typedef enum rs_surface_kind {
@@ -83,16 +83,16 @@ typedef struct rs_surface_class {
 typedef struct rs_surface {
     rs_surface_kind kind;
     char name[80];
-    int sides;             ///< 1 or 2
-    double fillet_radius;  ///< 0 when no fillets were requested
+    int sides;            ///< 1 or 2
+    double fillet_radius; ///< 0 when no fillets were requested
     rs_profile profile;
     /* Local frame in the reference configuration. CYLINDER: a, ex = (b-a)/|b-a|,
      * ez = (c-a) orthogonalised to ex, ey = ez x ex. REVOLUTION: a, ez = (b-a)/|b-a|,
      * ex a fixed unit vector normal to ez (the on-axis fallback for e_r), ey = ez x ex.
      * SEGMENTS: a = 0 and the global axes. */
     double a[3], ex[3], ey[3], ez[3];
-    int bounded;           ///< CYLINDER: EXTENT given
-    double zmin, zmax;     ///< CYLINDER: extent along the generator, local z
+    int bounded;                   ///< CYLINDER: EXTENT given
+    double zmin, zmax;             ///< CYLINDER: extent along the generator, local z
     const rs_surface_class *klass; ///< NULL for the analytic kinds
     void *impl;
 } rs_surface;
@@ -114,16 +114,16 @@ typedef struct rs_query {
 /// Contacts found by a query (SoA, global coordinates). Arrays grow as needed.
 typedef struct rs_contacts {
     int n, cap;
-    int *point;       ///< index of the query point in its block
-    int *feature;     ///< RS_FEATURE(type, index)
-    double *xm[3];    ///< closest point on the master
-    double *nrm[3];   ///< outward unit normal (toward the point's side)
-    double *t1[3];    ///< first tangent, by the kind's convention
-    double *t2[3];    ///< second tangent (SEGMENTS: (0,0,-1))
-    double *dist;     ///< signed distance of the point from the surface along n
-                      ///< (> 0 on the particle side); rdisp1 = radius - dist
-    double *curv[2];  ///< principal curvatures along t1 and t2 at xm, > 0 where the
-                      ///< wall is convex toward the particle; 0 at sharp vertices
+    int *point;      ///< index of the query point in its block
+    int *feature;    ///< RS_FEATURE(type, index)
+    double *xm[3];   ///< closest point on the master
+    double *nrm[3];  ///< outward unit normal (toward the point's side)
+    double *t1[3];   ///< first tangent, by the kind's convention
+    double *t2[3];   ///< second tangent (SEGMENTS: (0,0,-1))
+    double *dist;    ///< signed distance of the point from the surface along n
+                     ///< (> 0 on the particle side); rdisp1 = radius - dist
+    double *curv[2]; ///< principal curvatures along t1 and t2 at xm, > 0 where the
+                     ///< wall is convex toward the particle; 0 at sharp vertices
 } rs_contacts;
 
 /// Allocates room for cap contacts (cap >= 1). Returns RS_ERR_NOMEM on failure.
@@ -142,8 +142,8 @@ int rs_surface_adjacent(const rs_surface *s, int fa, int fb);
 /// Reads surface NAME (NULL: the first) from an Abaqus-style keyword file.
 int rs_surface_read(const char *path, const char *name, rs_surface *s, rs_error *err);
 /// Parses surface NAME (NULL: the first) from text; origin names the text in messages.
-int rs_surface_parse(const char *text, const char *origin, const char *name,
-                     rs_surface *s, rs_error *err);
+int rs_surface_parse(const char *text, const char *origin, const char *name, rs_surface *s,
+                     rs_error *err);
 /// Frees what a surface owns and zeroes it.
 void rs_surface_free(rs_surface *s);
 
@@ -152,8 +152,8 @@ void rs_surface_free(rs_surface *s);
 /// drawn over the full turn with nhoop facets. Arrays are malloc'ed; free with free().
 typedef struct rs_trimesh {
     int nvert, ntri;
-    double *xyz;  ///< 3 * nvert
-    int *tri;     ///< 3 * ntri, node order gives the outward normal (right-hand rule)
+    double *xyz; ///< 3 * nvert
+    int *tri;    ///< 3 * ntri, node order gives the outward normal (right-hand rule)
 } rs_trimesh;
 int rs_surface_triangulate(const rs_surface *s, double span, int nhoop, rs_trimesh *m,
                            rs_error *err);

@@ -13,7 +13,8 @@
  *   rdisp(2:3) = s, drdisp(2:3) = ds. nDir = 2 uses t1 only and drot = I.
  * - A new contact's first call carries this increment's motion: drdisp(2:3) = ds,
  *   rdisp(2:3) = ds, drdisp(1) = -v_rel.n dt, drot = I, and zero stress and statev in its
- *   slot (as LIGGGHTS's shear history starts with vt dt). Contacts with gap > tracking count as gone.
+ *   slot (as LIGGGHTS's shear history starts with vt dt). Contacts with gap > tracking
+ * count as gone.
  * - A contact whose feature is gone hands its history to an adjacent feature found
  *   this call (rs_surface_adjacent). Otherwise it is emitted once more with RS_MAXVAL in
  *   rdisp, drdisp and drot, then its slot is freed by rs_track_commit. */

@@ -1,5 +1,5 @@
-/* Corners (docs/conventions.md, "One contact = (particle, surface, feature)"): a sphere in a
- * concave corner gets two contacts, at a convex corner one vertex contact (never two
+/* Corners (docs/conventions.md, "One contact = (particle, surface, feature)"): a sphere in
+ * a concave corner gets two contacts, at a convex corner one vertex contact (never two
  * faces, never none); fillets make the normal continuous; a point sweeping along the
  * wall sees rdisp1 change by no more than the step (distance is 1-Lipschitz). */
 #include "rigidsurf/surface.h"
