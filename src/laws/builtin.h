@@ -30,6 +30,27 @@ static inline void rs_law_zero_contact(rs_law_block *b, int k)
     b->svd[k] = 0.0;
 }
 
+/// Starts contact k of a penalty law that keeps a shear vector in sv(1:2): zeroes the
+/// contact's outputs and returns 1 when it carries no force, that is when it is leaving
+/// (r_MaxVal) or open (rdisp(1) <= 0). An open contact also forgets its shear, except on
+/// a setup call.
+static inline int rs_law_no_force(rs_law_block *b, int k, double *sv)
+{
+    const double d = RS_A2(b->rdisp, b->nDir, 0, k);
+    rs_law_zero_contact(b, k);
+    if (RS_LAW_LEAVING(d)) {
+        return 1;
+    }
+    if (!(d > 0.0)) {
+        if (!b->setup) {
+            sv[0] = 0.0;
+            sv[1] = 0.0;
+        }
+        return 1;
+    }
+    return 0;
+}
+
 /// Carries the tangent vector s(1:nDir-1) of contact k into this increment's basis,
 /// s <- drot s (docs/conventions.md, "rdisp, drdisp, drot"), then adds the slip increment
 /// drdisp(2:nDir). With nDir = 2, s[1] stays 0.

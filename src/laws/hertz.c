@@ -82,15 +82,7 @@ static int rs_hertz_update(const rs_law *law, rs_law_block *b, rs_error *err)
     for (int c = 0; c < b->nSlvNod; ++c) {
         const double d = RS_A2(b->rdisp, nd, 0, c);
         double *sv = b->statev + (size_t)c * (size_t)nsv;
-        rs_law_zero_contact(b, c);
-        if (RS_LAW_LEAVING(d)) {
-            continue;
-        }
-        if (!(d > 0.0)) {
-            if (update) {
-                sv[0] = 0.0;
-                sv[1] = 0.0;
-            }
+        if (rs_law_no_force(b, c, sv)) {
             continue;
         }
         const double reff = use_reff ? b->reff[c] : b->radius[c];
