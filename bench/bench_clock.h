@@ -1,10 +1,18 @@
-/* Timing helpers shared by the microbenchmarks: a monotonic clock, a thread CPU-time
- * clock and the median of a set of repetitions (sorted in place). */
+/* Helpers shared by the microbenchmarks: a monotonic clock, a thread CPU-time clock,
+ * the median of a set of repetitions (sorted in place), and the build description
+ * (RS_BUILD_TYPE, RS_BUILD_FLAGS, set by bench/CMakeLists.txt) they print. */
 #ifndef RS_BENCH_CLOCK_H
 #define RS_BENCH_CLOCK_H
 
 #include <stdlib.h>
 #include <time.h>
+
+#ifndef RS_BUILD_TYPE
+#define RS_BUILD_TYPE "unknown"
+#endif
+#ifndef RS_BUILD_FLAGS
+#define RS_BUILD_FLAGS ""
+#endif
 
 /// Seconds on the monotonic clock.
 static inline double rs_bench_now(void)

@@ -30,13 +30,6 @@
 #include <string.h>
 #include <time.h>
 
-#ifndef RS_BUILD_TYPE
-#define RS_BUILD_TYPE "unknown"
-#endif
-#ifndef RS_BUILD_FLAGS
-#define RS_BUILD_FLAGS ""
-#endif
-
 #define RD 0.15
 #define H 0.05
 #define RAD 0.004

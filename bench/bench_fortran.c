@@ -22,10 +22,6 @@
 #include <string.h>
 #include <time.h>
 
-#ifndef RS_BUILD_TYPE
-#define RS_BUILD_TYPE "unknown"
-#endif
-
 #define N RS_BLOCK
 
 typedef struct blk {

@@ -20,13 +20,6 @@
 #include <string.h>
 #include <time.h>
 
-#ifndef RS_BUILD_TYPE
-#define RS_BUILD_TYPE "unknown"
-#endif
-#ifndef RS_BUILD_FLAGS
-#define RS_BUILD_FLAGS ""
-#endif
-
 #define N RS_BLOCK
 
 static unsigned long long rng_state = 0x9e3779b97f4a7c15ull;
