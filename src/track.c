@@ -85,6 +85,15 @@ static inline void matvec(const double Q[9], const double v[3], double r[3])
 #define RS_INLINE static inline
 #endif
 
+/* The update is built twice, for AVX2 and for the baseline ISA, and the loader picks
+ * the one the CPU runs (GCC function multiversioning). */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) &&                    \
+    !defined(__SANITIZE_ADDRESS__)
+#define RS_MULTIVERSION __attribute__((target_clones("avx2", "default")))
+#else
+#define RS_MULTIVERSION
+#endif
+
 /* Below this value of 1 + a.b the normal has turned by ~180 deg and a.b x stops defining
  * an axis; the minimal rotation is then the half turn about the carried t1. */
 #define RS_ANTIPARALLEL 1e-12
@@ -186,6 +195,40 @@ full:
                         p->id ? p->id[i] : i, s ? s->name : "", cap);
 }
 
+/* Pass 1 for the common case: a particle with at most one contact whose slot already
+ * holds it, and no other active or leaving slot. Returns 0, having written nothing,
+ * for every other case (new contacts, handovers, leaving slots), which assign_slots
+ * handles. */
+RS_INLINE int assign_fast(const rs_tracker *tr, const rs_particles *p, const rs_contacts *c,
+                          int i, int kb, int ke, rs_track_out *out, int *ne)
+{
+    const int cap = tr->capacity, hs = RS_HIST_SIZE(tr->nstatev);
+    double *h = p->hist[i], *js = NULL;
+    if (ke - kb > 1 || !h)
+        return 0;
+    /* the feature to find; -2 matches no slot (features are >= 0, empty slots -1) */
+    double f = -2.0;
+    if (ke > kb && !(c->dist[kb] - (p->radius ? p->radius[i] : 0.0) > tr->tracking))
+        f = (double)c->feature[kb];
+    for (int j = 0; j < cap; j++) {
+        double *hj = h + (size_t)j * hs;
+        const double st = hj[RS_H_STATE];
+        if (st == RS_HSTATE_EMPTY)
+            continue;
+        if (st != RS_HSTATE_ACTIVE || hj[RS_H_FEATURE] != f || js)
+            return 0;
+        js = hj;
+    }
+    if (f >= 0.0) {
+        if (!js)
+            return 0;
+        out->point[*ne] = kb;
+        out->slot[*ne] = js;
+        (*ne)++;
+    }
+    return 1;
+}
+
 typedef struct master_rates {
     double Q[9], V[3], W[3], C[3];
 } master_rates;
@@ -220,158 +263,222 @@ static inline void rel_velocity(const rs_particles *p, int i, const master_rates
     vr[2] = p->vz[i] + wr[2] - mr->V[2] - Wr[2];
 }
 
-/* One live contact, straight-line scalar code (the hot loop). nd and fixed are
- * constants in each inlined copy; fixed: the master does not move (Q = I, V = W = 0), so
- * Q n_old = n_old, and P = I where n_new equals n_old bit for bit. */
-RS_INLINE void emit_contact(const rs_tracker *tr, const master_rates *mr, double dt,
-                            const rs_particles *p, const rs_contacts *c, int k,
-                            rs_track_out *o, int e, const int nd, const int fixed)
+/* Pass 2 works on runs of live contacts: entries e0 .. e0+m-1 that name contacts k0 ..
+ * k0+m-1. The particle and history values of a run are gathered into SoA scratch; one
+ * branch-free loop (written to vectorize) reads them and the contacts' own SoA arrays,
+ * computes the kinematics and writes the Abaqus-layout outputs; a last loop stores the
+ * history. */
+#define RS_TRACK_RUN 32
+
+typedef struct track_run {
+    double rad[RS_TRACK_RUN], x[RS_TRACK_RUN], y[RS_TRACK_RUN], z[RS_TRACK_RUN];
+    double vx[RS_TRACK_RUN], vy[RS_TRACK_RUN], vz[RS_TRACK_RUN];
+    double wx[RS_TRACK_RUN], wy[RS_TRACK_RUN], wz[RS_TRACK_RUN];
+    double live[RS_TRACK_RUN]; ///< 1: the slot holds this contact's history, 0: new
+    double on0[RS_TRACK_RUN], on1[RS_TRACK_RUN], on2[RS_TRACK_RUN];
+    double ot0[RS_TRACK_RUN], ot1[RS_TRACK_RUN], ot2[RS_TRACK_RUN];
+    double so1[RS_TRACK_RUN], so2[RS_TRACK_RUN], rdo[RS_TRACK_RUN];
+    /* computed */
+    double rd1[RS_TRACK_RUN], drd1[RS_TRACK_RUN];
+    double s1[RS_TRACK_RUN], s2[RS_TRACK_RUN], ds1[RS_TRACK_RUN], ds2[RS_TRACK_RUN];
+    double vn[RS_TRACK_RUN], v1[RS_TRACK_RUN], v2[RS_TRACK_RUN];
+    double px[RS_TRACK_RUN], py[RS_TRACK_RUN], pz[RS_TRACK_RUN];
+    double d11[RS_TRACK_RUN], d21[RS_TRACK_RUN], md21[RS_TRACK_RUN];
+} track_run;
+
+/* Lane j of a run: the particle of contact k and the history in entry e's slot. */
+RS_INLINE void run_gather(track_run *restrict r, int j, const rs_particles *p,
+                          const rs_contacts *c, const rs_track_out *o, int e, int k)
 {
     const int i = c->point[k];
-    double *h = o->slot[e];
-    const double rad = p->radius ? p->radius[i] : 0.0;
-    const double nx = c->nrm[0][k], ny = c->nrm[1][k], nz = c->nrm[2][k];
-    const double ax = c->t1[0][k], ay = c->t1[1][k], az = c->t1[2][k];
-    const double bx = c->t2[0][k], by = c->t2[1][k], bz = c->t2[2][k];
-    const double rd1 = rad - c->dist[k], arm = rad - 0.5 * rd1;
+    const double *h = o->slot[e];
+    r->rad[j] = p->radius ? p->radius[i] : 0.0;
+    r->x[j] = p->x[i];
+    r->y[j] = p->y[i];
+    r->z[j] = p->z[i];
+    r->vx[j] = p->vx[i];
+    r->vy[j] = p->vy[i];
+    r->vz[j] = p->vz[i];
+    r->wx[j] = p->wx ? p->wx[i] : 0.0;
+    r->wy[j] = p->wx ? p->wy[i] : 0.0;
+    r->wz[j] = p->wx ? p->wz[i] : 0.0;
+    r->live[j] = h[RS_H_STATE] == RS_HSTATE_ACTIVE;
+    r->on0[j] = h[RS_H_N];
+    r->on1[j] = h[RS_H_N + 1];
+    r->on2[j] = h[RS_H_N + 2];
+    r->ot0[j] = h[RS_H_T1];
+    r->ot1[j] = h[RS_H_T1 + 1];
+    r->ot2[j] = h[RS_H_T1 + 2];
+    r->so1[j] = h[RS_H_SLIP];
+    r->so2[j] = h[RS_H_SLIP + 1];
+    r->rdo[j] = h[RS_H_RDISP1];
+}
 
-    /* x_cp = x - arm n; v_rel = v + w x (x_cp - x) - (V + W x (x_cp - C)). */
-    const double rx = -arm * nx, ry = -arm * ny, rz = -arm * nz;
-    const double px = p->x[i] + rx, py = p->y[i] + ry, pz = p->z[i] + rz;
-    double wx = 0.0, wy = 0.0, wz = 0.0;
-    if (p->wx) {
-        wx = p->wx[i];
-        wy = p->wy[i];
-        wz = p->wz[i];
-    }
-    double vx = p->vx[i] + (wy * rz - wz * ry);
-    double vy = p->vy[i] + (wz * rx - wx * rz);
-    double vz = p->vz[i] + (wx * ry - wy * rx);
-    if (!fixed) {
-        const double mx = px - mr->C[0], my = py - mr->C[1], mz = pz - mr->C[2];
-        const double *W = mr->W;
-        vx = vx - mr->V[0] - (W[1] * mz - W[2] * my);
-        vy = vy - mr->V[1] - (W[2] * mx - W[0] * mz);
-        vz = vz - mr->V[2] - (W[0] * my - W[1] * mx);
-    }
-    const double vn = vx * nx + vy * ny + vz * nz;
-    const double v1 = vx * ax + vy * ay + vz * az;
-    const double v2 = nd == 3 ? vx * bx + vy * by + vz * bz : 0.0;
-    double d11 = 1.0, d12 = 0.0, d21 = 0.0, d22 = 1.0, s1, s2, ds1, ds2, drd1;
-
-    if (h[RS_H_STATE] == RS_HSTATE_ACTIVE) {
+/* The kinematics of a run of m live contacts (docs/conventions.md):
+ * - x_cp = x - arm n with arm = R - rdisp1/2; v_rel = v + w x (x_cp - x) - (V + W x
+ *   (x_cp - C)).
+ * - a = Q n_old, q = Q t1_old; P v = cs v + w x v + w (w.v) / (1 + cs) with cs = a.n,
+ *   w = a x n; tau1 = P q. Rotations keep cross products, so tau2 = n x tau1, and with
+ *   t2 = n x t1 the matrix drot(i,j) = t_i . tau_j is [[d11, -d21], [d21, d11]]. P = I
+ *   when the normal did not turn (a = n bit for bit); the half turn about q when
+ *   1 + cs <= RS_ANTIPARALLEL (then tau1 = q as well).
+ * - s <- drot s + ds; a new contact starts with s = ds and drdisp(1) = -v_n dt.
+ * Every lane computes every formula and selects at the end, so the loop has no
+ * branches. nd = 2: t1 only, drot = I. */
+RS_INLINE void run_kinematics(track_run *restrict r, int m, const master_rates *mr,
+                              double dt, const rs_contacts *c, int k0, const int nd)
+{
+    const double Q0 = mr->Q[0], Q1 = mr->Q[1], Q2 = mr->Q[2], Q3 = mr->Q[3], Q4 = mr->Q[4],
+                 Q5 = mr->Q[5], Q6 = mr->Q[6], Q7 = mr->Q[7], Q8 = mr->Q[8];
+    const double V0 = mr->V[0], V1 = mr->V[1], V2 = mr->V[2];
+    const double W0 = mr->W[0], W1 = mr->W[1], W2 = mr->W[2];
+    const double C0 = mr->C[0], C1 = mr->C[1], C2 = mr->C[2];
+    const double *cnx = c->nrm[0] + k0, *cny = c->nrm[1] + k0, *cnz = c->nrm[2] + k0;
+    const double *cax = c->t1[0] + k0, *cay = c->t1[1] + k0, *caz = c->t1[2] + k0;
+    const double *cbx = c->t2[0] + k0, *cby = c->t2[1] + k0, *cbz = c->t2[2] + k0;
+    const double *cd = c->dist + k0;
+    for (int j = 0; j < m; j++) {
+        const double nx = cnx[j], ny = cny[j], nz = cnz[j];
+        const double ax = cax[j], ay = cay[j], az = caz[j];
+        const double rad = r->rad[j], rd1 = rad - cd[j], arm = rad - 0.5 * rd1;
+        const double rx = -arm * nx, ry = -arm * ny, rz = -arm * nz;
+        const double px = r->x[j] + rx, py = r->y[j] + ry, pz = r->z[j] + rz;
+        const double wx = r->wx[j], wy = r->wy[j], wz = r->wz[j];
+        const double mx = px - C0, my = py - C1, mz = pz - C2;
+        const double vx = r->vx[j] + (wy * rz - wz * ry) - V0 - (W1 * mz - W2 * my);
+        const double vy = r->vy[j] + (wz * rx - wx * rz) - V1 - (W2 * mx - W0 * mz);
+        const double vz = r->vz[j] + (wx * ry - wy * rx) - V2 - (W0 * my - W1 * mx);
+        const double vn = vx * nx + vy * ny + vz * nz;
+        const double v1 = vx * ax + vy * ay + vz * az;
+        const int live = r->live[j] != 0.0;
+        const double ds1 = v1 * dt;
+        double s1, s2 = 0.0, ds2 = 0.0, v2 = 0.0, d11 = 1.0, d21 = 0.0;
         if (nd == 3) {
-            /* a = Q n_old, q = Q t1_old; P v = cs v + w x v + w (w.v) / (1 + cs) with
-             * cs = a.n, w = a x n; tau1 = P q. Rotations keep cross products, so
-             * tau2 = P Q (n_old x t1_old) = n x tau1, and with t2 = n x t1 the matrix
-             * drot(i,j) = t_i . tau_j is [[d11, -d21], [d21, d11]]. */
-            const double *Q = mr->Q, *ho = h + RS_H_N;
-            double a[3], q[3], u[3];
-            if (fixed) {
-                for (int r = 0; r < 3; r++) {
-                    a[r] = ho[r];
-                    q[r] = ho[3 + r];
-                }
-            } else {
-                /* Written out: GCC at -O2 keeps the row loop rolled. */
-                const double n0 = ho[0], n1 = ho[1], n2 = ho[2];
-                const double t0 = ho[3], t1 = ho[4], t2 = ho[5];
-                a[0] = Q[0] * n0 + Q[1] * n1 + Q[2] * n2;
-                q[0] = Q[0] * t0 + Q[1] * t1 + Q[2] * t2;
-                a[1] = Q[3] * n0 + Q[4] * n1 + Q[5] * n2;
-                q[1] = Q[3] * t0 + Q[4] * t1 + Q[5] * t2;
-                a[2] = Q[6] * n0 + Q[7] * n1 + Q[8] * n2;
-                q[2] = Q[6] * t0 + Q[7] * t1 + Q[8] * t2;
-            }
-            const double cs = a[0] * nx + a[1] * ny + a[2] * nz;
-            if (fixed && a[0] == nx && a[1] == ny && a[2] == nz) {
-                /* The normal did not turn: P = I. */
-                u[0] = q[0];
-                u[1] = q[1];
-                u[2] = q[2];
-            } else if (1.0 + cs > RS_ANTIPARALLEL) {
-                const double w0 = a[1] * nz - a[2] * ny, w1 = a[2] * nx - a[0] * nz,
-                             w2 = a[0] * ny - a[1] * nx;
-                const double f = (w0 * q[0] + w1 * q[1] + w2 * q[2]) / (1.0 + cs);
-                u[0] = cs * q[0] + (w1 * q[2] - w2 * q[1]) + f * w0;
-                u[1] = cs * q[1] + (w2 * q[0] - w0 * q[2]) + f * w1;
-                u[2] = cs * q[2] + (w0 * q[1] - w1 * q[0]) + f * w2;
-            } else {
-                /* Half turn about q (orthogonal to a): tau1 = q. */
-                u[0] = q[0];
-                u[1] = q[1];
-                u[2] = q[2];
-            }
-            d11 = ax * u[0] + ay * u[1] + az * u[2];
-            d21 = bx * u[0] + by * u[1] + bz * u[2];
-            d12 = -d21;
-            d22 = d11;
+            const double bx = cbx[j], by = cby[j], bz = cbz[j];
+            const double n0 = r->on0[j], n1 = r->on1[j], n2 = r->on2[j];
+            const double t0 = r->ot0[j], t1 = r->ot1[j], t2 = r->ot2[j];
+            const double a0 = Q0 * n0 + Q1 * n1 + Q2 * n2;
+            const double a1 = Q3 * n0 + Q4 * n1 + Q5 * n2;
+            const double a2 = Q6 * n0 + Q7 * n1 + Q8 * n2;
+            const double q0 = Q0 * t0 + Q1 * t1 + Q2 * t2;
+            const double q1 = Q3 * t0 + Q4 * t1 + Q5 * t2;
+            const double q2 = Q6 * t0 + Q7 * t1 + Q8 * t2;
+            const double cs = a0 * nx + a1 * ny + a2 * nz, den = 1.0 + cs;
+            const double w0 = a1 * nz - a2 * ny, w1 = a2 * nx - a0 * nz,
+                         w2 = a0 * ny - a1 * nx;
+            const int turn = !(a0 == nx && a1 == ny && a2 == nz) && den > RS_ANTIPARALLEL;
+            const double f = (w0 * q0 + w1 * q1 + w2 * q2) / (turn ? den : 1.0);
+            const double u0 = turn ? cs * q0 + (w1 * q2 - w2 * q1) + f * w0 : q0;
+            const double u1 = turn ? cs * q1 + (w2 * q0 - w0 * q2) + f * w1 : q1;
+            const double u2 = turn ? cs * q2 + (w0 * q1 - w1 * q0) + f * w2 : q2;
+            d11 = live ? ax * u0 + ay * u1 + az * u2 : 1.0;
+            d21 = live ? bx * u0 + by * u1 + bz * u2 : 0.0;
+            v2 = vx * bx + vy * by + vz * bz;
+            ds2 = v2 * dt;
+            const double so1 = live ? r->so1[j] : 0.0, so2 = live ? r->so2[j] : 0.0;
+            s1 = d11 * so1 - d21 * so2 + ds1;
+            s2 = d21 * so1 + d11 * so2 + ds2;
+        } else {
+            s1 = (live ? r->so1[j] : 0.0) + ds1;
         }
-        const double so1 = h[RS_H_SLIP], so2 = nd == 3 ? h[RS_H_SLIP + 1] : 0.0;
-        ds1 = v1 * dt;
-        ds2 = v2 * dt;
-        s1 = d11 * so1 + d12 * so2 + ds1;
-        s2 = d21 * so1 + d22 * so2 + ds2;
-        drd1 = rd1 - h[RS_H_RDISP1];
-    } else {
-        /* The first increment of a new contact: its slip and approach over this dt. */
-        ds1 = v1 * dt;
-        ds2 = v2 * dt;
-        s1 = ds1;
-        s2 = ds2;
-        drd1 = -vn * dt;
-        for (int b = 0; b < 3 + tr->nstatev; b++)
-            h[RS_H_STRESS + b] = 0.0;
+        r->rd1[j] = rd1;
+        r->drd1[j] = live ? rd1 - r->rdo[j] : -vn * dt;
+        r->s1[j] = s1;
+        r->s2[j] = s2;
+        r->ds1[j] = ds1;
+        r->ds2[j] = ds2;
+        r->vn[j] = vn;
+        r->v1[j] = v1;
+        r->v2[j] = v2;
+        r->px[j] = px;
+        r->py[j] = py;
+        r->pz[j] = pz;
+        r->d11[j] = d11;
+        r->d21[j] = d21;
+        r->md21[j] = -d21;
     }
+}
 
-    h[RS_H_FEATURE] = c->feature[k];
-    h[RS_H_STATE] = RS_HSTATE_ACTIVE;
-    h[RS_H_N] = nx;
-    h[RS_H_N + 1] = ny;
-    h[RS_H_N + 2] = nz;
-    h[RS_H_T1] = ax;
-    h[RS_H_T1 + 1] = ay;
-    h[RS_H_T1 + 2] = az;
-    h[RS_H_T2] = bx;
-    h[RS_H_T2 + 1] = by;
-    h[RS_H_T2 + 2] = bz;
-    h[RS_H_SLIP] = s1;
-    h[RS_H_SLIP + 1] = s2;
-    h[RS_H_RDISP1] = rd1;
+/* dst(nd, m) from the SoA columns a, b (and c when nd = 3), one loop per array. */
+RS_INLINE void put_cols(double *restrict dst, int m, const int nd, const double *a,
+                        const double *b, const double *c)
+{
+    if (nd == 3)
+        for (int j = 0; j < m; j++) {
+            dst[3 * j] = a[j];
+            dst[3 * j + 1] = b[j];
+            dst[3 * j + 2] = c[j];
+        }
+    else
+        for (int j = 0; j < m; j++) {
+            dst[2 * j] = a[j];
+            dst[2 * j + 1] = b[j];
+        }
+}
 
-    o->point[e] = i;
-    o->feature[e] = c->feature[k];
-    RS_DROT(o->drot, 0, 0, e) = d11;
-    RS_DROT(o->drot, 1, 0, e) = d21;
-    RS_DROT(o->drot, 0, 1, e) = d12;
-    RS_DROT(o->drot, 1, 1, e) = d22;
-    RS_A2(o->curv, 2, 0, e) = c->curv[0][k];
-    RS_A2(o->curv, 2, 1, e) = c->curv[1][k];
-    RS_A2(o->rdisp, nd, 0, e) = rd1;
-    RS_A2(o->rdisp, nd, 1, e) = s1;
-    RS_A2(o->drdisp, nd, 0, e) = drd1;
-    RS_A2(o->drdisp, nd, 1, e) = ds1;
-    RS_A2(o->vrel, nd, 0, e) = vn;
-    RS_A2(o->vrel, nd, 1, e) = v1;
-    RS_A3(o->alocaldir, nd, 0, 0, e) = nx;
-    RS_A3(o->alocaldir, nd, 1, 0, e) = ny;
-    RS_A3(o->alocaldir, nd, 0, 1, e) = ax;
-    RS_A3(o->alocaldir, nd, 1, 1, e) = ay;
-    RS_A2(o->coordslv, nd, 0, e) = px;
-    RS_A2(o->coordslv, nd, 1, e) = py;
-    RS_A2(o->coordmst, nd, 0, e) = c->xm[0][k];
-    RS_A2(o->coordmst, nd, 1, e) = c->xm[1][k];
-    if (nd == 3) {
-        RS_A2(o->rdisp, nd, 2, e) = s2;
-        RS_A2(o->drdisp, nd, 2, e) = ds2;
-        RS_A2(o->vrel, nd, 2, e) = v2;
-        RS_A3(o->alocaldir, nd, 2, 0, e) = nz;
-        RS_A3(o->alocaldir, nd, 2, 1, e) = az;
-        RS_A3(o->alocaldir, nd, 0, 2, e) = bx;
-        RS_A3(o->alocaldir, nd, 1, 2, e) = by;
-        RS_A3(o->alocaldir, nd, 2, 2, e) = bz;
-        RS_A2(o->coordslv, nd, 2, e) = pz;
-        RS_A2(o->coordmst, nd, 2, e) = c->xm[2][k];
+/* The Abaqus-layout outputs of a run at entries e0 .. e0+m-1. */
+RS_INLINE void run_outputs(const track_run *restrict r, int m, const rs_contacts *c, int k0,
+                           rs_track_out *o, int e0, const int nd)
+{
+    const size_t e = (size_t)e0;
+    put_cols(o->rdisp + e * nd, m, nd, r->rd1, r->s1, r->s2);
+    put_cols(o->drdisp + e * nd, m, nd, r->drd1, r->ds1, r->ds2);
+    put_cols(o->vrel + e * nd, m, nd, r->vn, r->v1, r->v2);
+    put_cols(o->coordslv + e * nd, m, nd, r->px, r->py, r->pz);
+    put_cols(o->coordmst + e * nd, m, nd, c->xm[0] + k0, c->xm[1] + k0, c->xm[2] + k0);
+    put_cols(o->curv + 2 * e, m, 2, c->curv[0] + k0, c->curv[1] + k0, NULL);
+    double *restrict dr = o->drot + 4 * e;
+    for (int j = 0; j < m; j++) {
+        dr[4 * j] = r->d11[j];
+        dr[4 * j + 1] = r->d21[j];
+        dr[4 * j + 2] = r->md21[j];
+        dr[4 * j + 3] = r->d11[j];
+    }
+    double *restrict al = o->alocaldir + e * nd * nd;
+    for (int j = 0; j < m; j++) {
+        const int k = k0 + j;
+        double *a = al + (size_t)j * nd * nd;
+        a[0] = c->nrm[0][k];
+        a[1] = c->nrm[1][k];
+        a[nd] = c->t1[0][k];
+        a[nd + 1] = c->t1[1][k];
+        if (nd == 3) {
+            a[2] = c->nrm[2][k];
+            a[5] = c->t1[2][k];
+            a[6] = c->t2[0][k];
+            a[7] = c->t2[1][k];
+            a[8] = c->t2[2][k];
+        }
+    }
+}
+
+/* The history of a run: feature, state, frame, slip and rdisp1; a new contact's stress
+ * and statev start at zero. Also the entries' particle and feature ids. */
+RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *tr,
+                         const rs_contacts *c, int k0, rs_track_out *o, int e0)
+{
+    for (int j = 0; j < m; j++) {
+        const int k = k0 + j, e = e0 + j;
+        double *h = o->slot[e];
+        if (r->live[j] == 0.0)
+            for (int b = 0; b < 3 + tr->nstatev; b++)
+                h[RS_H_STRESS + b] = 0.0;
+        h[RS_H_FEATURE] = c->feature[k];
+        h[RS_H_STATE] = RS_HSTATE_ACTIVE;
+        h[RS_H_N] = c->nrm[0][k];
+        h[RS_H_N + 1] = c->nrm[1][k];
+        h[RS_H_N + 2] = c->nrm[2][k];
+        h[RS_H_T1] = c->t1[0][k];
+        h[RS_H_T1 + 1] = c->t1[1][k];
+        h[RS_H_T1 + 2] = c->t1[2][k];
+        h[RS_H_T2] = c->t2[0][k];
+        h[RS_H_T2 + 1] = c->t2[1][k];
+        h[RS_H_T2 + 2] = c->t2[2][k];
+        h[RS_H_SLIP] = r->s1[j];
+        h[RS_H_SLIP + 1] = r->s2[j];
+        h[RS_H_RDISP1] = r->rd1[j];
+        o->point[e] = c->point[k];
+        o->feature[e] = c->feature[k];
     }
 }
 
@@ -412,6 +519,35 @@ static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
     RS_A2(o->curv, 2, 1, e) = 0.0;
 }
 
+/* Pass 2 over the ne entries of pass 1: runs of live contacts, leaving slots as they
+ * come. */
+RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
+                        const rs_particles *p, const rs_contacts *c, rs_track_out *out,
+                        int ne, const int nd)
+{
+    track_run r;
+    int e = 0;
+    while (e < ne) {
+        const int k0 = out->point[e];
+        if (k0 < 0) {
+            emit_leaving(tr, mr, p, -1 - k0, out, e);
+            e++;
+            continue;
+        }
+        const int e0 = e;
+        int m = 0;
+        while (e < ne && m < RS_TRACK_RUN && out->point[e] == k0 + m) {
+            run_gather(&r, m, p, c, out, e, k0 + m);
+            m++;
+            e++;
+        }
+        run_kinematics(&r, m, mr, dt, c, k0, nd);
+        run_outputs(&r, m, c, k0, out, e0, nd);
+        run_store(&r, m, tr, c, k0, out, e0);
+    }
+}
+
+RS_MULTIVERSION
 int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *m,
                     double dt, const rs_particles *p, const rs_contacts *c,
                     rs_track_out *out, rs_error *err)
@@ -444,6 +580,8 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
         int kb = k;
         while (k < nc && c->point[k] == i)
             k++;
+        if (assign_fast(tr, p, c, i, kb, k, out, &ne))
+            continue;
         rc = assign_slots(tr, s, p, c, i, kb, k, out, &ne, err);
         if (rc)
             return rc;
@@ -473,29 +611,10 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
         mr.Q[0] = mr.Q[4] = mr.Q[8] = 1.0;
     }
 
-    /* A master at rest (or none): exactly Q = I and V = W = 0. */
-    int fixed = mr.V[0] == 0.0 && mr.V[1] == 0.0 && mr.V[2] == 0.0 && mr.W[0] == 0.0 &&
-                mr.W[1] == 0.0 && mr.W[2] == 0.0;
-    for (int b = 0; b < 9; b++)
-        fixed = fixed && mr.Q[b] == (b % 4 == 0 ? 1.0 : 0.0);
-
-#define RS_EMIT_ALL(ND, FIXED)                                                             \
-    for (int e = 0; e < ne; e++) {                                                         \
-        int ke = out->point[e];                                                            \
-        if (ke >= 0)                                                                       \
-            emit_contact(tr, &mr, dt, p, c, ke, out, e, ND, FIXED);                        \
-        else                                                                               \
-            emit_leaving(tr, &mr, p, -1 - ke, out, e);                                     \
-    }
-    if (tr->ndir == 3 && fixed)
-        RS_EMIT_ALL(3, 1)
-    else if (tr->ndir == 3)
-        RS_EMIT_ALL(3, 0)
-    else if (fixed)
-        RS_EMIT_ALL(2, 1)
+    if (tr->ndir == 3)
+        emit_all(tr, &mr, dt, p, c, out, ne, 3);
     else
-        RS_EMIT_ALL(2, 0)
-#undef RS_EMIT_ALL
+        emit_all(tr, &mr, dt, p, c, out, ne, 2);
     out->n = ne;
     return RS_OK;
 }
