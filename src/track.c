@@ -87,7 +87,7 @@ static inline void matvec(const double Q[9], const double v[3], double r[3])
 
 /* The update is built twice, for AVX2 and for the baseline ISA, and the loader picks
  * the one the CPU runs (GCC function multiversioning). */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) &&                    \
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) &&                     \
     !defined(__SANITIZE_ADDRESS__)
 #define RS_MULTIVERSION __attribute__((target_clones("avx2", "default")))
 #else
@@ -264,16 +264,13 @@ static inline void rel_velocity(const rs_particles *p, int i, const master_rates
 }
 
 /* Pass 2 works on runs of live contacts: entries e0 .. e0+m-1 that name contacts k0 ..
- * k0+m-1. The particle and history values of a run are gathered into SoA scratch; one
- * branch-free loop (written to vectorize) reads them and the contacts' own SoA arrays,
- * computes the kinematics and writes the Abaqus-layout outputs; a last loop stores the
- * history. */
+ * k0+m-1 of particles i0 .. i0+m-1. The history values of a run are gathered into SoA
+ * scratch; one branch-free loop (written to vectorize) reads them and the particles' and
+ * contacts' own SoA arrays and computes the kinematics; simple loops write the
+ * Abaqus-layout outputs and store the history. */
 #define RS_TRACK_RUN 32
 
 typedef struct track_run {
-    double rad[RS_TRACK_RUN], x[RS_TRACK_RUN], y[RS_TRACK_RUN], z[RS_TRACK_RUN];
-    double vx[RS_TRACK_RUN], vy[RS_TRACK_RUN], vz[RS_TRACK_RUN];
-    double wx[RS_TRACK_RUN], wy[RS_TRACK_RUN], wz[RS_TRACK_RUN];
     double live[RS_TRACK_RUN]; ///< 1: the slot holds this contact's history, 0: new
     double on0[RS_TRACK_RUN], on1[RS_TRACK_RUN], on2[RS_TRACK_RUN];
     double ot0[RS_TRACK_RUN], ot1[RS_TRACK_RUN], ot2[RS_TRACK_RUN];
@@ -286,22 +283,10 @@ typedef struct track_run {
     double d11[RS_TRACK_RUN], d21[RS_TRACK_RUN], md21[RS_TRACK_RUN];
 } track_run;
 
-/* Lane j of a run: the particle of contact k and the history in entry e's slot. */
-RS_INLINE void run_gather(track_run *restrict r, int j, const rs_particles *p,
-                          const rs_contacts *c, const rs_track_out *o, int e, int k)
+/* Lane j of a run: the history in entry e's slot. */
+RS_INLINE void run_gather(track_run *restrict r, int j, const rs_track_out *o, int e)
 {
-    const int i = c->point[k];
     const double *h = o->slot[e];
-    r->rad[j] = p->radius ? p->radius[i] : 0.0;
-    r->x[j] = p->x[i];
-    r->y[j] = p->y[i];
-    r->z[j] = p->z[i];
-    r->vx[j] = p->vx[i];
-    r->vy[j] = p->vy[i];
-    r->vz[j] = p->vz[i];
-    r->wx[j] = p->wx ? p->wx[i] : 0.0;
-    r->wy[j] = p->wx ? p->wy[i] : 0.0;
-    r->wz[j] = p->wx ? p->wz[i] : 0.0;
     r->live[j] = h[RS_H_STATE] == RS_HSTATE_ACTIVE;
     r->on0[j] = h[RS_H_N];
     r->on1[j] = h[RS_H_N + 1];
@@ -326,8 +311,15 @@ RS_INLINE void run_gather(track_run *restrict r, int j, const rs_particles *p,
  * Every lane computes every formula and selects at the end, so the loop has no
  * branches. nd = 2: t1 only, drot = I. */
 RS_INLINE void run_kinematics(track_run *restrict r, int m, const master_rates *mr,
-                              double dt, const rs_contacts *c, int k0, const int nd)
+                              double dt, const rs_particles *p, int i0,
+                              const rs_contacts *c, int k0, const int nd)
 {
+    static const double zero[RS_TRACK_RUN];
+    const double *prad = p->radius ? p->radius + i0 : zero;
+    const double *pxc = p->x + i0, *pyc = p->y + i0, *pzc = p->z + i0;
+    const double *pvx = p->vx + i0, *pvy = p->vy + i0, *pvz = p->vz + i0;
+    const double *pwx = p->wx ? p->wx + i0 : zero, *pwy = p->wx ? p->wy + i0 : zero,
+                 *pwz = p->wx ? p->wz + i0 : zero;
     const double Q0 = mr->Q[0], Q1 = mr->Q[1], Q2 = mr->Q[2], Q3 = mr->Q[3], Q4 = mr->Q[4],
                  Q5 = mr->Q[5], Q6 = mr->Q[6], Q7 = mr->Q[7], Q8 = mr->Q[8];
     const double V0 = mr->V[0], V1 = mr->V[1], V2 = mr->V[2];
@@ -340,14 +332,14 @@ RS_INLINE void run_kinematics(track_run *restrict r, int m, const master_rates *
     for (int j = 0; j < m; j++) {
         const double nx = cnx[j], ny = cny[j], nz = cnz[j];
         const double ax = cax[j], ay = cay[j], az = caz[j];
-        const double rad = r->rad[j], rd1 = rad - cd[j], arm = rad - 0.5 * rd1;
+        const double rad = prad[j], rd1 = rad - cd[j], arm = rad - 0.5 * rd1;
         const double rx = -arm * nx, ry = -arm * ny, rz = -arm * nz;
-        const double px = r->x[j] + rx, py = r->y[j] + ry, pz = r->z[j] + rz;
-        const double wx = r->wx[j], wy = r->wy[j], wz = r->wz[j];
+        const double px = pxc[j] + rx, py = pyc[j] + ry, pz = pzc[j] + rz;
+        const double wx = pwx[j], wy = pwy[j], wz = pwz[j];
         const double mx = px - C0, my = py - C1, mz = pz - C2;
-        const double vx = r->vx[j] + (wy * rz - wz * ry) - V0 - (W1 * mz - W2 * my);
-        const double vy = r->vy[j] + (wz * rx - wx * rz) - V1 - (W2 * mx - W0 * mz);
-        const double vz = r->vz[j] + (wx * ry - wy * rx) - V2 - (W0 * my - W1 * mx);
+        const double vx = pvx[j] + (wy * rz - wz * ry) - V0 - (W1 * mz - W2 * my);
+        const double vy = pvy[j] + (wz * rx - wx * rz) - V1 - (W2 * mx - W0 * mz);
+        const double vz = pvz[j] + (wx * ry - wy * rx) - V2 - (W0 * my - W1 * mx);
         const double vn = vx * nx + vy * ny + vz * nz;
         const double v1 = vx * ax + vy * ay + vz * az;
         const int live = r->live[j] != 0.0;
@@ -534,14 +526,15 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
             e++;
             continue;
         }
-        const int e0 = e;
+        const int e0 = e, i0 = c->point[k0];
         int m = 0;
-        while (e < ne && m < RS_TRACK_RUN && out->point[e] == k0 + m) {
-            run_gather(&r, m, p, c, out, e, k0 + m);
+        while (e < ne && m < RS_TRACK_RUN && out->point[e] == k0 + m &&
+               c->point[k0 + m] == i0 + m) {
+            run_gather(&r, m, out, e);
             m++;
             e++;
         }
-        run_kinematics(&r, m, mr, dt, c, k0, nd);
+        run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd);
         run_outputs(&r, m, c, k0, out, e0, nd);
         run_store(&r, m, tr, c, k0, out, e0);
     }
