@@ -263,6 +263,9 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
         q->end_incl = v1->seg_owns_edge;
         q->vtx_start = v0->kind != RS_VTX_SMOOTH;
         q->vtx_end = k == n - 1 && !closed;
+        q->plain = q->type == RS_LINE && !q->vtx_start && !q->vtx_end;
+        q->nl[0] = -q->t[1];
+        q->nl[1] = q->t[0];
         for (int i = 0; i < 2; i++) {
             q->v0[i] = v0->v[i];
             q->tb0[i] = v0->tb[i];
@@ -776,4 +779,176 @@ int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double
         }
     }
     return nh;
+}
+
+/* The output arrays of rs_pcache_points, in profile-plane form. */
+typedef struct pout {
+    int *point, *feature;
+    double *x0, *x1, *n0, *n1, *dist, *kap;
+} pout;
+
+/* Contact h of point pt into slot k. */
+RS_INLINE void put_hit(const pout *o, int k, int pt, const rs_hit2 *h)
+{
+    o->point[k] = pt;
+    o->feature[k] = h->feature;
+    o->x0[k] = h->x[0];
+    o->x1[k] = h->x[1];
+    o->n0[k] = h->n[0];
+    o->n1[k] = h->n[1];
+    o->dist[k] = h->dist;
+    o->kap[k] = h->kappa;
+}
+
+/* One pass per point: the near segments in profile order, each followed at once by its
+ * contacts (vertex k, segment k, closing vertex), which is the order of rs_pcache_hits
+ * when no Voronoi pair can drop a face. A penetrated face with one side (the Voronoi
+ * pass) and the start vertex of a closed profile (its other segment is the last near
+ * one) hand the point to rs_pcache_hits. */
+int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_contacts *out,
+                     rs_pscratch *sc, int *need)
+{
+    const int n = pc->nseg, m = pts->n, two = pc->sides == 2, cap = out->cap;
+    const double dlo = pts->dlo, lo = pc->lo, inv_w = pc->inv_w;
+    const double top = (double)(pc->nbucket - 1);
+    const int axis = pc->axis, base = pts->base;
+    const rs_pseg *ps = pc->ps;
+    const int *const blist = pc->blist, *const all = pc->all;
+    const double *const pu = pts->u, *const pv = pts->v, *const pdh = pts->dhi;
+    const pout o = {out->point,  out->feature, out->xm[0], out->xm[1],
+                    out->nrm[0], out->nrm[1],  out->dist,  out->curv[0]};
+    double lreach = -1.0; /* the reach whose level was chosen last */
+    const int *bs = NULL;
+    int nh = out->n;
+    for (; i < m; i++) {
+        const double px = pu[i], py = pv[i], dhi = pdh[i];
+        if (!(dhi >= dlo))
+            continue;
+        const double reach = (two || dhi > -dlo) ? dhi : -dlo;
+        if (!(reach >= 0.0))
+            continue;
+        if (reach != lreach) {
+            int l = 0;
+            while (l < pc->nlevel && pc->margin[l] < reach)
+                l++;
+            bs = l < pc->nlevel ? pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1) : NULL;
+            lreach = reach;
+        }
+        const int *list = all, *end = all + n;
+        if (bs) {
+            double f = ((axis ? py : px) - lo) * inv_w;
+            int b = f > 0.0 ? (int)(f < top ? f : top) : 0;
+            list = blist + bs[b];
+            end = blist + bs[b + 1];
+        }
+        /* each near segment gives at most its start vertex, itself and the closing
+         * vertex */
+        const int room = 2 * (int)(end - list) + 1;
+        if (nh > cap - room) {
+            *need = room;
+            break;
+        }
+        const int k0 = nh, pt = base + i;
+        int prev = -1, slow = 0;
+        for (; list < end; list++) {
+            const int k = *list;
+            const rs_pseg *q = &ps[k];
+            if (q->box[0] - px > reach || px - q->box[1] > reach ||
+                q->box[2] - py > reach || py - q->box[3] > reach)
+                continue;
+            if (q->plain) {
+                /* a LINE without vertex work: its contact goes straight out */
+                const double wx = px - q->o[0], wy = py - q->o[1];
+                const double nx = q->nl[0], ny = q->nl[1], sd = wx * nx + wy * ny;
+                if (fabs(sd) > reach)
+                    continue;
+                const double dB = (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
+                const double dA = (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
+                const int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
+                const int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
+                prev = k;
+                if (!(in_start && in_end))
+                    continue;
+                if (!two && sd < 0.0) {
+                    slow = 1;
+                    break;
+                }
+                const int flip = two && sd < 0.0;
+                const double dist = flip ? -sd : sd;
+                if (!(dist >= dlo && dist <= dhi))
+                    continue;
+                double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
+                tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
+                o.point[nh] = pt;
+                o.feature[nh] = RS_FEATURE(RS_FEAT_FACE, k);
+                o.x0[nh] = q->o[0] + tau * q->e[0];
+                o.x1[nh] = q->o[1] + tau * q->e[1];
+                o.n0[nh] = flip ? -nx : nx;
+                o.n1[nh] = flip ? -ny : ny;
+                o.dist[nh] = dist;
+                o.kap[nh] = 0.0;
+                nh++;
+                continue;
+            }
+            rs_hit2 h;
+            int hit;
+            if (q->type == RS_LINE) {
+                double wx = px - q->o[0], wy = py - q->o[1];
+                double nx = -q->t[1], ny = q->t[0], sd = wx * nx + wy * ny;
+                if (fabs(sd) > reach)
+                    continue;
+                double dB = (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
+                double dA = (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
+                int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
+                int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
+                hit = in_start && in_end;
+                if (hit) {
+                    double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
+                    tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
+                    h.x[0] = q->o[0] + tau * q->e[0];
+                    h.x[1] = q->o[1] + tau * q->e[1];
+                    int flip = two && sd < 0.0;
+                    h.n[0] = flip ? -nx : nx;
+                    h.n[1] = flip ? -ny : ny;
+                    h.dist = flip ? -sd : sd;
+                    h.kappa = 0.0;
+                    h.feature = RS_FEATURE(RS_FEAT_FACE, k);
+                }
+            } else {
+                if (!seg_near(q, px, py, reach))
+                    continue;
+                hit = eval_curve(pc, k, px, py, &h);
+            }
+            if (hit && !two && h.dist < 0.0) {
+                slow = 1;
+                break;
+            }
+            if (q->vtx_start) {
+                const int sa = pc->pv[k].sa;
+                if (sa >= 0 && k == 0) { /* closed: sa = n - 1 comes last */
+                    slow = 1;
+                    break;
+                }
+                rs_hit2 hv;
+                if ((sa < 0 || prev == sa) && eval_vertex(pc, k, px, py, &hv) &&
+                    hv.dist >= dlo && hv.dist <= dhi)
+                    put_hit(&o, nh++, pt, &hv);
+            }
+            if (hit && h.dist >= dlo && h.dist <= dhi)
+                put_hit(&o, nh++, pt, &h);
+            if (q->vtx_end) {
+                rs_hit2 hv;
+                if (eval_vertex(pc, n, px, py, &hv) && hv.dist >= dlo && hv.dist <= dhi)
+                    put_hit(&o, nh++, pt, &hv);
+            }
+            prev = k;
+        }
+        if (slow) {
+            nh = k0 + rs_pcache_hits(pc, px, py, dlo, dhi, sc);
+            for (int k = k0; k < nh; k++)
+                put_hit(&o, k, pt, &sc->hits[k - k0]);
+        }
+    }
+    out->n = nh;
+    return i;
 }

@@ -70,12 +70,14 @@ typedef struct rs_pseg {
     int end_incl;         ///< end vertex on a revolution axis: dA <= 0
     int vtx_start;        ///< the start vertex can own a contact (it is not SMOOTH)
     int vtx_end;          ///< the end vertex closes an open profile (vertex nseg)
+    int plain;            ///< LINE with neither vtx_start nor vtx_end
     double v0[2], tb0[2]; ///< start vertex and its start tangent (the vertex's tb)
     double v1[2], ta1[2]; ///< end vertex and its end tangent (the vertex's ta)
     double box[4];        ///< bounding box xmin, xmax, ymin, ymax (grown by a tolerance)
     double o[2];          ///< LINE: p0; CIRCL: centre; PARAB: middle point
     double rad;           ///< CIRCL: radius
     double t[2];          ///< LINE: unit tangent
+    double nl[2];         ///< LINE: unit normal (-t[1], t[0])
     double e[2];          ///< LINE: p1 - p0
     double inv_len2;      ///< LINE: 1 / |p1 - p0|^2
     double sgn;           ///< CIRCL: sign of the sweep
@@ -146,5 +148,22 @@ size_t rs_pscratch_bytes(const rs_pcache *pc);
 /// the hits are in sc->hits.
 int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double dhi,
                    rs_pscratch *sc);
+
+/// Points of a block in the profile plane (SoA).
+typedef struct rs_ppoints {
+    int n;
+    const double *u, *v; ///< profile-plane coordinates
+    const double *dhi;   ///< per point: gap_max + radius; NaN skips the point
+    double dlo;          ///< dist_min
+    int base;            ///< index of point 0 in the query block (for out->point)
+} rs_ppoints;
+
+/// The contacts of points [i, pts->n), as rs_pcache_hits finds them, appended to out in
+/// profile-plane form: xm[0..1] the closest point, nrm[0..1] the normal, dist, curv[0]
+/// the profile curvature, feature and point (base + index); the other arrays are left
+/// for the caller. Returns pts->n when done; it stops before a point for which out may
+/// lack room, returning that point's index with *need set to the room it asks for.
+int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_contacts *out,
+                     rs_pscratch *sc, int *need);
 
 #endif

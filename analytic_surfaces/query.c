@@ -10,6 +10,141 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The frame F = {A, EX, EY, EZ} (12 numbers): local origin and axes in the current
+ * configuration. */
+enum { F_A = 0, F_X = 3, F_Y = 6, F_Z = 9 };
+
+/* Upper distance bound per point: gap_max + radius. */
+static void reach_radius(int m, double gap_max, const double *restrict rad,
+                         double *restrict dh)
+{
+    for (int j = 0; j < m; j++)
+        dh[j] = gap_max + rad[j];
+}
+
+/* REVOLUTION: the profile-plane point (r, z) of each point and its radial direction
+ * (cx, cy) in the local x-y plane; on the axis (r <= axis_tol) the direction falls back
+ * to the surface's fixed ex, (1, 0), never NaN. */
+static void local_revolution(const double *F, double axis_tol, int m,
+                             const double *restrict x, const double *restrict y,
+                             const double *restrict z, double *restrict u,
+                             double *restrict v, double *restrict cxs, double *restrict cys)
+{
+    const double A0 = F[F_A], A1 = F[F_A + 1], A2 = F[F_A + 2];
+    const double X0 = F[F_X], X1 = F[F_X + 1], X2 = F[F_X + 2];
+    const double Y0 = F[F_Y], Y1 = F[F_Y + 1], Y2 = F[F_Y + 2];
+    const double Z0 = F[F_Z], Z1 = F[F_Z + 1], Z2 = F[F_Z + 2];
+    for (int j = 0; j < m; j++) {
+        const double wx = x[j] - A0, wy = y[j] - A1, wz = z[j] - A2;
+        const double lx = wx * X0 + wy * X1 + wz * X2;
+        const double ly = wx * Y0 + wy * Y1 + wz * Y2;
+        const double lz = wx * Z0 + wy * Z1 + wz * Z2;
+        const double r = sqrt(lx * lx + ly * ly);
+        /* the selects come before the divisions, which keeps the loop branch-free */
+        const int off = isgreater(r, axis_tol);
+        const double d = off ? r : 1.0;
+        u[j] = r;
+        v[j] = lz;
+        cxs[j] = (off ? lx : 1.0) / d;
+        cys[j] = (off ? ly : 0.0) / d;
+    }
+}
+
+/* CYLINDER and SEGMENTS: local coordinates (u, v, w) of each point (z = NULL: 0). */
+static void local_extrusion(const double *F, int m, const double *restrict x,
+                            const double *restrict y, const double *restrict z,
+                            double *restrict u, double *restrict v, double *restrict w)
+{
+    const double A0 = F[F_A], A1 = F[F_A + 1], A2 = F[F_A + 2];
+    const double X0 = F[F_X], X1 = F[F_X + 1], X2 = F[F_X + 2];
+    const double Y0 = F[F_Y], Y1 = F[F_Y + 1], Y2 = F[F_Y + 2];
+    const double Z0 = F[F_Z], Z1 = F[F_Z + 1], Z2 = F[F_Z + 2];
+    for (int j = 0; j < m; j++) {
+        const double wx = x[j] - A0, wy = y[j] - A1, wz = (z ? z[j] : 0.0) - A2;
+        u[j] = wx * X0 + wy * X1 + wz * X2;
+        v[j] = wx * Y0 + wy * Y1 + wz * Y2;
+        w[j] = wx * Z0 + wy * Z1 + wz * Z2;
+    }
+}
+
+/* REVOLUTION contacts [k0, k1) from profile-plane form (xm[0..1] = (r, z) of the closest
+ * point, nrm[0..1] = (n_r, n_z)), with (cx, cy) the radial direction of point i0 + j in
+ * the local x-y plane, to 3D, in place: e_r = cx EX + cy EY, n = n_r e_r + n_z EZ,
+ * t1 = t2 x n = n_z e_r - n_r EZ, t2 = hoop = EZ x e_r = cx EY - cy EX; hoop curvature
+ * n_r / r at the contact point, 0 on the axis. */
+static void map_revolution(const double *F, double axis_tol, int k0, int k1,
+                           const int *restrict point, int i0, const double *restrict cxs,
+                           const double *restrict cys, double *restrict x0,
+                           double *restrict x1, double *restrict x2, double *restrict n0,
+                           double *restrict n1, double *restrict n2, double *restrict a0,
+                           double *restrict a1, double *restrict a2, double *restrict b0,
+                           double *restrict b1, double *restrict b2, double *restrict c1)
+{
+    const double A0 = F[F_A], A1 = F[F_A + 1], A2 = F[F_A + 2];
+    const double X0 = F[F_X], X1 = F[F_X + 1], X2 = F[F_X + 2];
+    const double Y0 = F[F_Y], Y1 = F[F_Y + 1], Y2 = F[F_Y + 2];
+    const double Z0 = F[F_Z], Z1 = F[F_Z + 1], Z2 = F[F_Z + 2];
+    for (int k = k0; k < k1; k++) {
+        const int j = point[k] - i0;
+        const double cx = cxs[j], cy = cys[j];
+        const double er0 = cx * X0 + cy * Y0, er1 = cx * X1 + cy * Y1,
+                     er2 = cx * X2 + cy * Y2;
+        const double hx = x0[k], hy = x1[k], nx = n0[k], ny = n1[k];
+        x0[k] = A0 + hx * er0 + hy * Z0;
+        x1[k] = A1 + hx * er1 + hy * Z1;
+        x2[k] = A2 + hx * er2 + hy * Z2;
+        n0[k] = nx * er0 + ny * Z0;
+        n1[k] = nx * er1 + ny * Z1;
+        n2[k] = nx * er2 + ny * Z2;
+        a0[k] = ny * er0 - nx * Z0;
+        a1[k] = ny * er1 - nx * Z1;
+        a2[k] = ny * er2 - nx * Z2;
+        b0[k] = cx * Y0 - cy * X0;
+        b1[k] = cx * Y1 - cy * X1;
+        b2[k] = cx * Y2 - cy * X2;
+        const int off = isgreater(hx, axis_tol);
+        c1[k] = (off ? nx : 0.0) / (off ? hx : 1.0);
+    }
+}
+
+/* CYLINDER and SEGMENTS contacts [k0, k1) from profile-plane form (xm[0..1], nrm[0..1],
+ * curv[0] = profile curvature), with lz the local z of point i0 + j, to 3D, in place.
+ * CYLINDER: t1 = EZ, t2 = n x EZ = n_y EX - n_x EY, curvatures (0, kappa). SEGMENTS:
+ * t1 = (0,0,-1) x n = n_y EX - n_x EY, t2 = -EZ, curvatures (kappa, 0). */
+static void map_extrusion(const double *F, int cyl, int k0, int k1,
+                          const int *restrict point, int i0, const double *restrict lzs,
+                          double *restrict x0, double *restrict x1, double *restrict x2,
+                          double *restrict n0, double *restrict n1, double *restrict n2,
+                          double *restrict a0, double *restrict a1, double *restrict a2,
+                          double *restrict b0, double *restrict b1, double *restrict b2,
+                          double *restrict c0, double *restrict c1)
+{
+    const double A0 = F[F_A], A1 = F[F_A + 1], A2 = F[F_A + 2];
+    const double X0 = F[F_X], X1 = F[F_X + 1], X2 = F[F_X + 2];
+    const double Y0 = F[F_Y], Y1 = F[F_Y + 1], Y2 = F[F_Y + 2];
+    const double Z0 = F[F_Z], Z1 = F[F_Z + 1], Z2 = F[F_Z + 2];
+    for (int k = k0; k < k1; k++) {
+        const double lz = lzs[point[k] - i0];
+        const double hx = x0[k], hy = x1[k], nx = n0[k], ny = n1[k], kap = c0[k];
+        const double tr0 = ny * X0 - nx * Y0, tr1 = ny * X1 - nx * Y1,
+                     tr2 = ny * X2 - nx * Y2;
+        x0[k] = A0 + hx * X0 + hy * Y0 + lz * Z0;
+        x1[k] = A1 + hx * X1 + hy * Y1 + lz * Z1;
+        x2[k] = A2 + hx * X2 + hy * Y2 + lz * Z2;
+        n0[k] = nx * X0 + ny * Y0;
+        n1[k] = nx * X1 + ny * Y1;
+        n2[k] = nx * X2 + ny * Y2;
+        a0[k] = cyl ? Z0 : tr0;
+        a1[k] = cyl ? Z1 : tr1;
+        a2[k] = cyl ? Z2 : tr2;
+        b0[k] = cyl ? tr0 : -Z0;
+        b1[k] = cyl ? tr1 : -Z1;
+        b2[k] = cyl ? tr2 : -Z2;
+        c0[k] = cyl ? 0.0 : kap;
+        c1[k] = cyl ? kap : 0.0;
+    }
+}
+
 int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
                      rs_error *err)
 {
@@ -49,7 +184,7 @@ int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
      * EX = R ex, ..., A = R a + T (SEGMENTS: the global axes about the origin), so a
      * point's local coordinates are EX.(x - A), ... and results map back along them. */
     const rs_pose *pose = q->pose;
-    double A[3], EX[3], EY[3], EZ[3];
+    double F[12];
     {
         static const double I[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
         const double *a0 = s->a, *x0 = s->ex, *y0 = s->ey, *z0 = s->ez;
@@ -63,90 +198,65 @@ int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
         for (int d = 0; d < 3; d++) {
             if (pose) {
                 const double *R = pose->R + 3 * d;
-                A[d] = R[0] * a0[0] + R[1] * a0[1] + R[2] * a0[2] + pose->T[d];
-                EX[d] = R[0] * x0[0] + R[1] * x0[1] + R[2] * x0[2];
-                EY[d] = R[0] * y0[0] + R[1] * y0[1] + R[2] * y0[2];
-                EZ[d] = R[0] * z0[0] + R[1] * z0[1] + R[2] * z0[2];
+                F[F_A + d] = R[0] * a0[0] + R[1] * a0[1] + R[2] * a0[2] + pose->T[d];
+                F[F_X + d] = R[0] * x0[0] + R[1] * x0[1] + R[2] * x0[2];
+                F[F_Y + d] = R[0] * y0[0] + R[1] * y0[1] + R[2] * y0[2];
+                F[F_Z + d] = R[0] * z0[0] + R[1] * z0[1] + R[2] * z0[2];
             } else {
-                A[d] = a0[d];
-                EX[d] = x0[d];
-                EY[d] = y0[d];
-                EZ[d] = z0[d];
+                F[F_A + d] = a0[d];
+                F[F_X + d] = x0[d];
+                F[F_Y + d] = y0[d];
+                F[F_Z + d] = z0[d];
             }
         }
     }
     const double axis_tol = 1e-12 * pc->size;
-    const double *qz = q->z;
     int rc = RS_OK;
-    for (int i = 0; i < q->n; i++) {
-        const double wx = q->x[i] - A[0], wy = q->y[i] - A[1],
-                     wz = (qz ? qz[i] : 0.0) - A[2];
-        const double lx = wx * EX[0] + wy * EX[1] + wz * EX[2];
-        const double ly = wx * EY[0] + wy * EY[1] + wz * EY[2];
-        const double lz = wx * EZ[0] + wy * EZ[1] + wz * EZ[2];
-        /* REVOLUTION: the radial and hoop directions, e_theta = ez x e_r; on the axis
-         * e_r falls back to the surface's fixed ex, never NaN */
-        double u = lx, v = ly, er[3] = {EX[0], EX[1], EX[2]}, hp[3] = {EY[0], EY[1], EY[2]};
+    /* Per chunk of points, in three passes: the local coordinates of every point, the
+     * profile contacts (written in profile-plane form into out, with the values the
+     * mapping needs carried along), then each contact mapped to 3D in place. */
+    enum { CH = 128 };
+    double pu[CH], pv[CH], dh[CH], pw[CH], cxs[CH], cys[CH];
+    for (int i0 = 0; i0 < q->n; i0 += CH) {
+        const int m = q->n - i0 < CH ? q->n - i0 : CH;
+        if (q->radius)
+            reach_radius(m, q->gap_max, q->radius + i0, dh);
+        else
+            for (int j = 0; j < m; j++)
+                dh[j] = q->gap_max + 0.0;
         if (kind == RS_SURF_REVOLUTION) {
-            double r = sqrt(lx * lx + ly * ly);
-            if (r > axis_tol) {
-                double cx = lx / r, cy = ly / r;
-                er[0] = cx * EX[0] + cy * EY[0];
-                er[1] = cx * EX[1] + cy * EY[1];
-                er[2] = cx * EX[2] + cy * EY[2];
-                hp[0] = cx * EY[0] - cy * EX[0];
-                hp[1] = cx * EY[1] - cy * EX[1];
-                hp[2] = cx * EY[2] - cy * EX[2];
-            }
-            u = r;
-            v = lz;
-        } else if (kind == RS_SURF_CYLINDER && s->bounded &&
-                   !(lz >= s->zmin && lz <= s->zmax)) {
-            continue;
+            local_revolution(F, axis_tol, m, q->x + i0, q->y + i0, q->z + i0, pu, pv, cxs,
+                             cys);
+        } else {
+            local_extrusion(F, m, q->x + i0, q->y + i0, q->z ? q->z + i0 : NULL, pu, pv,
+                            pw);
+            if (kind == RS_SURF_CYLINDER && s->bounded)
+                for (int j = 0; j < m; j++)
+                    if (!(pw[j] >= s->zmin && pw[j] <= s->zmax))
+                        dh[j] = NAN;
         }
-        double rad = q->radius ? q->radius[i] : 0.0;
-        int nh = rs_pcache_hits(pc, u, v, q->dist_min, q->gap_max + rad, &sc);
-        if (out->n + nh > out->cap &&
-            (rc = rs_contacts_reserve(out, 2 * (out->n + nh) + 64, err)) != RS_OK)
-            goto done;
-        for (int h = 0; h < nh; h++) {
-            const rs_hit2 *ht = &sc.hits[h];
-            const double hx = ht->x[0], hy = ht->x[1], nx = ht->n[0], ny = ht->n[1];
-            int k = out->n++;
-            out->point[k] = i;
-            out->feature[k] = ht->feature;
-            out->dist[k] = ht->dist;
-            if (kind == RS_SURF_REVOLUTION) {
-                /* n = n_r e_r + n_z ez; t2 = hoop, t1 = t2 x n = n_z e_r - n_r ez */
-#define RS_REV_OUT(d)                                                                      \
-    do {                                                                                   \
-        out->xm[d][k] = A[d] + hx * er[d] + hy * EZ[d];                                    \
-        out->nrm[d][k] = nx * er[d] + ny * EZ[d];                                          \
-        out->t1[d][k] = ny * er[d] - nx * EZ[d];                                           \
-        out->t2[d][k] = hp[d];                                                             \
-    } while (0)
-                RS_REV_OUT(0);
-                RS_REV_OUT(1);
-                RS_REV_OUT(2);
-#undef RS_REV_OUT
-                out->curv[0][k] = ht->kappa;
-                /* hoop curvature n_r / r at the contact point, 0 on the axis */
-                out->curv[1][k] = hx > axis_tol ? nx / hx : 0.0;
-            } else {
-                /* CYLINDER: t1 = ez, t2 = n x ez = n_y ex - n_x ey. SEGMENTS: t1 =
-                 * (0,0,-1) x n = n_y ex - n_x ey, t2 = -ez. */
-                const int cyl = kind == RS_SURF_CYLINDER;
-                for (int d = 0; d < 3; d++) {
-                    double tr = ny * EX[d] - nx * EY[d];
-                    out->xm[d][k] = A[d] + hx * EX[d] + hy * EY[d] + lz * EZ[d];
-                    out->nrm[d][k] = nx * EX[d] + ny * EY[d];
-                    out->t1[d][k] = cyl ? EZ[d] : tr;
-                    out->t2[d][k] = cyl ? tr : -EZ[d];
-                }
-                out->curv[0][k] = cyl ? 0.0 : ht->kappa;
-                out->curv[1][k] = cyl ? ht->kappa : 0.0;
+        const rs_ppoints pts = {m, pu, pv, dh, q->dist_min, i0};
+        const int k0 = out->n;
+        for (int i = 0;;) {
+            int need = 0;
+            i = rs_pcache_points(pc, &pts, i, out, &sc, &need);
+            if (i >= m)
+                break;
+            if ((rc = rs_contacts_reserve(out, 2 * (out->n + need) + 64, err)) != RS_OK) {
+                out->n = k0; /* no contact of this chunk is left half mapped */
+                goto done;
             }
         }
+        if (kind == RS_SURF_REVOLUTION)
+            map_revolution(F, axis_tol, k0, out->n, out->point, i0, cxs, cys, out->xm[0],
+                           out->xm[1], out->xm[2], out->nrm[0], out->nrm[1], out->nrm[2],
+                           out->t1[0], out->t1[1], out->t1[2], out->t2[0], out->t2[1],
+                           out->t2[2], out->curv[1]);
+        else
+            map_extrusion(F, kind == RS_SURF_CYLINDER, k0, out->n, out->point, i0, pw,
+                          out->xm[0], out->xm[1], out->xm[2], out->nrm[0], out->nrm[1],
+                          out->nrm[2], out->t1[0], out->t1[1], out->t1[2], out->t2[0],
+                          out->t2[1], out->t2[2], out->curv[0], out->curv[1]);
     }
 done:
     rs_pscratch_free(&sc);
