@@ -195,38 +195,25 @@ full:
                         p->id ? p->id[i] : i, s ? s->name : "", cap);
 }
 
-/* Pass 1 for the common case: a particle with at most one contact whose slot already
- * holds it, and no other active or leaving slot. Returns 0, having written nothing,
+/* Pass 1 for the common case: a particle with at most one contact (kb, or none when
+ * kb == ke) whose slot already holds it, and no other active or leaving slot. Returns
+ * the slot, h itself for no contact and no active slot, or NULL, having written nothing,
  * for every other case (new contacts, handovers, leaving slots), which assign_slots
- * handles. */
-RS_INLINE int assign_fast(const rs_tracker *tr, const rs_particles *p, const rs_contacts *c,
-                          int i, int kb, int ke, rs_track_out *out, int *ne)
+ * handles. f is the contact's feature, or -2 (matches no slot: features are >= 0, empty
+ * slots -1) when there is none within the tracking thickness. */
+RS_INLINE double *find_fast(double *h, int cap, int hs, double f)
 {
-    const int cap = tr->capacity, hs = RS_HIST_SIZE(tr->nstatev);
-    double *h = p->hist[i], *js = NULL;
-    if (ke - kb > 1 || !h)
-        return 0;
-    /* the feature to find; -2 matches no slot (features are >= 0, empty slots -1) */
-    double f = -2.0;
-    if (ke > kb && !(c->dist[kb] - (p->radius ? p->radius[i] : 0.0) > tr->tracking))
-        f = (double)c->feature[kb];
+    double *js = NULL;
     for (int j = 0; j < cap; j++) {
         double *hj = h + (size_t)j * hs;
         const double st = hj[RS_H_STATE];
         if (st == RS_HSTATE_EMPTY)
             continue;
         if (st != RS_HSTATE_ACTIVE || hj[RS_H_FEATURE] != f || js)
-            return 0;
+            return NULL;
         js = hj;
     }
-    if (f >= 0.0) {
-        if (!js)
-            return 0;
-        out->point[*ne] = kb;
-        out->slot[*ne] = js;
-        (*ne)++;
-    }
-    return 1;
+    return f >= 0.0 ? js : h;
 }
 
 typedef struct master_rates {
@@ -569,12 +556,30 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
     /* Pass 1, grouping the contacts by particle: it takes every contact exactly when
      * they name points 0..n-1 in block order (checked here, not in a separate pass). */
     int ne = 0, k = 0;
-    for (int i = 0; i < p->n; i++) {
+    const int np = p->n, cap = tr->capacity, hs = RS_HIST_SIZE(tr->nstatev);
+    const double tracking = tr->tracking, *prad = p->radius;
+    const int *cpoint = c ? c->point : NULL, *cfeat = c ? c->feature : NULL;
+    const double *cdist = c ? c->dist : NULL;
+    double *const *hist = p->hist;
+    int *opoint = out->point;
+    double **oslot = out->slot;
+    for (int i = 0; i < np; i++) {
         int kb = k;
-        while (k < nc && c->point[k] == i)
+        while (k < nc && cpoint[k] == i)
             k++;
-        if (assign_fast(tr, p, c, i, kb, k, out, &ne))
-            continue;
+        double *h = hist[i];
+        if (h && k - kb <= 1) {
+            double f = -2.0;
+            if (k > kb && !(cdist[kb] - (prad ? prad[i] : 0.0) > tracking))
+                f = (double)cfeat[kb];
+            double *js = find_fast(h, cap, hs, f);
+            if (js && f >= 0.0) {
+                opoint[ne] = kb;
+                oslot[ne++] = js;
+            }
+            if (js)
+                continue;
+        }
         rc = assign_slots(tr, s, p, c, i, kb, k, out, &ne, err);
         if (rc)
             return rc;
