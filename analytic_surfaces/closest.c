@@ -263,7 +263,6 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
         q->end_incl = v1->seg_owns_edge;
         q->vtx_start = v0->kind != RS_VTX_SMOOTH;
         q->vtx_end = k == n - 1 && !closed;
-        q->plain = q->type == RS_LINE && !q->vtx_start && !q->vtx_end;
         q->nl[0] = -q->t[1];
         q->nl[1] = q->t[0];
         for (int i = 0; i < 2; i++) {
@@ -800,6 +799,17 @@ RS_INLINE void put_hit(const pout *o, int k, int pt, const rs_hit2 *h)
     o->kap[k] = h->kappa;
 }
 
+/* Vertex j's contact into slot nh when the vertex owns the point within [dlo, dhi];
+ * returns the new count. */
+static int put_vertex(const rs_pcache *pc, const pout *o, int nh, int j, int pt, double px,
+                      double py, double dlo, double dhi)
+{
+    rs_hit2 hv;
+    if (eval_vertex(pc, j, px, py, &hv) && hv.dist >= dlo && hv.dist <= dhi)
+        put_hit(o, nh++, pt, &hv);
+    return nh;
+}
+
 /* One pass per point: the near segments in profile order, each followed at once by its
  * contacts (vertex k, segment k, closing vertex), which is the order of rs_pcache_hits
  * when no Voronoi pair can drop a face. A penetrated face with one side (the Voronoi
@@ -856,8 +866,10 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
             if (q->box[0] - px > reach || px - q->box[1] > reach ||
                 q->box[2] - py > reach || py - q->box[3] > reach)
                 continue;
-            if (q->plain) {
-                /* a LINE without vertex work: its contact goes straight out */
+            if (q->type == RS_LINE) {
+                /* The vertex tests of a segment are its ends' (profile.h): when the start
+                 * test holds, vertex k cannot own the point, nor can the closing vertex
+                 * when the end test holds. */
                 const double wx = px - q->o[0], wy = py - q->o[1];
                 const double nx = q->nl[0], ny = q->nl[1], sd = wx * nx + wy * ny;
                 if (fabs(sd) > reach)
@@ -866,59 +878,46 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                 const double dA = (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
                 const int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
                 const int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
-                prev = k;
-                if (!(in_start && in_end))
-                    continue;
-                if (!two && sd < 0.0) {
+                const int hit = in_start && in_end;
+                if (hit && !two && sd < 0.0) {
                     slow = 1;
                     break;
                 }
-                const int flip = two && sd < 0.0;
-                const double dist = flip ? -sd : sd;
-                if (!(dist >= dlo && dist <= dhi))
-                    continue;
-                double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
-                tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
-                o.point[nh] = pt;
-                o.feature[nh] = RS_FEATURE(RS_FEAT_FACE, k);
-                o.x0[nh] = q->o[0] + tau * q->e[0];
-                o.x1[nh] = q->o[1] + tau * q->e[1];
-                o.n0[nh] = flip ? -nx : nx;
-                o.n1[nh] = flip ? -ny : ny;
-                o.dist[nh] = dist;
-                o.kap[nh] = 0.0;
-                nh++;
+                if (!in_start && q->vtx_start) {
+                    const int sa = pc->pv[k].sa;
+                    if (sa >= 0 && k == 0) { /* closed: sa = n - 1 comes last */
+                        slow = 1;
+                        break;
+                    }
+                    if (sa < 0 || prev == sa)
+                        nh = put_vertex(pc, &o, nh, k, pt, px, py, dlo, dhi);
+                }
+                prev = k;
+                if (hit) {
+                    const int flip = two && sd < 0.0;
+                    const double dist = flip ? -sd : sd;
+                    if (dist >= dlo && dist <= dhi) {
+                        double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
+                        tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
+                        o.point[nh] = pt;
+                        o.feature[nh] = RS_FEATURE(RS_FEAT_FACE, k);
+                        o.x0[nh] = q->o[0] + tau * q->e[0];
+                        o.x1[nh] = q->o[1] + tau * q->e[1];
+                        o.n0[nh] = flip ? -nx : nx;
+                        o.n1[nh] = flip ? -ny : ny;
+                        o.dist[nh] = dist;
+                        o.kap[nh] = 0.0;
+                        nh++;
+                    }
+                }
+                if (!in_end && q->vtx_end)
+                    nh = put_vertex(pc, &o, nh, n, pt, px, py, dlo, dhi);
                 continue;
             }
+            if (!seg_near(q, px, py, reach))
+                continue;
             rs_hit2 h;
-            int hit;
-            if (q->type == RS_LINE) {
-                double wx = px - q->o[0], wy = py - q->o[1];
-                double nx = -q->t[1], ny = q->t[0], sd = wx * nx + wy * ny;
-                if (fabs(sd) > reach)
-                    continue;
-                double dB = (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
-                double dA = (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
-                int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
-                int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
-                hit = in_start && in_end;
-                if (hit) {
-                    double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
-                    tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
-                    h.x[0] = q->o[0] + tau * q->e[0];
-                    h.x[1] = q->o[1] + tau * q->e[1];
-                    int flip = two && sd < 0.0;
-                    h.n[0] = flip ? -nx : nx;
-                    h.n[1] = flip ? -ny : ny;
-                    h.dist = flip ? -sd : sd;
-                    h.kappa = 0.0;
-                    h.feature = RS_FEATURE(RS_FEAT_FACE, k);
-                }
-            } else {
-                if (!seg_near(q, px, py, reach))
-                    continue;
-                hit = eval_curve(pc, k, px, py, &h);
-            }
+            const int hit = eval_curve(pc, k, px, py, &h);
             if (hit && !two && h.dist < 0.0) {
                 slow = 1;
                 break;
@@ -929,18 +928,13 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                     slow = 1;
                     break;
                 }
-                rs_hit2 hv;
-                if ((sa < 0 || prev == sa) && eval_vertex(pc, k, px, py, &hv) &&
-                    hv.dist >= dlo && hv.dist <= dhi)
-                    put_hit(&o, nh++, pt, &hv);
+                if (sa < 0 || prev == sa)
+                    nh = put_vertex(pc, &o, nh, k, pt, px, py, dlo, dhi);
             }
             if (hit && h.dist >= dlo && h.dist <= dhi)
                 put_hit(&o, nh++, pt, &h);
-            if (q->vtx_end) {
-                rs_hit2 hv;
-                if (eval_vertex(pc, n, px, py, &hv) && hv.dist >= dlo && hv.dist <= dhi)
-                    put_hit(&o, nh++, pt, &hv);
-            }
+            if (q->vtx_end)
+                nh = put_vertex(pc, &o, nh, n, pt, px, py, dlo, dhi);
             prev = k;
         }
         if (slow) {

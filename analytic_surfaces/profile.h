@@ -70,7 +70,6 @@ typedef struct rs_pseg {
     int end_incl;         ///< end vertex on a revolution axis: dA <= 0
     int vtx_start;        ///< the start vertex can own a contact (it is not SMOOTH)
     int vtx_end;          ///< the end vertex closes an open profile (vertex nseg)
-    int plain;            ///< LINE with neither vtx_start nor vtx_end
     double v0[2], tb0[2]; ///< start vertex and its start tangent (the vertex's tb)
     double v1[2], ta1[2]; ///< end vertex and its end tangent (the vertex's ta)
     double box[4];        ///< bounding box xmin, xmax, ymin, ymax (grown by a tolerance)
