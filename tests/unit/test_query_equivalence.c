@@ -1,0 +1,200 @@
+/* The block query against an independent brute-force distance to the profile, on blocks
+ * larger than the query's internal chunk, with a pose, radii and points on the axis; and
+ * a block answers exactly as its points queried one at a time. */
+#include "rigidsurf/motion.h"
+#include "rigidsurf/surface.h"
+#include "rs_test.h"
+#include "rs_test_geom.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static unsigned long long rng_state = 0x2545F4914F6CDD1Dull;
+static double urand(void)
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 7;
+    rng_state ^= rng_state << 17;
+    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* Distance from (u, v) to segment g of the profile, written from the segment's end
+ * points and centre only: LINE by the clamped projection, CIRCL by the radial
+ * projection when its direction lies inside the sweep, else the nearer end. */
+static double seg_distance(const rs_segment *g, double u, double v)
+{
+    if (g->type == RS_LINE) {
+        double ex = g->p1[0] - g->p0[0], ey = g->p1[1] - g->p0[1];
+        double t = ((u - g->p0[0]) * ex + (v - g->p0[1]) * ey) / (ex * ex + ey * ey);
+        t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+        return hypot(u - (g->p0[0] + t * ex), v - (g->p0[1] + t * ey));
+    }
+    double c[2] = {g->pm[0], g->pm[1]};
+    double a0 = atan2(g->p0[1] - c[1], g->p0[0] - c[0]);
+    double a1 = atan2(g->p1[1] - c[1], g->p1[0] - c[0]);
+    double sw = remainder(a1 - a0, 2.0 * M_PI); /* arcs are under 180 degrees */
+    double rad = hypot(g->p0[0] - c[0], g->p0[1] - c[1]);
+    double rho = hypot(u - c[0], v - c[1]);
+    double d0 = hypot(u - g->p0[0], v - g->p0[1]), d1 = hypot(u - g->p1[0], v - g->p1[1]);
+    double best = d0 < d1 ? d0 : d1;
+    if (rho > 0.0) {
+        double a = remainder(atan2(v - c[1], u - c[0]) - a0, 2.0 * M_PI);
+        if (sw > 0.0 ? (a >= 0.0 && a <= sw) : (a <= 0.0 && a >= sw))
+            best = fabs(rho - rad) < best ? fabs(rho - rad) : best;
+    }
+    return best;
+}
+
+static double profile_distance(const rs_surface *s, double u, double v)
+{
+    double best = INFINITY;
+    for (int k = 0; k < s->profile.nseg; k++) {
+        double d = seg_distance(&s->profile.seg[k], u, v);
+        best = d < best ? d : best;
+    }
+    return best;
+}
+
+/* A random rotation (unit quaternion) and translation. */
+static void random_pose(rs_pose *p, double scale)
+{
+    double q[4], l = 0.0;
+    for (int j = 0; j < 4; j++) {
+        q[j] = urand() - 0.5;
+        l += q[j] * q[j];
+    }
+    l = sqrt(l);
+    double w = q[0] / l, a = q[1] / l, b = q[2] / l, c = q[3] / l;
+    double R[9] = {
+        1 - 2 * (b * b + c * c), 2 * (a * b - c * w),     2 * (a * c + b * w),
+        2 * (a * b + c * w),     1 - 2 * (a * a + c * c), 2 * (b * c - a * w),
+        2 * (a * c - b * w),     2 * (b * c + a * w),     1 - 2 * (a * a + b * b)};
+    memcpy(p->R, R, sizeof R);
+    for (int d = 0; d < 3; d++)
+        p->T[d] = scale * (urand() - 0.5);
+}
+
+/* Every point of a block of 1000 (several internal chunks) gets its contacts, in block
+ * order, the smallest |dist| of a point's contacts is its brute-force distance to the
+ * profile, and each contact's xm lies |dist| from the point. */
+static void check_block_against_brute_force(const char *deck, int revolution)
+{
+    rs_surface s;
+    ENSURE(parse(deck, &s) == 0);
+    enum { N = 1000 };
+    static double x[N], y[N], z[N], r[N], pu[N], pv[N];
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int k = 0; k < s.profile.nseg; k++)
+        for (int a = 0; a < 2; a++) {
+            lo[a] = fmin(lo[a], fmin(s.profile.seg[k].p0[a], s.profile.seg[k].p1[a]));
+            hi[a] = fmax(hi[a], fmax(s.profile.seg[k].p0[a], s.profile.seg[k].p1[a]));
+        }
+    double size = fmax(hi[0] - lo[0], hi[1] - lo[1]);
+    rs_pose pose;
+    random_pose(&pose, size);
+    for (int i = 0; i < N; i++) {
+        double u = lo[0] - 0.2 * size + (hi[0] - lo[0] + 0.4 * size) * urand();
+        double v = lo[1] - 0.2 * size + (hi[1] - lo[1] + 0.4 * size) * urand();
+        double L[3];
+        if (revolution) {
+            u = fabs(u);
+            if (i % 17 == 0)
+                u = 0.0; /* on the axis */
+            double th = 2.0 * M_PI * urand();
+            L[0] = u * cos(th);
+            L[1] = u * sin(th);
+            L[2] = v;
+        } else {
+            L[0] = u;
+            L[1] = v;
+            L[2] = urand() - 0.5;
+        }
+        pu[i] = u;
+        pv[i] = v;
+        double X[3];
+        for (int d = 0; d < 3; d++)
+            X[d] = s.a[d] + L[0] * s.ex[d] + L[1] * s.ey[d] + L[2] * s.ez[d];
+        x[i] = pose.R[0] * X[0] + pose.R[1] * X[1] + pose.R[2] * X[2] + pose.T[0];
+        y[i] = pose.R[3] * X[0] + pose.R[4] * X[1] + pose.R[5] * X[2] + pose.T[1];
+        z[i] = pose.R[6] * X[0] + pose.R[7] * X[1] + pose.R[8] * X[2] + pose.T[2];
+        r[i] = 0.01 * size * urand();
+    }
+    /* gap_max beyond the sampling box: every point reaches its closest feature */
+    rs_query q = {N, x, y, z, r, &pose, 2.0 * size, -INFINITY};
+    rs_contacts c = {0};
+    ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
+    int k = 0;
+    for (int i = 0; i < N; i++) {
+        ENSURE(k < c.n && c.point[k] == i);
+        double best = INFINITY;
+        for (; k < c.n && c.point[k] == i; k++) {
+            double P[3] = {x[i], y[i], z[i]};
+            double dx = P[0] - c.xm[0][k], dy = P[1] - c.xm[1][k], dz = P[2] - c.xm[2][k];
+            ENSURE_NEAR(sqrt(dx * dx + dy * dy + dz * dz), fabs(c.dist[k]), 1e-12 * size);
+            best = fabs(c.dist[k]) < best ? fabs(c.dist[k]) : best;
+        }
+        ENSURE_NEAR(best, profile_distance(&s, pu[i], pv[i]), 1e-12 * size);
+    }
+    ENSURE(k == c.n);
+
+    /* the same block point by point: the same contacts, value for value */
+    rs_contacts c1 = {0};
+    k = 0;
+    for (int i = 0; i < N; i++) {
+        rs_query q1 = {1, x + i, y + i, z + i, r + i, &pose, 2.0 * size, -INFINITY};
+        c1.n = 0;
+        ENSURE(rs_surface_query(&s, &q1, &c1, NULL) == 0);
+        for (int h = 0; h < c1.n; h++, k++) {
+            ENSURE(k < c.n && c.point[k] == i && c.feature[k] == c1.feature[h]);
+            for (int d = 0; d < 3; d++) {
+                ENSURE(c.xm[d][k] == c1.xm[d][h] && c.nrm[d][k] == c1.nrm[d][h]);
+                ENSURE(c.t1[d][k] == c1.t1[d][h] && c.t2[d][k] == c1.t2[d][h]);
+            }
+            ENSURE(c.dist[k] == c1.dist[h]);
+            ENSURE(c.curv[0][k] == c1.curv[0][h] && c.curv[1][k] == c1.curv[1][h]);
+        }
+    }
+    ENSURE(k == c.n);
+    rs_contacts_free(&c1);
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+}
+
+/* A drum with filleted rims seen from both sides (faces, arcs, the axis). */
+static void test_query_block_revolution_two_sides_is_brute_force_closest(void)
+{
+    check_block_against_brute_force("*SURFACE, TYPE=REVOLUTION, NAME=d, SIDES=2, FILLET "
+                                    "RADIUS=0.02\n0,0,0, 0,0,1\nSTART, 0, -0.05\n"
+                                    "LINE, 0.15, -0.05\nLINE, 0.15, 0.05\nLINE, 0, 0.05\n",
+                                    1);
+}
+
+/* A closed one-sided profile with convex and concave corners: points inside the solid
+ * take the Voronoi rule, the start vertex of the closed profile its wrap-around. */
+static void test_query_block_closed_one_side_is_brute_force_closest(void)
+{
+    check_block_against_brute_force("*SURFACE, TYPE=CYLINDER, NAME=c\n0,0,0, 1,0,0\n0,0,1\n"
+                                    "START, 0, 0\nLINE, 2, 0\nLINE, 2, 2\nLINE, 1, 0.8\n"
+                                    "LINE, 0, 2\nLINE, 0, 0\n",
+                                    0);
+}
+
+/* An open profile of lines and arcs seen from both sides: END vertices at both ends own
+ * the half planes beyond them. */
+static void test_query_block_open_lines_and_arcs_is_brute_force_closest(void)
+{
+    check_block_against_brute_force(
+        "*SURFACE, TYPE=CYLINDER, NAME=o, SIDES=2\n0.1,0.2,0.3, "
+        "1.1,0.2,0.3\n0.1,0.2,1.3\nSTART, -1, 0\nLINE, 0, 0\n"
+        "CIRCL, 1, 1, 0, 1\nLINE, 1, 2\nCIRCL, 2, 3, 2, 2\n",
+        0);
+}
+
+int main(void)
+{
+    RS_RUN(test_query_block_revolution_two_sides_is_brute_force_closest);
+    RS_RUN(test_query_block_closed_one_side_is_brute_force_closest);
+    RS_RUN(test_query_block_open_lines_and_arcs_is_brute_force_closest);
+    return rs_test_summary();
+}
