@@ -991,7 +991,10 @@ void FixWallRigid::init_scratch()
          {&c_flux_slv_, &c_flux_mst_, &c_sed_, &c_sfd_, &c_scd_, &c_spd_, &c_svd_,
           &c_stiff_, &c_cond_, &c_area_, &c_temp_, &c_dtemp_, &c_rad_, &c_mass_, &c_reff_})
         a->resize(nc);
-    c_uid_.resize(nc), c_type_.resize(nc), leaving_.resize(nc), slotj_.resize(nc);
+    c_uid_.resize(nc), c_type_.resize(nc), leaving_.resize(nc), c_sedp_.resize(nc);
+    uni_n_ = 0;
+    nleave_ = 0;
+    ident_ = false;
     c_stress_.resize(nc * nd), c_statev_.resize(nc * ns);
     c_pred_.resize(nc * npred), c_dpred_.resize(nc * npred);
 
@@ -1145,22 +1148,35 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     double **x = atom->x, **v = atom->v, **omega = atom->omega;
     const double *radius = atom->radius, *rmass = atom->rmass;
     const int *tag = atom->tag, *type = atom->type;
-    const int nd = ndir_, ns = nstatev_, hs = hist_size(), rs = row_size();
+    const int nd = ndir_, ns = nstatev_, rs = row_size();
     const int npred = (int)predef_names_.size();
     const double dt = update->dt;
     rs_error err;
     rs_error_clear(&err);
 
-    double rmax = 0.0;
+    /* Gather; the extremes of R and m tell whether the block is monodisperse. */
+    double *__restrict qx = bx_.data(), *__restrict qy = by_.data(),
+                       *__restrict qz = bz_.data();
+    double *__restrict qvx = bvx_.data(), *__restrict qvy = bvy_.data(),
+                       *__restrict qvz = bvz_.data();
+    double *__restrict qwx = bwx_.data(), *__restrict qwy = bwy_.data(),
+                       *__restrict qwz = bwz_.data();
+    double *__restrict qr = brad_.data();
+    int *__restrict qid = bid_.data();
+    double **__restrict qh = bhist_.data();
+    double rmax = radius[idx[0]], rmin = rmax, mmax = rmass[idx[0]], mmin = mmax;
     for (int k = 0; k < n; k++) {
         const int i = idx[k];
-        bx_[k] = x[i][0], by_[k] = x[i][1], bz_[k] = x[i][2];
-        bvx_[k] = v[i][0], bvy_[k] = v[i][1], bvz_[k] = v[i][2];
-        bwx_[k] = omega[i][0], bwy_[k] = omega[i][1], bwz_[k] = omega[i][2];
-        brad_[k] = radius[i];
-        bid_[k] = tag[i];
-        bhist_[k] = row_[i];
-        rmax = std::max(rmax, radius[i]);
+        const double *xi = x[i], *vi = v[i], *wi = omega[i];
+        const double R = radius[i], m = rmass[i];
+        qx[k] = xi[0], qy[k] = xi[1], qz[k] = xi[2];
+        qvx[k] = vi[0], qvy[k] = vi[1], qvz[k] = vi[2];
+        qwx[k] = wi[0], qwy[k] = wi[1], qwz[k] = wi[2];
+        qr[k] = R;
+        qid[k] = tag[i];
+        qh[k] = row_[i];
+        rmax = std::max(rmax, R), rmin = std::min(rmin, R);
+        mmax = std::max(mmax, m), mmin = std::min(mmin, m);
     }
     if (setup_call) {
         saved_rows_.resize((size_t)n * rs);
@@ -1220,79 +1236,10 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
      * rs_law_call zeroes the write-only sfd, scd, spd and svd itself. */
     std::fill_n(c_flux_slv_.begin(), ne, 0.0);
     std::fill_n(c_flux_mst_.begin(), ne, 0.0);
-
-    const double *Temp = fix_temp_ ? fix_temp_->vector_atom : NULL;
-    const double *cp = fix_heatcap_ ? fix_heatcap_->get_values() : NULL;
-    const int sed0 = sed_offset(), tp0 = tprev_offset(), pd0 = pred_offset();
-    double A = 1.0;
-    if (area_mode_ == AREA_CONSTANT)
-        A = area_const_;
-    /* Stiffness, conductance and effective radius depend on a few per-particle values
-     * only: each is recomputed when its inputs differ from the previous contact's (a
-     * monodisperse bed computes them once per block), with the same functions. */
-    double last_m = NAN, last_mA = NAN, stiff = 0.0;
-    double last_C = NAN, last_CA = NAN, cond = 0.0;
-    double last_R = NAN, last_k1 = NAN, last_k2 = NAN, reff = 0.0;
-    const double *curv = tout_.curv;
-    for (int e = 0; e < ne; e++) {
-        const int k = tout_.point[e], i = idx[k];
-        double *row = row_[i];
-        const double *slot = tout_.slot[e];
-        const int j = (int)((slot - row) / hs);
-        slotj_[e] = j;
-        leaving_[e] = slot[RS_H_STATE] == RS_HSTATE_LEAVING;
-        c_uid_[e] = tag[i];
-        c_type_[e] = type[i];
-        c_sed_[e] = row[sed0 + j];
-
-        const double R = radius[i], m = rmass[i];
-        if (area_mode_ == AREA_PROJECTED)
-            A = kPi * R * R;
-        c_area_[e] = A;
-        c_rad_[e] = R;
-        c_mass_[e] = m;
-        /* Effective radius of a sphere on a surface with principal curvatures k1, k2
-         * (> 0 convex toward the particle): the geometric mean of the two principal
-         * relative radii 1/(1/R + k). A plane gives R. */
-        const double k1 = curv[2 * e], k2 = curv[2 * e + 1];
-        if (!(R == last_R && k1 == last_k1 && k2 == last_k2)) {
-            const double floor_c = 1e-6 / R;
-            const double c1 = std::max(1.0 / R + k1, floor_c),
-                         c2 = std::max(1.0 / R + k2, floor_c);
-            reff = (k1 == 0.0 && k2 == 0.0) ? R : 1.0 / std::sqrt(c1 * c2);
-            last_R = R, last_k1 = k1, last_k2 = k2;
-        }
-        c_reff_[e] = reff;
-        if (!(m == last_m && A == last_mA)) {
-            stiff = rs_law_default_stiffness(m, A, dt);
-            last_m = m, last_mA = A;
-        }
-        c_stiff_[e] = stiff;
-        if (cp) {
-            const double C = m * cp[type[i] - 1];
-            if (!(C == last_C && A == last_CA)) {
-                cond = rs_law_default_conductance(C, A, dt);
-                last_C = C, last_CA = A;
-            }
-            c_cond_[e] = cond;
-        } else {
-            c_cond_[e] = 0.0;
-        }
-        if (Temp) {
-            const double Tp = row[tp0];
-            c_temp_[e] = Temp[i];
-            c_dtemp_[e] = (setup_call || std::isnan(Tp)) ? 0.0 : Temp[i] - Tp;
-        }
-        for (int a = 0; a < npred; a++) {
-            const double val = predef_fix_[a]->vector_atom[i];
-            const double prev = row[pd0 + a];
-            c_pred_[(size_t)e * npred + a] = val;
-            c_dpred_[(size_t)e * npred + a] =
-                (setup_call || std::isnan(prev)) ? 0.0 : val - prev;
-        }
-    }
+    law_inputs(idx, n, ne, setup_call, rmin == rmax && mmin == mmax);
 
     /* The law, in slices of at most RS_BLOCK contacts. */
+    const double *Temp = fix_temp_ ? fix_temp_->vector_atom : NULL;
     const double *props = props_.data();
     int nprops = (int)props_.size();
     if (hertz_ && !props_given_) {
@@ -1357,10 +1304,13 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
             fail_one(err.msg);
     }
 
+    /* The scatter also stores each live contact's sed in its row (leaving: 0). */
     if (nd == 3)
-        scatter<3>(idx, n, ne, setup_call);
+        nleave_ ? scatter<3, true>(idx, n, ne, setup_call)
+                : scatter<3, false>(idx, n, ne, setup_call);
     else
-        scatter<2>(idx, n, ne, setup_call);
+        nleave_ ? scatter<2, true>(idx, n, ne, setup_call)
+                : scatter<2, false>(idx, n, ne, setup_call);
 
     if (setup_call) {
         for (int k = 0; k < n; k++)
@@ -1368,101 +1318,281 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         return;
     }
     rs_track_commit(&tracker_, &tout_, c_stress_.data(), ns ? c_statev_.data() : NULL);
-    const int sed0w = sed_offset();
+}
+
+/* The law's per-contact inputs: ids, types, sed and the leaving flags; radius, mass,
+ * area, default stiffness and conductance, effective radius; temperatures and predefined
+ * fields. uniform_rm: all particles of the block have the same radius and mass. */
+void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
+                              bool uniform_rm)
+{
+    (void)n;
+    const double *radius = atom->radius, *rmass = atom->rmass;
+    const int *type = atom->type;
+    const int hs = hist_size(), sed0 = sed_offset();
+    const double dt = update->dt;
+    const int *__restrict pt = tout_.point;
+    double *const *__restrict slot = tout_.slot;
+    double *const *__restrict bh = bhist_.data();
+    const int *__restrict bid = bid_.data();
+    const double *__restrict curv = tout_.curv;
+    double **__restrict sedp = c_sedp_.data();
+    double *__restrict sed = c_sed_.data();
+    char *__restrict leaving = leaving_.data();
+    int *__restrict uid = c_uid_.data(), *__restrict ctype = c_type_.data();
+    const double k10 = curv[0], k20 = curv[1];
+    int nleave = 0;
+    bool ident = true, same_curv = true;
     for (int e = 0; e < ne; e++) {
-        const int i = idx[tout_.point[e]];
-        row_[i][sed0w + slotj_[e]] = leaving_[e] ? 0.0 : c_sed_[e];
+        const int k = pt[e];
+        double *row = bh[k];
+        const double *sl = slot[e];
+        const int j = (int)((sl - row) / hs);
+        double *sp = row + sed0 + j;
+        sedp[e] = sp;
+        sed[e] = *sp;
+        const char lv = sl[RS_H_STATE] == RS_HSTATE_LEAVING;
+        leaving[e] = lv;
+        nleave += lv;
+        uid[e] = bid[k];
+        ctype[e] = type[idx[k]];
+        ident &= k == e;
+        same_curv &= (curv[2 * e] == k10) & (curv[2 * e + 1] == k20);
+    }
+    nleave_ = nleave;
+    ident_ = ident && ne == n;
+
+    const double *cp = fix_heatcap_ ? fix_heatcap_->get_values() : NULL;
+    double *__restrict area = c_area_.data(), *__restrict crad = c_rad_.data(),
+                       *__restrict cmass = c_mass_.data(),
+                       *__restrict stiffa = c_stiff_.data(),
+                       *__restrict conda = c_cond_.data(),
+                       *__restrict reffa = c_reff_.data();
+    /* Effective radius of a sphere on a surface with principal curvatures k1, k2
+     * (> 0 convex toward the particle): the geometric mean of the two principal relative
+     * radii 1/(1/R + k). A plane gives R. */
+    auto eff_radius = [](double R, double k1, double k2) {
+        const double floor_c = 1e-6 / R;
+        const double c1 = std::max(1.0 / R + k1, floor_c),
+                     c2 = std::max(1.0 / R + k2, floor_c);
+        return (k1 == 0.0 && k2 == 0.0) ? R : 1.0 / std::sqrt(c1 * c2);
+    };
+    if (uniform_rm && same_curv && !cp) {
+        /* One key for the whole block: the arrays are refilled only past what an earlier
+         * block with the same key left. */
+        const double R = radius[idx[0]], m = rmass[idx[0]];
+        const double A = area_mode_ == AREA_CONSTANT    ? area_const_
+                         : area_mode_ == AREA_PROJECTED ? kPi * R * R
+                                                        : 1.0;
+        const double key[6] = {R, m, A, k10, k20, dt};
+        bool same = uni_n_ > 0;
+        for (int a = 0; a < 6; a++)
+            same = same && key[a] == uni_key_[a];
+        if (!same) {
+            uni_n_ = 0;
+            for (int a = 0; a < 6; a++)
+                uni_key_[a] = key[a];
+        }
+        if (uni_n_ < ne) {
+            const double stiff = rs_law_default_stiffness(m, A, dt);
+            const double reff = eff_radius(R, k10, k20);
+            for (int e = uni_n_; e < ne; e++) {
+                area[e] = A;
+                crad[e] = R;
+                cmass[e] = m;
+                stiffa[e] = stiff;
+                conda[e] = 0.0;
+                reffa[e] = reff;
+            }
+            uni_n_ = ne;
+        }
+    } else {
+        /* Each value is recomputed when its inputs differ from the previous contact's,
+         * with the same functions. */
+        uni_n_ = 0;
+        double A = area_mode_ == AREA_CONSTANT ? area_const_ : 1.0;
+        double last_m = NAN, last_mA = NAN, stiff = 0.0;
+        double last_C = NAN, last_CA = NAN, cond = 0.0;
+        double last_R = NAN, last_k1 = NAN, last_k2 = NAN, reff = 0.0;
+        for (int e = 0; e < ne; e++) {
+            const int i = idx[pt[e]];
+            const double R = radius[i], m = rmass[i];
+            if (area_mode_ == AREA_PROJECTED)
+                A = kPi * R * R;
+            area[e] = A;
+            crad[e] = R;
+            cmass[e] = m;
+            const double k1 = curv[2 * e], k2 = curv[2 * e + 1];
+            if (!(R == last_R && k1 == last_k1 && k2 == last_k2)) {
+                reff = eff_radius(R, k1, k2);
+                last_R = R, last_k1 = k1, last_k2 = k2;
+            }
+            reffa[e] = reff;
+            if (!(m == last_m && A == last_mA)) {
+                stiff = rs_law_default_stiffness(m, A, dt);
+                last_m = m, last_mA = A;
+            }
+            stiffa[e] = stiff;
+            if (cp) {
+                const double C = m * cp[type[i] - 1];
+                if (!(C == last_C && A == last_CA)) {
+                    cond = rs_law_default_conductance(C, A, dt);
+                    last_C = C, last_CA = A;
+                }
+                conda[e] = cond;
+            } else {
+                conda[e] = 0.0;
+            }
+        }
+    }
+
+    const double *Temp = fix_temp_ ? fix_temp_->vector_atom : NULL;
+    if (Temp) {
+        const int tp0 = tprev_offset();
+        for (int e = 0; e < ne; e++) {
+            const int k = pt[e], i = idx[k];
+            const double Tp = bh[k][tp0];
+            c_temp_[e] = Temp[i];
+            c_dtemp_[e] = (setup_call || std::isnan(Tp)) ? 0.0 : Temp[i] - Tp;
+        }
+    }
+    const int npred = (int)predef_names_.size();
+    if (npred) {
+        const int pd0 = pred_offset();
+        for (int e = 0; e < ne; e++) {
+            const int k = pt[e], i = idx[k];
+            for (int a = 0; a < npred; a++) {
+                const double val = predef_fix_[a]->vector_atom[i];
+                const double prev = bh[k][pd0 + a];
+                c_pred_[(size_t)e * npred + a] = val;
+                c_dpred_[(size_t)e * npred + a] =
+                    (setup_call || std::isnan(prev)) ? 0.0 : val - prev;
+            }
+        }
     }
 }
 
 /* Scatter: F = A (s1 n - s2 t1 - s3 t2) on the particle at x_cp, -F on the wall; the
- * wall's sums, energies and the per-atom output of the block's particles. ND = 2: the
- * plane is z = const, t2 = -ez and the contact point keeps the particle's z. */
-template <int ND> void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
+ * wall's sums, energies, each contact's sed into its row and the per-atom output of the
+ * block's particles. ND = 2: the plane is z = const, t2 = -ez and the contact point keeps
+ * the particle's z. LEAVE: some contacts are leaving (they apply nothing). */
+template <int ND, bool LEAVE>
+void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
 {
-    double **x = atom->x, **f = atom->f, **torque = atom->torque;
+    double **f = atom->f, **torque = atom->torque;
     double origin[3];
     rs_pose_to_global(&motion_.pose, surf_.a, origin);
-    double *heatflux = (fix_heatflux_ && !setup_call) ? fix_heatflux_->vector_atom : NULL;
-    double fw[3] = {f_wall_[0], f_wall_[1], f_wall_[2]};
-    double mw[3] = {m_wall_[0], m_wall_[1], m_wall_[2]};
-    double se = se_now_, d0 = diss_[0], d1 = diss_[1], d2 = diss_[2], d3 = diss_[3];
-    double heat = heat_step_;
+    const double o0 = origin[0], o1 = origin[1], o2 = origin[2];
+    const int *__restrict pt = tout_.point;
+    const char *__restrict leaving = leaving_.data();
+    const double *__restrict px = bx_.data(), *__restrict py = by_.data(),
+                             *__restrict pz = bz_.data();
+    const double *__restrict alocal = tout_.alocaldir, *__restrict coord = tout_.coordslv,
+                             *__restrict rdisp = tout_.rdisp;
+    const double *__restrict stress = c_stress_.data(), *__restrict area = c_area_.data();
+    const bool track_deepest = !ident_;
+    int *__restrict deepest = deepest_.data();
+    if (track_deepest)
+        for (int k = 0; k < n; k++)
+            deepest[k] = -1;
+
+    double fw0 = f_wall_[0], fw1 = f_wall_[1], fw2 = f_wall_[2];
+    double mw0 = m_wall_[0], mw1 = m_wall_[1], mw2 = m_wall_[2];
     int ncontact = ncontact_;
-    int *deepest = deepest_.data();
-    for (int k = 0; k < n; k++)
-        deepest[k] = -1;
-    const double *alocal = tout_.alocaldir, *coord = tout_.coordslv, *rdisp = tout_.rdisp;
-    const double *stress = c_stress_.data();
     for (int e = 0; e < ne; e++) {
-        if (leaving_[e])
+        if (LEAVE && leaving[e])
             continue;
-        const int k = tout_.point[e], i = idx[k];
-        const double A = c_area_[e];
+        const int k = pt[e];
+        const double A = area[e];
         const double *s = stress + (size_t)e * ND;
         const double *L = alocal + (size_t)e * ND * ND; // columns n, t1[, t2]
         const double *xc = coord + (size_t)e * ND;
-        double F[3], xcp[3];
+        double F0, F1, F2, xc0, xc1, xc2;
         if (ND == 3) {
-            for (int a = 0; a < 3; a++) {
-                F[a] = A * (s[0] * L[a] - s[1] * L[3 + a] - s[2] * L[6 + a]);
-                xcp[a] = xc[a];
-            }
+            F0 = A * (s[0] * L[0] - s[1] * L[3] - s[2] * L[6]);
+            F1 = A * (s[0] * L[1] - s[1] * L[4] - s[2] * L[7]);
+            F2 = A * (s[0] * L[2] - s[1] * L[5] - s[2] * L[8]);
+            xc0 = xc[0], xc1 = xc[1], xc2 = xc[2];
         } else {
-            const double nrm[3] = {L[0], L[1], 0.0}, t1[3] = {L[2], L[3], 0.0},
-                         t2[3] = {0.0, 0.0, -1.0};
-            for (int a = 0; a < 3; a++)
-                F[a] = A * (s[0] * nrm[a] - s[1] * t1[a] - 0.0 * t2[a]);
-            xcp[0] = xc[0], xcp[1] = xc[1], xcp[2] = x[i][2];
+            /* n = (L0, L1, 0), t1 = (L2, L3, 0), t2 = (0, 0, -1) */
+            F0 = A * (s[0] * L[0] - s[1] * L[2] - 0.0 * 0.0);
+            F1 = A * (s[0] * L[1] - s[1] * L[3] - 0.0 * 0.0);
+            F2 = A * (s[0] * 0.0 - s[1] * 0.0 - 0.0 * -1.0);
+            xc0 = xc[0], xc1 = xc[1], xc2 = pz[k];
         }
-        double r[3], rw[3], Fw[3], T[3], Mw[3];
-        for (int a = 0; a < 3; a++) {
-            r[a] = xcp[a] - x[i][a];
-            rw[a] = xcp[a] - origin[a];
-            Fw[a] = -F[a];
-        }
-        cross3(r, F, T);
-        cross3(rw, Fw, Mw);
-        double *fi = f[i], *ti = torque[i];
-        for (int a = 0; a < 3; a++) {
-            fi[a] += F[a];
-            ti[a] += T[a];
-            fw[a] += Fw[a];
-            mw[a] += Mw[a];
-        }
+        const double r0 = xc0 - px[k], r1 = xc1 - py[k], r2 = xc2 - pz[k];
+        const double rw0 = xc0 - o0, rw1 = xc1 - o1, rw2 = xc2 - o2;
+        const double Fw0 = -F0, Fw1 = -F1, Fw2 = -F2;
+        double *fi = f[idx[k]], *ti = torque[idx[k]];
+        fi[0] += F0, fi[1] += F1, fi[2] += F2;
+        ti[0] += r1 * F2 - r2 * F1;
+        ti[1] += r2 * F0 - r0 * F2;
+        ti[2] += r0 * F1 - r1 * F0;
+        fw0 += Fw0, fw1 += Fw1, fw2 += Fw2;
+        mw0 += rw1 * Fw2 - rw2 * Fw1;
+        mw1 += rw2 * Fw0 - rw0 * Fw2;
+        mw2 += rw0 * Fw1 - rw1 * Fw0;
         const double rd1 = rdisp[(size_t)e * ND];
-        if (rd1 > 0.0)
-            ncontact++;
-        se += c_sed_[e] * A;
-        if (!setup_call) {
-            d0 += c_sfd_[e] * A;
-            d1 += c_spd_[e] * A;
-            d2 += c_svd_[e] * A;
-            d3 += c_scd_[e] * A;
-            heat += c_flux_mst_[e] * A;
-            if (heatflux)
-                heatflux[i] += c_flux_slv_[e] * A;
+        ncontact += rd1 > 0.0;
+        if (track_deepest) {
+            const int d = deepest[k];
+            if (d < 0 || rd1 > rdisp[(size_t)d * ND])
+                deepest[k] = e;
         }
-        if (deepest[k] < 0 || rd1 > rdisp[(size_t)deepest[k] * ND])
-            deepest[k] = e;
     }
-    for (int a = 0; a < 3; a++) {
-        f_wall_[a] = fw[a];
-        m_wall_[a] = mw[a];
+    f_wall_[0] = fw0, f_wall_[1] = fw1, f_wall_[2] = fw2;
+    m_wall_[0] = mw0, m_wall_[1] = mw1, m_wall_[2] = mw2;
+    ncontact_ = ncontact;
+
+    /* Energies, heat, and sed into the rows (not in a setup call: its rows are
+     * restored). */
+    const double *__restrict sed = c_sed_.data();
+    double se = se_now_;
+    if (setup_call) {
+        for (int e = 0; e < ne; e++)
+            if (!(LEAVE && leaving[e]))
+                se += sed[e] * area[e];
+    } else {
+        const double *__restrict sfd = c_sfd_.data(), *__restrict spd = c_spd_.data(),
+                                 *__restrict svd = c_svd_.data(),
+                                 *__restrict scd = c_scd_.data(),
+                                 *__restrict fmst = c_flux_mst_.data();
+        double *const *__restrict sedp = c_sedp_.data();
+        double d0 = diss_[0], d1 = diss_[1], d2 = diss_[2], d3 = diss_[3];
+        double heat = heat_step_;
+        for (int e = 0; e < ne; e++) {
+            if (LEAVE && leaving[e]) {
+                *sedp[e] = 0.0;
+                continue;
+            }
+            const double A = area[e];
+            se += sed[e] * A;
+            d0 += sfd[e] * A;
+            d1 += spd[e] * A;
+            d2 += svd[e] * A;
+            d3 += scd[e] * A;
+            heat += fmst[e] * A;
+            *sedp[e] = sed[e];
+        }
+        diss_[0] = d0, diss_[1] = d1, diss_[2] = d2, diss_[3] = d3;
+        heat_step_ = heat;
+        if (fix_heatflux_) {
+            double *heatflux = fix_heatflux_->vector_atom;
+            const double *fslv = c_flux_slv_.data();
+            for (int e = 0; e < ne; e++)
+                if (!(LEAVE && leaving[e]))
+                    heatflux[idx[pt[e]]] += fslv[e] * area[e];
+        }
     }
     se_now_ = se;
-    diss_[0] = d0, diss_[1] = d1, diss_[2] = d2, diss_[3] = d3;
-    heat_step_ = heat;
-    ncontact_ = ncontact;
 
     /* Per-atom output: the deepest live contact of each particle with this wall, zeros
      * for a particle without one. */
     for (int k = 0; k < n; k++) {
-        const int e = deepest[k];
+        const int e = track_deepest ? deepest[k] : (LEAVE && leaving[k]) ? -1 : k;
         double *o = array_atom[idx[k]];
         if (e < 0) {
-            for (int c = 0; c < 6; c++)
-                o[c] = 0.0;
+            o[0] = o[1] = o[2] = o[3] = o[4] = o[5] = 0.0;
             continue;
         }
         const double *s = stress + (size_t)e * ND;

@@ -90,7 +90,9 @@ class FixWallRigid : public Fix
     void build_candidates();
     bool wall_moved_beyond_skin() const;
     void process_block(const int *idx, int n, bool setup_call);
-    template <int ND> void scatter(const int *idx, int n, int ne, bool setup_call);
+    void law_inputs(const int *idx, int n, int ne, bool setup_call, bool uniform_rm);
+    template <int ND, bool LEAVE>
+    void scatter(const int *idx, int n, int ne, bool setup_call);
     void write_vtk();
     void update_previous_fields();
 
@@ -190,7 +192,15 @@ class FixWallRigid : public Fix
     std::vector<double *> bhist_;
     std::vector<double> saved_rows_;
     std::vector<char> leaving_, take_;
-    std::vector<int> slotj_, deepest_;
+    std::vector<int> deepest_;
+    std::vector<double *> c_sedp_; // each contact's sed in its particle's row
+    int nleave_;                   // leaving contacts of the block
+    bool ident_;                   // contact e is particle e's only contact, for all e
+    /* c_area_, c_rad_, c_mass_, c_stiff_, c_cond_ and c_reff_ hold on [0, uni_n_) the
+     * values of one contact with the key (R, m, A, k1, k2, dt): blocks with the same key
+     * (a monodisperse bed on one feature) reuse them. */
+    double uni_key_[6];
+    int uni_n_;
     rs_law_block blk_; // the law block's fields that stay for the run
     /* per contact of a block (RS_BLOCK * capacity) */
     std::vector<int> c_uid_, c_type_;
