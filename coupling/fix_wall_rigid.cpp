@@ -1304,13 +1304,25 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
             fail_one(err.msg);
     }
 
-    /* The scatter also stores each live contact's sed in its row (leaving: 0). */
-    if (nd == 3)
-        nleave_ ? scatter<3, true>(idx, n, ne, setup_call)
-                : scatter<3, false>(idx, n, ne, setup_call);
-    else
-        nleave_ ? scatter<2, true>(idx, n, ne, setup_call)
-                : scatter<2, false>(idx, n, ne, setup_call);
+    /* The scatter also stores each live contact's sed in its row (leaving: 0). A unit
+     * area (the default) drops the products with A, which are exact. */
+    const bool unit =
+        area_mode_ == AREA_NODE || (area_mode_ == AREA_CONSTANT && area_const_ == 1.0);
+    if (nd == 3) {
+        if (unit)
+            nleave_ ? scatter<3, true, true>(idx, n, ne, setup_call)
+                    : scatter<3, false, true>(idx, n, ne, setup_call);
+        else
+            nleave_ ? scatter<3, true, false>(idx, n, ne, setup_call)
+                    : scatter<3, false, false>(idx, n, ne, setup_call);
+    } else {
+        if (unit)
+            nleave_ ? scatter<2, true, true>(idx, n, ne, setup_call)
+                    : scatter<2, false, true>(idx, n, ne, setup_call);
+        else
+            nleave_ ? scatter<2, true, false>(idx, n, ne, setup_call)
+                    : scatter<2, false, false>(idx, n, ne, setup_call);
+    }
 
     if (setup_call) {
         for (int k = 0; k < n; k++)
@@ -1475,8 +1487,9 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
 /* Scatter: F = A (s1 n - s2 t1 - s3 t2) on the particle at x_cp, -F on the wall; the
  * wall's sums, energies, each contact's sed into its row and the per-atom output of the
  * block's particles. ND = 2: the plane is z = const, t2 = -ez and the contact point keeps
- * the particle's z. LEAVE: some contacts are leaving (they apply nothing). */
-template <int ND, bool LEAVE>
+ * the particle's z. LEAVE: some contacts are leaving (they apply nothing). UNITA: every
+ * area is 1. */
+template <int ND, bool LEAVE, bool UNITA>
 void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
 {
     double **f = atom->f, **torque = atom->torque;
@@ -1503,7 +1516,7 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
         if (LEAVE && leaving[e])
             continue;
         const int k = pt[e];
-        const double A = area[e];
+        const double A = UNITA ? 1.0 : area[e];
         const double *s = stress + (size_t)e * ND;
         const double *L = alocal + (size_t)e * ND * ND; // columns n, t1[, t2]
         const double *xc = coord + (size_t)e * ND;
@@ -1565,7 +1578,7 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
                 *sedp[e] = 0.0;
                 continue;
             }
-            const double A = area[e];
+            const double A = UNITA ? 1.0 : area[e];
             se += sed[e] * A;
             d0 += sfd[e] * A;
             d1 += spd[e] * A;

@@ -91,7 +91,7 @@ class FixWallRigid : public Fix
     bool wall_moved_beyond_skin() const;
     void process_block(const int *idx, int n, bool setup_call);
     void law_inputs(const int *idx, int n, int ne, bool setup_call, bool uniform_rm);
-    template <int ND, bool LEAVE>
+    template <int ND, bool LEAVE, bool UNITA>
     void scatter(const int *idx, int n, int ne, bool setup_call);
     void write_vtk();
     void update_previous_fields();
