@@ -317,7 +317,7 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
             bucket_levels(pc, hi[best_axis] - lo[best_axis], 32L * n + 64, &entries);
     }
     size_t ints =
-        (size_t)pc->nlevel * (size_t)(pc->nbucket + 1) + (size_t)entries + (size_t)n;
+        (size_t)pc->nlevel * (size_t)(pc->nbucket + 1) + 2 * ((size_t)entries + (size_t)n);
     unsigned char *nblk = realloc(blk, head + ints * sizeof(int));
     if (!nblk) {
         free(blk);
@@ -330,8 +330,11 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
     pc->bstart = (int *)(blk + head);
     pc->blist = pc->bstart + (size_t)pc->nlevel * (size_t)(pc->nbucket + 1);
     pc->all = pc->blist + entries;
-    for (int k = 0; k < n; k++)
+    pc->boff = pc->all + n;
+    for (int k = 0; k < n; k++) {
         pc->all[k] = k;
+        pc->ps[k].self = k;
+    }
     long off = 0;
     for (int l = 0; l < pc->nlevel; l++) {
         int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
@@ -348,6 +351,8 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
             bs[b] += (int)off;
         off += e;
     }
+    for (long e = 0; e < entries + n; e++)
+        pc->boff[e] = pc->blist[e] * (int)sizeof(rs_pseg);
     *out = pc;
     return RS_OK;
 }
@@ -810,80 +815,154 @@ static int put_vertex(const rs_pcache *pc, const pout *o, int nh, int j, int pt,
     return nh;
 }
 
-/* One pass per point: the near segments in profile order, each followed at once by its
- * contacts (vertex k, segment k, closing vertex), which is the order of rs_pcache_hits
- * when no Voronoi pair can drop a face. A penetrated face with one side (the Voronoi
- * pass) and the start vertex of a closed profile (its other segment is the last near
- * one) hand the point to rs_pcache_hits. */
+/* Face contact of LINE segment k (its projection is interior) into slot nh when its
+ * distance lies in [dlo, dhi]; returns the new count. */
+RS_INLINE int put_line(const pout *o, int nh, int k, const rs_pseg *q, int pt, double wx,
+                       double wy, double sd, int two, double dlo, double dhi)
+{
+    const int flip = two && sd < 0.0;
+    const double dist = flip ? -sd : sd;
+    if (!(dist >= dlo && dist <= dhi))
+        return nh;
+    double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
+    tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
+    o->point[nh] = pt;
+    o->feature[nh] = RS_FEATURE(RS_FEAT_FACE, k);
+    o->x0[nh] = q->o[0] + tau * q->e[0];
+    o->x1[nh] = q->o[1] + tau * q->e[1];
+    o->n0[nh] = flip ? -q->nl[0] : q->nl[0];
+    o->n1[nh] = flip ? -q->nl[1] : q->nl[1];
+    o->dist[nh] = dist;
+    o->kap[nh] = 0.0;
+    return nh + 1;
+}
+
+/* Points searched per pre-pass of rs_pcache_points. */
+enum { PP_SUB = 64 };
+
+/* Per point: a pre-pass over a run of points finds each one's reach and its bucket's
+ * list (offsets into blist; pc->all lies after it), then one pass per point walks the
+ * near segments in profile order, each followed at once by its contacts (vertex k,
+ * segment k, closing vertex), which is the order of rs_pcache_hits when no Voronoi pair
+ * can drop a face. A penetrated face with one side (the Voronoi pass) and the start
+ * vertex of a closed profile (its other segment is the last near one) hand the point to
+ * rs_pcache_hits. */
 int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_contacts *out,
                      rs_pscratch *sc, int *need)
 {
     const int n = pc->nseg, m = pts->n, two = pc->sides == 2, cap = out->cap;
     const double dlo = pts->dlo, lo = pc->lo, inv_w = pc->inv_w;
     const double top = (double)(pc->nbucket - 1);
-    const int axis = pc->axis, base = pts->base;
+    const int base = pts->base;
     const rs_pseg *ps = pc->ps;
-    const int *const blist = pc->blist, *const all = pc->all;
+    const int *const blist = pc->blist, *const boff = pc->boff;
+    const int all = (int)(pc->all - blist);
     const double *const pu = pts->u, *const pv = pts->v, *const pdh = pts->dhi;
+    const double *const pax = pc->axis ? pv : pu;
     const pout o = {out->point,  out->feature, out->xm[0], out->xm[1],
                     out->nrm[0], out->nrm[1],  out->dist,  out->curv[0]};
     double lreach = -1.0; /* the reach whose level was chosen last */
     const int *bs = NULL;
     int nh = out->n;
-    for (; i < m; i++) {
-        const double px = pu[i], py = pv[i], dhi = pdh[i];
-        if (!(dhi >= dlo))
-            continue;
-        const double reach = (two || dhi > -dlo) ? dhi : -dlo;
-        if (!(reach >= 0.0))
-            continue;
-        if (reach != lreach) {
-            int l = 0;
-            while (l < pc->nlevel && pc->margin[l] < reach)
-                l++;
-            bs = l < pc->nlevel ? pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1) : NULL;
-            lreach = reach;
+    double rch[PP_SUB];
+    int bkt[PP_SUB], lb[PP_SUB], le[PP_SUB];
+    while (i < m) {
+        const int i1 = m - i < PP_SUB ? m : i + PP_SUB, c = i1 - i;
+        /* reach and bucket of each point (branch-free); bkt < 0 skips the point */
+        {
+            const double *restrict dh = pdh + i, *restrict ax = pax + i;
+            for (int j = 0; j < c; j++) {
+                const double dhi = dh[j];
+                const double reach = (two || dhi > -dlo) ? dhi : -dlo;
+                const double f = (ax[j] - lo) * inv_w;
+                const double fb = f > 0.0 ? (f < top ? f : top) : 0.0;
+                const int ok = dhi >= dlo && reach >= 0.0;
+                rch[j] = reach;
+                bkt[j] = ok ? (int)fb : -1;
+            }
         }
-        const int *list = all, *end = all + n;
-        if (bs) {
-            double f = ((axis ? py : px) - lo) * inv_w;
-            int b = f > 0.0 ? (int)(f < top ? f : top) : 0;
-            list = blist + bs[b];
-            end = blist + bs[b + 1];
-        }
-        /* each near segment gives at most its start vertex, itself and the closing
-         * vertex */
-        const int room = 2 * (int)(end - list) + 1;
-        if (nh > cap - room) {
-            *need = room;
-            break;
-        }
-        const int k0 = nh, pt = base + i;
-        int prev = -1, slow = 0;
-        for (; list < end; list++) {
-            const int k = *list;
-            const rs_pseg *q = &ps[k];
-            if (q->box[0] - px > reach || px - q->box[1] > reach ||
-                q->box[2] - py > reach || py - q->box[3] > reach)
+        /* each point's list; the points that fit in out as its lists bound them (each
+         * near segment gives at most its start vertex, itself and the closing vertex) */
+        int stop = c, bound = nh;
+        for (int j = 0; j < c; j++) {
+            const int b = bkt[j];
+            if (b < 0) {
+                lb[j] = le[j] = 0;
                 continue;
-            if (q->type == RS_LINE) {
-                /* The vertex tests of a segment are its ends' (profile.h): when the start
-                 * test holds, vertex k cannot own the point, nor can the closing vertex
-                 * when the end test holds. */
-                const double wx = px - q->o[0], wy = py - q->o[1];
-                const double nx = q->nl[0], ny = q->nl[1], sd = wx * nx + wy * ny;
-                if (fabs(sd) > reach)
+            }
+            if (rch[j] != lreach) {
+                int l = 0;
+                while (l < pc->nlevel && pc->margin[l] < rch[j])
+                    l++;
+                bs = l < pc->nlevel ? pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1)
+                                    : NULL;
+                lreach = rch[j];
+            }
+            lb[j] = bs ? bs[b] : all;
+            le[j] = bs ? bs[b + 1] : all + n;
+            bound += 2 * (le[j] - lb[j]) + 1;
+            if (bound > cap) {
+                stop = j;
+                break;
+            }
+        }
+        for (int j = 0; j < stop; j++) {
+            const int *list = boff + lb[j], *const end = boff + le[j];
+            if (list == end)
+                continue;
+            const double px = pu[i + j], py = pv[i + j], dhi = pdh[i + j], reach = rch[j];
+            const int k0 = nh, pt = base + i + j;
+            int prev = -1, slow = 0;
+            for (; list < end; list++) {
+                const rs_pseg *q = (const rs_pseg *)((const char *)ps + *list);
+                const int k = q->self;
+                if (q->box[0] - px > reach || px - q->box[1] > reach ||
+                    q->box[2] - py > reach || py - q->box[3] > reach)
                     continue;
-                const double dB = (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
-                const double dA = (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
-                const int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
-                const int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
-                const int hit = in_start && in_end;
-                if (hit && !two && sd < 0.0) {
+                if (q->type == RS_LINE) {
+                    /* The vertex tests of a segment are its ends' (profile.h): when the
+                     * start test holds, vertex k cannot own the point, nor can the
+                     * closing vertex when the end test holds. */
+                    const double wx = px - q->o[0], wy = py - q->o[1];
+                    const double sd = wx * q->nl[0] + wy * q->nl[1];
+                    if (fabs(sd) > reach)
+                        continue;
+                    const double dB =
+                        (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
+                    const double dA =
+                        (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
+                    const int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
+                    const int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
+                    const int hit = in_start && in_end;
+                    if (hit && !two && sd < 0.0) {
+                        slow = 1;
+                        break;
+                    }
+                    if (!in_start && q->vtx_start) {
+                        const int sa = pc->pv[k].sa;
+                        if (sa >= 0 && k == 0) { /* closed: sa = n - 1 comes last */
+                            slow = 1;
+                            break;
+                        }
+                        if (sa < 0 || prev == sa)
+                            nh = put_vertex(pc, &o, nh, k, pt, px, py, dlo, dhi);
+                    }
+                    if (hit)
+                        nh = put_line(&o, nh, k, q, pt, wx, wy, sd, two, dlo, dhi);
+                    if (!in_end && q->vtx_end)
+                        nh = put_vertex(pc, &o, nh, n, pt, px, py, dlo, dhi);
+                    prev = k;
+                    continue;
+                }
+                if (!seg_near(q, px, py, reach))
+                    continue;
+                rs_hit2 h;
+                const int hit = eval_curve(pc, k, px, py, &h);
+                if (hit && !two && h.dist < 0.0) {
                     slow = 1;
                     break;
                 }
-                if (!in_start && q->vtx_start) {
+                if (q->vtx_start) {
                     const int sa = pc->pv[k].sa;
                     if (sa >= 0 && k == 0) { /* closed: sa = n - 1 comes last */
                         slow = 1;
@@ -892,55 +971,26 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                     if (sa < 0 || prev == sa)
                         nh = put_vertex(pc, &o, nh, k, pt, px, py, dlo, dhi);
                 }
-                prev = k;
-                if (hit) {
-                    const int flip = two && sd < 0.0;
-                    const double dist = flip ? -sd : sd;
-                    if (dist >= dlo && dist <= dhi) {
-                        double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
-                        tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
-                        o.point[nh] = pt;
-                        o.feature[nh] = RS_FEATURE(RS_FEAT_FACE, k);
-                        o.x0[nh] = q->o[0] + tau * q->e[0];
-                        o.x1[nh] = q->o[1] + tau * q->e[1];
-                        o.n0[nh] = flip ? -nx : nx;
-                        o.n1[nh] = flip ? -ny : ny;
-                        o.dist[nh] = dist;
-                        o.kap[nh] = 0.0;
-                        nh++;
-                    }
-                }
-                if (!in_end && q->vtx_end)
+                if (hit && h.dist >= dlo && h.dist <= dhi)
+                    put_hit(&o, nh++, pt, &h);
+                if (q->vtx_end)
                     nh = put_vertex(pc, &o, nh, n, pt, px, py, dlo, dhi);
-                continue;
+                prev = k;
             }
-            if (!seg_near(q, px, py, reach))
-                continue;
-            rs_hit2 h;
-            const int hit = eval_curve(pc, k, px, py, &h);
-            if (hit && !two && h.dist < 0.0) {
-                slow = 1;
+            if (slow) {
+                nh = k0 + rs_pcache_hits(pc, px, py, dlo, dhi, sc);
+                for (int k = k0; k < nh; k++)
+                    put_hit(&o, k, pt, &sc->hits[k - k0]);
+            }
+        }
+        i += stop;
+        if (stop < c) {
+            /* the bound is loose: stop only when this point's own room is lacking */
+            const int room = 2 * (le[stop] - lb[stop]) + 1;
+            if (nh > cap - room) {
+                *need = room;
                 break;
             }
-            if (q->vtx_start) {
-                const int sa = pc->pv[k].sa;
-                if (sa >= 0 && k == 0) { /* closed: sa = n - 1 comes last */
-                    slow = 1;
-                    break;
-                }
-                if (sa < 0 || prev == sa)
-                    nh = put_vertex(pc, &o, nh, k, pt, px, py, dlo, dhi);
-            }
-            if (hit && h.dist >= dlo && h.dist <= dhi)
-                put_hit(&o, nh++, pt, &h);
-            if (q->vtx_end)
-                nh = put_vertex(pc, &o, nh, n, pt, px, py, dlo, dhi);
-            prev = k;
-        }
-        if (slow) {
-            nh = k0 + rs_pcache_hits(pc, px, py, dlo, dhi, sc);
-            for (int k = k0; k < nh; k++)
-                put_hit(&o, k, pt, &sc->hits[k - k0]);
         }
     }
     out->n = nh;

@@ -70,6 +70,7 @@ typedef struct rs_pseg {
     int end_incl;         ///< end vertex on a revolution axis: dA <= 0
     int vtx_start;        ///< the start vertex can own a contact (it is not SMOOTH)
     int vtx_end;          ///< the end vertex closes an open profile (vertex nseg)
+    int self;             ///< its index k
     double v0[2], tb0[2]; ///< start vertex and its start tangent (the vertex's tb)
     double v1[2], ta1[2]; ///< end vertex and its end tangent (the vertex's ta)
     double box[4];        ///< bounding box xmin, xmax, ymin, ymax (grown by a tolerance)
@@ -112,6 +113,7 @@ typedef struct rs_pcache {
     int *bstart;                   ///< level l, bucket b: [l (nbucket + 1) + b], into blist
     int *blist;                    ///< segment indices
     int *all;                      ///< 0 .. nseg - 1 (reaches beyond the last level)
+    int *boff;                     ///< blist then all as byte offsets into ps
 } rs_pcache;
 
 /// Builds the query data of an analytic surface's profile (one malloc'ed block).
