@@ -5,10 +5,12 @@
  * call: rs_track_update, rs_track_load (previous stress, shear carried by drot) and
  * rs_track_commit. Repetitions are interleaved; medians are reported.
  *
- *   bench_core [--particles N] [--reps R] [--seed S] [--nseg 1|8|64] [--still 1]
+ *   bench_core [--particles N] [--reps R] [--seed S] [--nseg 1|8|64] [--still 1] [--block
+ * B]
  *
  * --still 1: the drum stands still and the tracker gets no motion (NULL), as for a
- * fixed wall in fix wall/rigid.
+ * fixed wall in fix wall/rigid. --block B: B particles per block (default and largest
+ * RS_BLOCK = 128, the block fix wall/rigid uses).
  *
  * Drum: axis z through the origin, radius RD, half-height H. 1 segment: the mantle
  * only. n >= 3 segments: bottom cap, n - 2 collinear mantle pieces, top cap. The
@@ -145,14 +147,17 @@ typedef struct pipe {
     int still;     /* fixed drum: the tracker gets no motion */
 } pipe;
 
-/* One step over the cloud in blocks of RS_BLOCK, as fix wall/rigid runs it: each block
+/* Particles per block (--block, at most RS_BLOCK). */
+static int block = RS_BLOCK;
+
+/* One step over the cloud in blocks of `block`, as fix wall/rigid runs it: each block
  * is queried (closest features and frame), then tracked (update, load, commit; no law)
  * while its contacts are fresh. The whole step is timed (*tt, query + tracker); a
  * second pass over the same pose runs the queries alone (*tq), so the tracker's share
  * is the difference. */
 static int query_block(pipe *pp, const cloud *cl, int b, rs_error *err)
 {
-    int b0 = b * RS_BLOCK, nb = cl->n - b0 < RS_BLOCK ? cl->n - b0 : RS_BLOCK;
+    int b0 = b * block, nb = cl->n - b0 < block ? cl->n - b0 : block;
     rs_query q = {nb,         cl->x + b0,  cl->y + b0,      cl->z + b0,
                   cl->r + b0, &pp->m.pose, pp->tr.tracking, -RAD};
     pp->c.n = 0;
@@ -167,7 +172,7 @@ static int pipeline(pipe *pp, const cloud *cl, double dt, double *tq, double *tt
     pp->contacts = 0;
     double t0 = rs_bench_thread_now();
     for (int b = 0; b < pp->nblock; b++) {
-        int b0 = b * RS_BLOCK, nb = cl->n - b0 < RS_BLOCK ? cl->n - b0 : RS_BLOCK;
+        int b0 = b * block, nb = cl->n - b0 < block ? cl->n - b0 : block;
         int rc = query_block(pp, cl, b, err);
         if (rc)
             return rc;
@@ -224,11 +229,15 @@ int main(int argc, char **argv)
             only = (int)v;
         else if (ok && !strcmp(argv[a], "--still") && v == 1)
             still = 1;
+        else if (ok && !strcmp(argv[a], "--block") && v <= RS_BLOCK)
+            block = (int)v;
         else {
-            fprintf(stderr,
-                    "bench_core: bad argument '%s'; expected --particles N, --reps R, "
-                    "--seed S (positive integers), --nseg 1, 8 or 64, or --still 1\n",
-                    argv[a]);
+            fprintf(
+                stderr,
+                "bench_core: bad argument '%s'; expected --particles N, --reps R, "
+                "--seed S (positive integers), --nseg 1, 8 or 64, --still 1, or --block B "
+                "(1 to %d)\n",
+                argv[a], RS_BLOCK);
             return 2;
         }
         a++;
@@ -239,7 +248,7 @@ int main(int argc, char **argv)
     printf("\nbuild: %s %s\n", RS_BUILD_TYPE, RS_BUILD_FLAGS);
     printf("particles %d, repetitions %d (interleaved; medians), block %d, drum R = %g, "
            "particle radius %g\n",
-           np, reps, RS_BLOCK, RD, RAD);
+           np, reps, block, RD, RAD);
     printf("%6s %10s %12s %12s %12s %12s %10s\n", "nseg", "contacts", "cyl ns/pt",
            "query ns/c", "track ns/c", "total ns/c", "ratio");
 
@@ -269,7 +278,7 @@ int main(int argc, char **argv)
         }
         double zero[3] = {0, 0, 0}, zaxis[3] = {0, 0, 1};
         rs_motion_init(&pp.m);
-        pp.nblock = (np + RS_BLOCK - 1) / RS_BLOCK;
+        pp.nblock = (np + block - 1) / block;
         if (rs_motion_set_rotation(&pp.m, zero, zaxis, omega, &err) ||
             rs_contacts_reserve(&pp.c, 4 * RS_BLOCK, &err)) {
             fprintf(stderr, "bench_core: %s\n", err.msg);
