@@ -87,8 +87,7 @@ static inline void matvec(const double Q[9], const double v[3], double r[3])
 
 /* The update is built twice, for AVX2 and for the baseline ISA, and the loader picks
  * the one the CPU runs (GCC function multiversioning). */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) &&                     \
-    !defined(__SANITIZE_ADDRESS__)
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 #define RS_MULTIVERSION __attribute__((target_clones("avx2", "default")))
 #else
 #define RS_MULTIVERSION
