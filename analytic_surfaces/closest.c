@@ -1,17 +1,12 @@
 /* Closest features of a profile in its plane: the ownership rules of profile.h. */
 #include "profile.h"
+#include "rs_compiler.h"
 
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-
-#if defined(__GNUC__)
-#define RS_INLINE static inline __attribute__((always_inline))
-#else
-#define RS_INLINE static inline
-#endif
 
 #define SEG_HIT 1
 #define SEG_DROP 2

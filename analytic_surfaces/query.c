@@ -5,6 +5,7 @@
  * the reference configuration and rotating the results back, so the frame turns with
  * the master (ARCHITECTURE.md, "Profiles and surfaces"). */
 #include "profile.h"
+#include "rs_compiler.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -25,10 +26,10 @@ static void reach_radius(int m, double gap_max, const double *restrict rad,
 /* REVOLUTION: the profile-plane point (r, z) of each point and its radial direction
  * (cx, cy) in the local x-y plane; on the axis (r <= axis_tol) the direction falls back
  * to the surface's fixed ex, (1, 0), never NaN. */
-static void local_revolution(const double *F, double axis_tol, int m,
-                             const double *restrict x, const double *restrict y,
-                             const double *restrict z, double *restrict u,
-                             double *restrict v, double *restrict cxs, double *restrict cys)
+RS_MULTIVERSION static void
+local_revolution(const double *F, double axis_tol, int m, const double *restrict x,
+                 const double *restrict y, const double *restrict z, double *restrict u,
+                 double *restrict v, double *restrict cxs, double *restrict cys)
 {
     const double A0 = F[F_A], A1 = F[F_A + 1], A2 = F[F_A + 2];
     const double X0 = F[F_X], X1 = F[F_X + 1], X2 = F[F_X + 2];
@@ -51,9 +52,11 @@ static void local_revolution(const double *F, double axis_tol, int m,
 }
 
 /* CYLINDER and SEGMENTS: local coordinates (u, v, w) of each point (z = NULL: 0). */
-static void local_extrusion(const double *F, int m, const double *restrict x,
-                            const double *restrict y, const double *restrict z,
-                            double *restrict u, double *restrict v, double *restrict w)
+RS_MULTIVERSION static void local_extrusion(const double *F, int m,
+                                            const double *restrict x,
+                                            const double *restrict y,
+                                            const double *restrict z, double *restrict u,
+                                            double *restrict v, double *restrict w)
 {
     const double A0 = F[F_A], A1 = F[F_A + 1], A2 = F[F_A + 2];
     const double X0 = F[F_X], X1 = F[F_X + 1], X2 = F[F_X + 2];
@@ -72,13 +75,12 @@ static void local_extrusion(const double *F, int m, const double *restrict x,
  * the local x-y plane, to 3D, in place: e_r = cx EX + cy EY, n = n_r e_r + n_z EZ,
  * t1 = t2 x n = n_z e_r - n_r EZ, t2 = hoop = EZ x e_r = cx EY - cy EX; hoop curvature
  * n_r / r at the contact point, 0 on the axis. */
-static void map_revolution(const double *F, double axis_tol, int k0, int k1,
-                           const int *restrict point, int i0, const double *restrict cxs,
-                           const double *restrict cys, double *restrict x0,
-                           double *restrict x1, double *restrict x2, double *restrict n0,
-                           double *restrict n1, double *restrict n2, double *restrict a0,
-                           double *restrict a1, double *restrict a2, double *restrict b0,
-                           double *restrict b1, double *restrict b2, double *restrict c1)
+RS_MULTIVERSION static void map_revolution(
+    const double *F, double axis_tol, int k0, int k1, const int *restrict point, int i0,
+    const double *restrict cxs, const double *restrict cys, double *restrict x0,
+    double *restrict x1, double *restrict x2, double *restrict n0, double *restrict n1,
+    double *restrict n2, double *restrict a0, double *restrict a1, double *restrict a2,
+    double *restrict b0, double *restrict b1, double *restrict b2, double *restrict c1)
 {
     const double A0 = F[F_A], A1 = F[F_A + 1], A2 = F[F_A + 2];
     const double X0 = F[F_X], X1 = F[F_X + 1], X2 = F[F_X + 2];
@@ -111,13 +113,13 @@ static void map_revolution(const double *F, double axis_tol, int k0, int k1,
  * curv[0] = profile curvature), with lz the local z of point i0 + j, to 3D, in place.
  * CYLINDER: t1 = EZ, t2 = n x EZ = n_y EX - n_x EY, curvatures (0, kappa). SEGMENTS:
  * t1 = (0,0,-1) x n = n_y EX - n_x EY, t2 = -EZ, curvatures (kappa, 0). */
-static void map_extrusion(const double *F, int cyl, int k0, int k1,
-                          const int *restrict point, int i0, const double *restrict lzs,
-                          double *restrict x0, double *restrict x1, double *restrict x2,
-                          double *restrict n0, double *restrict n1, double *restrict n2,
-                          double *restrict a0, double *restrict a1, double *restrict a2,
-                          double *restrict b0, double *restrict b1, double *restrict b2,
-                          double *restrict c0, double *restrict c1)
+RS_MULTIVERSION static void
+map_extrusion(const double *F, int cyl, int k0, int k1, const int *restrict point, int i0,
+              const double *restrict lzs, double *restrict x0, double *restrict x1,
+              double *restrict x2, double *restrict n0, double *restrict n1,
+              double *restrict n2, double *restrict a0, double *restrict a1,
+              double *restrict a2, double *restrict b0, double *restrict b1,
+              double *restrict b2, double *restrict c0, double *restrict c1)
 {
     const double A0 = F[F_A], A1 = F[F_A + 1], A2 = F[F_A + 2];
     const double X0 = F[F_X], X1 = F[F_X + 1], X2 = F[F_X + 2];

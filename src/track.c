@@ -9,6 +9,8 @@
  * law's stress and statev and frees the leaving slots. */
 #include "rigidsurf/track.h"
 
+#include "rs_compiler.h"
+
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -78,20 +80,6 @@ static inline void matvec(const double Q[9], const double v[3], double r[3])
     r[1] = Q[3] * v[0] + Q[4] * v[1] + Q[5] * v[2];
     r[2] = Q[6] * v[0] + Q[7] * v[1] + Q[8] * v[2];
 }
-
-#if defined(__GNUC__)
-#define RS_INLINE static inline __attribute__((always_inline))
-#else
-#define RS_INLINE static inline
-#endif
-
-/* The update is built twice, for AVX2 and for the baseline ISA, and the loader picks
- * the one the CPU runs (GCC function multiversioning). */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define RS_MULTIVERSION __attribute__((target_clones("avx2", "default")))
-#else
-#define RS_MULTIVERSION
-#endif
 
 /* Below this value of 1 + a.b the normal has turned by ~180 deg and a.b x stops defining
  * an axis; the minimal rotation is then the half turn about the carried t1. */

@@ -1,0 +1,21 @@
+/* rigidsurf (private): compiler attributes of the hot loops (tracker, query). */
+#ifndef RS_COMPILER_H
+#define RS_COMPILER_H
+
+/* Always inlined, so the constant arguments of each call site specialise the copy. */
+#if defined(__GNUC__)
+#define RS_INLINE static inline __attribute__((always_inline))
+#else
+#define RS_INLINE static inline
+#endif
+
+/* Built twice, for AVX2 and for the baseline ISA; the loader picks the one the CPU runs
+ * (GCC function multiversioning, x86-64). Loops written to vectorise run 4 doubles wide
+ * where the CPU has AVX2. No FMA: contraction stays off (ISO C mode). */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define RS_MULTIVERSION __attribute__((target_clones("avx2", "default")))
+#else
+#define RS_MULTIVERSION
+#endif
+
+#endif
