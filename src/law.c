@@ -3,6 +3,7 @@
 #include "rigidsurf/law.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -159,6 +160,14 @@ static int rs_law_check_block(const rs_law *law, const rs_law_block *b, rs_error
     return RS_OK;
 }
 
+/* Bit 63 set exactly when x is NaN or Inf. */
+static inline uint64_t rs_nonfinite_bit(double x)
+{
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    return (u & 0x7ff0000000000000ULL) + 0x0010000000000000ULL;
+}
+
 int rs_law_call(const rs_law *law, rs_law_block *b, rs_error *err)
 {
     if (!law || !b) {
@@ -179,6 +188,21 @@ int rs_law_call(const rs_law *law, rs_law_block *b, rs_error *err)
     rc = law->update(law, b, err);
     if (rc != RS_OK) {
         return rc;
+    }
+    /* One branch-free pass says whether anything is NaN or Inf (exponent bits all set:
+     * adding one to the exponent field carries into the sign bit); only then is the
+     * first offender looked for. */
+    const int nsd = n * b->nDir;
+    uint64_t acc = 0;
+    for (int k = 0; k < nsd; ++k) {
+        acc |= rs_nonfinite_bit(b->stress[k]);
+    }
+    for (int k = 0; k < n; ++k) {
+        acc |= rs_nonfinite_bit(b->fluxSlv[k]) | rs_nonfinite_bit(b->fluxMst[k]);
+    }
+    const int bad = (int)(acc >> 63);
+    if (!bad) {
+        return RS_OK;
     }
     static const char *const sname[3] = {"stress(1)", "stress(2)", "stress(3)"};
     for (int k = 0; k < n; ++k) {

@@ -18,6 +18,7 @@
  * tangential spring at the current kt), svd = (gn vn^2 + gt |vt|^2) dt/A while sticking,
  * sfd = mu |Fn| times the slip beyond the elastic limit, /A. */
 #include "builtin.h"
+#include "rs_compiler.h"
 
 #include <math.h>
 
@@ -61,6 +62,102 @@ static int rs_hertz_init(const rs_law *law, const double *p, int nprops, rs_erro
     return RS_OK;
 }
 
+/* The contacts of a block in one branch-free loop (written to vectorise): every lane
+ * evaluates every formula in the order above and selects at the end. A contact that is
+ * leaving (r_MaxVal) or open (rdisp(1) <= 0) gets zero outputs, and an open one forgets
+ * its shear except on a setup call; that is rs_law_no_force, rs_law_advance_slip,
+ * rs_law_tangential_history, rs_law_put_force and rs_law_keep_shear (builtin.h) as one
+ * pass. nd and update are constants in each inlined copy. */
+RS_INLINE void hertz_block(int n, const int nsv, double dt, const double *restrict rd,
+                           const double *restrict drd, const double *restrict dr,
+                           const double *restrict vr, const double *restrict rr,
+                           const double *restrict ms, const double *restrict ar,
+                           double *restrict st, double *restrict sv, double *restrict sed,
+                           double *restrict svd, double *restrict sfd, double Yeff,
+                           double Geff, double beta, double mu, const int nd,
+                           const int update)
+{
+    const double c56 = rs_sqrt_five_over_six;
+    for (int c = 0; c < n; ++c) {
+        const double d = rd[nd * c];
+        const int live = !RS_LAW_LEAVING(d) && d > 0.0;
+        const int forget = !RS_LAW_LEAVING(d) && !(d > 0.0) && update;
+        const double area = ar[c];
+        const double sqrtval = sqrt(rr[c] * d);
+        const double Sn = 2. * Yeff * sqrtval;
+        const double St = 8. * Geff * sqrtval;
+        const double kn = 4. / 3. * Yeff * sqrtval;
+        const double kt = St;
+        const double gamman = -2. * c56 * beta * sqrt(Sn * ms[c]);
+        const double gammat = -2. * c56 * beta * sqrt(St * ms[c]);
+        const double vn = vr[nd * c];
+        const double Fn_damping = -gamman * vn;
+        const double Fn_contact = kn * d;
+        const double Fn = Fn_damping + Fn_contact;
+        const double so0 = sv[(size_t)nsv * c],
+                     so1 = nd == 3 ? sv[(size_t)nsv * c + 1] : 0.0;
+        const double vt0 = vr[nd * c + 1], vt1 = nd == 3 ? vr[nd * c + 2] : 0.0;
+        double s0 = so0, s1 = so1;
+        if (update) {
+            if (nd == 3) {
+                s0 = dr[4 * c] * so0 + dr[4 * c + 2] * so1;
+                s1 = dr[4 * c + 1] * so0 + dr[4 * c + 3] * so1;
+                s0 += drd[3 * c + 1];
+                s1 += drd[3 * c + 2];
+            } else {
+                s0 += drd[2 * c + 1];
+                s1 = 0.0;
+            }
+        }
+        const double shrmag = sqrt(s0 * s0 + s1 * s1);
+        const double f0 = -(kt * s0), f1 = -(kt * s1);
+        const double ft_shear = kt * shrmag;
+        const double ft_friction = mu * fabs(Fn);
+        const int cap = ft_shear > ft_friction;
+        const double ratio = ft_friction / (cap ? ft_shear : 1.0);
+        const double fc0 = f0 * ratio, fc1 = f1 * ratio;
+        const double fd0 = f0 - gammat * vt0, fd1 = f1 - gammat * vt1;
+        const double ft0 = cap ? fc0 : fd0, ft1 = cap ? fc1 : fd1;
+        const double sn0 = cap && update ? -fc0 / kt : s0;
+        const double sn1 = cap && update ? -fc1 / kt : s1;
+        const double slip_work =
+            cap && update ? ft_friction * (shrmag - ft_friction / kt) : 0.0;
+        const double damp = gammat * (vt0 * vt0 + vt1 * vt1);
+        const double damp_power = cap ? 0.0 : damp;
+
+        st[nd * c] = live ? Fn / area : 0.0;
+        st[nd * c + 1] = live ? -ft0 / area : 0.0;
+        if (nd == 3)
+            st[nd * c + 2] = live ? -ft1 / area : 0.0;
+        sed[c] =
+            live ? (0.4 * kn * d * d + 0.5 * kt * (sn0 * sn0 + sn1 * sn1)) / area : 0.0;
+        if (update) {
+            svd[c] = live ? (Fn_damping * -vn + damp_power) * dt / area : 0.0;
+            sfd[c] = live ? slip_work / area : 0.0;
+            sv[(size_t)nsv * c] = live ? sn0 : forget ? 0.0 : so0;
+            if (nd == 3)
+                sv[(size_t)nsv * c + 1] = live ? sn1 : forget ? 0.0 : so1;
+            else
+                sv[(size_t)nsv * c + 1] = forget ? 0.0 : sv[(size_t)nsv * c + 1];
+        }
+    }
+}
+
+/* Two state variables (the law's own) get their own copy, which vectorises. */
+RS_INLINE void hertz_run(rs_law_block *b, const double *rr, double Yeff, double Geff,
+                         double beta, double mu, const int nd, const int update)
+{
+    if (b->nStateVar == 2)
+        hertz_block(b->nSlvNod, 2, b->dTimCur, b->rdisp, b->drdisp, b->drot, b->vrel, rr,
+                    b->mass, b->areaSlv, b->stress, b->statev, b->sed, b->svd, b->sfd, Yeff,
+                    Geff, beta, mu, nd, update);
+    else
+        hertz_block(b->nSlvNod, b->nStateVar, b->dTimCur, b->rdisp, b->drdisp, b->drot,
+                    b->vrel, rr, b->mass, b->areaSlv, b->stress, b->statev, b->sed, b->svd,
+                    b->sfd, Yeff, Geff, beta, mu, nd, update);
+}
+
+RS_MULTIVERSION
 static int rs_hertz_update(const rs_law *law, rs_law_block *b, rs_error *err)
 {
     const double *p = b->props;
@@ -77,45 +174,24 @@ static int rs_hertz_update(const rs_law *law, rs_law_block *b, rs_error *err)
     const double loge = log(p[P_E]);
     const double beta = loge / sqrt(pow(loge, 2.) + pow(rs_pi, 2.));
     const double mu = p[P_MU];
-    const double dt = b->dTimCur;
-    const int nd = b->nDir, nsv = b->nStateVar, update = !b->setup;
+    const double *rr = use_reff ? b->reff : b->radius;
+    if (b->nDir == 3 && !b->setup)
+        hertz_run(b, rr, Yeff, Geff, beta, mu, 3, 1);
+    else if (b->nDir == 3)
+        hertz_run(b, rr, Yeff, Geff, beta, mu, 3, 0);
+    else if (!b->setup)
+        hertz_run(b, rr, Yeff, Geff, beta, mu, 2, 1);
+    else
+        hertz_run(b, rr, Yeff, Geff, beta, mu, 2, 0);
+    /* fluxes, and the energies this law never has, are zero for every contact */
     for (int c = 0; c < b->nSlvNod; ++c) {
-        const double d = RS_A2(b->rdisp, nd, 0, c);
-        double *sv = b->statev + (size_t)c * (size_t)nsv;
-        if (rs_law_no_force(b, c, sv)) {
-            continue;
-        }
-        const double reff = use_reff ? b->reff[c] : b->radius[c];
-        const double meff = b->mass[c];
-        const double area = b->areaSlv[c];
-        const double sqrtval = sqrt(reff * d);
-        const double Sn = 2. * Yeff * sqrtval;
-        const double St = 8. * Geff * sqrtval;
-        const double kn = 4. / 3. * Yeff * sqrtval;
-        const double kt = St;
-        const double gamman = -2. * rs_sqrt_five_over_six * beta * sqrt(Sn * meff);
-        const double gammat = -2. * rs_sqrt_five_over_six * beta * sqrt(St * meff);
-        const double vn = RS_A2(b->vrel, nd, 0, c);
-        const double Fn_damping = -gamman * vn;
-        const double Fn_contact = kn * d;
-        const double Fn = Fn_damping + Fn_contact;
-
-        double s[2] = {sv[0], nd == 3 ? sv[1] : 0.0};
-        const double vt[2] = {RS_A2(b->vrel, nd, 1, c),
-                              nd == 3 ? RS_A2(b->vrel, nd, 2, c) : 0.0};
-        if (update) {
-            rs_law_advance_slip(b, c, s);
-        }
-        double ft[2], slip_work, damp_power;
-        rs_law_tangential_history(kt, gammat, mu, Fn, vt, s, update, ft, &slip_work,
-                                  &damp_power);
-
-        rs_law_put_force(b, c, Fn, ft, area);
-        b->sed[c] = (0.4 * kn * d * d + 0.5 * kt * (s[0] * s[0] + s[1] * s[1])) / area;
-        if (update) {
-            b->svd[c] = (Fn_damping * -vn + damp_power) * dt / area;
-            b->sfd[c] = slip_work / area;
-            rs_law_keep_shear(b, sv, s);
+        b->fluxSlv[c] = 0.0;
+        b->fluxMst[c] = 0.0;
+        b->scd[c] = 0.0;
+        b->spd[c] = 0.0;
+        if (b->setup) {
+            b->svd[c] = 0.0;
+            b->sfd[c] = 0.0;
         }
     }
     return RS_OK;
