@@ -604,33 +604,51 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
     return RS_OK;
 }
 
+/* statev(ns, e) <-> the slot's statev for one entry; ns is a constant in the copies
+ * for the common counts. */
+RS_INLINE void copy_statev(double *restrict dst, const double *restrict src, const int ns)
+{
+    for (int b = 0; b < ns; b++)
+        dst[b] = src[b];
+}
+
+#define RS_STATEV_COPY(NS, DST, SRC)                                                       \
+    switch (NS) {                                                                          \
+    case 1:                                                                                \
+        copy_statev(DST, SRC, 1);                                                          \
+        break;                                                                             \
+    case 2:                                                                                \
+        copy_statev(DST, SRC, 2);                                                          \
+        break;                                                                             \
+    default:                                                                               \
+        copy_statev(DST, SRC, NS);                                                         \
+    }
+
 void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress,
                    double *statev)
 {
-    const int nd = out->ndir, ns = tr->nstatev;
-    for (int e = 0; e < out->n; e++) {
-        const double *h = out->slot[e];
-        if (stress) {
-            RS_A2(stress, nd, 0, e) = h[RS_H_STRESS];
-            if (nd == 2) {
-                RS_A2(stress, nd, 1, e) = h[RS_H_STRESS + 1];
-            } else if (h[RS_H_STATE] == RS_HSTATE_LEAVING) {
-                RS_A2(stress, nd, 1, e) = h[RS_H_STRESS + 1];
-                RS_A2(stress, nd, 2, e) = h[RS_H_STRESS + 2];
-            } else {
-                /* The shear traction is carried into this increment's basis, as the slip.
-                 */
-                const double s2 = h[RS_H_STRESS + 1], s3 = h[RS_H_STRESS + 2];
-                RS_A2(stress, nd, 1, e) =
-                    RS_DROT(out->drot, 0, 0, e) * s2 + RS_DROT(out->drot, 0, 1, e) * s3;
-                RS_A2(stress, nd, 2, e) =
-                    RS_DROT(out->drot, 1, 0, e) * s2 + RS_DROT(out->drot, 1, 1, e) * s3;
-            }
+    const int nd = out->ndir, ns = tr->nstatev, n = out->n;
+    if (stress && nd == 2) {
+        for (int e = 0; e < n; e++) {
+            const double *h = out->slot[e];
+            stress[2 * e] = h[RS_H_STRESS];
+            stress[2 * e + 1] = h[RS_H_STRESS + 1];
         }
-        if (statev)
-            for (int b = 0; b < ns; b++)
-                RS_A2(statev, ns, b, e) = h[RS_H_STATEV + b];
+    } else if (stress) {
+        /* The shear traction is carried into this increment's basis, as the slip; a
+         * leaving contact keeps its own. */
+        for (int e = 0; e < n; e++) {
+            const double *h = out->slot[e], *dr = out->drot + (size_t)4 * e;
+            const double s2 = h[RS_H_STRESS + 1], s3 = h[RS_H_STRESS + 2];
+            const int keep = h[RS_H_STATE] == RS_HSTATE_LEAVING;
+            stress[3 * e] = h[RS_H_STRESS];
+            stress[3 * e + 1] = keep ? s2 : dr[0] * s2 + dr[2] * s3;
+            stress[3 * e + 2] = keep ? s3 : dr[1] * s2 + dr[3] * s3;
+        }
     }
+    if (statev && ns > 0)
+        for (int e = 0; e < n; e++)
+            RS_STATEV_COPY(ns, statev + (size_t)ns * e, out->slot[e] + RS_H_STATEV)
 }
 
 void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stress,
@@ -650,9 +668,8 @@ void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stre
             h[RS_H_STRESS + 1] = se[1];
             h[RS_H_STRESS + 2] = nd == 3 ? se[2] : 0.0;
         }
-        if (statev)
-            for (int b = 0; b < ns; b++)
-                h[RS_H_STATEV + b] = RS_A2(statev, ns, b, e);
+        if (statev && ns > 0)
+            RS_STATEV_COPY(ns, h + RS_H_STATEV, statev + (size_t)ns * e)
     }
 }
 
