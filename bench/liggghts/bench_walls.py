@@ -231,7 +231,7 @@ def main():
     ap.add_argument("--exe", required=True)
     ap.add_argument("--quick", action="store_true", help="small sizes, one repetition")
     ap.add_argument("--max-n", type=int, default=1000000)
-    ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--reps", type=int, default=5)
     ap.add_argument("--out", default=None, help="also write the report here")
     args = ap.parse_args()
     exe = os.path.abspath(args.exe)
