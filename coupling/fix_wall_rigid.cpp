@@ -40,7 +40,7 @@ const double kPi = 3.14159265358979323846;
 const int kNout = 14;
 
 /* Restart layout version (global record). */
-const double kRestartVersion = 2.0;
+const double kRestartVersion = 1.0;
 
 int rates_callback(double t, double vel[3], double *omega, void *ctx)
 {
@@ -937,7 +937,7 @@ void FixWallRigid::end_of_step()
 void FixWallRigid::clear_row(int i)
 {
     double *r = row_[i];
-    rs_track_clear(&tracker_, r + hist_offset());
+    rs_track_clear(&tracker_, r);
     for (int j = 0; j < capacity_; j++)
         r[sed_offset() + j] = 0.0;
     r[tprev_offset()] = NAN;
@@ -1040,7 +1040,7 @@ void FixWallRigid::build_candidates()
             rmax = std::max(rmax, radius[i]);
             char held = 0;
             for (int j = 0; j < capacity_; j++)
-                held |= row_[i][hist_offset() + j * hs + RS_H_STATE] != RS_HSTATE_EMPTY;
+                held |= row_[i][j * hs + RS_H_STATE] != RS_HSTATE_EMPTY;
             take_[k] = held;
         }
         rs_query q;
@@ -1164,7 +1164,6 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     double *__restrict qr = brad_.data();
     int *__restrict qid = bid_.data();
     double **__restrict qh = bhist_.data();
-    const int h0 = hist_offset();
     double rmax = radius[idx[0]], rmin = rmax, mmax = rmass[idx[0]], mmin = mmax;
     for (int k = 0; k < n; k++) {
         const int i = idx[k];
@@ -1175,7 +1174,7 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         qwx[k] = wi[0], qwy[k] = wi[1], qwz[k] = wi[2];
         qr[k] = R;
         qid[k] = tag[i];
-        qh[k] = row_[i] + h0;
+        qh[k] = row_[i];
         rmax = std::max(rmax, R), rmin = std::min(rmin, R);
         mmax = std::max(mmax, m), mmin = std::min(mmin, m);
     }
@@ -1342,7 +1341,7 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
     (void)n;
     const double *radius = atom->radius, *rmass = atom->rmass;
     const int *type = atom->type;
-    const int hs = hist_size(), sed0 = sed_offset() - hist_offset();
+    const int hs = hist_size(), sed0 = sed_offset();
     const double dt = update->dt;
     const int *__restrict pt = tout_.point;
     double *const *__restrict slot = tout_.slot;
@@ -1358,7 +1357,7 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
     bool ident = true, same_curv = true;
     for (int e = 0; e < ne; e++) {
         const int k = pt[e];
-        double *row = bh[k]; // the history part of the row
+        double *row = bh[k];
         const double *sl = slot[e];
         const int j = (int)((sl - row) / hs);
         double *sp = row + sed0 + j;
@@ -1461,7 +1460,7 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
 
     const double *Temp = fix_temp_ ? fix_temp_->vector_atom : NULL;
     if (Temp) {
-        const int tp0 = tprev_offset() - hist_offset(); // bh[k] is the history part
+        const int tp0 = tprev_offset();
         for (int e = 0; e < ne; e++) {
             const int k = pt[e], i = idx[k];
             const double Tp = bh[k][tp0];
@@ -1471,7 +1470,7 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
     }
     const int npred = (int)predef_names_.size();
     if (npred) {
-        const int pd0 = pred_offset() - hist_offset();
+        const int pd0 = pred_offset();
         for (int e = 0; e < ne; e++) {
             const int k = pt[e], i = idx[k];
             for (int a = 0; a < npred; a++) {

@@ -96,33 +96,28 @@ class FixWallRigid : public Fix
     void write_vtk();
     void update_previous_fields();
 
-    /* per-atom row layout (doubles): sed per slot (capacity), previous temperature (1),
-     * previous predefined fields (npred), then the tracker history (capacity slots of
-     * RS_HIST_SIZE(nstatev)). The small fields come first, so a particle with one
-     * contact in slot 0 finds its sed on the line where its history starts. */
+    /* per-atom row layout (doubles): tracker history (capacity slots of
+     * RS_HIST_SIZE(nstatev)), sed per slot (capacity), previous temperature (1), previous
+     * predefined fields (npred). */
     int hist_size() const
     {
         return RS_HIST_SIZE(nstatev_);
     }
     int sed_offset() const
     {
-        return 0;
+        return capacity_ * hist_size();
     }
     int tprev_offset() const
     {
-        return capacity_;
+        return sed_offset() + capacity_;
     }
     int pred_offset() const
     {
         return tprev_offset() + 1;
     }
-    int hist_offset() const
-    {
-        return pred_offset() + (int)predef_names_.size();
-    }
     int row_size() const
     {
-        return hist_offset() + capacity_ * hist_size();
+        return pred_offset() + (int)predef_names_.size();
     }
     void clear_row(int i);
 
