@@ -842,6 +842,21 @@ enum { PP_SUB = 64 };
  * can drop a face. A penetrated face with one side (the Voronoi pass) and the start
  * vertex of a closed profile (its other segment is the last near one) hand the point to
  * rs_pcache_hits. */
+/* Vertex k, the start of segment k (prev: the near segment before k in the list, -1
+ * for none): emitted when the segment before it is near too, or when it starts an open
+ * profile. Returns 1, having emitted nothing, for the start vertex of a closed profile,
+ * whose segment before comes last in the list; the per-point path handles that one. */
+RS_INLINE int start_vertex(const rs_pcache *pc, const pout *o, int *nh, int k, int prev,
+                           int pt, double px, double py, double dlo, double dhi)
+{
+    const int sa = pc->pv[k].sa;
+    if (sa >= 0 && k == 0)
+        return 1;
+    if (sa < 0 || prev == sa)
+        *nh = put_vertex(pc, o, *nh, k, pt, px, py, dlo, dhi);
+    return 0;
+}
+
 int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_contacts *out,
                      rs_pscratch *sc, int *need)
 {
@@ -933,14 +948,10 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                         slow = 1;
                         break;
                     }
-                    if (!in_start && q->vtx_start) {
-                        const int sa = pc->pv[k].sa;
-                        if (sa >= 0 && k == 0) { /* closed: sa = n - 1 comes last */
-                            slow = 1;
-                            break;
-                        }
-                        if (sa < 0 || prev == sa)
-                            nh = put_vertex(pc, &o, nh, k, pt, px, py, dlo, dhi);
+                    if (!in_start && q->vtx_start &&
+                        start_vertex(pc, &o, &nh, k, prev, pt, px, py, dlo, dhi)) {
+                        slow = 1;
+                        break;
                     }
                     if (hit)
                         nh = put_line(&o, nh, k, q, pt, wx, wy, sd, two, dlo, dhi);
@@ -957,14 +968,10 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                     slow = 1;
                     break;
                 }
-                if (q->vtx_start) {
-                    const int sa = pc->pv[k].sa;
-                    if (sa >= 0 && k == 0) { /* closed: sa = n - 1 comes last */
-                        slow = 1;
-                        break;
-                    }
-                    if (sa < 0 || prev == sa)
-                        nh = put_vertex(pc, &o, nh, k, pt, px, py, dlo, dhi);
+                if (q->vtx_start &&
+                    start_vertex(pc, &o, &nh, k, prev, pt, px, py, dlo, dhi)) {
+                    slow = 1;
+                    break;
                 }
                 if (hit && h.dist >= dlo && h.dist <= dhi)
                     put_hit(&o, nh++, pt, &h);
