@@ -857,9 +857,50 @@ RS_INLINE int start_vertex(const rs_pcache *pc, const pout *o, int *nh, int k, i
     return 0;
 }
 
+/* rs_pcache_points for a profile of one LINE (a plane, a cylinder's mantle, a cone):
+ * no bucket to choose and no list to walk. A point the segment owns (profile.h) on its
+ * particle side (or either side with SIDES=2) gets the face contact, within [dlo, dhi];
+ * the reach and box tests of the general walk follow from that. Every other point (an
+ * end vertex's region, behind a one-sided face) takes the per-point rs_pcache_hits. */
+static int points_one_line(const rs_pcache *pc, const rs_ppoints *pts, int i,
+                           rs_contacts *out, rs_pscratch *sc, int *need)
+{
+    const rs_pseg *q = &pc->ps[0];
+    const int m = pts->n, two = pc->sides == 2, cap = out->cap, base = pts->base;
+    const double dlo = pts->dlo;
+    const pout o = {out->point,  out->feature, out->xm[0], out->xm[1],
+                    out->nrm[0], out->nrm[1],  out->dist,  out->curv[0]};
+    const int room = 3; /* the face and the two end vertices */
+    int nh = out->n;
+    for (; i < m; i++) {
+        if (nh > cap - room) {
+            *need = room;
+            break;
+        }
+        const double px = pts->u[i], py = pts->v[i], dhi = pts->dhi[i];
+        const double wx = px - q->o[0], wy = py - q->o[1];
+        const double sd = wx * q->nl[0] + wy * q->nl[1];
+        const double dB = (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
+        const double dA = (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
+        const int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
+        const int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
+        if (in_start && in_end && (two || sd >= 0.0)) {
+            nh = put_line(&o, nh, 0, q, base + i, wx, wy, sd, two, dlo, dhi);
+            continue;
+        }
+        const int nk = rs_pcache_hits(pc, px, py, dlo, dhi, sc);
+        for (int k = 0; k < nk; k++)
+            put_hit(&o, nh++, base + i, &sc->hits[k]);
+    }
+    out->n = nh;
+    return i;
+}
+
 int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_contacts *out,
                      rs_pscratch *sc, int *need)
 {
+    if (pc->nseg == 1 && pc->ps[0].type == RS_LINE)
+        return points_one_line(pc, pts, i, out, sc, need);
     const int n = pc->nseg, m = pts->n, two = pc->sides == 2, cap = out->cap;
     const double dlo = pts->dlo, lo = pc->lo, inv_w = pc->inv_w;
     const double top = (double)(pc->nbucket - 1);
