@@ -96,6 +96,18 @@ static int fail_close(rs_loaded_law *ld, int code)
     return code;
 }
 
+/* Opens lib and finds the first of names in it (*ld, *sym); on failure nothing is left
+ * open. */
+static int open_with_symbol(const char *lib, const char *const *names, int count,
+                            rs_loaded_law **ld, void **sym, rs_error *err)
+{
+    int rc = open_library(lib, ld, err);
+    if (rc)
+        return rc;
+    *sym = find_symbol(*ld, lib, names, count, NULL, err);
+    return *sym ? RS_OK : fail_close(*ld, RS_ERR_NOTFOUND);
+}
+
 int rs_law_load_c(const char *lib, const char *symbol, rs_law *out, rs_error *err)
 {
     if (!out)
@@ -104,13 +116,11 @@ int rs_law_load_c(const char *lib, const char *symbol, rs_law *out, rs_error *er
         return rs_error_set(err, RS_ERR_ARG, "law library %s: no symbol name given",
                             lib ? lib : "(null)");
     rs_loaded_law *ld;
-    int rc = open_library(lib, &ld, err);
+    void *sym;
+    const char *names[1] = {symbol};
+    int rc = open_with_symbol(lib, names, 1, &ld, &sym, err);
     if (rc)
         return rc;
-    const char *names[1] = {symbol};
-    void *sym = find_symbol(ld, lib, names, 1, NULL, err);
-    if (!sym)
-        return fail_close(ld, RS_ERR_NOTFOUND);
     ld->kind = RS_LOADED_C;
     ld->cfn = (rs_law_update_fn)sym;
     fill_common(out, ld, symbol, lib);
@@ -140,13 +150,11 @@ int rs_law_load_vuinter(const char *lib, rs_law *out, rs_error *err)
     if (!out)
         return rs_error_set(err, RS_ERR_ARG, "rs_law_load_vuinter: out is NULL");
     rs_loaded_law *ld;
-    int rc = open_library(lib, &ld, err);
+    void *sym;
+    static const char *const names[2] = {"vuinter_", "vuinter"};
+    int rc = open_with_symbol(lib, names, 2, &ld, &sym, err);
     if (rc)
         return rc;
-    static const char *const names[2] = {"vuinter_", "vuinter"};
-    void *sym = find_symbol(ld, lib, names, 2, NULL, err);
-    if (!sym)
-        return fail_close(ld, RS_ERR_NOTFOUND);
     ld->kind = RS_LOADED_VUINTER;
     ld->vuinter = (rs_vuinter_fn)sym;
     fill_common(out, ld, "vuinter", lib);
@@ -184,13 +192,11 @@ static int load_uinter_kind(const char *lib, const rs_law *normal, rs_law *out,
     if (rc)
         return rc;
     rs_loaded_law *ld;
-    rc = open_library(lib, &ld, err);
+    void *sym;
+    static const char *const names[2] = {"uinter_", "uinter"};
+    rc = open_with_symbol(lib, names, 2, &ld, &sym, err);
     if (rc)
         return rc;
-    static const char *const names[2] = {"uinter_", "uinter"};
-    void *sym = find_symbol(ld, lib, names, 2, NULL, err);
-    if (!sym)
-        return fail_close(ld, RS_ERR_NOTFOUND);
     ld->kind = kind;
     if (kind == RS_LOADED_UINTER)
         ld->uinter = (rs_uinter_fn)sym;
@@ -227,13 +233,11 @@ int rs_law_load_fric(const char *lib, const rs_law *normal, rs_law *out, rs_erro
     if (rc)
         return rc;
     rs_loaded_law *ld;
-    rc = open_library(lib, &ld, err);
+    void *sym;
+    static const char *const names[2] = {"fric_", "fric"};
+    rc = open_with_symbol(lib, names, 2, &ld, &sym, err);
     if (rc)
         return rc;
-    static const char *const names[2] = {"fric_", "fric"};
-    void *sym = find_symbol(ld, lib, names, 2, NULL, err);
-    if (!sym)
-        return fail_close(ld, RS_ERR_NOTFOUND);
     ld->kind = RS_LOADED_FRIC;
     ld->fric = (rs_fric_fn)sym;
     ld->normal = normal;
