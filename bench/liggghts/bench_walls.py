@@ -49,6 +49,25 @@ MPI_ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
            "OMPI_MCA_rmaps_base_oversubscribe": "1"}
 
 
+# The start and the materials (Hertz with tangential history, two types) of every deck.
+DECK_HEAD = """atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
+units si
+"""
+DECK_MATERIALS = """neighbor 0.0005 bin
+neigh_modify delay 0
+fix m1 all property/global youngsModulus peratomtype 1e7 1e8
+fix m2 all property/global poissonsRatio peratomtype 0.3 0.3
+fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5
+fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
+pair_style gran model hertz tangential history
+pair_coeff * *
+"""
+
+
 def hertz_overlap(force):
     """Equilibrium overlap of a sphere under a normal force (Hertz, the deck's materials)."""
     y1, y2, n1, n2 = 1.0e7, 1.0e8, 0.3, 0.3
@@ -84,23 +103,7 @@ def write_data(path, pts, height):
 
 
 def wall_deck(variant, data, steps, height, flow=False):
-    d = """atom_style granular
-atom_modify map array
-boundary f f f
-newton off
-communicate single vel yes
-units si
-read_data %s
-neighbor 0.0005 bin
-neigh_modify delay 0
-fix m1 all property/global youngsModulus peratomtype 1e7 1e8
-fix m2 all property/global poissonsRatio peratomtype 0.3 0.3
-fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5
-fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
-pair_style gran model hertz tangential history
-pair_coeff * *
-timestep %r
-""" % (data, DT)
+    d = DECK_HEAD + "read_data %s\n" % data + DECK_MATERIALS + "timestep %r\n" % DT
     f0 = 0.0 if variant == "none" else F0
     d += "variable f0 equal %r\n" % f0
     if not flow:
@@ -192,24 +195,10 @@ def wall_costs(exe, workdir, n, variants, reps, log, flow=False):
 def drum_deck(n_target):
     """A drum (radius 50 mm, length 40 mm, REVOLUTION mantle + caps) turning at 2 rad/s
     with gravity -y; spheres (R = 1 mm) start on a lattice in the lower half and settle."""
-    d = """atom_style granular
-atom_modify map array
-boundary f f f
-newton off
-communicate single vel yes
-units si
-processors * 1 1
+    d = DECK_HEAD + """processors * 1 1
 region box block -0.052 0.052 -0.052 0.052 -0.022 0.022 units box
 create_box 2 box
-neighbor 0.0005 bin
-neigh_modify delay 0
-fix m1 all property/global youngsModulus peratomtype 1e7 1e8
-fix m2 all property/global poissonsRatio peratomtype 0.3 0.3
-fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5
-fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
-pair_style gran model hertz tangential history
-pair_coeff * *
-timestep 1e-5
+""" + DECK_MATERIALS + """timestep 1e-5
 lattice sc 0.00205
 region bed cylinder z 0 0 0.0475 -0.0185 0.0185 units box
 region low block INF INF INF 0.01 INF INF units box
