@@ -7,15 +7,11 @@
 #include "rs_test.h"
 #include "test_law_fixture.h"
 
-#include <stdint.h>
 
-static uint64_t rng_state = 88172645463325252ull;
+static unsigned long long rng_state = 88172645463325252ull;
 static double urand(void) /* xorshift64, uniform in [0, 1) */
 {
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
+    return rs_test_urand(&rng_state);
 }
 
 static double rel_diff(double a, double b)

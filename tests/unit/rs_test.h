@@ -69,6 +69,21 @@ static int rs_test_passed, rs_test_failed, rs_test_current_failed;
         }                                                                                  \
     } while (0)
 
+/// One xorshift64 step of *state: a fixed, portable stream per seed.
+static inline unsigned long long rs_test_xorshift(unsigned long long *state)
+{
+    *state ^= *state << 13;
+    *state ^= *state >> 7;
+    *state ^= *state << 17;
+    return *state;
+}
+
+/// Uniform in [0, 1) from the xorshift64 stream *state.
+static inline double rs_test_urand(unsigned long long *state)
+{
+    return (double)(rs_test_xorshift(state) >> 11) * (1.0 / 9007199254740992.0);
+}
+
 static inline int rs_test_summary(void)
 {
     printf("%d passed, %d failed\n", rs_test_passed, rs_test_failed);

@@ -12,10 +12,7 @@
 static unsigned long long rng_state = 0x9E3779B97F4A7C15ull;
 static double urand(void)
 {
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
+    return rs_test_urand(&rng_state);
 }
 
 static void normalize(double a[3])

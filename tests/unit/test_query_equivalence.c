@@ -13,10 +13,7 @@
 static unsigned long long rng_state = 0x2545F4914F6CDD1Dull;
 static double urand(void)
 {
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
+    return rs_test_urand(&rng_state);
 }
 
 /* Distance from (u, v) to segment g of the profile, written from the segment's end

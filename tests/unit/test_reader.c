@@ -226,10 +226,7 @@ static void test_reader_example_files(void)
 static unsigned long long rng_state = 0x2545F4914F6CDD1Dull;
 static unsigned rnd(unsigned n)
 {
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (unsigned)((rng_state >> 33) % n);
+    return (unsigned)((rs_test_xorshift(&rng_state) >> 33) % n);
 }
 
 /* Garbage lines and byte mutations: the reader returns a code and a message, never

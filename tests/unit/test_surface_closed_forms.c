@@ -11,10 +11,7 @@
 static unsigned long long rng_state = 88172645463325252ull;
 static double urand(void)
 {
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
+    return rs_test_urand(&rng_state);
 }
 
 static int query1(const rs_surface *s, double x, double y, double z, double gap,
