@@ -51,7 +51,8 @@ typedef struct cloud {
     int n;
     double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *r;
     int *id;
-    double **hp, *hist;
+    double **dp, **hp, *dir, *hist;
+    ptrdiff_t stride;
 } cloud;
 
 static void *xmalloc(size_t bytes)
@@ -73,8 +74,14 @@ static void cloud_make(cloud *c, int n, const rs_tracker *tr)
     for (size_t k = 0; k < sizeof cols / sizeof cols[0]; k++)
         *cols[k] = xmalloc((size_t)n * sizeof(double));
     c->id = xmalloc((size_t)n * sizeof(int));
+    /* History as fix wall/rigid keeps it: the directories in one array, slot j of every
+     * particle in one array (slot-major), so a particle with one contact touches its
+     * directory and its slot 0 only. */
+    c->dp = xmalloc((size_t)n * sizeof(double *));
     c->hp = xmalloc((size_t)n * sizeof(double *));
+    c->dir = xmalloc((size_t)n * tr->capacity * sizeof(double));
     c->hist = xmalloc((size_t)n * tr->capacity * hs * sizeof(double));
+    c->stride = (ptrdiff_t)n * hs;
     for (int i = 0; i < n; i++) {
         double a = 2.0 * 3.14159265358979323846 * urand();
         double pen = 0.1 * RAD * urand();
@@ -90,8 +97,9 @@ static void cloud_make(cloud *c, int n, const rs_tracker *tr)
         c->wz[i] = urand() - 0.5;
         c->r[i] = RAD;
         c->id[i] = i + 1;
-        c->hp[i] = c->hist + (size_t)i * tr->capacity * hs;
-        rs_track_clear(tr, c->hp[i]);
+        c->dp[i] = c->dir + (size_t)i * tr->capacity;
+        c->hp[i] = c->hist + (size_t)i * hs;
+        rs_track_clear(tr, c->dp[i], c->hp[i], c->stride);
     }
 }
 
@@ -101,7 +109,9 @@ static void cloud_free(cloud *c)
     for (size_t k = 0; k < sizeof cols / sizeof cols[0]; k++)
         free(cols[k]);
     free(c->id);
+    free(c->dp);
     free(c->hp);
+    free(c->dir);
     free(c->hist);
 }
 
@@ -178,7 +188,7 @@ static int pipeline(pipe *pp, const cloud *cl, double dt, double *tq, double *tt
             return rc;
         rs_particles p = {nb,          cl->x + b0,  cl->y + b0,  cl->z + b0,  cl->vx + b0,
                           cl->vy + b0, cl->vz + b0, cl->wx + b0, cl->wy + b0, cl->wz + b0,
-                          cl->r + b0,  cl->id + b0, cl->hp + b0};
+                          cl->r + b0,  cl->id + b0, cl->dp + b0, cl->hp + b0, cl->stride};
         rc = rs_track_update(&pp->tr, &pp->s, pp->still ? NULL : &pp->m, dt, &p, &pp->c,
                              &pp->out, err);
         if (rc)

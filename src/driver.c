@@ -48,6 +48,7 @@ int rs_driver_init(rs_driver *d, const rs_surface *s, int n, rs_error *err)
     d->temp_prev = zalloc(un, sizeof(double), &ok);
     d->id = zalloc(un, sizeof(int), &ok);
     d->hist_ptr = zalloc(un, sizeof(double *), &ok);
+    d->dir_ptr = zalloc(un, sizeof(double *), &ok);
     if (!ok) {
         rs_driver_free(d);
         return rs_error_set(err, RS_ERR_NOMEM, "driver: out of memory for %d nodes", n);
@@ -92,13 +93,14 @@ static int alloc_history(rs_driver *d, rs_error *err)
     d->tracker.nstatev = d->nstatev;
     d->tracker.ndir = rs_surface_ndir(d->surface);
     d->tracker.tracking = d->tracking;
-    size_t per = (size_t)d->capacity * (size_t)RS_HIST_SIZE(d->nstatev);
+    size_t per = (size_t)d->capacity * (size_t)(1 + RS_HIST_SIZE(d->nstatev));
     d->hist = (double *)malloc((size_t)d->n * per * sizeof(double));
     if (!d->hist)
         return rs_error_set(err, RS_ERR_NOMEM, "driver: out of memory for contact history");
     for (int i = 0; i < d->n; ++i) {
-        d->hist_ptr[i] = d->hist + (size_t)i * per;
-        rs_track_clear(&d->tracker, d->hist_ptr[i]);
+        d->dir_ptr[i] = d->hist + (size_t)i * per;
+        d->hist_ptr[i] = d->dir_ptr[i] + d->capacity;
+        rs_track_clear(&d->tracker, d->dir_ptr[i], d->hist_ptr[i], 0);
         d->temp_prev[i] = d->temp[i];
     }
     d->tmaster_prev = d->tmaster;
@@ -290,6 +292,7 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     p.vz = d->vz;
     p.radius = d->radius;
     p.id = d->id;
+    p.dir = d->dir_ptr;
     p.hist = d->hist_ptr;
     /* The first call sees the initial state: no increment of motion lies behind it. */
     rc = rs_track_update(&d->tracker, d->surface, d->moving ? &d->motion : NULL,
@@ -389,6 +392,7 @@ void rs_driver_free(rs_driver *d)
     free(d->temp_prev);
     free(d->id);
     free(d->hist_ptr);
+    free(d->dir_ptr);
     free(d->hist);
     free(d->cstress);
     free(d->cstatev);

@@ -21,6 +21,7 @@ void rs_track_out_free(rs_track_out *o)
     free(o->point);
     free(o->feature);
     free(o->slot);
+    free(o->dir);
     free(o->rdisp);
     free(o->drdisp);
     free(o->drot);
@@ -51,6 +52,7 @@ static int out_reserve(rs_track_out *o, int n, rs_error *err)
         grow((void **)&o->point, c * sizeof(int)) &&
         grow((void **)&o->feature, c * sizeof(int)) &&
         grow((void **)&o->slot, c * sizeof(double *)) &&
+        grow((void **)&o->dir, c * sizeof(double *)) &&
         grow((void **)&o->rdisp, 3 * c * d) && grow((void **)&o->drdisp, 3 * c * d) &&
         grow((void **)&o->drot, 4 * c * d) && grow((void **)&o->alocaldir, 9 * c * d) &&
         grow((void **)&o->coordslv, 3 * c * d) && grow((void **)&o->coordmst, 3 * c * d) &&
@@ -89,12 +91,12 @@ static inline void matvec(const double Q[9], const double v[3], double r[3])
  * *ne on) and its leaving slots. out->point holds the contact index for a contact entry
  * and -1 - i for a leaving slot of particle i until pass 2 decodes it. */
 static int assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_particles *p,
-                        const rs_contacts *c, int i, int kb, int ke, rs_track_out *out,
-                        int *ne, rs_error *err)
+                        ptrdiff_t stride, const rs_contacts *c, int i, int kb, int ke,
+                        rs_track_out *out, int *ne, rs_error *err)
 {
-    const int cap = tr->capacity, hs = RS_HIST_SIZE(tr->nstatev);
-    double *h = p->hist[i];
-    if (!h)
+    const int cap = tr->capacity;
+    double *h = p->hist[i], *d = p->dir ? p->dir[i] : NULL;
+    if (!h || !d)
         return rs_error_set(err, RS_ERR_ARG,
                             "rs_track_update: particle %d has no history storage",
                             p->id ? p->id[i] : i);
@@ -103,16 +105,14 @@ static int assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_part
     int nk = 0, unmatched = 0;
     uint64_t active = 0, used = 0;
 
-    /* One look at the slots: live features (fe[j] is valid where active has bit j);
-     * slots left LEAVING by an uncommitted call are freed (they were emitted once). */
+    /* One look at the directory: live features (fe[j] is valid where active has bit
+     * j); slots left leaving by an uncommitted call are freed (they were emitted once). */
     for (int j = 0; j < cap; j++) {
-        double *hj = h + (size_t)j * hs;
-        if (hj[RS_H_STATE] == RS_HSTATE_ACTIVE) {
+        if (d[j] >= 0.0) {
             active |= (uint64_t)1 << j;
-            fe[j] = (int)hj[RS_H_FEATURE];
-        } else if (hj[RS_H_STATE] == RS_HSTATE_LEAVING) {
-            hj[RS_H_STATE] = RS_HSTATE_EMPTY;
-            hj[RS_H_FEATURE] = RS_FEATURE_NONE;
+            fe[j] = (int)d[j];
+        } else if (RS_DIR_IS_LEAVING(d[j])) {
+            d[j] = RS_DIR_EMPTY;
         }
     }
 
@@ -163,14 +163,16 @@ static int assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_part
 
     for (int q = 0; q < nk; q++) {
         out->point[*ne] = kk[q];
-        out->slot[*ne] = h + (size_t)sl[q] * hs;
+        out->slot[*ne] = h + sl[q] * stride;
+        out->dir[*ne] = d + sl[q];
         (*ne)++;
     }
     uint64_t leaving = active & ~used;
     for (int j = 0; leaving && j < cap; j++)
         if (leaving >> j & 1u) {
             out->point[*ne] = -1 - i;
-            out->slot[*ne] = h + (size_t)j * hs;
+            out->slot[*ne] = h + j * stride;
+            out->dir[*ne] = d + j;
             (*ne)++;
         }
     return RS_OK;
@@ -182,25 +184,21 @@ full:
                         p->id ? p->id[i] : i, s ? s->name : "", cap);
 }
 
-/* Pass 1 for the common case: a particle with at most one contact (kb, or none when
- * kb == ke) whose slot already holds it, and no other active or leaving slot. Returns
- * the slot, h itself for no contact and no active slot, or NULL, having written nothing,
- * for every other case (new contacts, handovers, leaving slots), which assign_slots
- * handles. f is the contact's feature, or -2 (matches no slot: features are >= 0, empty
- * slots -1) when there is none within the tracking thickness. */
-RS_INLINE double *find_fast(double *h, int cap, int hs, double f)
+/* Pass 1 for the common case, from the directory d alone: a particle with at most one
+ * contact within the tracking thickness (feature f, or f < 0 for none) whose slot
+ * already holds it, and no other slot in use. Returns that slot's index, cap for no
+ * contact and no slot in use, or -1, having written nothing, for every other case (new
+ * contacts, handovers, leaving slots), which assign_slots handles. */
+RS_INLINE int find_fast(const double *d, int cap, double f)
 {
-    double *js = NULL;
+    int used = 0, js = -1;
     for (int j = 0; j < cap; j++) {
-        double *hj = h + (size_t)j * hs;
-        const double st = hj[RS_H_STATE];
-        if (st == RS_HSTATE_EMPTY)
-            continue;
-        if (st != RS_HSTATE_ACTIVE || hj[RS_H_FEATURE] != f || js)
-            return NULL;
-        js = hj;
+        used += d[j] != RS_DIR_EMPTY;
+        js = d[j] == f ? j : js;
     }
-    return f >= 0.0 ? js : h;
+    if (f < 0.0)
+        return used == 0 ? cap : -1;
+    return used == 1 ? js : -1;
 }
 
 typedef struct master_rates {
@@ -261,7 +259,7 @@ typedef struct track_run {
 RS_INLINE void run_gather(track_run *restrict r, int j, const rs_track_out *o, int e)
 {
     const double *h = o->slot[e];
-    r->live[j] = h[RS_H_STATE] == RS_HSTATE_ACTIVE;
+    r->live[j] = *o->dir[e] >= 0.0;
     r->on0[j] = h[RS_H_N];
     r->on1[j] = h[RS_H_N + 1];
     r->on2[j] = h[RS_H_N + 2];
@@ -418,7 +416,7 @@ RS_INLINE void run_outputs(const track_run *restrict r, int m, const rs_contacts
     }
 }
 
-/* The history of a run: feature, state, frame, slip and rdisp1; a new contact's stress
+/* The history of a run: directory entry, frame, slip and rdisp1; a new contact's stress
  * and statev start at zero. Also the entries' particle and feature ids. */
 RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *tr,
                          const rs_contacts *c, int k0, rs_track_out *o, int e0)
@@ -429,17 +427,13 @@ RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *t
         if (r->live[j] == 0.0)
             for (int b = 0; b < 3 + tr->nstatev; b++)
                 h[RS_H_STRESS + b] = 0.0;
-        h[RS_H_FEATURE] = c->feature[k];
-        h[RS_H_STATE] = RS_HSTATE_ACTIVE;
+        *o->dir[e] = c->feature[k];
         h[RS_H_N] = c->nrm[0][k];
         h[RS_H_N + 1] = c->nrm[1][k];
         h[RS_H_N + 2] = c->nrm[2][k];
         h[RS_H_T1] = c->t1[0][k];
         h[RS_H_T1 + 1] = c->t1[1][k];
         h[RS_H_T1 + 2] = c->t1[2][k];
-        h[RS_H_T2] = c->t2[0][k];
-        h[RS_H_T2 + 1] = c->t2[1][k];
-        h[RS_H_T2 + 2] = c->t2[2][k];
         h[RS_H_SLIP] = r->s1[j];
         h[RS_H_SLIP + 1] = r->s2[j];
         h[RS_H_RDISP1] = r->rd1[j];
@@ -449,7 +443,8 @@ RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *t
 }
 
 /* A slot whose feature is gone: RS_MAXVAL in rdisp, drdisp and drot; the frame is the
- * stored one carried by Q, the contact point the particle's surface point along -n. */
+ * stored one carried by Q (t2 = n x t1), the contact point the particle's surface point
+ * along -n. */
 static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
                          const rs_particles *p, int i, rs_track_out *o, int e)
 {
@@ -460,14 +455,15 @@ static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
     double n[3], t1[3], t2[3], xcp[3], vr[3];
     matvec(mr->Q, h + RS_H_N, n);
     matvec(mr->Q, h + RS_H_T1, t1);
-    matvec(mr->Q, h + RS_H_T2, t2);
+    cross3(n, t1, t2);
     for (int b = 0; b < 3; b++)
         xcp[b] = xc[b] - rad * n[b];
     rel_velocity(p, i, mr, xc, xcp, vr);
 
-    h[RS_H_STATE] = RS_HSTATE_LEAVING;
+    const double f = *o->dir[e];
+    *o->dir[e] = RS_DIR_LEAVING(f);
     o->point[e] = i;
-    o->feature[e] = (int)h[RS_H_FEATURE];
+    o->feature[e] = (int)f;
     for (int b = 0; b < nd; b++) {
         RS_A2(o->rdisp, nd, b, e) = RS_MAXVAL;
         RS_A2(o->drdisp, nd, b, e) = RS_MAXVAL;
@@ -543,31 +539,33 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
     /* Pass 1, grouping the contacts by particle: it takes every contact exactly when
      * they name points 0..n-1 in block order (checked here, not in a separate pass). */
     int ne = 0, k = 0;
-    const int np = p->n, cap = tr->capacity, hs = RS_HIST_SIZE(tr->nstatev);
+    const int np = p->n, cap = tr->capacity;
+    const ptrdiff_t stride = p->slot_stride ? p->slot_stride : RS_HIST_SIZE(tr->nstatev);
     const double tracking = tr->tracking, *prad = p->radius;
     const int *cpoint = c ? c->point : NULL, *cfeat = c ? c->feature : NULL;
     const double *cdist = c ? c->dist : NULL;
-    double *const *hist = p->hist;
+    double *const *hist = p->hist, *const *dir = p->dir;
     int *opoint = out->point;
-    double **oslot = out->slot;
+    double **oslot = out->slot, **odir = out->dir;
     for (int i = 0; i < np; i++) {
         int kb = k;
         while (k < nc && cpoint[k] == i)
             k++;
-        double *h = hist[i];
-        if (h && k - kb <= 1) {
-            double f = -2.0;
+        double *h = hist[i], *d = dir ? dir[i] : NULL;
+        if (h && d && k - kb <= 1) {
+            double f = -1.0;
             if (k > kb && !(cdist[kb] - (prad ? prad[i] : 0.0) > tracking))
                 f = (double)cfeat[kb];
-            double *js = find_fast(h, cap, hs, f);
-            if (js && f >= 0.0) {
+            const int js = find_fast(d, cap, f);
+            if (js >= 0 && js < cap) {
                 opoint[ne] = kb;
-                oslot[ne++] = js;
+                oslot[ne] = h + js * stride;
+                odir[ne++] = d + js;
             }
-            if (js)
+            if (js >= 0)
                 continue;
         }
-        rc = assign_slots(tr, s, p, c, i, kb, k, out, &ne, err);
+        rc = assign_slots(tr, s, p, stride, c, i, kb, k, out, &ne, err);
         if (rc)
             return rc;
     }
@@ -640,7 +638,7 @@ void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress
         for (int e = 0; e < n; e++) {
             const double *h = out->slot[e], *dr = out->drot + (size_t)4 * e;
             const double s2 = h[RS_H_STRESS + 1], s3 = h[RS_H_STRESS + 2];
-            const int keep = h[RS_H_STATE] == RS_HSTATE_LEAVING;
+            const int keep = RS_DIR_IS_LEAVING(*out->dir[e]);
             stress[3 * e] = h[RS_H_STRESS];
             stress[3 * e + 1] = keep ? s2 : dr[0] * s2 + dr[2] * s3;
             stress[3 * e + 2] = keep ? s3 : dr[1] * s2 + dr[3] * s3;
@@ -657,9 +655,8 @@ void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stre
     const int nd = out->ndir, ns = tr->nstatev;
     for (int e = 0; e < out->n; e++) {
         double *h = out->slot[e];
-        if (h[RS_H_STATE] == RS_HSTATE_LEAVING) {
-            h[RS_H_STATE] = RS_HSTATE_EMPTY;
-            h[RS_H_FEATURE] = RS_FEATURE_NONE;
+        if (RS_DIR_IS_LEAVING(*out->dir[e])) {
+            *out->dir[e] = RS_DIR_EMPTY;
             continue;
         }
         if (stress) {
@@ -673,12 +670,11 @@ void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stre
     }
 }
 
-void rs_track_clear(const rs_tracker *tr, double *hist)
+void rs_track_clear(const rs_tracker *tr, double *dir, double *hist, ptrdiff_t stride)
 {
     const int hs = RS_HIST_SIZE(tr->nstatev);
-    memset(hist, 0, (size_t)tr->capacity * hs * sizeof *hist);
     for (int j = 0; j < tr->capacity; j++) {
-        hist[(size_t)j * hs + RS_H_FEATURE] = RS_FEATURE_NONE;
-        hist[(size_t)j * hs + RS_H_STATE] = RS_HSTATE_EMPTY;
+        dir[j] = RS_DIR_EMPTY;
+        memset(hist + j * (stride ? stride : hs), 0, (size_t)hs * sizeof *hist);
     }
 }

@@ -103,8 +103,8 @@ typedef struct rs_driver {
 
     /* Internal storage. */
     int ccap;
-    double *hist; ///< n * capacity * RS_HIST_SIZE(nstatev)
-    double **hist_ptr;
+    double *hist; ///< per particle: directory (capacity), then capacity slots
+    double **hist_ptr, **dir_ptr;
     int *id;
     double *temp_prev;
     double tmaster_prev;

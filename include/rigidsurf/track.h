@@ -1,8 +1,8 @@
 /* rigidsurf: the contact tracker.
  *
  * One contact is (particle, surface, feature). Each has a history slot that the caller
- * owns (per particle, `capacity` slots of RS_HIST_SIZE(nstatev) doubles), so an engine
- * can migrate and restart it as plain doubles. The tracker turns the contacts of a
+ * owns (per particle, a directory and `capacity` slots, below), so an engine can migrate
+ * and restart it as plain doubles. The tracker turns the contacts of a
  * query into the VUINTER kinematics (docs/conventions.md, "rdisp, drdisp, drot"):
  * - rdisp(1) = R - (x_c - x_m).n, > 0 overlap. drdisp(1) = its change since the last call
  *   (for a new contact: -v_rel.n dt).
@@ -29,21 +29,28 @@
 extern "C" {
 #endif
 
-/* History slot layout (doubles). Empty slots have FEATURE = -1 and STATE = 0. */
-#define RS_H_FEATURE 0 ///< feature id, -1 when empty
-#define RS_H_STATE 1   ///< RS_HSTATE_*
-#define RS_H_N 2       ///< normal at the last call (3)
-#define RS_H_T1 5      ///< t1 at the last call (3)
-#define RS_H_T2 8      ///< t2 at the last call (3)
-#define RS_H_SLIP 11   ///< accumulated slip in (t1, t2) (2)
-#define RS_H_RDISP1 13 ///< rdisp(1) at the last call
-#define RS_H_STRESS 14 ///< stress(1:3) returned by the law at the last call (3)
-#define RS_H_STATEV 17 ///< law state variables (nstatev)
-#define RS_HIST_SIZE(nstatev) (17 + (nstatev))
+/* History of one particle, in two parts the caller owns (plain doubles, so an engine can
+ * migrate and restart them):
+ * - its directory: `capacity` doubles, entry j for slot j: the feature id (>= 0) of the
+ *   contact the slot holds, RS_DIR_EMPTY when the slot is free, RS_DIR_LEAVING(f) while
+ *   the contact of feature f is emitted once more as gone (rs_track_commit frees it);
+ * - its slots: `capacity` of RS_HIST_SIZE(nstatev) doubles, slot j at hist + j * stride
+ *   (rs_particles.slot_stride). Slots may be contiguous per particle, or slot j of every
+ *   particle may sit in one array, so that a particle with one contact touches its
+ *   directory and one slot only.
+ * A slot's frame is n and t1; t2 = n x t1 (every 3D frame is right-handed). */
+#define RS_H_N 0       ///< normal at the last call (3)
+#define RS_H_T1 3      ///< t1 at the last call (3)
+#define RS_H_SLIP 6    ///< accumulated slip in (t1, t2) (2)
+#define RS_H_RDISP1 8  ///< rdisp(1) at the last call
+#define RS_H_STRESS 9  ///< stress(1:3) returned by the law at the last call (3)
+#define RS_H_STATEV 12 ///< law state variables (nstatev)
+#define RS_HIST_SIZE(nstatev) (12 + (nstatev))
 
-#define RS_HSTATE_EMPTY 0
-#define RS_HSTATE_ACTIVE 1
-#define RS_HSTATE_LEAVING 2 ///< emitted with RS_MAXVAL this call; freed on commit
+#define RS_DIR_EMPTY (-1.0)                    ///< a free slot
+#define RS_DIR_LEAVING(f) (-2.0 - (double)(f)) ///< feature f emitted as gone this call
+#define RS_DIR_IS_LEAVING(d) ((d) <= -2.0)
+#define RS_DIR_LEAVING_FEATURE(d) ((int)(-2.0 - (d)))
 
 /// Largest per-particle capacity rs_track_update accepts.
 #define RS_TRACK_MAX_CAPACITY 64
@@ -63,7 +70,9 @@ typedef struct rs_particles {
     const double *wx, *wy, *wz; ///< angular velocities (NULL: zero)
     const double *radius;       ///< radii (NULL: points)
     const int *id;              ///< particle ids for messages (NULL: block index)
-    double **hist;              ///< per particle: capacity * RS_HIST_SIZE(nstatev)
+    double **dir;               ///< per particle: its directory (capacity doubles)
+    double **hist;              ///< per particle: its slot 0
+    ptrdiff_t slot_stride; ///< doubles from slot j to slot j + 1 (0: RS_HIST_SIZE(nstatev))
 } rs_particles;
 
 /// Tracker output: one entry per live or leaving contact, in Abaqus layout with
@@ -73,6 +82,7 @@ typedef struct rs_track_out {
     int *point;        ///< particle index in the block
     int *feature;      ///< feature id
     double **slot;     ///< the contact's history slot
+    double **dir;      ///< the directory entry of that slot
     double *rdisp;     ///< rdisp(ndir, n)
     double *drdisp;    ///< drdisp(ndir, n)
     double *drot;      ///< drot(2, 2, n)
@@ -106,8 +116,9 @@ void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress
 void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stress,
                      const double *statev);
 
-/// Marks every slot of one particle empty.
-void rs_track_clear(const rs_tracker *tr, double *hist);
+/// Marks every slot of one particle empty and zeroes the slots (stride as in
+/// rs_particles.slot_stride; 0: contiguous).
+void rs_track_clear(const rs_tracker *tr, double *dir, double *hist, ptrdiff_t stride);
 
 #ifdef __cplusplus
 }

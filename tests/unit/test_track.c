@@ -41,8 +41,9 @@ static void make_frame(const double nin[3], const double hint[3], double n[3], d
 typedef struct block {
     double x[4], y[4], z[4], vx[4], vy[4], vz[4], wx[4], wy[4], wz[4], r[4];
     int id[4];
+    double dir[4][CAP];
     double hist[4][CAP * HS];
-    double *hp[4];
+    double *dp[4], *hp[4];
     rs_particles p;
 } block;
 
@@ -50,12 +51,13 @@ static void block_init(block *b, int n, const rs_tracker *tr)
 {
     memset(b, 0, sizeof *b);
     for (int i = 0; i < 4; i++) {
+        b->dp[i] = b->dir[i];
         b->hp[i] = b->hist[i];
         b->id[i] = 100 + i;
-        rs_track_clear(tr, b->hist[i]);
+        rs_track_clear(tr, b->dir[i], b->hist[i], 0);
     }
-    b->p = (rs_particles){n,     b->x,  b->y,  b->z, b->vx, b->vy, b->vz,
-                          b->wx, b->wy, b->wz, b->r, b->id, b->hp};
+    b->p = (rs_particles){n,     b->x,  b->y, b->z,  b->vx, b->vy, b->vz, b->wx,
+                          b->wy, b->wz, b->r, b->id, b->dp, b->hp, 0};
 }
 
 static void block_set(block *b, int i, const double x[3], const double v[3],
@@ -596,16 +598,15 @@ static void test_maxval_once_after_leaving(void)
         for (int i = 0; i < 2; i++)
             for (int j = 0; j < 2; j++)
                 ENSURE(RS_DROT(o.drot, i, j, 0) == 1.0e30);
-        ENSURE(o.slot[0][RS_H_STATE] == RS_HSTATE_LEAVING);
+        ENSURE(*o.dir[0] == RS_DIR_LEAVING(f) && o.dir[0] == &b.dir[0][0]);
         if (with_commit) {
             rs_track_commit(&tr, &o, NULL, NULL);
-            ENSURE(o.slot[0][RS_H_STATE] == RS_HSTATE_EMPTY);
-            ENSURE(o.slot[0][RS_H_FEATURE] == RS_FEATURE_NONE);
+            ENSURE(b.dir[0][0] == RS_DIR_EMPTY);
         }
         ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
         ENSURE(o.n == 0);
         for (int j = 0; j < CAP; j++)
-            ENSURE(b.hist[0][j * HS + RS_H_STATE] == RS_HSTATE_EMPTY);
+            ENSURE(b.dir[0][j] == RS_DIR_EMPTY);
     }
     rs_track_out_free(&o);
 }
@@ -687,7 +688,7 @@ static void test_history_handover_across_smooth_junction(void)
         if (!sharp) {
             ENSURE(o.n == 1);
             ENSURE(o.slot[0] == slot && o.feature[0] == fb);
-            ENSURE(slot[RS_H_FEATURE] == fb);
+            ENSURE(*o.dir[0] == fb);
             ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), 4 * 0.2 * dt, 1e-15);
             ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), 4 * 0.1 * dt, 1e-15);
             ENSURE(slot[RS_H_STRESS] == 5 && slot[RS_H_STRESS + 2] == 7);
@@ -728,8 +729,9 @@ static void test_capacity_error_names_particle(void)
     ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
     rs_track_commit(&tr, &o, NULL, NULL);
 
-    double before[2][CAP * HS];
+    double before[2][CAP * HS], dbefore[2][CAP];
     memcpy(before, b.hist, sizeof before);
+    memcpy(dbefore, b.dir, sizeof dbefore);
     /* Particle 4711: feature 0 leaves, features 4 and 8 arrive: 3 slots needed, 2 held. */
     clist_init(&l);
     add_plane(&l, 0, 0, x, P, n, t1, t2);
@@ -740,6 +742,7 @@ static void test_capacity_error_names_particle(void)
     ENSURE(strstr(err.msg, "4711") != NULL);
     ENSURE(strstr(err.msg, "capacity 2") != NULL);
     ENSURE(memcmp(before, b.hist, sizeof before) == 0);
+    ENSURE(memcmp(dbefore, b.dir, sizeof dbefore) == 0);
 
     /* Three new contacts at once for a fresh particle. */
     block_init(&b, 1, &tr);
@@ -880,6 +883,116 @@ static void test_alocaldir_columns_and_contact_point(void)
     rs_track_out_free(&o);
 }
 
+/* The slots may sit anywhere the caller likes (rs_particles.slot_stride): slot j of every
+ * particle in one array gives, step for step, the same outputs, loads and stored history
+ * as slots kept together per particle, and a particle that never holds two contacts at
+ * once never touches its slots 1 .. capacity-1 (they keep a NaN pattern written by the
+ * test). Random contacts open, move, turn and leave over 60 steps. */
+static void test_slot_major_layout_matches_contiguous(void)
+{
+    enum { NP = 3 };
+    const ptrdiff_t stride = (ptrdiff_t)NP * HS;
+    rs_tracker tr = tracker(3);
+    block a, b;
+    double dirb[NP][CAP], histb[CAP * NP * HS], nanpat[HS];
+    double *dpb[NP], *hpb[NP];
+    memset(nanpat, 0xff, sizeof nanpat);
+    block_init(&a, NP, &tr);
+    block_init(&b, NP, &tr);
+    for (int i = 0; i < NP; i++) {
+        dpb[i] = dirb[i];
+        hpb[i] = histb + (size_t)i * HS;
+        rs_track_clear(&tr, dpb[i], hpb[i], stride);
+        for (int j = 1; j < CAP; j++)
+            memcpy(hpb[i] + j * stride, nanpat, sizeof nanpat);
+    }
+    b.p.dir = dpb;
+    b.p.hist = hpb;
+    b.p.slot_stride = stride;
+    rs_track_out oa = {0}, ob = {0};
+    rs_error err;
+    unsigned long long rng = 0x5eed1234abcdULL;
+    int mismatch = 0, steps_with_contacts = 0, leaving_seen = 0;
+    for (int step = 0; step < 60; step++) {
+        clist l;
+        clist_init(&l);
+        for (int i = 0; i < NP; i++) {
+            /* particle 0: feature 2 on or off; the others up to three of 0, 2, 4, 6 */
+            int nf = 0, feats[3];
+            if (i == 0) {
+                if (rs_test_urand(&rng) < 0.7)
+                    feats[nf++] = 2;
+            } else {
+                for (int f = 0; f < 8 && nf < 3; f += 2)
+                    if (rs_test_urand(&rng) < 0.5)
+                        feats[nf++] = f;
+            }
+            double x[3] = {0.1 * i, 0.01 * step, 0.0095}, v[3], w[3];
+            for (int d = 0; d < 3; d++) {
+                v[d] = rs_test_urand(&rng) - 0.5;
+                w[d] = 10.0 * (rs_test_urand(&rng) - 0.5);
+            }
+            block_set(&a, i, x, v, w, 0.01);
+            block_set(&b, i, x, v, w, 0.01);
+            for (int q = 0; q < nf; q++) {
+                double nin[3] = {0.2 * (rs_test_urand(&rng) - 0.5),
+                                 0.2 * (rs_test_urand(&rng) - 0.5), 1.0};
+                const double hint[3] = {1, 0, 0}, P[3] = {0, 0, 0};
+                double n[3], t1[3], t2[3];
+                make_frame(nin, hint, n, t1, t2);
+                add_plane(&l, i, feats[q], x, P, n, t1, t2);
+            }
+        }
+        ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &a.p, &l.c, &oa, &err) == RS_OK);
+        ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &ob, &err) == RS_OK);
+        ENSURE(oa.n == ob.n);
+        const size_t n = (size_t)oa.n;
+        steps_with_contacts += n > 0;
+        mismatch += memcmp(oa.point, ob.point, n * sizeof(int)) != 0;
+        mismatch += memcmp(oa.feature, ob.feature, n * sizeof(int)) != 0;
+        mismatch += memcmp(oa.rdisp, ob.rdisp, 3 * n * sizeof(double)) != 0;
+        mismatch += memcmp(oa.drdisp, ob.drdisp, 3 * n * sizeof(double)) != 0;
+        mismatch += memcmp(oa.drot, ob.drot, 4 * n * sizeof(double)) != 0;
+        mismatch += memcmp(oa.alocaldir, ob.alocaldir, 9 * n * sizeof(double)) != 0;
+        mismatch += memcmp(oa.coordslv, ob.coordslv, 3 * n * sizeof(double)) != 0;
+        mismatch += memcmp(oa.vrel, ob.vrel, 3 * n * sizeof(double)) != 0;
+        for (size_t e = 0; e < n; e++) {
+            /* the same slot index in both layouts */
+            const int i = oa.point[e];
+            mismatch += (oa.dir[e] - a.dir[i]) != (ob.dir[e] - dirb[i]);
+            leaving_seen += RS_DIR_IS_LEAVING(*oa.dir[e]);
+        }
+        double sa[3 * MAXC], sb[3 * MAXC], va[NS * MAXC], vb[NS * MAXC];
+        rs_track_load(&tr, &oa, sa, va);
+        rs_track_load(&tr, &ob, sb, vb);
+        mismatch += memcmp(sa, sb, 3 * n * sizeof(double)) != 0;
+        mismatch += memcmp(va, vb, NS * n * sizeof(double)) != 0;
+        /* a law's answer: new stress and state from the loaded ones */
+        for (size_t e = 0; e < n; e++) {
+            for (int d = 0; d < 3; d++)
+                sa[3 * e + d] +=
+                    RS_A2(oa.rdisp, 3, d, e) < 1e29 ? RS_A2(oa.rdisp, 3, d, e) : 0.0;
+            for (int d = 0; d < NS; d++)
+                va[NS * e + d] += 1.0 + d;
+        }
+        rs_track_commit(&tr, &oa, sa, va);
+        rs_track_commit(&tr, &ob, sa, va);
+        for (int i = 0; i < NP; i++)
+            for (int j = 0; j < CAP; j++) {
+                mismatch += memcmp(&a.dir[i][j], &dirb[i][j], sizeof(double)) != 0;
+                if (a.dir[i][j] != RS_DIR_EMPTY)
+                    mismatch += memcmp(a.hist[i] + j * HS, hpb[i] + j * stride,
+                                       HS * sizeof(double)) != 0;
+            }
+    }
+    ENSURE(mismatch == 0);
+    ENSURE(steps_with_contacts > 50 && leaving_seen > 10);
+    for (int j = 1; j < CAP; j++)
+        ENSURE(memcmp(hpb[0] + j * stride, nanpat, sizeof nanpat) == 0);
+    rs_track_out_free(&oa);
+    rs_track_out_free(&ob);
+}
+
 /* Contacts must come in block order with valid point indices: a clear error otherwise. */
 static void test_rejects_unordered_contacts(void)
 {
@@ -921,5 +1034,6 @@ int main(void)
     RS_RUN(test_drdisp1_is_change_of_penetration);
     RS_RUN(test_alocaldir_columns_and_contact_point);
     RS_RUN(test_rejects_unordered_contacts);
+    RS_RUN(test_slot_major_layout_matches_contiguous);
     return rs_test_summary();
 }

@@ -25,8 +25,8 @@ static const char *drum_text = "*SURFACE, TYPE=REVOLUTION, NAME=drum, FILLET RAD
 typedef struct one {
     double x, y, z, vx, vy, vz, wx, wy, wz, r;
     int id;
-    double hist[4 * HS];
-    double *hp;
+    double dir[4], hist[4 * HS];
+    double *dp, *hp;
     rs_particles p;
     rs_query q;
 } one;
@@ -36,10 +36,11 @@ static void one_init(one *o, const rs_tracker *tr, double radius)
     memset(o, 0, sizeof *o);
     o->r = radius;
     o->id = 7;
+    o->dp = o->dir;
     o->hp = o->hist;
-    rs_track_clear(tr, o->hist);
-    o->p = (rs_particles){1,      &o->x,  &o->y,  &o->z, &o->vx, &o->vy, &o->vz,
-                          &o->wx, &o->wy, &o->wz, &o->r, &o->id, &o->hp};
+    rs_track_clear(tr, o->dir, o->hist, 0);
+    o->p = (rs_particles){1,      &o->x,  &o->y, &o->z,  &o->vx, &o->vy, &o->vz, &o->wx,
+                          &o->wy, &o->wz, &o->r, &o->id, &o->dp, &o->hp, 0};
     o->q = (rs_query){1, &o->x, &o->y, &o->z, &o->r, NULL, tr->tracking, -INFINITY};
 }
 
