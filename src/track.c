@@ -191,14 +191,48 @@ full:
  * contacts, handovers, leaving slots), which assign_slots handles. */
 RS_INLINE int find_fast(const double *d, int cap, double f)
 {
-    int used = 0, js = -1;
+    int js = cap;
     for (int j = 0; j < cap; j++) {
-        used += d[j] != RS_DIR_EMPTY;
-        js = d[j] == f ? j : js;
+        if (d[j] == f)
+            js = j;
+        else if (d[j] != RS_DIR_EMPTY)
+            return -1;
     }
-    if (f < 0.0)
-        return used == 0 ? cap : -1;
-    return used == 1 ? js : -1;
+    return f >= 0.0 ? (js < cap ? js : -1) : cap;
+}
+
+/* Pass 1 from particle i on, for as long as every particle takes the fast path
+ * (find_fast): at most one contact, already held, nothing else in its directory. Fills
+ * the entries, advances *kp past the contacts and *ne past the entries taken, and
+ * returns the first particle that needs assign_slots (np when none does). */
+RS_INLINE int pass1_fast(int i, int np, int *kp, int nc, const int *restrict cpoint,
+                         const int *restrict cfeat, const double *restrict cdist,
+                         const double *restrict prad, double tracking,
+                         double *const *restrict hist, double *const *restrict dir, int cap,
+                         ptrdiff_t stride, int *restrict opoint, double **restrict oslot,
+                         double **restrict odir, int *ne)
+{
+    int k = *kp, e = *ne;
+    for (; i < np; i++) {
+        const int has = k < nc && cpoint[k] == i;
+        if ((k + has < nc && cpoint[k + has] == i) || !hist[i] || !dir[i])
+            break;
+        double f = -1.0;
+        if (has && !(cdist[k] - (prad ? prad[i] : 0.0) > tracking))
+            f = (double)cfeat[k];
+        const int js = find_fast(dir[i], cap, f);
+        if (js < 0)
+            break;
+        if (js < cap) {
+            opoint[e] = k;
+            oslot[e] = hist[i] + js * stride;
+            odir[e++] = dir[i] + js;
+        }
+        k += has;
+    }
+    *kp = k;
+    *ne = e;
+    return i;
 }
 
 typedef struct master_rates {
@@ -545,26 +579,15 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
     const int *cpoint = c ? c->point : NULL, *cfeat = c ? c->feature : NULL;
     const double *cdist = c ? c->dist : NULL;
     double *const *hist = p->hist, *const *dir = p->dir;
-    int *opoint = out->point;
-    double **oslot = out->slot, **odir = out->dir;
     for (int i = 0; i < np; i++) {
-        int kb = k;
+        if (dir)
+            i = pass1_fast(i, np, &k, nc, cpoint, cfeat, cdist, prad, tracking, hist, dir,
+                           cap, stride, out->point, out->slot, out->dir, &ne);
+        if (i == np)
+            break;
+        const int kb = k;
         while (k < nc && cpoint[k] == i)
             k++;
-        double *h = hist[i], *d = dir ? dir[i] : NULL;
-        if (h && d && k - kb <= 1) {
-            double f = -1.0;
-            if (k > kb && !(cdist[kb] - (prad ? prad[i] : 0.0) > tracking))
-                f = (double)cfeat[kb];
-            const int js = find_fast(d, cap, f);
-            if (js >= 0 && js < cap) {
-                opoint[ne] = kb;
-                oslot[ne] = h + js * stride;
-                odir[ne++] = d + js;
-            }
-            if (js >= 0)
-                continue;
-        }
         rc = assign_slots(tr, s, p, stride, c, i, kb, k, out, &ne, err);
         if (rc)
             return rc;
