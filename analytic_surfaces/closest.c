@@ -857,40 +857,114 @@ RS_INLINE int start_vertex(const rs_pcache *pc, const pout *o, int *nh, int k, i
     return 0;
 }
 
+/* The face contact of LINE segment q for m points, as put_line computes it, with what[j]
+ * = 1 when point j gets it (owned on its particle side, or either side with two, and
+ * within [dlo, dhi]), 0 when the point is owned but out of range, -1 when the segment
+ * does not own it. Branch-free, so it vectorises. */
+RS_MULTIVERSION static void line_faces(const rs_pseg *q, int two, double dlo, int m,
+                                       const double *restrict pu, const double *restrict pv,
+                                       const double *restrict ph, double *restrict fx0,
+                                       double *restrict fx1, double *restrict fn0,
+                                       double *restrict fn1, double *restrict fd,
+                                       double *restrict what)
+{
+    const int sin = q->start_incl, ein = q->end_incl;
+    const double o0 = q->o[0], o1 = q->o[1], nl0 = q->nl[0], nl1 = q->nl[1];
+    const double e0 = q->e[0], e1 = q->e[1], il2 = q->inv_len2;
+    const double a0 = q->v0[0], a1 = q->v0[1], b0 = q->tb0[0], b1 = q->tb0[1];
+    const double c0 = q->v1[0], c1 = q->v1[1], d0 = q->ta1[0], d1 = q->ta1[1];
+    for (int j = 0; j < m; j++) {
+        const double px = pu[j], py = pv[j], dhi = ph[j];
+        const double wx = px - o0, wy = py - o1;
+        const double sd = wx * nl0 + wy * nl1;
+        const double dB = (px - a0) * b0 + (py - a1) * b1;
+        const double dA = (px - c0) * d0 + (py - c1) * d1;
+        const int in_start = (dB > 0.0) | (sin & (dB == 0.0));
+        const int in_end = (dA < 0.0) | (ein & (dA == 0.0));
+        const int own = in_start & in_end & (two | (sd >= 0.0));
+        const int flip = two & (sd < 0.0);
+        const double dist = flip ? -sd : sd;
+        double tau = (wx * e0 + wy * e1) * il2;
+        tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
+        fx0[j] = o0 + tau * e0;
+        fx1[j] = o1 + tau * e1;
+        fn0[j] = flip ? -nl0 : nl0;
+        fn1[j] = flip ? -nl1 : nl1;
+        fd[j] = dist;
+        what[j] = own ? (double)((dist >= dlo) & (dist <= dhi)) : -1.0;
+    }
+}
+
 /* rs_pcache_points for a profile of one LINE (a plane, a cylinder's mantle, a cone):
  * no bucket to choose and no list to walk. A point the segment owns (profile.h) on its
  * particle side (or either side with SIDES=2) gets the face contact, within [dlo, dhi];
  * the reach and box tests of the general walk follow from that. Every other point (an
- * end vertex's region, behind a one-sided face) takes the per-point rs_pcache_hits. */
+ * end vertex's region, behind a one-sided face) takes the per-point rs_pcache_hits.
+ * Per run of points, one branch-free loop computes the ownership and the face contact
+ * of every point (as put_line does), then one loop writes the kept ones out. */
 static int points_one_line(const rs_pcache *pc, const rs_ppoints *pts, int i,
                            rs_contacts *out, rs_pscratch *sc, int *need)
 {
     const rs_pseg *q = &pc->ps[0];
     const int m = pts->n, two = pc->sides == 2, cap = out->cap, base = pts->base;
     const double dlo = pts->dlo;
+    const int feat = RS_FEATURE(RS_FEAT_FACE, 0);
     const pout o = {out->point,  out->feature, out->xm[0], out->xm[1],
                     out->nrm[0], out->nrm[1],  out->dist,  out->curv[0]};
     const int room = 3; /* the face and the two end vertices */
+    double fx0[PP_SUB], fx1[PP_SUB], fn0[PP_SUB], fn1[PP_SUB], fd[PP_SUB];
+    double what[PP_SUB]; /* 1: face contact, 0: none, -1: per-point path */
     int nh = out->n;
-    for (; i < m; i++) {
-        if (nh > cap - room) {
-            *need = room;
-            break;
-        }
-        const double px = pts->u[i], py = pts->v[i], dhi = pts->dhi[i];
-        const double wx = px - q->o[0], wy = py - q->o[1];
-        const double sd = wx * q->nl[0] + wy * q->nl[1];
-        const double dB = (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
-        const double dA = (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
-        const int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
-        const int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
-        if (in_start && in_end && (two || sd >= 0.0)) {
-            nh = put_line(&o, nh, 0, q, base + i, wx, wy, sd, two, dlo, dhi);
+    while (i < m) {
+        const int c = m - i < PP_SUB ? m - i : PP_SUB;
+        line_faces(q, two, dlo, c, pts->u + i, pts->v + i, pts->dhi + i, fx0, fx1, fn0, fn1,
+                   fd, what);
+        /* Every point of the run a face contact, with room for all: straight copies. */
+        int nf = 0;
+        for (int j = 0; j < c; j++)
+            nf += what[j] > 0.0;
+        if (nf == c && nh + c + room - 1 <= cap) {
+            const size_t bytes = (size_t)c * sizeof(double);
+            memcpy(o.x0 + nh, fx0, bytes);
+            memcpy(o.x1 + nh, fx1, bytes);
+            memcpy(o.n0 + nh, fn0, bytes);
+            memcpy(o.n1 + nh, fn1, bytes);
+            memcpy(o.dist + nh, fd, bytes);
+            memset(o.kap + nh, 0, bytes); /* 0.0 */
+            int *restrict op = o.point + nh, *restrict of = o.feature + nh;
+            for (int j = 0; j < c; j++) {
+                op[j] = base + i + j;
+                of[j] = feat;
+            }
+            nh += c;
+            i += c;
             continue;
         }
-        const int nk = rs_pcache_hits(pc, px, py, dlo, dhi, sc);
-        for (int k = 0; k < nk; k++)
-            put_hit(&o, nh++, base + i, &sc->hits[k]);
+        int j = 0;
+        for (; j < c; j++) {
+            if (nh > cap - room) {
+                *need = room;
+                out->n = nh;
+                return i + j;
+            }
+            if (what[j] > 0.0) {
+                o.point[nh] = base + i + j;
+                o.feature[nh] = feat;
+                o.x0[nh] = fx0[j];
+                o.x1[nh] = fx1[j];
+                o.n0[nh] = fn0[j];
+                o.n1[nh] = fn1[j];
+                o.dist[nh] = fd[j];
+                o.kap[nh] = 0.0;
+                nh++;
+            } else if (what[j] < 0.0) {
+                const int nk = rs_pcache_hits(pc, pts->u[i + j], pts->v[i + j], dlo,
+                                              pts->dhi[i + j], sc);
+                for (int k = 0; k < nk; k++)
+                    put_hit(&o, nh++, base + i + j, &sc->hits[k]);
+            }
+        }
+        i += c;
     }
     out->n = nh;
     return i;
