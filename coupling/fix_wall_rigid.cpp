@@ -40,7 +40,7 @@ const double kPi = 3.14159265358979323846;
 const int kNout = 14;
 
 /* Restart layout version (global record). */
-const double kRestartVersion = 1.0;
+const double kRestartVersion = 2.0; // 2: directory in the row, slots after it
 
 int rates_callback(double t, double vel[3], double *omega, void *ctx)
 {
@@ -78,8 +78,8 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       tracking_(0.0), tracking_given_(false), area_mode_(AREA_NODE), area_const_(1.0),
       temp_given_(false), temp_wall_(0.0), dtemp_wall_(0.0), capacity_wall_(0.0),
       heat_wall_(0.0), heat_step_(0.0), fix_temp_(NULL), fix_heatflux_(NULL),
-      fix_heatcap_(NULL), vtk_every_(0), vtk_mesh_ok_(false), row_(NULL), nmax_(0),
-      rebuild_(true), se_now_(0.0), ncontact_(0), out_step_(-1), out_valid_(false)
+      fix_heatcap_(NULL), vtk_every_(0), vtk_mesh_ok_(false), row_(NULL), hist_(NULL),
+      nmax_(0), rebuild_(true), se_now_(0.0), ncontact_(0), out_step_(-1), out_valid_(false)
 {
     std::memset(&surf_, 0, sizeof surf_);
     std::memset(&loaded_, 0, sizeof loaded_);
@@ -143,6 +143,7 @@ FixWallRigid::~FixWallRigid()
     atom->delete_callback(id, 0);
     atom->delete_callback(id, 1);
     memory->destroy(row_);
+    memory->sfree(hist_);
     memory->destroy(array_atom);
     delete[] extlist;
     extlist = NULL;
@@ -937,7 +938,7 @@ void FixWallRigid::end_of_step()
 void FixWallRigid::clear_row(int i)
 {
     double *r = row_[i];
-    rs_track_clear(&tracker_, r);
+    rs_track_clear(&tracker_, r, slot0(i), slot_stride());
     for (int j = 0; j < capacity_; j++)
         r[sed_offset() + j] = 0.0;
     r[tprev_offset()] = NAN;
@@ -985,7 +986,8 @@ void FixWallRigid::init_scratch()
     for (std::vector<double> *a :
          {&bx_, &by_, &bz_, &bvx_, &bvy_, &bvz_, &bwx_, &bwy_, &bwz_, &brad_})
         a->resize(np);
-    bid_.resize(np), bhist_.resize(np), bidx_.resize(np), take_.resize(np);
+    bid_.resize(np), bdir_.resize(np), bhist_.resize(np), bidx_.resize(np);
+    take_.resize(np);
     deepest_.resize(np);
     for (std::vector<double> *a :
          {&c_flux_slv_, &c_flux_mst_, &c_sed_, &c_sfd_, &c_scd_, &c_spd_, &c_svd_,
@@ -1022,7 +1024,6 @@ void FixWallRigid::build_candidates()
     const int *mask = atom->mask;
     double **x = atom->x;
     const double *radius = atom->radius;
-    const int hs = hist_size();
     rs_error err;
     rs_error_clear(&err);
 
@@ -1040,7 +1041,7 @@ void FixWallRigid::build_candidates()
             rmax = std::max(rmax, radius[i]);
             char held = 0;
             for (int j = 0; j < capacity_; j++)
-                held |= row_[i][j * hs + RS_H_STATE] != RS_HSTATE_EMPTY;
+                held |= row_[i][j] != RS_DIR_EMPTY;
             take_[k] = held;
         }
         rs_query q;
@@ -1148,7 +1149,7 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     double **x = atom->x, **v = atom->v, **omega = atom->omega;
     const double *radius = atom->radius, *rmass = atom->rmass;
     const int *tag = atom->tag, *type = atom->type;
-    const int nd = ndir_, ns = nstatev_, rs = row_size();
+    const int nd = ndir_, ns = nstatev_, as = atom_size();
     const int npred = (int)predef_names_.size();
     const double dt = update->dt;
     rs_error err;
@@ -1163,6 +1164,7 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
                        *__restrict qwz = bwz_.data();
     double *__restrict qr = brad_.data();
     int *__restrict qid = bid_.data();
+    double **__restrict qd = bdir_.data();
     double **__restrict qh = bhist_.data();
     double rmax = radius[idx[0]], rmin = rmax, mmax = rmass[idx[0]], mmin = mmax;
     for (int k = 0; k < n; k++) {
@@ -1174,14 +1176,15 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         qwx[k] = wi[0], qwy[k] = wi[1], qwz[k] = wi[2];
         qr[k] = R;
         qid[k] = tag[i];
-        qh[k] = row_[i];
+        qd[k] = row_[i];
+        qh[k] = slot0(i);
         rmax = std::max(rmax, R), rmin = std::min(rmin, R);
         mmax = std::max(mmax, m), mmin = std::min(mmin, m);
     }
     if (setup_call) {
-        saved_rows_.resize((size_t)n * rs);
+        saved_rows_.resize((size_t)n * as);
         for (int k = 0; k < n; k++)
-            std::memcpy(&saved_rows_[(size_t)k * rs], row_[idx[k]], sizeof(double) * rs);
+            pack_atom(idx[k], &saved_rows_[(size_t)k * as]);
     }
 
     rs_query q;
@@ -1202,7 +1205,9 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     p.wx = bwx_.data(), p.wy = bwy_.data(), p.wz = bwz_.data();
     p.radius = brad_.data();
     p.id = bid_.data();
+    p.dir = bdir_.data();
     p.hist = bhist_.data();
+    p.slot_stride = slot_stride();
 
     /* A setup call has no increment: no slip, no master rotation. */
     rs_motion still;
@@ -1226,8 +1231,7 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
                 array_atom[idx[k]][c] = 0.0;
         if (setup_call)
             for (int k = 0; k < n; k++)
-                std::memcpy(row_[idx[k]], &saved_rows_[(size_t)k * rs],
-                            sizeof(double) * rs);
+                unpack_atom(idx[k], &saved_rows_[(size_t)k * as]);
         return;
     }
     /* Stress of the previous increment in this increment's basis, and the law state. */
@@ -1326,7 +1330,7 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
 
     if (setup_call) {
         for (int k = 0; k < n; k++)
-            std::memcpy(row_[idx[k]], &saved_rows_[(size_t)k * rs], sizeof(double) * rs);
+            unpack_atom(idx[k], &saved_rows_[(size_t)k * as]);
         return;
     }
     rs_track_commit(&tracker_, &tout_, c_stress_.data(), ns ? c_statev_.data() : NULL);
@@ -1341,11 +1345,11 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
     (void)n;
     const double *radius = atom->radius, *rmass = atom->rmass;
     const int *type = atom->type;
-    const int hs = hist_size(), sed0 = sed_offset();
+    const int sed0 = sed_offset();
     const double dt = update->dt;
     const int *__restrict pt = tout_.point;
-    double *const *__restrict slot = tout_.slot;
-    double *const *__restrict bh = bhist_.data();
+    double *const *__restrict dir = tout_.dir;
+    double *const *__restrict bd = bdir_.data();
     const int *__restrict bid = bid_.data();
     const double *__restrict curv = tout_.curv;
     double **__restrict sedp = c_sedp_.data();
@@ -1357,13 +1361,12 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
     bool ident = true, same_curv = true;
     for (int e = 0; e < ne; e++) {
         const int k = pt[e];
-        double *row = bh[k];
-        const double *sl = slot[e];
-        const int j = (int)((sl - row) / hs);
+        double *row = bd[k]; // the directory opens the row
+        const int j = (int)(dir[e] - row);
         double *sp = row + sed0 + j;
         sedp[e] = sp;
         sed[e] = *sp;
-        const char lv = sl[RS_H_STATE] == RS_HSTATE_LEAVING;
+        const char lv = RS_DIR_IS_LEAVING(*dir[e]);
         leaving[e] = lv;
         nleave += lv;
         uid[e] = bid[k];
@@ -1463,7 +1466,7 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
         const int tp0 = tprev_offset();
         for (int e = 0; e < ne; e++) {
             const int k = pt[e], i = idx[k];
-            const double Tp = bh[k][tp0];
+            const double Tp = bd[k][tp0];
             c_temp_[e] = Temp[i];
             c_dtemp_[e] = (setup_call || std::isnan(Tp)) ? 0.0 : Temp[i] - Tp;
         }
@@ -1475,7 +1478,7 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
             const int k = pt[e], i = idx[k];
             for (int a = 0; a < npred; a++) {
                 const double val = predef_fix_[a]->vector_atom[i];
-                const double prev = bh[k][pd0 + a];
+                const double prev = bd[k][pd0 + a];
                 c_pred_[(size_t)e * npred + a] = val;
                 c_dpred_[(size_t)e * npred + a] =
                     (setup_call || std::isnan(prev)) ? 0.0 : val - prev;
@@ -1800,18 +1803,53 @@ void FixWallRigid::grow_arrays(int nmax)
         return;
     memory->grow(row_, nmax, row_size(), "wall/rigid:history");
     memory->grow(array_atom, nmax, 6, "wall/rigid:array_atom");
-    for (int i = nmax_; i < nmax; i++) {
+    /* The slots move: slot j of the old nmax_ atoms to the start of block j. */
+    const size_t hs = hist_size(), oldblk = (size_t)nmax_ * hs, blk = (size_t)nmax * hs;
+    double *h = (double *)memory->smalloc((bigint)(capacity_ * blk * sizeof(double)),
+                                          "wall/rigid:slots");
+    for (int j = 0; j < capacity_; j++)
+        if (oldblk)
+            std::memcpy(h + j * blk, hist_ + j * oldblk, sizeof(double) * oldblk);
+    memory->sfree(hist_);
+    hist_ = h;
+    const int old = nmax_;
+    nmax_ = nmax;
+    for (int i = old; i < nmax; i++) {
         clear_row(i);
         for (int c = 0; c < 6; c++)
             array_atom[i][c] = 0.0;
     }
-    nmax_ = nmax;
+}
+
+/* One atom's history as plain doubles: its row, then its slots in slot order. */
+void FixWallRigid::pack_atom(int i, double *buf) const
+{
+    const int rs = row_size(), hs = hist_size();
+    const ptrdiff_t stride = slot_stride();
+    std::memcpy(buf, row_[i], sizeof(double) * rs);
+    const double *h = slot0(i);
+    for (int j = 0; j < capacity_; j++)
+        std::memcpy(buf + rs + j * hs, h + j * stride, sizeof(double) * hs);
+}
+
+void FixWallRigid::unpack_atom(int i, const double *buf)
+{
+    const int rs = row_size(), hs = hist_size();
+    const ptrdiff_t stride = slot_stride();
+    std::memcpy(row_[i], buf, sizeof(double) * rs);
+    double *h = slot0(i);
+    for (int j = 0; j < capacity_; j++)
+        std::memcpy(h + j * stride, buf + rs + j * hs, sizeof(double) * hs);
 }
 
 void FixWallRigid::copy_arrays(int i, int j, int delflag)
 {
     (void)delflag;
+    const int hs = hist_size();
+    const ptrdiff_t stride = slot_stride();
     std::memcpy(row_[j], row_[i], sizeof(double) * row_size());
+    for (int s = 0; s < capacity_; s++)
+        std::memcpy(slot0(j) + s * stride, slot0(i) + s * stride, sizeof(double) * hs);
     for (int c = 0; c < 6; c++)
         array_atom[j][c] = array_atom[i][c];
 }
@@ -1825,25 +1863,23 @@ void FixWallRigid::set_arrays(int i)
 
 int FixWallRigid::pack_exchange(int i, double *buf)
 {
-    const int n = row_size();
-    std::memcpy(buf, row_[i], sizeof(double) * n);
-    return n;
+    pack_atom(i, buf);
+    return atom_size();
 }
 
 int FixWallRigid::unpack_exchange(int nlocal, double *buf)
 {
-    const int n = row_size();
-    std::memcpy(row_[nlocal], buf, sizeof(double) * n);
+    unpack_atom(nlocal, buf);
     for (int c = 0; c < 6; c++)
         array_atom[nlocal][c] = 0.0;
-    return n;
+    return atom_size();
 }
 
 int FixWallRigid::pack_restart(int i, double *buf)
 {
-    const int n = row_size();
+    const int n = atom_size();
     buf[0] = n + 1;
-    std::memcpy(buf + 1, row_[i], sizeof(double) * n);
+    pack_atom(i, buf + 1);
     return n + 1;
 }
 
@@ -1854,27 +1890,27 @@ void FixWallRigid::unpack_restart(int nlocal, int nth)
     for (int k = 0; k < nth; k++)
         m += static_cast<int>(extra[nlocal][m]);
     const int n = static_cast<int>(extra[nlocal][m]) - 1;
-    if (n != row_size()) {
+    if (n != atom_size()) {
         std::ostringstream o;
         o << "restart file has " << n << " history values per atom, this fix needs "
-          << row_size() << " (keep contacts, law, statev and predef unchanged)";
+          << atom_size() << " (keep contacts, law, statev and predef unchanged)";
         fail_one(o.str());
     }
-    std::memcpy(row_[nlocal], &extra[nlocal][m + 1], sizeof(double) * n);
+    unpack_atom(nlocal, &extra[nlocal][m + 1]);
 }
 
 int FixWallRigid::size_restart(int nlocal)
 {
     (void)nlocal;
-    return row_size() + 1;
+    return atom_size() + 1;
 }
 
 int FixWallRigid::maxsize_restart()
 {
-    return row_size() + 1;
+    return atom_size() + 1;
 }
 
 double FixWallRigid::memory_usage()
 {
-    return (double)nmax_ * (row_size() + 6) * sizeof(double);
+    return (double)nmax_ * (atom_size() + 6) * sizeof(double);
 }

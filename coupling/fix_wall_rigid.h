@@ -4,8 +4,9 @@
  * contacts tracked (rs_track_update), handed to an interface law with the VUINTER
  * calling convention (rs_law_call), and the resulting interface stress applied:
  * F = A (s1 n - s2 t1 - s3 t2) at the contact point, the wall gets -F. The per-contact
- * history lives in a per-atom array that migrates with the atoms and goes into restart
- * files. */
+ * history lives in a small per-atom row (the tracker's directory, sed, previous fields)
+ * and in slot-major slot arrays the fix owns; both migrate with the atoms and go into
+ * restart files. */
 #ifdef FIX_CLASS
 
 FixStyle(wall / rigid, FixWallRigid)
@@ -22,6 +23,7 @@ FixStyle(wall / rigid, FixWallRigid)
 #include "rigidsurf/surface.h"
 #include "rigidsurf/track.h"
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -96,16 +98,18 @@ class FixWallRigid : public Fix
     void write_vtk();
     void update_previous_fields();
 
-    /* per-atom row layout (doubles): tracker history (capacity slots of
-     * RS_HIST_SIZE(nstatev)), sed per slot (capacity), previous temperature (1), previous
-     * predefined fields (npred). */
+    /* per-atom row layout (doubles): tracker directory (capacity), sed per slot
+     * (capacity), previous temperature (1), previous predefined fields (npred). The
+     * tracker's slots (RS_HIST_SIZE(nstatev) each) are in hist_, slot-major: atom i's
+     * slot j at hist_ + (j * nmax_ + i) * hist_size(), so an atom with one contact touches
+     * its row and the dense slot-0 array only. */
     int hist_size() const
     {
         return RS_HIST_SIZE(nstatev_);
     }
     int sed_offset() const
     {
-        return capacity_ * hist_size();
+        return capacity_;
     }
     int tprev_offset() const
     {
@@ -119,7 +123,22 @@ class FixWallRigid : public Fix
     {
         return pred_offset() + (int)predef_names_.size();
     }
+    /// Doubles one atom carries in exchange and restart: its row, then its slots.
+    int atom_size() const
+    {
+        return row_size() + capacity_ * hist_size();
+    }
+    ptrdiff_t slot_stride() const
+    {
+        return (ptrdiff_t)nmax_ * hist_size();
+    }
+    double *slot0(int i) const
+    {
+        return hist_ + (size_t)i * hist_size();
+    }
     void clear_row(int i);
+    void pack_atom(int i, double *buf) const;
+    void unpack_atom(int i, const double *buf);
 
     /* surface and motion */
     rs_surface surf_;
@@ -178,6 +197,7 @@ class FixWallRigid : public Fix
 
     /* per-atom storage */
     double **row_;
+    double *hist_; // capacity * nmax_ slots, slot-major
     int nmax_;
 
     /* candidates: local atom indices near the surface, bucketed by type for hertz */
@@ -189,8 +209,8 @@ class FixWallRigid : public Fix
     rs_track_out tout_;
     std::vector<double> bx_, by_, bz_, bvx_, bvy_, bvz_, bwx_, bwy_, bwz_, brad_;
     std::vector<int> bid_, bidx_;
-    std::vector<double *> bhist_;
-    std::vector<double> saved_rows_;
+    std::vector<double *> bdir_, bhist_;
+    std::vector<double> saved_rows_; // setup call: each particle's row, then its slots
     std::vector<char> leaving_, take_;
     std::vector<int> deepest_;
     std::vector<double *> c_sedp_; // each contact's sed in its particle's row
