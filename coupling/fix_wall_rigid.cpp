@@ -938,9 +938,11 @@ void FixWallRigid::end_of_step()
 void FixWallRigid::clear_row(int i)
 {
     double *r = row_[i];
-    rs_track_clear(&tracker_, r, slot0(i), slot_stride());
+    double *h = slot0(i);
+    const ptrdiff_t stride = slot_stride();
+    rs_track_clear(&tracker_, r, h, stride);
     for (int j = 0; j < capacity_; j++)
-        r[sed_offset() + j] = 0.0;
+        h[j * stride + hist_size()] = 0.0; /* sed */
     r[tprev_offset()] = NAN;
     for (size_t p = 0; p < predef_names_.size(); p++)
         r[pred_offset() + (int)p] = NAN;
@@ -1345,10 +1347,11 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
     (void)n;
     const double *radius = atom->radius, *rmass = atom->rmass;
     const int *type = atom->type;
-    const int sed0 = sed_offset();
+    const int sed0 = hist_size(); /* the sed follows the tracker's slot */
     const double dt = update->dt;
     const int *__restrict pt = tout_.point;
     double *const *__restrict dir = tout_.dir;
+    double *const *__restrict slot = tout_.slot;
     double *const *__restrict bd = bdir_.data();
     const int *__restrict bid = bid_.data();
     const double *__restrict curv = tout_.curv;
@@ -1361,9 +1364,7 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
     bool ident = true, same_curv = true;
     for (int e = 0; e < ne; e++) {
         const int k = pt[e];
-        double *row = bd[k]; // the directory opens the row
-        const int j = (int)(dir[e] - row);
-        double *sp = row + sed0 + j;
+        double *sp = slot[e] + sed0;
         sedp[e] = sp;
         sed[e] = *sp;
         const char lv = RS_DIR_IS_LEAVING(*dir[e]);
@@ -1804,7 +1805,7 @@ void FixWallRigid::grow_arrays(int nmax)
     memory->grow(row_, nmax, row_size(), "wall/rigid:history");
     memory->grow(array_atom, nmax, 6, "wall/rigid:array_atom");
     /* The slots move: slot j of the old nmax_ atoms to the start of block j. */
-    const size_t hs = hist_size(), oldblk = (size_t)nmax_ * hs, blk = (size_t)nmax * hs;
+    const size_t hs = slot_size(), oldblk = (size_t)nmax_ * hs, blk = (size_t)nmax * hs;
     double *h = (double *)memory->smalloc((bigint)(capacity_ * blk * sizeof(double)),
                                           "wall/rigid:slots");
     for (int j = 0; j < capacity_; j++)
@@ -1824,7 +1825,7 @@ void FixWallRigid::grow_arrays(int nmax)
 /* One atom's history as plain doubles: its row, then its slots in slot order. */
 void FixWallRigid::pack_atom(int i, double *buf) const
 {
-    const int rs = row_size(), hs = hist_size();
+    const int rs = row_size(), hs = slot_size();
     const ptrdiff_t stride = slot_stride();
     std::memcpy(buf, row_[i], sizeof(double) * rs);
     const double *h = slot0(i);
@@ -1834,7 +1835,7 @@ void FixWallRigid::pack_atom(int i, double *buf) const
 
 void FixWallRigid::unpack_atom(int i, const double *buf)
 {
-    const int rs = row_size(), hs = hist_size();
+    const int rs = row_size(), hs = slot_size();
     const ptrdiff_t stride = slot_stride();
     std::memcpy(row_[i], buf, sizeof(double) * rs);
     double *h = slot0(i);
@@ -1845,7 +1846,7 @@ void FixWallRigid::unpack_atom(int i, const double *buf)
 void FixWallRigid::copy_arrays(int i, int j, int delflag)
 {
     (void)delflag;
-    const int hs = hist_size();
+    const int hs = slot_size();
     const ptrdiff_t stride = slot_stride();
     std::memcpy(row_[j], row_[i], sizeof(double) * row_size());
     for (int s = 0; s < capacity_; s++)

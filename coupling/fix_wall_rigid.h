@@ -4,9 +4,9 @@
  * contacts tracked (rs_track_update), handed to an interface law with the VUINTER
  * calling convention (rs_law_call), and the resulting interface stress applied:
  * F = A (s1 n - s2 t1 - s3 t2) at the contact point, the wall gets -F. The per-contact
- * history lives in a small per-atom row (the tracker's directory, sed, previous fields)
- * and in slot-major slot arrays the fix owns; both migrate with the atoms and go into
- * restart files. */
+ * history lives in a small per-atom row (the tracker's directory, previous fields) and
+ * in slot-major slot arrays the fix owns (the tracker's slot, then the contact's sed);
+ * both migrate with the atoms and go into restart files. */
 #ifdef FIX_CLASS
 
 FixStyle(wall / rigid, FixWallRigid)
@@ -98,22 +98,22 @@ class FixWallRigid : public Fix
     void write_vtk();
     void update_previous_fields();
 
-    /* per-atom row layout (doubles): tracker directory (capacity), sed per slot
-     * (capacity), previous temperature (1), previous predefined fields (npred). The
-     * tracker's slots (RS_HIST_SIZE(nstatev) each) are in hist_, slot-major: atom i's
-     * slot j at hist_ + (j * nmax_ + i) * hist_size(), so an atom with one contact touches
-     * its row and the dense slot-0 array only. */
+    /* per-atom row layout (doubles): tracker directory (capacity), previous temperature
+     * (1), previous predefined fields (npred). The slots are in hist_, slot-major: atom
+     * i's slot j at hist_ + (j * nmax_ + i) * slot_size(), so an atom with one contact
+     * touches its row and the dense slot-0 array only. A slot is the tracker's
+     * (RS_HIST_SIZE(nstatev)) followed by the contact's sed. */
     int hist_size() const
     {
         return RS_HIST_SIZE(nstatev_);
     }
-    int sed_offset() const
+    int slot_size() const
     {
-        return capacity_;
+        return hist_size() + 1;
     }
     int tprev_offset() const
     {
-        return sed_offset() + capacity_;
+        return capacity_;
     }
     int pred_offset() const
     {
@@ -126,15 +126,15 @@ class FixWallRigid : public Fix
     /// Doubles one atom carries in exchange and restart: its row, then its slots.
     int atom_size() const
     {
-        return row_size() + capacity_ * hist_size();
+        return row_size() + capacity_ * slot_size();
     }
     ptrdiff_t slot_stride() const
     {
-        return (ptrdiff_t)nmax_ * hist_size();
+        return (ptrdiff_t)nmax_ * slot_size();
     }
     double *slot0(int i) const
     {
-        return hist_ + (size_t)i * hist_size();
+        return hist_ + (size_t)i * slot_size();
     }
     void clear_row(int i);
     void pack_atom(int i, double *buf) const;
