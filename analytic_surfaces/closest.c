@@ -311,8 +311,8 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
         pc->nlevel =
             bucket_levels(pc, hi[best_axis] - lo[best_axis], 32L * n + 64, &entries);
     }
-    size_t ints =
-        (size_t)pc->nlevel * (size_t)(pc->nbucket + 1) + 2 * ((size_t)entries + (size_t)n);
+    size_t ints = (size_t)pc->nlevel * (size_t)(2 * pc->nbucket + 1) +
+                  2 * ((size_t)entries + (size_t)n);
     unsigned char *nblk = realloc(blk, head + ints * sizeof(int));
     if (!nblk) {
         free(blk);
@@ -326,6 +326,7 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
     pc->blist = pc->bstart + (size_t)pc->nlevel * (size_t)(pc->nbucket + 1);
     pc->all = pc->blist + entries;
     pc->boff = pc->all + n;
+    pc->bchain = pc->boff + entries + n;
     for (int k = 0; k < n; k++) {
         pc->all[k] = k;
         pc->ps[k].self = k;
@@ -348,6 +349,23 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
     }
     for (long e = 0; e < entries + n; e++)
         pc->boff[e] = pc->blist[e] * (int)sizeof(rs_pseg);
+    /* A LINE chain: a list of consecutive LINE segments joined by SMOOTH vertices (so
+     * collinear). Their slabs partition the chain's neighbourhood and no vertex inside
+     * can own a point; the segments outside the list are beyond reach. A point in such
+     * a bucket is owned by one face or by none (then an end or corner vertex decides,
+     * which the per-point path answers). */
+    for (int l = 0; l < pc->nlevel; l++)
+        for (int b = 0; b < pc->nbucket; b++) {
+            const int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
+            int chain = bs[b + 1] > bs[b];
+            for (int e = bs[b]; chain && e < bs[b + 1]; e++) {
+                const int k = pc->blist[e];
+                chain = pc->ps[k].type == RS_LINE &&
+                        (e == bs[b] ||
+                         (k == pc->blist[e - 1] + 1 && pc->pv[k].kind == RS_VTX_SMOOTH));
+            }
+            pc->bchain[(size_t)l * (size_t)pc->nbucket + b] = chain;
+        }
     *out = pc;
     return RS_OK;
 }
@@ -987,10 +1005,10 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
     const pout o = {out->point,  out->feature, out->xm[0], out->xm[1],
                     out->nrm[0], out->nrm[1],  out->dist,  out->curv[0]};
     double lreach = -1.0; /* the reach whose level was chosen last */
-    const int *bs = NULL;
+    const int *bs = NULL, *bc = NULL;
     int nh = out->n;
     double rch[PP_SUB];
-    int bkt[PP_SUB], lb[PP_SUB], le[PP_SUB];
+    int bkt[PP_SUB], lb[PP_SUB], le[PP_SUB], lc[PP_SUB];
     while (i < m) {
         const int i1 = m - i < PP_SUB ? m : i + PP_SUB, c = i1 - i;
         /* reach and bucket of each point (branch-free); bkt < 0 skips the point */
@@ -1021,10 +1039,12 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                     l++;
                 bs = l < pc->nlevel ? pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1)
                                     : NULL;
+                bc = l < pc->nlevel ? pc->bchain + (size_t)l * (size_t)pc->nbucket : NULL;
                 lreach = rch[j];
             }
             lb[j] = bs ? bs[b] : all;
             le[j] = bs ? bs[b + 1] : all + n;
+            lc[j] = bc ? bc[b] : 0;
             bound += 2 * (le[j] - lb[j]) + 1;
             if (bound > cap) {
                 stop = j;
@@ -1038,7 +1058,32 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
             const double px = pu[i + j], py = pv[i + j], dhi = pdh[i + j], reach = rch[j];
             const int k0 = nh, pt = base + i + j;
             int prev = -1, slow = 0;
-            for (; list < end; list++) {
+            if (lc[j]) {
+                /* A LINE chain (rs_pcache_build): the face that owns the point, on its
+                 * particle side (either side with SIDES=2), is its only contact; a
+                 * point no face owns, or behind a one-sided face, takes the per-point
+                 * path. The face contact is the walk's (put_line). */
+                for (; list < end; list++) {
+                    const rs_pseg *q = (const rs_pseg *)((const char *)ps + *list);
+                    const double dB =
+                        (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
+                    const double dA =
+                        (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
+                    const int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
+                    const int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
+                    if (!(in_start && in_end))
+                        continue;
+                    const double wx = px - q->o[0], wy = py - q->o[1];
+                    const double sd = wx * q->nl[0] + wy * q->nl[1];
+                    if (two || sd >= 0.0)
+                        nh = put_line(&o, nh, q->self, q, pt, wx, wy, sd, two, dlo, dhi);
+                    else
+                        slow = 1;
+                    break;
+                }
+                slow |= list == end;
+            }
+            for (; !lc[j] && list < end; list++) {
                 const rs_pseg *q = (const rs_pseg *)((const char *)ps + *list);
                 const int k = q->self;
                 if (q->box[0] - px > reach || px - q->box[1] > reach ||

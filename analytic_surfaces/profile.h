@@ -111,9 +111,10 @@ typedef struct rs_pcache {
     double lo, inv_w;              ///< bucket of coordinate c: floor((c - lo) inv_w)
     double margin[RS_PC_MAXLEVEL]; ///< increasing
     int *bstart;                   ///< level l, bucket b: [l (nbucket + 1) + b], into blist
-    int *blist;                    ///< segment indices
-    int *all;                      ///< 0 .. nseg - 1 (reaches beyond the last level)
-    int *boff;                     ///< blist then all as byte offsets into ps
+    int *bchain; ///< level l, bucket b: [l nbucket + b], 1 for a LINE chain
+    int *blist;  ///< segment indices
+    int *all;    ///< 0 .. nseg - 1 (reaches beyond the last level)
+    int *boff;   ///< blist then all as byte offsets into ps
 } rs_pcache;
 
 /// Builds the query data of an analytic surface's profile (one malloc'ed block).

@@ -188,10 +188,74 @@ static void test_query_block_open_lines_and_arcs_is_brute_force_closest(void)
         0);
 }
 
+/* A drum whose mantle is npc collinear LINE pieces from z = -H to H at r = R, between
+ * two caps, with a reach (gap_max = -dist_min = h) far below a piece's length, so the
+ * points see a chain of pieces. Expected, from the line alone: a point whose projection
+ * lies inside a piece (and away from the caps) has exactly one contact, that piece's
+ * face, with dist = R - r (SIDES=1: any |R - r| <= h; SIDES=2: dist = |R - r| <= h),
+ * and none when |R - r| > h. */
+static void check_collinear_chain(int sides, int npc)
+{
+    const double R = 0.15, H = 0.05, h = 0.004;
+    char deck[4096];
+    int o = snprintf(deck, sizeof deck,
+                     "*SURFACE, TYPE=REVOLUTION, NAME=d%s\n0,0,0, 0,0,1\n"
+                     "START, 0, %.17g\nLINE, %.17g, %.17g\n",
+                     sides == 2 ? ", SIDES=2" : "", -H, R, -H);
+    for (int k = 1; k <= npc; k++)
+        o += snprintf(deck + o, sizeof deck - (size_t)o, "LINE, %.17g, %.17g\n", R,
+                      -H + 2.0 * H * k / npc);
+    snprintf(deck + o, sizeof deck - (size_t)o, "LINE, 0, %.17g\n", H);
+    rs_surface s;
+    ENSURE(parse(deck, &s) == 0);
+    enum { N = 2000 };
+    static double x[N], y[N], z[N];
+    for (int i = 0; i < N; i++) {
+        const double rr = R + 2.5 * h * (2.0 * urand() - 1.0), th = 2.0 * M_PI * urand();
+        x[i] = rr * cos(th);
+        y[i] = rr * sin(th);
+        z[i] = (H - 2.0 * h) * (2.0 * urand() - 1.0);
+    }
+    rs_query q = {N, x, y, z, NULL, NULL, h, -h};
+    rs_contacts c = {0};
+    ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
+    int k = 0, bad = 0, seen = 0;
+    for (int i = 0; i < N; i++) {
+        const double rr = hypot(x[i], y[i]), sd = R - rr, dist = sides == 2 ? fabs(sd) : sd;
+        /* the piece: pieces 1..npc of the profile (0 is the bottom cap) */
+        const double f = (z[i] + H) / (2.0 * H) * npc;
+        const int piece = 1 + (int)f;
+        const int near_joint = fabs(f - floor(f + 0.5)) < 1e-9;
+        int nk = 0;
+        for (; k < c.n && c.point[k] == i; k++, nk++) {
+            bad += c.feature[k] != RS_FEATURE(RS_FEAT_FACE, piece) && !near_joint;
+            bad += fabs(c.dist[k] - dist) > 1e-12;
+            bad += fabs(c.xm[2][k] - z[i]) > 1e-12;
+        }
+        bad += nk != (fabs(sd) <= h ? 1 : 0);
+        seen += nk;
+    }
+    ENSURE(bad == 0);
+    ENSURE(k == c.n);
+    ENSURE(seen > N / 4); /* 40 % of the points lie within reach */
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+}
+
+/* Collinear pieces of a drum's mantle, one- and two-sided, few and many. */
+static void test_query_collinear_chain_gives_one_face_contact(void)
+{
+    check_collinear_chain(1, 6);
+    check_collinear_chain(2, 6);
+    check_collinear_chain(1, 62);
+    check_collinear_chain(2, 3);
+}
+
 int main(void)
 {
     RS_RUN(test_query_block_revolution_two_sides_is_brute_force_closest);
     RS_RUN(test_query_block_closed_one_side_is_brute_force_closest);
     RS_RUN(test_query_block_open_lines_and_arcs_is_brute_force_closest);
+    RS_RUN(test_query_collinear_chain_gives_one_face_contact);
     return rs_test_summary();
 }
