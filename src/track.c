@@ -191,11 +191,19 @@ full:
  * contacts, handovers, leaving slots), which assign_slots handles. */
 RS_INLINE int find_fast(const double *d, int cap, double f)
 {
+    /* Directory entries and f are whole numbers or -1 as doubles, never -0 or NaN, so
+     * equality is equality of the bit patterns (integer compares). */
+    const double empty = RS_DIR_EMPTY;
+    uint64_t fb, eb;
+    memcpy(&fb, &f, sizeof fb);
+    memcpy(&eb, &empty, sizeof eb);
     int js = cap;
     for (int j = 0; j < cap; j++) {
-        if (d[j] == f)
+        uint64_t u;
+        memcpy(&u, d + j, sizeof u);
+        if (u == fb)
             js = j;
-        else if (d[j] != RS_DIR_EMPTY)
+        else if (u != eb)
             return -1;
     }
     return f >= 0.0 ? (js < cap ? js : -1) : cap;
@@ -204,15 +212,37 @@ RS_INLINE int find_fast(const double *d, int cap, double f)
 /* Pass 1 from particle i on, for as long as every particle takes the fast path
  * (find_fast): at most one contact, already held, nothing else in its directory. Fills
  * the entries, advances *kp past the contacts and *ne past the entries taken, and
- * returns the first particle that needs assign_slots (np when none does). */
-RS_INLINE int pass1_fast(int i, int np, int *kp, int nc, const int *restrict cpoint,
-                         const int *restrict cfeat, const double *restrict cdist,
-                         const double *restrict prad, double tracking,
-                         double *const *restrict hist, double *const *restrict dir, int cap,
-                         ptrdiff_t stride, int *restrict opoint, double **restrict oslot,
+ * returns the first particle that needs assign_slots (np when none does). dense: contact
+ * k names particle k for every k, one each, so the contact index is the particle's. */
+RS_INLINE int pass1_fast(int i, int np, int *kp, int nc, int dense,
+                         const int *restrict cpoint, const int *restrict cfeat,
+                         const double *restrict cdist, const double *restrict prad,
+                         double tracking, double *const *restrict hist,
+                         double *const *restrict dir, int cap, ptrdiff_t stride,
+                         int *restrict opoint, double **restrict oslot,
                          double **restrict odir, int *ne)
 {
     int k = *kp, e = *ne;
+    if (dense) {
+        for (; i < np; i++) {
+            double *h = hist[i], *d = dir[i];
+            if (!h || !d)
+                break;
+            const double f =
+                cdist[i] - (prad ? prad[i] : 0.0) > tracking ? -1.0 : (double)cfeat[i];
+            const int js = cap == 4 ? find_fast(d, 4, f) : find_fast(d, cap, f);
+            if (js < 0)
+                break;
+            if (js < cap) {
+                opoint[e] = i;
+                oslot[e] = h + js * stride;
+                odir[e++] = d + js;
+            }
+        }
+        *kp = i;
+        *ne = e;
+        return i;
+    }
     for (; i < np; i++) {
         const int has = k < nc && cpoint[k] == i;
         if ((k + has < nc && cpoint[k + has] == i) || !hist[i] || !dir[i])
@@ -220,7 +250,7 @@ RS_INLINE int pass1_fast(int i, int np, int *kp, int nc, const int *restrict cpo
         double f = -1.0;
         if (has && !(cdist[k] - (prad ? prad[i] : 0.0) > tracking))
             f = (double)cfeat[k];
-        const int js = find_fast(dir[i], cap, f);
+        const int js = cap == 4 ? find_fast(dir[i], 4, f) : find_fast(dir[i], cap, f);
         if (js < 0)
             break;
         if (js < cap) {
@@ -527,6 +557,7 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
         const int k0 = out->point[e];
         if (k0 < 0) {
             emit_leaving(tr, mr, p, -1 - k0, out, e);
+            out->nleave++;
             e++;
             continue;
         }
@@ -579,10 +610,14 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
     const int *cpoint = c ? c->point : NULL, *cfeat = c ? c->feature : NULL;
     const double *cdist = c ? c->dist : NULL;
     double *const *hist = p->hist, *const *dir = p->dir;
+    /* The usual block: contact k names particle k, one each. */
+    int dense = nc == np;
+    for (int t = 0; dense && t < nc; t++)
+        dense = cpoint[t] == t;
     for (int i = 0; i < np; i++) {
         if (dir)
-            i = pass1_fast(i, np, &k, nc, cpoint, cfeat, cdist, prad, tracking, hist, dir,
-                           cap, stride, out->point, out->slot, out->dir, &ne);
+            i = pass1_fast(i, np, &k, nc, dense, cpoint, cfeat, cdist, prad, tracking, hist,
+                           dir, cap, stride, out->point, out->slot, out->dir, &ne);
         if (i == np)
             break;
         const int kb = k;
@@ -617,6 +652,7 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
         mr.Q[0] = mr.Q[4] = mr.Q[8] = 1.0;
     }
 
+    out->nleave = 0;
     if (tr->ndir == 3)
         emit_all(tr, &mr, dt, p, c, out, ne, 3);
     else
@@ -658,10 +694,11 @@ void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress
     } else if (stress) {
         /* The shear traction is carried into this increment's basis, as the slip; a
          * leaving contact keeps its own. */
+        const int anyleave = out->nleave > 0;
         for (int e = 0; e < n; e++) {
             const double *h = out->slot[e], *dr = out->drot + (size_t)4 * e;
             const double s2 = h[RS_H_STRESS + 1], s3 = h[RS_H_STRESS + 2];
-            const int keep = RS_DIR_IS_LEAVING(*out->dir[e]);
+            const int keep = anyleave && RS_DIR_IS_LEAVING(*out->dir[e]);
             stress[3 * e] = h[RS_H_STRESS];
             stress[3 * e + 1] = keep ? s2 : dr[0] * s2 + dr[2] * s3;
             stress[3 * e + 2] = keep ? s3 : dr[1] * s2 + dr[3] * s3;
@@ -675,10 +712,10 @@ void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress
 void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stress,
                      const double *statev)
 {
-    const int nd = out->ndir, ns = tr->nstatev;
+    const int nd = out->ndir, ns = tr->nstatev, anyleave = out->nleave > 0;
     for (int e = 0; e < out->n; e++) {
         double *h = out->slot[e];
-        if (RS_DIR_IS_LEAVING(*out->dir[e])) {
+        if (anyleave && RS_DIR_IS_LEAVING(*out->dir[e])) {
             *out->dir[e] = RS_DIR_EMPTY;
             continue;
         }

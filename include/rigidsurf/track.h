@@ -79,6 +79,7 @@ typedef struct rs_particles {
 /// stride ndir. Arrays grow as needed.
 typedef struct rs_track_out {
     int n, cap, ndir;
+    int nleave;        ///< entries that are leaving contacts (RS_DIR_IS_LEAVING)
     int *point;        ///< particle index in the block
     int *feature;      ///< feature id
     double **slot;     ///< the contact's history slot
