@@ -850,6 +850,16 @@ RS_INLINE int put_line(const pout *o, int nh, int k, const rs_pseg *q, int pt, d
     return nh + 1;
 }
 
+/* The two vertex tests of LINE segment q at (px, py) (profile.h): the point is past its
+ * start vertex (in_start) and before its end vertex (in_end); both: q owns it. */
+RS_INLINE void line_ends(const rs_pseg *q, double px, double py, int *in_start, int *in_end)
+{
+    const double dB = (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
+    const double dA = (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
+    *in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
+    *in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
+}
+
 /* Points searched per pre-pass of rs_pcache_points. */
 enum { PP_SUB = 64 };
 
@@ -1065,12 +1075,8 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                  * path. The face contact is the walk's (put_line). */
                 for (; list < end; list++) {
                     const rs_pseg *q = (const rs_pseg *)((const char *)ps + *list);
-                    const double dB =
-                        (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
-                    const double dA =
-                        (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
-                    const int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
-                    const int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
+                    int in_start, in_end;
+                    line_ends(q, px, py, &in_start, &in_end);
                     if (!(in_start && in_end))
                         continue;
                     const double wx = px - q->o[0], wy = py - q->o[1];
@@ -1097,12 +1103,8 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                     const double sd = wx * q->nl[0] + wy * q->nl[1];
                     if (fabs(sd) > reach)
                         continue;
-                    const double dB =
-                        (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
-                    const double dA =
-                        (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
-                    const int in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
-                    const int in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
+                    int in_start, in_end;
+                    line_ends(q, px, py, &in_start, &in_end);
                     const int hit = in_start && in_end;
                     if (hit && !two && sd < 0.0) {
                         slow = 1;
