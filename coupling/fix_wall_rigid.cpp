@@ -1310,7 +1310,7 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
             fail_one(err.msg);
     }
 
-    /* The scatter also stores each live contact's sed in its row (leaving: 0). A unit
+    /* The scatter also stores each live contact's sed in its slot (leaving: 0). A unit
      * area (the default) drops the products with A, which are exact. */
     const bool unit =
         area_mode_ == AREA_NODE || (area_mode_ == AREA_CONSTANT && area_const_ == 1.0);
@@ -1489,7 +1489,7 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
 }
 
 /* Scatter: F = A (s1 n - s2 t1 - s3 t2) on the particle at x_cp, -F on the wall; the
- * wall's sums, energies, each contact's sed into its row and the per-atom output of the
+ * wall's sums, energies, each contact's sed into its slot and the per-atom output of the
  * block's particles. ND = 2: the plane is z = const, t2 = -ez and the contact point keeps
  * the particle's z. LEAVE: some contacts are leaving (they apply nothing). UNITA: every
  * area is 1. */
@@ -1561,7 +1561,7 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
     m_wall_[0] = mw0, m_wall_[1] = mw1, m_wall_[2] = mw2;
     ncontact_ = ncontact;
 
-    /* Energies, heat, and sed into the rows (not in a setup call: its rows are
+    /* Energies, heat, and sed into the slots (not in a setup call: its history is
      * restored). */
     const double *__restrict sed = c_sed_.data();
     double se = se_now_;
