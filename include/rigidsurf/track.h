@@ -2,8 +2,8 @@
  *
  * One contact is (particle, surface, feature). Each has a history slot that the caller
  * owns (per particle, a directory and `capacity` slots, below), so an engine can migrate
- * and restart it as plain doubles. The tracker turns the contacts of a
- * query into the VUINTER kinematics (docs/conventions.md, "rdisp, drdisp, drot"):
+ * and restart it as plain doubles. The tracker turns the contacts of a query into the
+ * VUINTER kinematics (docs/conventions.md, "rdisp, drdisp, drot"):
  * - rdisp(1) = R - (x_c - x_m).n, > 0 overlap. drdisp(1) = its change since the last call
  *   (for a new contact: -v_rel.n dt).
  * - The old frame is carried by the master's incremental rotation Q, then by the minimal
@@ -50,7 +50,6 @@ extern "C" {
 #define RS_DIR_EMPTY (-1.0)                    ///< a free slot
 #define RS_DIR_LEAVING(f) (-2.0 - (double)(f)) ///< feature f emitted as gone this call
 #define RS_DIR_IS_LEAVING(d) ((d) <= -2.0)
-#define RS_DIR_LEAVING_FEATURE(d) ((int)(-2.0 - (d)))
 
 /// Largest per-particle capacity rs_track_update accepts.
 #define RS_TRACK_MAX_CAPACITY 64
