@@ -11,6 +11,11 @@ each other. Sphere 1 cannot spin (fix nve): the mantle drags it up to the
 friction-limited angle where it sticks and slips, so at the restart point its friction
 force lives only in the tangential history. Spheres 2 and 3 spin (fix nve/sphere).
 The drum's rotation angle must also carry over the restart.
+
+Second case, for the history slots beyond the first: one sphere pressed into the
+concave corner between the turning mantle and the bottom cap of a closed drum holds two
+contacts (mantle and cap, so two history slots) at the restart point; the restarted run
+is again identical to the continuous one.
 """
 import math
 
@@ -72,6 +77,54 @@ def body(s):
         worst = max(diffs)
         s.ck.check(tag + ": restarted run identical to the continuous one", worst[0] == 0.0,
                    "worst |diff| %.3g in %s of atom %d" % (worst[0], worst[2], worst[1]))
+    corner_case(s)
+
+
+def corner_case(s):
+    """A sphere in the mantle / bottom-cap corner: two contacts through the restart."""
+    s.write("closed.inp", L.drum(RC, -0.05, 0.05, caps=True))
+    wall = ("fix w all wall/rigid surface closed.inp law hertz type 2 "
+            "rotate origin 0 0 0 axis 0 0 1 omega 6")
+    mass = RHO * 4.0 / 3.0 * math.pi * R ** 3
+
+    def atoms():
+        d = L.header((-0.06, 0.06, -0.06, 0.06, -0.06, 0.06), DT, mu=0.4)
+        d += L.sphere(1, (0.0, -(RC - R + 1e-5), -0.05 + R - 1e-5), R, RHO)
+        return d
+
+    def lines():
+        # gravity presses it on the mantle, a push along -z into the bottom cap
+        return ("fix grav all gravity 9.81 vector 0 -1 0\n"
+                "fix push all addforce 0 0 %r\n" % (-9.81 * mass) + wall + "\n"
+                "fix i all nve/sphere\nvariable nc equal f_w[7]\n")
+
+    full = atoms() + lines()
+    full += 'fix pr all print %d "NC ${nc}" screen yes\n' % N
+    full += "run %d\nunfix pr\n" % N
+    full += L.dump_lines("d", N, "corner_full.dump") + "run %d\n" % N
+    _, out = s.run("corner_full", full)
+    first = atoms() + lines() + "run %d\nwrite_restart corner.restart\n" % N
+    s.run("corner_first", first)
+    second = ("atom_modify map array\ncommunicate single vel yes\n"
+              "read_restart corner.restart\n")
+    head = L.header((0, 1, 0, 1, 0, 1), DT, mu=0.4)
+    keep = [l for l in head.splitlines()
+            if l.startswith(("newton", "fix m", "pair_", "timestep", "neighbor", "neigh_modify"))]
+    second += "\n".join(keep) + "\n" + lines()
+    second += L.dump_lines("d", N, "corner_restarted.dump") + "run %d\n" % N
+    s.run("corner_restarted", second)
+
+    nc = [float(l.split()[1]) for l in out.splitlines() if l.startswith("NC ")]
+    s.ck.check("corner: at the restart point the sphere holds two contacts (two slots)",
+               len(nc) > 0 and nc[-1] == 2.0, "active contacts %s" % nc)
+    a = L.read_dump(s.path("corner_full.dump"))[-1]
+    b = L.read_dump(s.path("corner_restarted.dump"))[-1]
+    s.ck.check("corner: both runs end at step %d" % (2 * N), a[0] == b[0] == 2 * N,
+               "%d, %d" % (a[0], b[0]))
+    worst = max((abs(a[1][i][c] - b[1][i][c]), i, c) for i in a[1]
+                for c in L.DUMP_COLS.split()[1:])
+    s.ck.check("corner: restarted run identical to the continuous one", worst[0] == 0.0,
+               "worst |diff| %.3g in %s of atom %d" % (worst[0], worst[2], worst[1]))
 
 
 if __name__ == "__main__":
