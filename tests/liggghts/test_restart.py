@@ -40,6 +40,29 @@ def deck_atoms():
     return d
 
 
+def restarted_deck(restart, setup):
+    """Reads restart, defines the materials again (read_restart brings the rest) and
+    appends setup."""
+    d = "atom_modify map array\ncommunicate single vel yes\n"
+    d += "read_restart %s\n" % restart
+    head = L.header((0, 1, 0, 1, 0, 1), DT, mu=0.4)
+    keep = [l for l in head.splitlines()
+            if l.startswith(("newton", "fix m", "pair_", "timestep", "neighbor", "neigh_modify"))]
+    return d + "\n".join(keep) + "\n" + setup
+
+
+def check_identical(s, tag):
+    """The last frames of TAG_full.dump and TAG_restarted.dump agree bit for bit."""
+    a = L.read_dump(s.path(tag + "_full.dump"))[-1]
+    b = L.read_dump(s.path(tag + "_restarted.dump"))[-1]
+    s.ck.check(tag + ": both runs end at step %d" % (2 * N), a[0] == b[0] == 2 * N,
+               "%d, %d" % (a[0], b[0]))
+    worst = max((abs(a[1][i][c] - b[1][i][c]), i, c) for i in a[1]
+                for c in L.DUMP_COLS.split()[1:])
+    s.ck.check(tag + ": restarted run identical to the continuous one", worst[0] == 0.0,
+               "worst |diff| %.3g in %s of atom %d" % (worst[0], worst[2], worst[1]))
+
+
 def body(s):
     s.write("drum.inp", L.drum(RC, -0.05, 0.05))
     for tag, wall in (("ours", WALL),):
@@ -53,14 +76,8 @@ def body(s):
         first += "run %d\nwrite_restart %s.restart\n" % (N, tag)
         s.run(tag + "_first", first)
 
-        second = "atom_modify map array\ncommunicate single vel yes\n"
-        second += "read_restart %s.restart\n" % tag
-        head = L.header((0, 1, 0, 1, 0, 1), DT, mu=0.4)
-        # keep the material definitions, drop what read_restart already made
-        keep = [l for l in head.splitlines()
-                if l.startswith(("newton", "fix m", "pair_", "timestep", "neighbor", "neigh_modify"))]
-        second += "\n".join(keep) + "\n"
-        second += "group g1 id 1\ngroup g2 id 2 3\n" + setup_lines(wall)
+        second = restarted_deck(tag + ".restart",
+                                "group g1 id 1\ngroup g2 id 2 3\n" + setup_lines(wall))
         second += L.dump_lines("d", N, tag + "_restarted.dump") + "run %d\n" % N
         s.run(tag + "_restarted", second)
 
@@ -69,14 +86,7 @@ def body(s):
         slip = math.hypot(mid[1]["f_w[2]"], mid[1]["f_w[3]"])
         s.ck.check(tag + ": at the restart point sphere 1 is held up by friction",
                    ang > 5.0 and slip > 0, "%.2f deg from the bottom, |rdisp2:3| %.3g" % (ang, slip))
-        a = L.read_dump(s.path(tag + "_full.dump"))[-1]
-        b = L.read_dump(s.path(tag + "_restarted.dump"))[-1]
-        s.ck.check(tag + ": both runs end at step %d" % (2 * N), a[0] == b[0] == 2 * N,
-                   "%d, %d" % (a[0], b[0]))
-        diffs = [(abs(a[1][i][c] - b[1][i][c]), i, c) for i in a[1] for c in L.DUMP_COLS.split()[1:]]
-        worst = max(diffs)
-        s.ck.check(tag + ": restarted run identical to the continuous one", worst[0] == 0.0,
-                   "worst |diff| %.3g in %s of atom %d" % (worst[0], worst[2], worst[1]))
+        check_identical(s, tag)
     corner_case(s)
 
 
@@ -105,26 +115,14 @@ def corner_case(s):
     _, out = s.run("corner_full", full)
     first = atoms() + lines() + "run %d\nwrite_restart corner.restart\n" % N
     s.run("corner_first", first)
-    second = ("atom_modify map array\ncommunicate single vel yes\n"
-              "read_restart corner.restart\n")
-    head = L.header((0, 1, 0, 1, 0, 1), DT, mu=0.4)
-    keep = [l for l in head.splitlines()
-            if l.startswith(("newton", "fix m", "pair_", "timestep", "neighbor", "neigh_modify"))]
-    second += "\n".join(keep) + "\n" + lines()
+    second = restarted_deck("corner.restart", lines())
     second += L.dump_lines("d", N, "corner_restarted.dump") + "run %d\n" % N
     s.run("corner_restarted", second)
 
     nc = [float(l.split()[1]) for l in out.splitlines() if l.startswith("NC ")]
     s.ck.check("corner: at the restart point the sphere holds two contacts (two slots)",
                len(nc) > 0 and nc[-1] == 2.0, "active contacts %s" % nc)
-    a = L.read_dump(s.path("corner_full.dump"))[-1]
-    b = L.read_dump(s.path("corner_restarted.dump"))[-1]
-    s.ck.check("corner: both runs end at step %d" % (2 * N), a[0] == b[0] == 2 * N,
-               "%d, %d" % (a[0], b[0]))
-    worst = max((abs(a[1][i][c] - b[1][i][c]), i, c) for i in a[1]
-                for c in L.DUMP_COLS.split()[1:])
-    s.ck.check("corner: restarted run identical to the continuous one", worst[0] == 0.0,
-               "worst |diff| %.3g in %s of atom %d" % (worst[0], worst[2], worst[1]))
+    check_identical(s, "corner")
 
 
 if __name__ == "__main__":
