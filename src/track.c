@@ -316,7 +316,7 @@ typedef struct track_run {
     double s1[RS_TRACK_RUN], s2[RS_TRACK_RUN], ds1[RS_TRACK_RUN], ds2[RS_TRACK_RUN];
     double vn[RS_TRACK_RUN], v1[RS_TRACK_RUN], v2[RS_TRACK_RUN];
     double px[RS_TRACK_RUN], py[RS_TRACK_RUN], pz[RS_TRACK_RUN];
-    double d11[RS_TRACK_RUN], d21[RS_TRACK_RUN], md21[RS_TRACK_RUN];
+    double d11[RS_TRACK_RUN], d21[RS_TRACK_RUN];
 } track_run;
 
 /* Lane j of a run: the history in entry e's slot. */
@@ -423,7 +423,6 @@ RS_INLINE void run_kinematics(track_run *restrict r, int m, const master_rates *
         r->pz[j] = pz;
         r->d11[j] = d11;
         r->d21[j] = d21;
-        r->md21[j] = -d21;
     }
 }
 
@@ -459,7 +458,7 @@ RS_INLINE void run_outputs(const track_run *restrict r, int m, const rs_contacts
     for (int j = 0; j < m; j++) {
         dr[4 * j] = r->d11[j];
         dr[4 * j + 1] = r->d21[j];
-        dr[4 * j + 2] = r->md21[j];
+        dr[4 * j + 2] = -r->d21[j];
         dr[4 * j + 3] = r->d11[j];
     }
     double *restrict al = o->alocaldir + e * nd * nd;
