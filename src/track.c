@@ -209,6 +209,21 @@ RS_INLINE int find_fast(const double *d, int cap, double f)
     return f >= 0.0 ? (js < cap ? js : -1) : cap;
 }
 
+/* find_fast for capacity 4, first testing the usual directory at once: the contact (f
+ * >= 0) in slot 0 and the other slots free, or no contact (f = RS_DIR_EMPTY) and every
+ * slot free. */
+RS_INLINE int find_fast4(const double *d, double f)
+{
+    const double empty = RS_DIR_EMPTY;
+    uint64_t u[4], fb, eb;
+    memcpy(u, d, sizeof u);
+    memcpy(&fb, &f, sizeof fb);
+    memcpy(&eb, &empty, sizeof eb);
+    if (((u[0] ^ fb) | (u[1] ^ eb) | (u[2] ^ eb) | (u[3] ^ eb)) == 0)
+        return f >= 0.0 ? 0 : 4;
+    return find_fast(d, 4, f);
+}
+
 /* Pass 1 from particle i on, for as long as every particle takes the fast path
  * (find_fast): at most one contact, already held, nothing else in its directory. Fills
  * the entries, advances *kp past the contacts and *ne past the entries taken, and
@@ -230,7 +245,7 @@ RS_INLINE int pass1_fast(int i, int np, int *kp, int nc, int dense,
                 break;
             const double f =
                 cdist[i] - (prad ? prad[i] : 0.0) > tracking ? -1.0 : (double)cfeat[i];
-            const int js = cap == 4 ? find_fast(d, 4, f) : find_fast(d, cap, f);
+            const int js = cap == 4 ? find_fast4(d, f) : find_fast(d, cap, f);
             if (js < 0)
                 break;
             if (js < cap) {
@@ -250,7 +265,7 @@ RS_INLINE int pass1_fast(int i, int np, int *kp, int nc, int dense,
         double f = -1.0;
         if (has && !(cdist[k] - (prad ? prad[i] : 0.0) > tracking))
             f = (double)cfeat[k];
-        const int js = cap == 4 ? find_fast(dir[i], 4, f) : find_fast(dir[i], cap, f);
+        const int js = cap == 4 ? find_fast4(dir[i], f) : find_fast(dir[i], cap, f);
         if (js < 0)
             break;
         if (js < cap) {
@@ -545,10 +560,11 @@ static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
 }
 
 /* Pass 2 over the ne entries of pass 1: runs of live contacts, leaving slots as they
- * come. */
+ * come. ident: entry e is contact e of particle e for every e (no leaving slot), so the
+ * runs are known without looking. */
 RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
                         const rs_particles *p, const rs_contacts *c, rs_track_out *out,
-                        int ne, const int nd)
+                        int ne, int ident, const int nd)
 {
     track_run r;
     int e = 0;
@@ -562,12 +578,18 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
         }
         const int e0 = e, i0 = c->point[k0];
         int m = 0;
-        while (e < ne && m < RS_TRACK_RUN && out->point[e] == k0 + m &&
-               c->point[k0 + m] == i0 + m) {
-            run_gather(&r, m, out, e);
-            m++;
-            e++;
+        if (ident) {
+            m = ne - e < RS_TRACK_RUN ? ne - e : RS_TRACK_RUN;
+            e += m;
+        } else {
+            while (e < ne && m < RS_TRACK_RUN && out->point[e] == k0 + m &&
+                   c->point[k0 + m] == i0 + m) {
+                m++;
+                e++;
+            }
         }
+        for (int j = 0; j < m; j++)
+            run_gather(&r, j, out, e0 + j);
         run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd);
         run_outputs(&r, m, c, k0, out, e0, nd);
         run_store(&r, m, tr, c, k0, out, e0);
@@ -614,6 +636,7 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
     int dense = nc == np;
     for (int t = 0; dense && t < nc; t++)
         dense = cpoint[t] == t;
+    int nslow = 0; /* particles assign_slots took */
     for (int i = 0; i < np; i++) {
         if (dir)
             i = pass1_fast(i, np, &k, nc, dense, cpoint, cfeat, cdist, prad, tracking, hist,
@@ -626,7 +649,10 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
         rc = assign_slots(tr, s, p, stride, c, i, kb, k, out, &ne, err);
         if (rc)
             return rc;
+        nslow++;
     }
+    /* Every particle on the fast path with its one contact: entry e is contact e. */
+    const int ident = dense && nslow == 0 && ne == nc;
     if (k < nc) {
         for (k = 0; k < nc; k++) {
             int i = c->point[k];
@@ -654,9 +680,9 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
 
     out->nleave = 0;
     if (tr->ndir == 3)
-        emit_all(tr, &mr, dt, p, c, out, ne, 3);
+        emit_all(tr, &mr, dt, p, c, out, ne, ident, 3);
     else
-        emit_all(tr, &mr, dt, p, c, out, ne, 2);
+        emit_all(tr, &mr, dt, p, c, out, ne, ident, 2);
     out->n = ne;
     return RS_OK;
 }

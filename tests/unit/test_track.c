@@ -641,6 +641,52 @@ static void test_contact_beyond_tracking_leaves(void)
     rs_track_out_free(&o);
 }
 
+/* Three particles, one plane contact each; then the middle one's gap exceeds the
+ * tracking thickness while its contact is still listed. That block has as many entries
+ * as contacts (particle 1's contact is dropped, its slot leaves), but entry 1 is the
+ * leaving slot, not contact 1: it gets RS_MAXVAL, and the others keep their own
+ * penetration R - dist and the frame of their contact. */
+static void test_leaving_slot_between_held_contacts(void)
+{
+    rs_tracker tr = tracker(3);
+    block b;
+    clist l;
+    rs_track_out o = {0};
+    rs_error err;
+    double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
+    double zero[3] = {0, 0, 0};
+    const double R = 0.01, z[3] = {0.0095, 0.0097, 0.0099};
+    block_init(&b, 3, &tr);
+    for (int step = 0; step < 3; step++) {
+        clist_init(&l);
+        for (int i = 0; i < 3; i++) {
+            /* step 2: particle 1 at gap 1.1e-3 > tracking 1e-3 */
+            double x[3] = {0.1 * i, 0, step == 2 && i == 1 ? R + 1.1e-3 : z[i]};
+            block_set(&b, i, x, zero, zero, R);
+            add_plane(&l, i, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1, t2);
+        }
+        ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
+        ENSURE(o.n == 3);
+        for (int e = 0; e < 3; e++) {
+            ENSURE(o.point[e] == e);
+            if (step == 2 && e == 1) {
+                ENSURE(*o.dir[e] == RS_DIR_LEAVING(RS_FEATURE(RS_FEAT_FACE, 0)));
+                for (int a = 0; a < 3; a++)
+                    ENSURE(RS_A2(o.rdisp, 3, a, e) == RS_MAXVAL);
+                continue;
+            }
+            ENSURE(fabs(RS_A2(o.rdisp, 3, 0, e) - (R - z[e])) <= 1e-15);
+            for (int a = 0; a < 3; a++) {
+                ENSURE(RS_A3(o.alocaldir, 3, a, 0, e) == n[a]);
+                ENSURE(RS_A3(o.alocaldir, 3, a, 1, e) == t1[a]);
+            }
+        }
+        ENSURE(o.nleave == (step == 2));
+        rs_track_commit(&tr, &o, NULL, NULL);
+    }
+    rs_track_out_free(&o);
+}
+
 /* Fixture surface class: features FACE 0 and FACE 1 meet tangentially; FACE 2 does not. */
 static int fixture_adjacent(const rs_surface *s, int fa, int fb)
 {
@@ -1028,6 +1074,7 @@ int main(void)
     RS_RUN(test_slip_rotated_by_drot_before_increment);
     RS_RUN(test_maxval_once_after_leaving);
     RS_RUN(test_contact_beyond_tracking_leaves);
+    RS_RUN(test_leaving_slot_between_held_contacts);
     RS_RUN(test_history_handover_across_smooth_junction);
     RS_RUN(test_capacity_error_names_particle);
     RS_RUN(test_ndir2_drot_identity);
