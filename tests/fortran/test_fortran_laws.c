@@ -7,7 +7,6 @@
 #include "rs_test.h"
 #include "test_law_fixture.h"
 
-
 static unsigned long long rng_state = 88172645463325252ull;
 static double urand(void) /* xorshift64, uniform in [0, 1) */
 {
