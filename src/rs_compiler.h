@@ -18,4 +18,12 @@
 #define RS_MULTIVERSION
 #endif
 
+/* Keeps a loop rolled: a copy loop with a run-length trip count is otherwise unrolled
+ * once per call site, which costs instruction cache the hot path needs. */
+#if defined(__GNUC__) && !defined(__clang__)
+#define RS_NO_UNROLL _Pragma("GCC unroll 1")
+#else
+#define RS_NO_UNROLL
+#endif
+
 #endif

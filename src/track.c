@@ -445,17 +445,20 @@ RS_INLINE void run_kinematics(track_run *restrict r, int m, const master_rates *
 RS_INLINE void put_cols(double *restrict dst, int m, const int nd, const double *a,
                         const double *b, const double *c)
 {
-    if (nd == 3)
+    if (nd == 3) {
+        RS_NO_UNROLL
         for (int j = 0; j < m; j++) {
             dst[3 * j] = a[j];
             dst[3 * j + 1] = b[j];
             dst[3 * j + 2] = c[j];
         }
-    else
+    } else {
+        RS_NO_UNROLL
         for (int j = 0; j < m; j++) {
             dst[2 * j] = a[j];
             dst[2 * j + 1] = b[j];
         }
+    }
 }
 
 /* The Abaqus-layout outputs of a run at entries e0 .. e0+m-1. */
@@ -470,6 +473,7 @@ RS_INLINE void run_outputs(const track_run *restrict r, int m, const rs_contacts
     put_cols(o->coordmst + e * nd, m, nd, c->xm[0] + k0, c->xm[1] + k0, c->xm[2] + k0);
     put_cols(o->curv + 2 * e, m, 2, c->curv[0] + k0, c->curv[1] + k0, NULL);
     double *restrict dr = o->drot + 4 * e;
+    RS_NO_UNROLL
     for (int j = 0; j < m; j++) {
         dr[4 * j] = r->d11[j];
         dr[4 * j + 1] = r->d21[j];
