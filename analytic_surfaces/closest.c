@@ -109,6 +109,60 @@ static int bucket_levels(rs_pcache *pc, double extent, long budget, long *entrie
     return nl;
 }
 
+/* The piece that owns, alone, every point of chain bucket b that lies within margin of
+ * the chain, or -1. The bucket's band (widened against the rounding of a point's bucket)
+ * and the strip |sd| <= margin + 1e-6 size around piece k's line meet in a
+ * parallelogram. The ownership tests (dB, dA of profile.h) are linear in the point, so
+ * they hold on the whole parallelogram when they hold at its corners: piece k passes
+ * both strictly (by tol) and every other piece of the list fails one of them strictly,
+ * so the walk of rs_pcache_points finds k and only k for such a point. A point of the
+ * bucket farther from the chain is beyond the reach the level serves and gets no face
+ * contact from any piece. Buckets 0 and nbucket - 1 take the points beyond the grid and
+ * have no owner. */
+static int chain_owner(const rs_pcache *pc, double margin, int b, const int *list, int cnt)
+{
+    const int ax = pc->axis;
+    if (b <= 0 || b >= pc->nbucket - 1 || !(pc->inv_w > 0.0))
+        return -1;
+    const double w = 1.0 / pc->inv_w;
+    const double slack = 1e-6 * w + 1e-12 * (fabs(pc->lo) + pc->size);
+    const double c0 = pc->lo + b * w - slack, c1 = pc->lo + (b + 1) * w + slack;
+    const double strip = margin + 1e-6 * pc->size;
+    for (int e = 0; e < cnt; e++) {
+        const rs_pseg *q = &pc->ps[list[e]];
+        const double tax = q->t[ax];
+        if (!(fabs(tax) > 1e-3))
+            continue; /* the strip runs along the band: no bounded region */
+        double P[4][2], scale = pc->size;
+        for (int c = 0; c < 4; c++) {
+            const double d = (c & 1) ? strip : -strip, cc = (c & 2) ? c1 : c0;
+            const double t = (cc - q->o[ax] - d * q->nl[ax]) / tax;
+            P[c][0] = q->o[0] + t * q->t[0] + d * q->nl[0];
+            P[c][1] = q->o[1] + t * q->t[1] + d * q->nl[1];
+            scale = fmax(scale, fmax(fabs(P[c][0]), fabs(P[c][1])));
+        }
+        const double tol = 1e-9 * scale;
+        int ok = 1;
+        for (int f = 0; f < cnt && ok; f++) {
+            const rs_pseg *r = &pc->ps[list[f]];
+            int in = 1, before = 1, after = 1;
+            for (int c = 0; c < 4; c++) {
+                const double dB =
+                    (P[c][0] - r->v0[0]) * r->tb0[0] + (P[c][1] - r->v0[1]) * r->tb0[1];
+                const double dA =
+                    (P[c][0] - r->v1[0]) * r->ta1[0] + (P[c][1] - r->v1[1]) * r->ta1[1];
+                in &= dB >= tol && dA <= -tol;
+                before &= dB <= -tol;
+                after &= dA >= tol;
+            }
+            ok = f == e ? in : (before || after);
+        }
+        if (ok)
+            return list[e];
+    }
+    return -1;
+}
+
 static void box_add(double box[4], double x, double y)
 {
     box[0] = fmin(box[0], x);
@@ -278,16 +332,17 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
         }
     double best = -1.0;
     int best_axis = 0;
-    pc->nbucket = n;
-    int *cnt = n > 1 ? malloc((size_t)(n + 1) * sizeof(int)) : NULL;
+    const int nb = n * RS_PC_BUCKETS_PER_SEG;
+    pc->nbucket = nb;
+    int *cnt = n > 1 ? malloc((size_t)(nb + 1) * sizeof(int)) : NULL;
     for (int a = 0; a < 2 && cnt; a++) {
         double ext = hi[a] - lo[a], sq = 0.0;
         if (!(ext > 0.0) || !isfinite(ext))
             continue;
         pc->axis = a;
         pc->lo = lo[a];
-        pc->inv_w = (double)n / ext;
-        bucket_level(pc, 0.25 * ext / n, cnt, NULL, &sq);
+        pc->inv_w = (double)nb / ext;
+        bucket_level(pc, 0.25 * ext / nb, cnt, NULL, &sq);
         if (best < 0.0 || sq < best) {
             best = sq;
             best_axis = a;
@@ -307,9 +362,9 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
     } else {
         pc->axis = best_axis;
         pc->lo = lo[best_axis];
-        pc->inv_w = (double)n / (hi[best_axis] - lo[best_axis]);
-        pc->nlevel =
-            bucket_levels(pc, hi[best_axis] - lo[best_axis], 32L * n + 64, &entries);
+        pc->inv_w = (double)nb / (hi[best_axis] - lo[best_axis]);
+        pc->nlevel = bucket_levels(pc, hi[best_axis] - lo[best_axis],
+                                   32L * RS_PC_BUCKETS_PER_SEG * n + 64, &entries);
     }
     size_t ints = (size_t)pc->nlevel * (size_t)(2 * pc->nbucket + 1) +
                   2 * ((size_t)entries + (size_t)n);
@@ -353,7 +408,8 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
      * collinear). Their slabs partition the chain's neighbourhood and no vertex inside
      * can own a point; the segments outside the list are beyond reach. A point in such
      * a bucket is owned by one face or by none (then an end or corner vertex decides,
-     * which the per-point path answers). */
+     * which the per-point path answers). When one piece owns every point of the bucket
+     * within the level's margin (chain_owner), the bucket names it: 2 + k. */
     for (int l = 0; l < pc->nlevel; l++)
         for (int b = 0; b < pc->nbucket; b++) {
             const int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
@@ -363,6 +419,11 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
                 chain = pc->ps[k].type == RS_LINE &&
                         (e == bs[b] ||
                          (k == pc->blist[e - 1] + 1 && pc->pv[k].kind == RS_VTX_SMOOTH));
+            }
+            if (chain) {
+                const int own =
+                    chain_owner(pc, pc->margin[l], b, pc->blist + bs[b], bs[b + 1] - bs[b]);
+                chain = own >= 0 ? 2 + own : 1;
             }
             pc->bchain[(size_t)l * (size_t)pc->nbucket + b] = chain;
         }
@@ -1075,10 +1136,14 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                  * path. The face contact is the walk's (put_line). */
                 for (; list < end; list++) {
                     const rs_pseg *q = (const rs_pseg *)((const char *)ps + *list);
-                    int in_start, in_end;
-                    line_ends(q, px, py, &in_start, &in_end);
-                    if (!(in_start && in_end))
-                        continue;
+                    if (lc[j] >= 2) {
+                        q = ps + (lc[j] - 2); /* the bucket's owner (chain_owner) */
+                    } else {
+                        int in_start, in_end;
+                        line_ends(q, px, py, &in_start, &in_end);
+                        if (!(in_start && in_end))
+                            continue;
+                    }
                     const double wx = px - q->o[0], wy = py - q->o[1];
                     const double sd = wx * q->nl[0] + wy * q->nl[1];
                     if (two || sd >= 0.0)

@@ -100,6 +100,9 @@ typedef struct rs_pvert {
  * reach <= margin[l] of a segment finds it in its own bucket's list at level l. Reaches
  * beyond the last level scan every segment. */
 #define RS_PC_MAXLEVEL 12
+/* Buckets per segment: fine enough that most buckets along a chain of collinear pieces
+ * lie inside one piece (rs_pcache_build gives those an owner). */
+#define RS_PC_BUCKETS_PER_SEG 4
 typedef struct rs_pcache {
     int nseg, nvert, closed, sides;
     double size;
@@ -111,7 +114,8 @@ typedef struct rs_pcache {
     double lo, inv_w;              ///< bucket of coordinate c: floor((c - lo) inv_w)
     double margin[RS_PC_MAXLEVEL]; ///< increasing
     int *bstart;                   ///< level l, bucket b: [l (nbucket + 1) + b], into blist
-    int *bchain; ///< level l, bucket b: [l nbucket + b], 1 for a LINE chain
+    int *bchain; ///< level l, bucket b: [l nbucket + b]: 0, 1 for a LINE chain, 2 + k
+                 ///< for a chain whose points within the level's margin segment k owns
     int *blist;  ///< segment indices
     int *all;    ///< 0 .. nseg - 1 (reaches beyond the last level)
     int *boff;   ///< blist then all as byte offsets into ps

@@ -251,11 +251,101 @@ static void test_query_collinear_chain_gives_one_face_contact(void)
     check_collinear_chain(2, 3);
 }
 
+/* A cone (REVOLUTION) whose mantle is npc collinear LINE pieces from (r, z) = (r0, -H)
+ * to (r1, H), closed by caps to the axis: the chain runs oblique to both profile axes,
+ * so its pieces' slabs cross the buckets at an angle. Expected, from the line alone:
+ * with t the unit direction of the line and n = (-t_z, t_r) its normal, a point whose
+ * projection s lies inside the mantle, away from the caps, has one contact when its
+ * distance sd = (p - p0).n is within the reach h (SIDES=1: -h <= sd <= h, dist = sd;
+ * SIDES=2: dist = |sd|), the face of the piece that holds s (either piece within 1e-9
+ * of a joint), at the projection; none when |sd| > h. */
+static void check_oblique_chain(int sides, int npc)
+{
+    const double r0 = 0.05, r1 = 0.15, H = 0.1, h = 0.004;
+    char deck[4096];
+    int o = snprintf(deck, sizeof deck,
+                     "*SURFACE, TYPE=REVOLUTION, NAME=c%s\n0,0,0, 0,0,1\n"
+                     "START, 0, %.17g\nLINE, %.17g, %.17g\n",
+                     sides == 2 ? ", SIDES=2" : "", -H, r0, -H);
+    for (int k = 1; k <= npc; k++)
+        o += snprintf(deck + o, sizeof deck - (size_t)o, "LINE, %.17g, %.17g\n",
+                      r0 + (r1 - r0) * k / npc, -H + 2.0 * H * k / npc);
+    snprintf(deck + o, sizeof deck - (size_t)o, "LINE, 0, %.17g\n", H);
+    rs_surface s;
+    ENSURE(parse(deck, &s) == 0);
+    const double L = hypot(r1 - r0, 2.0 * H), tr = (r1 - r0) / L, tz = 2.0 * H / L;
+    const double nr = -tz, nz = tr;
+    enum { N = 4000 };
+    static double x[N], y[N], z[N], sp[N], dp[N];
+    for (int i = 0; i < N; i++) {
+        /* every fourth point projects within 1e-12 of a joint; all project inside
+         * [0.1, 0.9] L, farther than 2.5 h from the caps */
+        double sj = (0.1 + 0.8 * urand()) * L;
+        if (i % 4 == 0) {
+            const double jlo = fmax(1.0, ceil(0.1 * npc)),
+                         jhi = fmin(npc - 1.0, floor(0.9 * npc));
+            const double jn = fmin(fmax(floor(sj / L * npc + 0.5), jlo), jhi);
+            sj = L * jn / npc + 1e-12 * L * (2.0 * urand() - 1.0);
+        }
+        const double d = 2.5 * h * (2.0 * urand() - 1.0), th = 2.0 * M_PI * urand();
+        const double rr = r0 + sj * tr + d * nr;
+        x[i] = rr * cos(th);
+        y[i] = rr * sin(th);
+        z[i] = -H + sj * tz + d * nz;
+        sp[i] = sj;
+        dp[i] = d;
+    }
+    rs_query q = {N, x, y, z, NULL, NULL, h, -h};
+    rs_contacts c = {0};
+    ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
+    int k = 0, bad = 0, seen = 0;
+    for (int i = 0; i < N; i++) {
+        const double u = hypot(x[i], y[i]);
+        const double sd = (u - r0) * nr + (z[i] + H) * nz;
+        const double sproj = (u - r0) * tr + (z[i] + H) * tz;
+        const double dist = sides == 2 ? fabs(sd) : sd;
+        const double f = sproj / L * npc;
+        const int piece = 1 + (int)f;
+        const int near_joint = fabs(f - floor(f + 0.5)) < 1e-9 * npc;
+        int nk = 0;
+        for (; k < c.n && c.point[k] == i; k++, nk++) {
+            const int fe = c.feature[k];
+            bad +=
+                fe != RS_FEATURE(RS_FEAT_FACE, piece) &&
+                !(near_joint && (fe == RS_FEATURE(RS_FEAT_FACE, (int)floor(f + 0.5)) ||
+                                 fe == RS_FEATURE(RS_FEAT_FACE, (int)floor(f + 0.5) + 1)));
+            bad += fabs(c.dist[k] - dist) > 1e-12;
+            const double ur = r0 + sproj * tr, uz = -H + sproj * tz;
+            bad += fabs(hypot(c.xm[0][k], c.xm[1][k]) - ur) > 1e-12;
+            bad += fabs(c.xm[2][k] - uz) > 1e-12;
+        }
+        bad += nk != (fabs(sd) <= h ? 1 : 0);
+        seen += nk;
+        bad += fabs(sd - dp[i]) > 1e-12 || fabs(sproj - sp[i]) > 1e-12;
+    }
+    ENSURE(bad == 0);
+    ENSURE(k == c.n);
+    ENSURE(seen > N / 4); /* 40 % of the points lie within reach */
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+}
+
+/* Collinear pieces of a cone's mantle, oblique to the profile axes, one- and two-sided,
+ * few and many. */
+static void test_query_oblique_chain_gives_one_face_contact(void)
+{
+    check_oblique_chain(1, 7);
+    check_oblique_chain(2, 7);
+    check_oblique_chain(1, 40);
+    check_oblique_chain(2, 3);
+}
+
 int main(void)
 {
     RS_RUN(test_query_block_revolution_two_sides_is_brute_force_closest);
     RS_RUN(test_query_block_closed_one_side_is_brute_force_closest);
     RS_RUN(test_query_block_open_lines_and_arcs_is_brute_force_closest);
     RS_RUN(test_query_collinear_chain_gives_one_face_contact);
+    RS_RUN(test_query_oblique_chain_gives_one_face_contact);
     return rs_test_summary();
 }
