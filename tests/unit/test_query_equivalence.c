@@ -188,6 +188,33 @@ static void test_query_block_open_lines_and_arcs_is_brute_force_closest(void)
         0);
 }
 
+/* A REVOLUTION profile about z: a cap from the axis to (r0, -H), npc collinear LINE
+ * pieces to (r1, H), a cap back to the axis. */
+static void parse_chain(int sides, double r0, double r1, double H, int npc, rs_surface *s)
+{
+    char deck[4096];
+    int o = snprintf(deck, sizeof deck,
+                     "*SURFACE, TYPE=REVOLUTION, NAME=chain%s\n0,0,0, 0,0,1\n"
+                     "START, 0, %.17g\nLINE, %.17g, %.17g\n",
+                     sides == 2 ? ", SIDES=2" : "", -H, r0, -H);
+    for (int k = 1; k <= npc; k++)
+        o += snprintf(deck + o, sizeof deck - (size_t)o, "LINE, %.17g, %.17g\n",
+                      r0 + (r1 - r0) * k / npc, -H + 2.0 * H * k / npc);
+    snprintf(deck + o, sizeof deck - (size_t)o, "LINE, 0, %.17g\n", H);
+    ENSURE(parse(deck, s) == 0);
+}
+
+/* The verdict of a chain check: no bad contact, every contact read, and more than a
+ * quarter of the n points with a contact (40 % lie within reach). */
+static void chain_verdict(int bad, int k, int seen, int n, rs_contacts *c, rs_surface *s)
+{
+    ENSURE(bad == 0);
+    ENSURE(k == c->n);
+    ENSURE(seen > n / 4);
+    rs_contacts_free(c);
+    rs_surface_free(s);
+}
+
 /* A drum whose mantle is npc collinear LINE pieces from z = -H to H at r = R, between
  * two caps, with a reach (gap_max = -dist_min = h) far below a piece's length, so the
  * points see a chain of pieces. Expected, from the line alone: a point whose projection
@@ -197,17 +224,8 @@ static void test_query_block_open_lines_and_arcs_is_brute_force_closest(void)
 static void check_collinear_chain(int sides, int npc)
 {
     const double R = 0.15, H = 0.05, h = 0.004;
-    char deck[4096];
-    int o = snprintf(deck, sizeof deck,
-                     "*SURFACE, TYPE=REVOLUTION, NAME=d%s\n0,0,0, 0,0,1\n"
-                     "START, 0, %.17g\nLINE, %.17g, %.17g\n",
-                     sides == 2 ? ", SIDES=2" : "", -H, R, -H);
-    for (int k = 1; k <= npc; k++)
-        o += snprintf(deck + o, sizeof deck - (size_t)o, "LINE, %.17g, %.17g\n", R,
-                      -H + 2.0 * H * k / npc);
-    snprintf(deck + o, sizeof deck - (size_t)o, "LINE, 0, %.17g\n", H);
     rs_surface s;
-    ENSURE(parse(deck, &s) == 0);
+    parse_chain(sides, R, R, H, npc, &s);
     enum { N = 2000 };
     static double x[N], y[N], z[N];
     for (int i = 0; i < N; i++) {
@@ -235,11 +253,7 @@ static void check_collinear_chain(int sides, int npc)
         bad += nk != (fabs(sd) <= h ? 1 : 0);
         seen += nk;
     }
-    ENSURE(bad == 0);
-    ENSURE(k == c.n);
-    ENSURE(seen > N / 4); /* 40 % of the points lie within reach */
-    rs_contacts_free(&c);
-    rs_surface_free(&s);
+    chain_verdict(bad, k, seen, N, &c, &s);
 }
 
 /* Collinear pieces of a drum's mantle, one- and two-sided, few and many. */
@@ -262,17 +276,8 @@ static void test_query_collinear_chain_gives_one_face_contact(void)
 static void check_oblique_chain(int sides, int npc)
 {
     const double r0 = 0.05, r1 = 0.15, H = 0.1, h = 0.004;
-    char deck[4096];
-    int o = snprintf(deck, sizeof deck,
-                     "*SURFACE, TYPE=REVOLUTION, NAME=c%s\n0,0,0, 0,0,1\n"
-                     "START, 0, %.17g\nLINE, %.17g, %.17g\n",
-                     sides == 2 ? ", SIDES=2" : "", -H, r0, -H);
-    for (int k = 1; k <= npc; k++)
-        o += snprintf(deck + o, sizeof deck - (size_t)o, "LINE, %.17g, %.17g\n",
-                      r0 + (r1 - r0) * k / npc, -H + 2.0 * H * k / npc);
-    snprintf(deck + o, sizeof deck - (size_t)o, "LINE, 0, %.17g\n", H);
     rs_surface s;
-    ENSURE(parse(deck, &s) == 0);
+    parse_chain(sides, r0, r1, H, npc, &s);
     const double L = hypot(r1 - r0, 2.0 * H), tr = (r1 - r0) / L, tz = 2.0 * H / L;
     const double nr = -tz, nz = tr;
     enum { N = 4000 };
@@ -323,11 +328,7 @@ static void check_oblique_chain(int sides, int npc)
         seen += nk;
         bad += fabs(sd - dp[i]) > 1e-12 || fabs(sproj - sp[i]) > 1e-12;
     }
-    ENSURE(bad == 0);
-    ENSURE(k == c.n);
-    ENSURE(seen > N / 4); /* 40 % of the points lie within reach */
-    rs_contacts_free(&c);
-    rs_surface_free(&s);
+    chain_verdict(bad, k, seen, N, &c, &s);
 }
 
 /* Collinear pieces of a cone's mantle, oblique to the profile axes, one- and two-sided,
