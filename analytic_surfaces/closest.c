@@ -109,6 +109,14 @@ static int bucket_levels(rs_pcache *pc, double extent, long budget, long *entrie
     return nl;
 }
 
+/* Offsets of (px, py) along segment q's start and end tangents from its start and end
+ * vertices (dB, dA of profile.h); q's slab is dB > 0 and dA < 0. */
+RS_INLINE void slab_offsets(const rs_pseg *q, double px, double py, double *dB, double *dA)
+{
+    *dB = (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
+    *dA = (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
+}
+
 /* The piece that owns, alone, every point of chain bucket b that lies within margin of
  * the chain, or -1. The bucket's band (widened against the rounding of a point's bucket)
  * and the strip |sd| <= margin + 1e-6 size around piece k's line meet in a
@@ -147,10 +155,8 @@ static int chain_owner(const rs_pcache *pc, double margin, int b, const int *lis
             const rs_pseg *r = &pc->ps[list[f]];
             int in = 1, before = 1, after = 1;
             for (int c = 0; c < 4; c++) {
-                const double dB =
-                    (P[c][0] - r->v0[0]) * r->tb0[0] + (P[c][1] - r->v0[1]) * r->tb0[1];
-                const double dA =
-                    (P[c][0] - r->v1[0]) * r->ta1[0] + (P[c][1] - r->v1[1]) * r->ta1[1];
+                double dB, dA;
+                slab_offsets(r, P[c][0], P[c][1], &dB, &dA);
                 in &= dB >= tol && dA <= -tol;
                 before &= dB <= -tol;
                 after &= dA >= tol;
@@ -915,8 +921,8 @@ RS_INLINE int put_line(const pout *o, int nh, int k, const rs_pseg *q, int pt, d
  * start vertex (in_start) and before its end vertex (in_end); both: q owns it. */
 RS_INLINE void line_ends(const rs_pseg *q, double px, double py, int *in_start, int *in_end)
 {
-    const double dB = (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
-    const double dA = (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
+    double dB, dA;
+    slab_offsets(q, px, py, &dB, &dA);
     *in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
     *in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
 }
