@@ -9,6 +9,12 @@
 #define RS_INLINE static inline
 #endif
 
+#if defined(__GNUC__)
+#define RS_NOINLINE __attribute__((noinline))
+#else
+#define RS_NOINLINE
+#endif
+
 /* Built twice, for AVX2 and for the baseline ISA; the loader picks the one the CPU runs
  * (GCC function multiversioning, x86-64). Loops written to vectorise run 4 doubles wide
  * where the CPU has AVX2. No FMA: contraction stays off (ISO C mode). */

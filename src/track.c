@@ -10,6 +10,7 @@
 #include "rigidsurf/track.h"
 
 #include "rs_compiler.h"
+#include "rs_v4.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -189,7 +190,7 @@ full:
  * already holds it, and no other slot in use. Returns that slot's index, cap for no
  * contact and no slot in use, or -1, having written nothing, for every other case (new
  * contacts, handovers, leaving slots), which assign_slots handles. */
-RS_INLINE int find_fast(const double *d, int cap, double f)
+static RS_NOINLINE int find_fast(const double *d, int cap, double f)
 {
     /* Directory entries and f are whole numbers or -1 as doubles, never -0 or NaN, so
      * equality is equality of the bit patterns (integer compares). */
@@ -215,11 +216,14 @@ RS_INLINE int find_fast(const double *d, int cap, double f)
 RS_INLINE int find_fast4(const double *d, double f)
 {
     const double empty = RS_DIR_EMPTY;
-    uint64_t u[4], fb, eb;
-    memcpy(u, d, sizeof u);
+    uint64_t u0, u1, u2, u3, fb, eb;
+    memcpy(&u0, d, sizeof u0);
+    memcpy(&u1, d + 1, sizeof u1);
+    memcpy(&u2, d + 2, sizeof u2);
+    memcpy(&u3, d + 3, sizeof u3);
     memcpy(&fb, &f, sizeof fb);
     memcpy(&eb, &empty, sizeof eb);
-    if (((u[0] ^ fb) | (u[1] ^ eb) | (u[2] ^ eb) | (u[3] ^ eb)) == 0)
+    if (((u0 ^ fb) | (u1 ^ eb) | (u2 ^ eb) | (u3 ^ eb)) == 0)
         return f >= 0.0 ? 0 : 4;
     return find_fast(d, 4, f);
 }
@@ -227,37 +231,15 @@ RS_INLINE int find_fast4(const double *d, double f)
 /* Pass 1 from particle i on, for as long as every particle takes the fast path
  * (find_fast): at most one contact, already held, nothing else in its directory. Fills
  * the entries, advances *kp past the contacts and *ne past the entries taken, and
- * returns the first particle that needs assign_slots (np when none does). dense: contact
- * k names particle k for every k, one each, so the contact index is the particle's. */
-RS_INLINE int pass1_fast(int i, int np, int *kp, int nc, int dense,
-                         const int *restrict cpoint, const int *restrict cfeat,
-                         const double *restrict cdist, const double *restrict prad,
-                         double tracking, double *const *restrict hist,
-                         double *const *restrict dir, int cap, ptrdiff_t stride,
-                         int *restrict opoint, double **restrict oslot,
+ * returns the first particle that needs assign_slots (np when none does). */
+RS_INLINE int pass1_fast(int i, int np, int *kp, int nc, const int *restrict cpoint,
+                         const int *restrict cfeat, const double *restrict cdist,
+                         const double *restrict prad, double tracking,
+                         double *const *restrict hist, double *const *restrict dir, int cap,
+                         ptrdiff_t stride, int *restrict opoint, double **restrict oslot,
                          double **restrict odir, int *ne)
 {
     int k = *kp, e = *ne;
-    if (dense) {
-        for (; i < np; i++) {
-            double *h = hist[i], *d = dir[i];
-            if (!h || !d)
-                break;
-            const double f =
-                cdist[i] - (prad ? prad[i] : 0.0) > tracking ? -1.0 : (double)cfeat[i];
-            const int js = cap == 4 ? find_fast4(d, f) : find_fast(d, cap, f);
-            if (js < 0)
-                break;
-            if (js < cap) {
-                opoint[e] = i;
-                oslot[e] = h + js * stride;
-                odir[e++] = d + js;
-            }
-        }
-        *kp = i;
-        *ne = e;
-        return i;
-    }
     for (; i < np; i++) {
         const int has = k < nc && cpoint[k] == i;
         if ((k + has < nc && cpoint[k + has] == i) || !hist[i] || !dir[i])
@@ -276,6 +258,36 @@ RS_INLINE int pass1_fast(int i, int np, int *kp, int nc, int dense,
         k += has;
     }
     *kp = k;
+    *ne = e;
+    return i;
+}
+
+/* pass1_fast for a dense block: contact i names particle i for every i, one each.
+ * Returns the first particle that needs assign_slots (np when none does); *ne as in
+ * pass1_fast, and the contacts taken are those of the particles before it. Out of line:
+ * inlined into rs_track_update, its loop state would live on the stack. */
+static RS_NOINLINE int
+pass1_dense(int i, int np, const int *restrict cfeat, const double *restrict cdist,
+            const double *restrict prad, double tracking, double *const *restrict hist,
+            double *const *restrict dir, int cap, ptrdiff_t stride, int *restrict opoint,
+            double **restrict oslot, double **restrict odir, int *ne)
+{
+    int e = *ne;
+    for (; i < np; i++) {
+        double *h = hist[i], *d = dir[i];
+        if (!h || !d)
+            break;
+        const double f =
+            cdist[i] - (prad ? prad[i] : 0.0) > tracking ? -1.0 : (double)cfeat[i];
+        const int js = cap == 4 ? find_fast4(d, f) : find_fast(d, cap, f);
+        if (js < 0)
+            break;
+        if (js < cap) {
+            opoint[e] = i;
+            oslot[e] = h + js * stride;
+            odir[e++] = d + js;
+        }
+    }
     *ne = e;
     return i;
 }
@@ -331,11 +343,16 @@ typedef struct track_run {
     double s1[RS_TRACK_RUN], s2[RS_TRACK_RUN], ds1[RS_TRACK_RUN], ds2[RS_TRACK_RUN];
     double vn[RS_TRACK_RUN], v1[RS_TRACK_RUN], v2[RS_TRACK_RUN];
     double px[RS_TRACK_RUN], py[RS_TRACK_RUN], pz[RS_TRACK_RUN];
-    double d11[RS_TRACK_RUN], d21[RS_TRACK_RUN];
+    double d11[RS_TRACK_RUN], d21[RS_TRACK_RUN], md21[RS_TRACK_RUN]; ///< md21 = -d21
 } track_run;
 
+/* The history slot starts with the 9 values a run gathers and stores: n, t1, slip,
+ * rdisp1, so two rows of 4 and one value. */
+_Static_assert(RS_H_N == 0 && RS_H_T1 == 3 && RS_H_SLIP == 6 && RS_H_RDISP1 == 8,
+               "the run's copies assume n, t1, slip, rdisp1 at the head of the slot");
+
 /* Lane j of a run: the history in entry e's slot. */
-RS_INLINE void run_gather(track_run *restrict r, int j, const rs_track_out *o, int e)
+RS_INLINE void run_gather1(track_run *restrict r, int j, const rs_track_out *o, int e)
 {
     const double *h = o->slot[e];
     r->live[j] = *o->dir[e] >= 0.0;
@@ -348,6 +365,25 @@ RS_INLINE void run_gather(track_run *restrict r, int j, const rs_track_out *o, i
     r->so1[j] = h[RS_H_SLIP];
     r->so2[j] = h[RS_H_SLIP + 1];
     r->rdo[j] = h[RS_H_RDISP1];
+}
+
+/* The history of entries e0 .. e0+m-1 into the run's columns, 4 slots at a time. */
+RS_INLINE void run_gather(track_run *restrict r, int m, const rs_track_out *o, int e0)
+{
+    int j = 0;
+    for (; j + 4 <= m; j += 4) {
+        double *const *h = o->slot + e0 + j;
+        rs_rows_to_cols4(h[0], h[1], h[2], h[3], r->on0 + j, r->on1 + j, r->on2 + j,
+                         r->ot0 + j);
+        rs_rows_to_cols4(h[0] + 4, h[1] + 4, h[2] + 4, h[3] + 4, r->ot1 + j, r->ot2 + j,
+                         r->so1 + j, r->so2 + j);
+        for (int l = 0; l < 4; l++) {
+            r->rdo[j + l] = h[l][RS_H_RDISP1];
+            r->live[j + l] = *o->dir[e0 + j + l] >= 0.0;
+        }
+    }
+    for (; j < m; j++)
+        run_gather1(r, j, o, e0 + j);
 }
 
 /* The kinematics of a run of m live contacts (docs/conventions.md):
@@ -438,6 +474,7 @@ RS_INLINE void run_kinematics(track_run *restrict r, int m, const master_rates *
         r->pz[j] = pz;
         r->d11[j] = d11;
         r->d21[j] = d21;
+        r->md21[j] = -d21;
     }
 }
 
@@ -445,16 +482,19 @@ RS_INLINE void run_kinematics(track_run *restrict r, int m, const master_rates *
 RS_INLINE void put_cols(double *restrict dst, int m, const int nd, const double *a,
                         const double *b, const double *c)
 {
+    int j = 0;
     if (nd == 3) {
+        for (; j + 4 <= m; j += 4)
+            rs_cols3_to_rows4(a + j, b + j, c + j, dst + 3 * j);
         RS_NO_UNROLL
-        for (int j = 0; j < m; j++) {
+        for (; j < m; j++) {
             dst[3 * j] = a[j];
             dst[3 * j + 1] = b[j];
             dst[3 * j + 2] = c[j];
         }
     } else {
         RS_NO_UNROLL
-        for (int j = 0; j < m; j++) {
+        for (; j < m; j++) {
             dst[2 * j] = a[j];
             dst[2 * j + 1] = b[j];
         }
@@ -472,28 +512,46 @@ RS_INLINE void run_outputs(const track_run *restrict r, int m, const rs_contacts
     put_cols(o->coordslv + e * nd, m, nd, r->px, r->py, r->pz);
     put_cols(o->coordmst + e * nd, m, nd, c->xm[0] + k0, c->xm[1] + k0, c->xm[2] + k0);
     put_cols(o->curv + 2 * e, m, 2, c->curv[0] + k0, c->curv[1] + k0, NULL);
+    /* drot(2, 2) = [[d11, -d21], [d21, d11]], column-major. */
     double *restrict dr = o->drot + 4 * e;
+    const double *nd21 = r->md21;
+    int j = 0;
+    for (; j + 4 <= m; j += 4)
+        rs_cols_to_rows4(r->d11 + j, r->d21 + j, nd21 + j, r->d11 + j, dr + 4 * j,
+                         dr + 4 * j + 4, dr + 4 * j + 8, dr + 4 * j + 12);
     RS_NO_UNROLL
-    for (int j = 0; j < m; j++) {
+    for (; j < m; j++) {
         dr[4 * j] = r->d11[j];
         dr[4 * j + 1] = r->d21[j];
-        dr[4 * j + 2] = -r->d21[j];
+        dr[4 * j + 2] = nd21[j];
         dr[4 * j + 3] = r->d11[j];
     }
+    /* alocaldir(nd, nd): columns n, t1 (, t2) of each entry. */
+    const double *n0 = c->nrm[0] + k0, *n1 = c->nrm[1] + k0, *n2 = c->nrm[2] + k0;
+    const double *a0 = c->t1[0] + k0, *a1 = c->t1[1] + k0, *a2 = c->t1[2] + k0;
+    const double *b0 = c->t2[0] + k0, *b1 = c->t2[1] + k0, *b2 = c->t2[2] + k0;
     double *restrict al = o->alocaldir + e * nd * nd;
-    for (int j = 0; j < m; j++) {
-        const int k = k0 + j;
+    j = 0;
+    if (nd == 3)
+        for (; j + 4 <= m; j += 4) {
+            double *a = al + 9 * (size_t)j;
+            rs_cols_to_rows4(n0 + j, n1 + j, n2 + j, a0 + j, a, a + 9, a + 18, a + 27);
+            rs_cols_to_rows4(a1 + j, a2 + j, b0 + j, b1 + j, a + 4, a + 13, a + 22, a + 31);
+            for (int l = 0; l < 4; l++)
+                a[9 * l + 8] = b2[j + l];
+        }
+    for (; j < m; j++) {
         double *a = al + (size_t)j * nd * nd;
-        a[0] = c->nrm[0][k];
-        a[1] = c->nrm[1][k];
-        a[nd] = c->t1[0][k];
-        a[nd + 1] = c->t1[1][k];
+        a[0] = n0[j];
+        a[1] = n1[j];
+        a[nd] = a0[j];
+        a[nd + 1] = a1[j];
         if (nd == 3) {
-            a[2] = c->nrm[2][k];
-            a[5] = c->t1[2][k];
-            a[6] = c->t2[0][k];
-            a[7] = c->t2[1][k];
-            a[8] = c->t2[2][k];
+            a[2] = n2[j];
+            a[5] = a2[j];
+            a[6] = b0[j];
+            a[7] = b1[j];
+            a[8] = b2[j];
         }
     }
 }
@@ -503,24 +561,40 @@ RS_INLINE void run_outputs(const track_run *restrict r, int m, const rs_contacts
 RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *tr,
                          const rs_contacts *c, int k0, rs_track_out *o, int e0)
 {
-    for (int j = 0; j < m; j++) {
+    const double *n0 = c->nrm[0] + k0, *n1 = c->nrm[1] + k0, *n2 = c->nrm[2] + k0;
+    const double *a0 = c->t1[0] + k0, *a1 = c->t1[1] + k0, *a2 = c->t1[2] + k0;
+    double *const *slot = o->slot + e0;
+    int j = 0;
+    for (; j + 4 <= m; j += 4) {
+        double *const *h = slot + j;
+        rs_cols_to_rows4(n0 + j, n1 + j, n2 + j, a0 + j, h[0], h[1], h[2], h[3]);
+        rs_cols_to_rows4(a1 + j, a2 + j, r->s1 + j, r->s2 + j, h[0] + 4, h[1] + 4, h[2] + 4,
+                         h[3] + 4);
+    }
+    for (; j < m; j++) {
+        double *h = slot[j];
+        h[RS_H_N] = n0[j];
+        h[RS_H_N + 1] = n1[j];
+        h[RS_H_N + 2] = n2[j];
+        h[RS_H_T1] = a0[j];
+        h[RS_H_T1 + 1] = a1[j];
+        h[RS_H_T1 + 2] = a2[j];
+        h[RS_H_SLIP] = r->s1[j];
+        h[RS_H_SLIP + 1] = r->s2[j];
+    }
+    for (j = 0; j < m; j++) {
         const int k = k0 + j, e = e0 + j;
-        double *h = o->slot[e];
+        double *h = slot[j];
         if (r->live[j] == 0.0)
             for (int b = 0; b < 3 + tr->nstatev; b++)
                 h[RS_H_STRESS + b] = 0.0;
-        *o->dir[e] = c->feature[k];
-        h[RS_H_N] = c->nrm[0][k];
-        h[RS_H_N + 1] = c->nrm[1][k];
-        h[RS_H_N + 2] = c->nrm[2][k];
-        h[RS_H_T1] = c->t1[0][k];
-        h[RS_H_T1 + 1] = c->t1[1][k];
-        h[RS_H_T1 + 2] = c->t1[2][k];
-        h[RS_H_SLIP] = r->s1[j];
-        h[RS_H_SLIP + 1] = r->s2[j];
         h[RS_H_RDISP1] = r->rd1[j];
-        o->point[e] = c->point[k];
-        o->feature[e] = c->feature[k];
+        *o->dir[e] = c->feature[k];
+    }
+    int *restrict op = o->point + e0, *restrict of = o->feature + e0;
+    for (j = 0; j < m; j++) {
+        op[j] = c->point[k0 + j];
+        of[j] = c->feature[k0 + j];
     }
 }
 
@@ -592,8 +666,7 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
                 e++;
             }
         }
-        for (int j = 0; j < m; j++)
-            run_gather(&r, j, out, e0 + j);
+        run_gather(&r, m, out, e0);
         run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd);
         run_outputs(&r, m, c, k0, out, e0, nd);
         run_store(&r, m, tr, c, k0, out, e0);
@@ -638,13 +711,22 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
     double *const *hist = p->hist, *const *dir = p->dir;
     /* The usual block: contact k names particle k, one each. */
     int dense = nc == np;
-    for (int t = 0; dense && t < nc; t++)
-        dense = cpoint[t] == t;
+    if (dense) {
+        int off = 0;
+        for (int t = 0; t < nc; t++)
+            off |= cpoint[t] ^ t;
+        dense = off == 0;
+    }
     int nslow = 0; /* particles assign_slots took */
     for (int i = 0; i < np; i++) {
-        if (dir)
-            i = pass1_fast(i, np, &k, nc, dense, cpoint, cfeat, cdist, prad, tracking, hist,
-                           dir, cap, stride, out->point, out->slot, out->dir, &ne);
+        if (dir && dense) {
+            i = pass1_dense(i, np, cfeat, cdist, prad, tracking, hist, dir, cap, stride,
+                            out->point, out->slot, out->dir, &ne);
+            k = i;
+        } else if (dir) {
+            i = pass1_fast(i, np, &k, nc, cpoint, cfeat, cdist, prad, tracking, hist, dir,
+                           cap, stride, out->point, out->slot, out->dir, &ne);
+        }
         if (i == np)
             break;
         const int kb = k;

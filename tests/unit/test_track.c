@@ -10,7 +10,7 @@
 #define NS 2 /* state variables per contact in these tests */
 #define HS RS_HIST_SIZE(NS)
 #define CAP 4
-#define MAXC 16
+#define MAXC 96
 
 /* ---- small vector helpers (the test's own) ---- */
 static void axpy(double *y, double a, const double x[3], const double b[3])
@@ -1061,6 +1061,163 @@ static void test_rejects_unordered_contacts(void)
     rs_track_out_free(&o);
 }
 
+/* A block answers as its particles one at a time. rs_track_update copies a run of
+ * contacts 4 at a time between its working columns and the Abaqus-layout outputs and the
+ * history slots, and the rest of a run one at a time; a block of one particle takes only
+ * the latter. 37 particles inside a turning drum, tracked as one block and one by one,
+ * give bit-identical outputs, loads and history over 7 increments: some touch the end
+ * cap too (a second contact, new from increment 2 for some), some lose a contact (leaving
+ * entries), and the last 3 increments have one held contact per particle, the block's
+ * fast path. For ndir 3 and 2. */
+enum { NB = 37 };
+
+typedef struct cloud37 {
+    double x[NB], y[NB], z[NB], vx[NB], vy[NB], vz[NB], wx[NB], wy[NB], wz[NB], r[NB];
+    double dir[NB][CAP], hist[NB][CAP * HS];
+    double *dp[NB], *hp[NB];
+} cloud37;
+
+/* Particle i's contacts at increment step, appended with point index pt. */
+static void contacts37(clist *l, const cloud37 *cl, int pt, int i, int step)
+{
+    const double A[3] = {0, 0, 0}, g[3] = {0, 0, 1}, P[3] = {0, 0, 0};
+    const double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0};
+    const double x[3] = {cl->x[i], cl->y[i], cl->z[i]};
+    if (i % 7 != 3 || step < 2)
+        add_drum(l, pt, 1, x, A, g, 0.1);
+    const int cap = step < 4 && ((i % 5 == 0 && !(step == 3 && i % 10 == 0)) ||
+                                 (i % 5 == 2 && step >= 2));
+    if (cap)
+        add_plane(l, pt, 2, x, P, n, t1, t2);
+}
+
+static void block_vs_single(int nd)
+{
+    rs_tracker tr = tracker(nd);
+    static cloud37 a, b;
+    rs_track_out oa = {0}, ob = {0};
+    rs_motion m;
+    rs_error err;
+    const double zero[3] = {0, 0, 0}, zax[3] = {0, 0, 1}, dt = 1e-3, rad = 0.004;
+    unsigned long long rng = 0x37b10c4ULL;
+    memset(&a, 0, sizeof a);
+    for (int i = 0; i < NB; i++) {
+        a.dp[i] = a.dir[i];
+        a.hp[i] = a.hist[i];
+        rs_track_clear(&tr, a.dir[i], a.hist[i], 0);
+    }
+    b = a;
+    for (int i = 0; i < NB; i++) {
+        b.dp[i] = b.dir[i];
+        b.hp[i] = b.hist[i];
+    }
+    rs_motion_init(&m);
+    ENSURE(rs_motion_set_rotation(&m, zero, zax, 2.0, &err) == RS_OK);
+    int mismatch = 0, leaving = 0, twin = 0, entries = 0;
+    for (int step = 0; step < 7; step++) {
+        ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+        for (int i = 0; i < NB; i++) {
+            const double th = 2.0 * M_PI * i / NB + 2.0 * dt * step + 1e-3 * step * (i % 3);
+            const double rr = 0.1 - rad + 1e-4 * (1 + (i + step) % 4);
+            a.x[i] = rr * cos(th);
+            a.y[i] = rr * sin(th);
+            a.z[i] = rad - 1e-4 * (1 + i % 3);
+            a.vx[i] = rs_test_urand(&rng) - 0.5;
+            a.vy[i] = rs_test_urand(&rng) - 0.5;
+            a.vz[i] = rs_test_urand(&rng) - 0.5;
+            a.wx[i] = 10.0 * (rs_test_urand(&rng) - 0.5);
+            a.wy[i] = 10.0 * (rs_test_urand(&rng) - 0.5);
+            a.wz[i] = 10.0 * (rs_test_urand(&rng) - 0.5);
+            a.r[i] = rad;
+        }
+        memcpy(b.x, a.x, sizeof a.x);
+        memcpy(b.y, a.y, sizeof a.y);
+        memcpy(b.z, a.z, sizeof a.z);
+        memcpy(b.vx, a.vx, sizeof a.vx);
+        memcpy(b.vy, a.vy, sizeof a.vy);
+        memcpy(b.vz, a.vz, sizeof a.vz);
+        memcpy(b.wx, a.wx, sizeof a.wx);
+        memcpy(b.wy, a.wy, sizeof a.wy);
+        memcpy(b.wz, a.wz, sizeof a.wz);
+        memcpy(b.r, a.r, sizeof a.r);
+
+        clist l;
+        clist_init(&l);
+        for (int i = 0; i < NB; i++)
+            contacts37(&l, &a, i, i, step);
+        rs_particles pa = {NB,   a.x,  a.y, a.z,  a.vx, a.vy, a.vz, a.wx,
+                           a.wy, a.wz, a.r, NULL, a.dp, a.hp, 0};
+        ENSURE(rs_track_update(&tr, NULL, &m, dt, &pa, &l.c, &oa, &err) == RS_OK);
+        double sa[3 * MAXC], va[NS * MAXC], sa0[3 * MAXC], va0[NS * MAXC];
+        rs_track_load(&tr, &oa, sa0, va0);
+        memcpy(sa, sa0, sizeof sa);
+        memcpy(va, va0, sizeof va);
+        for (int e = 0; e < oa.n; e++) {
+            for (int d = 0; d < nd; d++)
+                sa[nd * e + d] +=
+                    RS_A2(oa.rdisp, nd, d, e) < 1e29 ? RS_A2(oa.rdisp, nd, d, e) : 0.0;
+            for (int d = 0; d < NS; d++)
+                va[NS * e + d] += 1.0 + d;
+        }
+        entries += oa.n;
+        leaving += oa.nleave;
+        for (int e = 1; e < oa.n; e++)
+            twin += oa.point[e] == oa.point[e - 1];
+
+        for (int i = 0, ea = 0; i < NB; i++) {
+            clist li;
+            clist_init(&li);
+            contacts37(&li, &b, 0, i, step);
+            rs_particles pb = {1,        b.x + i,  b.y + i,  b.z + i,  b.vx + i,
+                               b.vy + i, b.vz + i, b.wx + i, b.wy + i, b.wz + i,
+                               b.r + i,  NULL,     b.dp + i, b.hp + i, 0};
+            ENSURE(rs_track_update(&tr, NULL, &m, dt, &pb, &li.c, &ob, &err) == RS_OK);
+            double sb[3 * CAP], vb[NS * CAP];
+            rs_track_load(&tr, &ob, sb, vb);
+            /* particle i's entries in the block: ob.n of them from ea on */
+            for (int e = 0; e < ob.n; e++, ea++) {
+                const size_t x = (size_t)ea, y = (size_t)e, n2 = (size_t)nd;
+                if (ea >= oa.n || oa.point[ea] != i) {
+                    mismatch++;
+                    break;
+                }
+                mismatch += oa.feature[ea] != ob.feature[e];
+                mismatch += (oa.dir[ea] - a.dir[i]) != (ob.dir[e] - b.dir[i]);
+                mismatch += memcmp(oa.rdisp + n2 * x, ob.rdisp + n2 * y, n2 * 8) != 0;
+                mismatch += memcmp(oa.drdisp + n2 * x, ob.drdisp + n2 * y, n2 * 8) != 0;
+                mismatch += memcmp(oa.drot + 4 * x, ob.drot + 4 * y, 4 * 8) != 0;
+                mismatch += memcmp(oa.alocaldir + n2 * n2 * x, ob.alocaldir + n2 * n2 * y,
+                                   n2 * n2 * 8) != 0;
+                mismatch += memcmp(oa.coordslv + n2 * x, ob.coordslv + n2 * y, n2 * 8) != 0;
+                mismatch += memcmp(oa.coordmst + n2 * x, ob.coordmst + n2 * y, n2 * 8) != 0;
+                mismatch += memcmp(oa.vrel + n2 * x, ob.vrel + n2 * y, n2 * 8) != 0;
+                mismatch += memcmp(oa.curv + 2 * x, ob.curv + 2 * y, 2 * 8) != 0;
+                mismatch += memcmp(sa0 + n2 * x, sb + n2 * y, n2 * 8) != 0;
+                mismatch += memcmp(va0 + NS * x, vb + NS * y, NS * 8) != 0;
+                /* the same law answer */
+                memcpy(sb + n2 * y, sa + n2 * x, n2 * 8);
+                memcpy(vb + NS * y, va + NS * x, NS * 8);
+            }
+            if (i == NB - 1)
+                mismatch += ea != oa.n;
+            rs_track_commit(&tr, &ob, sb, vb);
+        }
+        rs_track_commit(&tr, &oa, sa, va);
+        mismatch += memcmp(a.dir, b.dir, sizeof a.dir) != 0;
+        mismatch += memcmp(a.hist, b.hist, sizeof a.hist) != 0;
+    }
+    rs_track_out_free(&oa);
+    rs_track_out_free(&ob);
+    ENSURE(leaving >= 4 && twin >= 8 && entries > 7 * NB);
+    ENSURE(mismatch == 0);
+}
+
+static void test_block_matches_one_at_a_time(void)
+{
+    block_vs_single(3);
+    block_vs_single(2);
+}
+
 int main(void)
 {
     RS_RUN(test_drot_identity_under_rigid_translation);
@@ -1082,5 +1239,6 @@ int main(void)
     RS_RUN(test_alocaldir_columns_and_contact_point);
     RS_RUN(test_rejects_unordered_contacts);
     RS_RUN(test_slot_major_layout_matches_contiguous);
+    RS_RUN(test_block_matches_one_at_a_time);
     return rs_test_summary();
 }

@@ -1,0 +1,125 @@
+/* rigidsurf (private): 4 x 4 transposes between SoA columns and AoS rows, for the
+ * tracker's copies between its SoA working set and the Abaqus-layout outputs and the
+ * per-contact history slots. With GCC or clang these are vector-extension shuffles (4
+ * loads, 8 shuffles, 4 stores: unpcklpd/unpckhpd and vperm2f128 under AVX2, pairs of
+ * SSE2 shuffles otherwise); elsewhere plain copies. Pure data movement: the values are
+ * copied bit for bit either way. */
+#ifndef RS_V4_H
+#define RS_V4_H
+
+#include "rs_compiler.h"
+
+#include <string.h>
+
+#if defined(__GNUC__) && (defined(__clang__) || __GNUC__ >= 12)
+#define RS_HAVE_V4 1
+typedef double rs_v4 __attribute__((vector_size(32)));
+
+/* Vectors pass by pointer: a 32-byte vector argument or return value has a different
+ * ABI with and without AVX, which GCC warns about in the baseline build. */
+RS_INLINE void rs_v4_load(rs_v4 *v, const double *p)
+{
+    memcpy(v, p, sizeof *v);
+}
+
+RS_INLINE void rs_v4_store(double *p, const rs_v4 *v)
+{
+    memcpy(p, v, sizeof *v);
+}
+
+/* (a, b, c, d) <- their transpose, each a row of the 4 x 4 matrix. */
+RS_INLINE void rs_v4_transpose(rs_v4 *a, rs_v4 *b, rs_v4 *c, rs_v4 *d)
+{
+    const rs_v4 ab0 = __builtin_shufflevector(*a, *b, 0, 4, 2, 6);
+    const rs_v4 ab1 = __builtin_shufflevector(*a, *b, 1, 5, 3, 7);
+    const rs_v4 cd0 = __builtin_shufflevector(*c, *d, 0, 4, 2, 6);
+    const rs_v4 cd1 = __builtin_shufflevector(*c, *d, 1, 5, 3, 7);
+    *a = __builtin_shufflevector(ab0, cd0, 0, 1, 4, 5);
+    *b = __builtin_shufflevector(ab1, cd1, 0, 1, 4, 5);
+    *c = __builtin_shufflevector(ab0, cd0, 2, 3, 6, 7);
+    *d = __builtin_shufflevector(ab1, cd1, 2, 3, 6, 7);
+}
+#endif
+
+/* The 12 doubles (a0 b0 c0 a1 b1 c1 ... c3) at dst <- the columns a, b, c (4 each). */
+RS_INLINE void rs_cols3_to_rows4(const double *a, const double *b, const double *c,
+                                 double *dst)
+{
+#ifdef RS_HAVE_V4
+    typedef double rs_v2 __attribute__((vector_size(16)));
+    rs_v4 x, y, z, w = {0.0, 0.0, 0.0, 0.0};
+    rs_v4_load(&x, a);
+    rs_v4_load(&y, b);
+    rs_v4_load(&z, c);
+    rs_v4_transpose(&x, &y, &z, &w);
+    /* Each row's fourth element is overwritten by the next row; the last row stops at
+     * its third. */
+    rs_v4_store(dst, &x);
+    rs_v4_store(dst + 3, &y);
+    rs_v4_store(dst + 6, &z);
+    const rs_v2 lo = __builtin_shufflevector(w, w, 0, 1);
+    memcpy(dst + 9, &lo, sizeof lo);
+    dst[11] = w[2];
+#else
+    for (int l = 0; l < 4; l++) {
+        dst[3 * l] = a[l];
+        dst[3 * l + 1] = b[l];
+        dst[3 * l + 2] = c[l];
+    }
+#endif
+}
+
+/* Row l (4 doubles at rl) <- element l of the columns c0..c3 (4 doubles each), l = 0..3.
+ * The rows are stored in order, so a row may overlap the one before it. */
+RS_INLINE void rs_cols_to_rows4(const double *c0, const double *c1, const double *c2,
+                                const double *c3, double *r0, double *r1, double *r2,
+                                double *r3)
+{
+#ifdef RS_HAVE_V4
+    rs_v4 a, b, c, d;
+    rs_v4_load(&a, c0);
+    rs_v4_load(&b, c1);
+    rs_v4_load(&c, c2);
+    rs_v4_load(&d, c3);
+    rs_v4_transpose(&a, &b, &c, &d);
+    rs_v4_store(r0, &a);
+    rs_v4_store(r1, &b);
+    rs_v4_store(r2, &c);
+    rs_v4_store(r3, &d);
+#else
+    double *r[4] = {r0, r1, r2, r3};
+    for (int l = 0; l < 4; l++) {
+        double t[4] = {c0[l], c1[l], c2[l], c3[l]};
+        memcpy(r[l], t, sizeof t);
+    }
+#endif
+}
+
+/* Column l (4 doubles at cl) <- element l of the rows r0..r3 (4 doubles each). */
+RS_INLINE void rs_rows_to_cols4(const double *r0, const double *r1, const double *r2,
+                                const double *r3, double *c0, double *c1, double *c2,
+                                double *c3)
+{
+#ifdef RS_HAVE_V4
+    rs_v4 a, b, c, d;
+    rs_v4_load(&a, r0);
+    rs_v4_load(&b, r1);
+    rs_v4_load(&c, r2);
+    rs_v4_load(&d, r3);
+    rs_v4_transpose(&a, &b, &c, &d);
+    rs_v4_store(c0, &a);
+    rs_v4_store(c1, &b);
+    rs_v4_store(c2, &c);
+    rs_v4_store(c3, &d);
+#else
+    const double *r[4] = {r0, r1, r2, r3};
+    for (int l = 0; l < 4; l++) {
+        c0[l] = r[l][0];
+        c1[l] = r[l][1];
+        c2[l] = r[l][2];
+        c3[l] = r[l][3];
+    }
+#endif
+}
+
+#endif
