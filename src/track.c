@@ -273,6 +273,29 @@ pass1_dense(int i, int np, const int *restrict cfeat, const double *restrict cdi
             double **restrict oslot, double **restrict odir, int *ne)
 {
     int e = *ne;
+    if (cap == 4 && prad) {
+        /* The usual call, in its own loop: held contact in slot 0, the others free. */
+        const double empty = RS_DIR_EMPTY;
+        uint64_t eb;
+        memcpy(&eb, &empty, sizeof eb);
+        for (; i < np; i++) {
+            double *h = hist[i], *d = dir[i];
+            if (!h || !d || cdist[i] - prad[i] > tracking)
+                break;
+            const double f = (double)cfeat[i];
+            uint64_t u0, u1, u2, u3, fb;
+            memcpy(&u0, d, sizeof u0);
+            memcpy(&u1, d + 1, sizeof u1);
+            memcpy(&u2, d + 2, sizeof u2);
+            memcpy(&u3, d + 3, sizeof u3);
+            memcpy(&fb, &f, sizeof fb);
+            if (((u0 ^ fb) | (u1 ^ eb) | (u2 ^ eb) | (u3 ^ eb)) != 0)
+                break;
+            opoint[e] = i;
+            oslot[e] = h;
+            odir[e++] = d;
+        }
+    }
     for (; i < np; i++) {
         double *h = hist[i], *d = dir[i];
         if (!h || !d)
