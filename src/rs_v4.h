@@ -1,9 +1,9 @@
-/* rigidsurf (private): 4 x 4 transposes between SoA columns and AoS rows, for the
- * tracker's copies between its SoA working set and the Abaqus-layout outputs and the
- * per-contact history slots. With GCC or clang these are vector-extension shuffles (4
- * loads, 8 shuffles, 4 stores: unpcklpd/unpckhpd and vperm2f128 under AVX2, pairs of
- * SSE2 shuffles otherwise); elsewhere plain copies. Pure data movement: the values are
- * copied bit for bit either way. */
+/* rigidsurf (private): the tracker's copies between its SoA working set and the
+ * Abaqus-layout outputs and the per-contact history slots, 4 contacts at a time: 4 x 4
+ * transposes between columns and rows, and interleaves of 3 or 2 columns into rows. With
+ * GCC or clang these are vector-extension shuffles (unpcklpd/unpckhpd, vshufpd, vblendpd
+ * and vperm2f128 under AVX2, pairs of SSE2 shuffles otherwise); elsewhere plain copies.
+ * Pure data movement: the values are copied bit for bit either way. */
 #ifndef RS_V4_H
 #define RS_V4_H
 
@@ -46,25 +46,46 @@ RS_INLINE void rs_cols3_to_rows4(const double *a, const double *b, const double 
                                  double *dst)
 {
 #ifdef RS_HAVE_V4
-    typedef double rs_v2 __attribute__((vector_size(16)));
-    rs_v4 x, y, z, w = {0.0, 0.0, 0.0, 0.0};
+    rs_v4 x, y, z;
     rs_v4_load(&x, a);
     rs_v4_load(&y, b);
     rs_v4_load(&z, c);
-    rs_v4_transpose(&x, &y, &z, &w);
-    /* Each row's fourth element is overwritten by the next row; the last row stops at
-     * its third. */
-    rs_v4_store(dst, &x);
-    rs_v4_store(dst + 3, &y);
-    rs_v4_store(dst + 6, &z);
-    const rs_v2 lo = __builtin_shufflevector(w, w, 0, 1);
-    memcpy(dst + 9, &lo, sizeof lo);
-    dst[11] = w[2];
+    const rs_v4 t0 = __builtin_shufflevector(x, y, 0, 4, 2, 6);  /* a0 b0 a2 b2 */
+    const rs_v4 t1 = __builtin_shufflevector(x, y, 1, 5, 3, 7);  /* a1 b1 a3 b3 */
+    const rs_v4 u = __builtin_shufflevector(z, t1, 0, 4, 2, 6);  /* c0 a1 c2 a3 */
+    const rs_v4 v = __builtin_shufflevector(t1, z, 1, 5, 3, 7);  /* b1 c1 b3 c3 */
+    const rs_v4 r0 = __builtin_shufflevector(t0, u, 0, 1, 4, 5); /* a0 b0 c0 a1 */
+    const rs_v4 r1 = __builtin_shufflevector(v, t0, 0, 1, 6, 7); /* b1 c1 a2 b2 */
+    const rs_v4 r2 = __builtin_shufflevector(u, v, 2, 3, 6, 7);  /* c2 a3 b3 c3 */
+    rs_v4_store(dst, &r0);
+    rs_v4_store(dst + 4, &r1);
+    rs_v4_store(dst + 8, &r2);
 #else
     for (int l = 0; l < 4; l++) {
         dst[3 * l] = a[l];
         dst[3 * l + 1] = b[l];
         dst[3 * l + 2] = c[l];
+    }
+#endif
+}
+
+/* The 8 doubles (a0 b0 a1 b1 ... b3) at dst <- the columns a, b (4 each). */
+RS_INLINE void rs_cols2_to_rows4(const double *a, const double *b, double *dst)
+{
+#ifdef RS_HAVE_V4
+    rs_v4 x, y;
+    rs_v4_load(&x, a);
+    rs_v4_load(&y, b);
+    const rs_v4 t0 = __builtin_shufflevector(x, y, 0, 4, 2, 6); /* a0 b0 a2 b2 */
+    const rs_v4 t1 = __builtin_shufflevector(x, y, 1, 5, 3, 7); /* a1 b1 a3 b3 */
+    const rs_v4 r0 = __builtin_shufflevector(t0, t1, 0, 1, 4, 5);
+    const rs_v4 r1 = __builtin_shufflevector(t0, t1, 2, 3, 6, 7);
+    rs_v4_store(dst, &r0);
+    rs_v4_store(dst + 4, &r1);
+#else
+    for (int l = 0; l < 4; l++) {
+        dst[2 * l] = a[l];
+        dst[2 * l + 1] = b[l];
     }
 #endif
 }

@@ -516,6 +516,8 @@ RS_INLINE void put_cols(double *restrict dst, int m, const int nd, const double 
             dst[3 * j + 2] = c[j];
         }
     } else {
+        for (; j + 4 <= m; j += 4)
+            rs_cols2_to_rows4(a + j, b + j, dst + 2 * j);
         RS_NO_UNROLL
         for (; j < m; j++) {
             dst[2 * j] = a[j];
