@@ -90,56 +90,31 @@ RS_INLINE void rs_cols2_to_rows4(const double *a, const double *b, double *dst)
 #endif
 }
 
-/* Row l (4 doubles at rl) <- element l of the columns c0..c3 (4 doubles each), l = 0..3.
- * The rows are stored in order, so a row may overlap the one before it. */
-RS_INLINE void rs_cols_to_rows4(const double *c0, const double *c1, const double *c2,
-                                const double *c3, double *r0, double *r1, double *r2,
-                                double *r3)
+/* The 4 x 4 matrix whose rows are at s0..s3 (4 doubles each), transposed into rows at
+ * d0..d3: d_l[k] = s_k[l]. Columns to rows and rows to columns alike. */
+RS_INLINE void rs_transpose4(const double *s0, const double *s1, const double *s2,
+                             const double *s3, double *d0, double *d1, double *d2,
+                             double *d3)
 {
 #ifdef RS_HAVE_V4
     rs_v4 a, b, c, d;
-    rs_v4_load(&a, c0);
-    rs_v4_load(&b, c1);
-    rs_v4_load(&c, c2);
-    rs_v4_load(&d, c3);
+    rs_v4_load(&a, s0);
+    rs_v4_load(&b, s1);
+    rs_v4_load(&c, s2);
+    rs_v4_load(&d, s3);
     rs_v4_transpose(&a, &b, &c, &d);
-    rs_v4_store(r0, &a);
-    rs_v4_store(r1, &b);
-    rs_v4_store(r2, &c);
-    rs_v4_store(r3, &d);
+    rs_v4_store(d0, &a);
+    rs_v4_store(d1, &b);
+    rs_v4_store(d2, &c);
+    rs_v4_store(d3, &d);
 #else
-    double *r[4] = {r0, r1, r2, r3};
-    for (int l = 0; l < 4; l++) {
-        double t[4] = {c0[l], c1[l], c2[l], c3[l]};
-        memcpy(r[l], t, sizeof t);
-    }
-#endif
-}
-
-/* Column l (4 doubles at cl) <- element l of the rows r0..r3 (4 doubles each). */
-RS_INLINE void rs_rows_to_cols4(const double *r0, const double *r1, const double *r2,
-                                const double *r3, double *c0, double *c1, double *c2,
-                                double *c3)
-{
-#ifdef RS_HAVE_V4
-    rs_v4 a, b, c, d;
-    rs_v4_load(&a, r0);
-    rs_v4_load(&b, r1);
-    rs_v4_load(&c, r2);
-    rs_v4_load(&d, r3);
-    rs_v4_transpose(&a, &b, &c, &d);
-    rs_v4_store(c0, &a);
-    rs_v4_store(c1, &b);
-    rs_v4_store(c2, &c);
-    rs_v4_store(c3, &d);
-#else
-    const double *r[4] = {r0, r1, r2, r3};
-    for (int l = 0; l < 4; l++) {
-        c0[l] = r[l][0];
-        c1[l] = r[l][1];
-        c2[l] = r[l][2];
-        c3[l] = r[l][3];
-    }
+    const double *s[4] = {s0, s1, s2, s3};
+    double *d[4] = {d0, d1, d2, d3}, t[4][4];
+    for (int l = 0; l < 4; l++)
+        for (int k = 0; k < 4; k++)
+            t[l][k] = s[k][l];
+    for (int l = 0; l < 4; l++)
+        memcpy(d[l], t[l], sizeof t[l]);
 #endif
 }
 

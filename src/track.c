@@ -210,10 +210,9 @@ static RS_NOINLINE int find_fast(const double *d, int cap, double f)
     return f >= 0.0 ? (js < cap ? js : -1) : cap;
 }
 
-/* find_fast for capacity 4, first testing the usual directory at once: the contact (f
- * >= 0) in slot 0 and the other slots free, or no contact (f = RS_DIR_EMPTY) and every
- * slot free. */
-RS_INLINE int find_fast4(const double *d, double f)
+/* 1 when a directory of capacity 4 holds f in slot 0 and the other slots are free (bit
+ * patterns compared, as in find_fast). */
+RS_INLINE int dir_usual4(const double *d, double f)
 {
     const double empty = RS_DIR_EMPTY;
     uint64_t u0, u1, u2, u3, fb, eb;
@@ -223,7 +222,15 @@ RS_INLINE int find_fast4(const double *d, double f)
     memcpy(&u3, d + 3, sizeof u3);
     memcpy(&fb, &f, sizeof fb);
     memcpy(&eb, &empty, sizeof eb);
-    if (((u0 ^ fb) | (u1 ^ eb) | (u2 ^ eb) | (u3 ^ eb)) == 0)
+    return ((u0 ^ fb) | (u1 ^ eb) | (u2 ^ eb) | (u3 ^ eb)) == 0;
+}
+
+/* find_fast for capacity 4, first testing the usual directory at once: the contact (f
+ * >= 0) in slot 0 and the other slots free, or no contact (f = RS_DIR_EMPTY) and every
+ * slot free. */
+RS_INLINE int find_fast4(const double *d, double f)
+{
+    if (dir_usual4(d, f))
         return f >= 0.0 ? 0 : 4;
     return find_fast(d, 4, f);
 }
@@ -275,21 +282,10 @@ pass1_dense(int i, int np, const int *restrict cfeat, const double *restrict cdi
     int e = *ne;
     if (cap == 4 && prad) {
         /* The usual call, in its own loop: held contact in slot 0, the others free. */
-        const double empty = RS_DIR_EMPTY;
-        uint64_t eb;
-        memcpy(&eb, &empty, sizeof eb);
         for (; i < np; i++) {
             double *h = hist[i], *d = dir[i];
-            if (!h || !d || cdist[i] - prad[i] > tracking)
-                break;
-            const double f = (double)cfeat[i];
-            uint64_t u0, u1, u2, u3, fb;
-            memcpy(&u0, d, sizeof u0);
-            memcpy(&u1, d + 1, sizeof u1);
-            memcpy(&u2, d + 2, sizeof u2);
-            memcpy(&u3, d + 3, sizeof u3);
-            memcpy(&fb, &f, sizeof fb);
-            if (((u0 ^ fb) | (u1 ^ eb) | (u2 ^ eb) | (u3 ^ eb)) != 0)
+            if (!h || !d || cdist[i] - prad[i] > tracking ||
+                !dir_usual4(d, (double)cfeat[i]))
                 break;
             opoint[e] = i;
             oslot[e] = h;
@@ -396,10 +392,10 @@ RS_INLINE void run_gather(track_run *restrict r, int m, const rs_track_out *o, i
     int j = 0;
     for (; j + 4 <= m; j += 4) {
         double *const *h = o->slot + e0 + j;
-        rs_rows_to_cols4(h[0], h[1], h[2], h[3], r->on0 + j, r->on1 + j, r->on2 + j,
-                         r->ot0 + j);
-        rs_rows_to_cols4(h[0] + 4, h[1] + 4, h[2] + 4, h[3] + 4, r->ot1 + j, r->ot2 + j,
-                         r->so1 + j, r->so2 + j);
+        rs_transpose4(h[0], h[1], h[2], h[3], r->on0 + j, r->on1 + j, r->on2 + j,
+                      r->ot0 + j);
+        rs_transpose4(h[0] + 4, h[1] + 4, h[2] + 4, h[3] + 4, r->ot1 + j, r->ot2 + j,
+                      r->so1 + j, r->so2 + j);
         for (int l = 0; l < 4; l++) {
             r->rdo[j + l] = h[l][RS_H_RDISP1];
             r->live[j + l] = *o->dir[e0 + j + l] >= 0.0;
@@ -542,8 +538,8 @@ RS_INLINE void run_outputs(const track_run *restrict r, int m, const rs_contacts
     const double *nd21 = r->md21;
     int j = 0;
     for (; j + 4 <= m; j += 4)
-        rs_cols_to_rows4(r->d11 + j, r->d21 + j, nd21 + j, r->d11 + j, dr + 4 * j,
-                         dr + 4 * j + 4, dr + 4 * j + 8, dr + 4 * j + 12);
+        rs_transpose4(r->d11 + j, r->d21 + j, nd21 + j, r->d11 + j, dr + 4 * j,
+                      dr + 4 * j + 4, dr + 4 * j + 8, dr + 4 * j + 12);
     RS_NO_UNROLL
     for (; j < m; j++) {
         dr[4 * j] = r->d11[j];
@@ -560,8 +556,8 @@ RS_INLINE void run_outputs(const track_run *restrict r, int m, const rs_contacts
     if (nd == 3)
         for (; j + 4 <= m; j += 4) {
             double *a = al + 9 * (size_t)j;
-            rs_cols_to_rows4(n0 + j, n1 + j, n2 + j, a0 + j, a, a + 9, a + 18, a + 27);
-            rs_cols_to_rows4(a1 + j, a2 + j, b0 + j, b1 + j, a + 4, a + 13, a + 22, a + 31);
+            rs_transpose4(n0 + j, n1 + j, n2 + j, a0 + j, a, a + 9, a + 18, a + 27);
+            rs_transpose4(a1 + j, a2 + j, b0 + j, b1 + j, a + 4, a + 13, a + 22, a + 31);
             for (int l = 0; l < 4; l++)
                 a[9 * l + 8] = b2[j + l];
         }
@@ -592,9 +588,9 @@ RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *t
     int j = 0;
     for (; j + 4 <= m; j += 4) {
         double *const *h = slot + j;
-        rs_cols_to_rows4(n0 + j, n1 + j, n2 + j, a0 + j, h[0], h[1], h[2], h[3]);
-        rs_cols_to_rows4(a1 + j, a2 + j, r->s1 + j, r->s2 + j, h[0] + 4, h[1] + 4, h[2] + 4,
-                         h[3] + 4);
+        rs_transpose4(n0 + j, n1 + j, n2 + j, a0 + j, h[0], h[1], h[2], h[3]);
+        rs_transpose4(a1 + j, a2 + j, r->s1 + j, r->s2 + j, h[0] + 4, h[1] + 4, h[2] + 4,
+                      h[3] + 4);
     }
     for (; j < m; j++) {
         double *h = slot[j];
@@ -818,26 +814,26 @@ RS_INLINE void copy_statev(double *restrict dst, const double *restrict src, con
         copy_statev(DST, SRC, NS);                                                         \
     }
 
-/* The previous stress of entries e0 .. e0+m-1 (no leaving entry among them, ndir = 3),
- * 4 at a time: rows (rdisp1, s1, s2, s3) of the slots and the entries' drot to columns,
- * the shear carried by drot, and the rows of stress(3, m). */
-RS_INLINE void load_stress3(const rs_track_out *out, int e0, int m, double *restrict stress)
+/* The previous stress of the n entries (none leaving, ndir = 3), 4 at a time: rows
+ * (rdisp1, s1, s2, s3) of the slots and the entries' drot to columns, the shear carried
+ * by drot, and the rows of stress(3, n). */
+RS_INLINE void load_stress3(const rs_track_out *out, int n, double *restrict stress)
 {
-    int e = e0;
-    for (; e + 4 <= e0 + m; e += 4) {
+    int e = 0;
+    for (; e + 4 <= n; e += 4) {
         double *const *h = out->slot + e;
         const double *dr = out->drot + (size_t)4 * e;
         double rd[4], s1[4], s2[4], s3[4], d0[4], d1[4], d2[4], d3[4], u2[4], u3[4];
-        rs_rows_to_cols4(h[0] + RS_H_RDISP1, h[1] + RS_H_RDISP1, h[2] + RS_H_RDISP1,
-                         h[3] + RS_H_RDISP1, rd, s1, s2, s3);
-        rs_rows_to_cols4(dr, dr + 4, dr + 8, dr + 12, d0, d1, d2, d3);
+        rs_transpose4(h[0] + RS_H_RDISP1, h[1] + RS_H_RDISP1, h[2] + RS_H_RDISP1,
+                      h[3] + RS_H_RDISP1, rd, s1, s2, s3);
+        rs_transpose4(dr, dr + 4, dr + 8, dr + 12, d0, d1, d2, d3);
         for (int l = 0; l < 4; l++) {
             u2[l] = d0[l] * s2[l] + d2[l] * s3[l];
             u3[l] = d1[l] * s2[l] + d3[l] * s3[l];
         }
         rs_cols3_to_rows4(s1, u2, u3, stress + (size_t)3 * e);
     }
-    for (; e < e0 + m; e++) {
+    for (; e < n; e++) {
         const double *h = out->slot[e], *dr = out->drot + (size_t)4 * e;
         const double s2 = h[RS_H_STRESS + 1], s3 = h[RS_H_STRESS + 2];
         stress[3 * e] = h[RS_H_STRESS];
@@ -861,7 +857,7 @@ void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress
         }
     } else if (stress && out->nleave == 0) {
         /* The shear traction is carried into this increment's basis, as the slip. */
-        load_stress3(out, 0, n, stress);
+        load_stress3(out, n, stress);
     } else if (stress) {
         /* As above; a leaving contact keeps its own. */
         for (int e = 0; e < n; e++) {
