@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """LIGGGHTS-side benchmarks of fix wall/rigid, measured side by side in one run.
 
-    bench_walls.py --exe liggghts-rigidsurf [--quick] [--max-n N] [--out FILE]
+    bench_walls.py --exe liggghts-rigidsurf [--quick] [--max-n N] [--reps K] [--out FILE]
+                   [--sections 1,1b,1c,1d,2,3]
 
 1. Wall cost, cylinder. N spheres (R = 1 mm) form a monolayer on the inside of a
    cylinder of radius 50 mm about z (rings of spheres 2.2 R apart, layers 2.2 R apart,
@@ -17,7 +18,10 @@
    (N steps). The spheres move by micrometres (skin 0.5 mm), so no variant rebuilds its
    neighbour lists during the run (checked: 'Neighbor list builds' is reported), and
    the pair style, integrator and body force cost the same in all variants; the
-   difference is the wall. Each variant runs REPS times, interleaved, the fastest kept.
+   difference is the wall. Each variant runs REPS times, interleaved. A ratio of two
+   walls is given from the fastest run of each variant, and as the median over the
+   repetitions of the ratio within one repetition (each wall cost against the baseline
+   run just before it), which cancels the slow drifts of a shared host.
 1b. Wall cost, flowing bed: the same monolayer rolling around the cylinder. Every
    sphere starts at V = 0.5 m/s along the hoop direction, spinning at -V/R about z
    (rolling without slip), so the whole layer turns rigidly: spheres never touch each
@@ -27,6 +31,16 @@
    spheres on the same circles at the same speed, so it rebuilds as often as the wall
    variants (the report lists the builds). The wall cost then includes what a wall pays
    per rebuild: fix wall/rigid's candidate refresh, the mesh wall's own neighbour list.
+1c. The mesh wall against its facets and the skin: section 1 again with 4000-triangle
+   STL cylinders of other facet shapes (NTHETA x NZ quads 400 x 5 ... 63 x 32, from
+   slivers to squares) and with a skin four times larger, which puts more facets in
+   each sphere's mesh neighbour list. Shows what the mesh wall costs against the
+   primitive, so against what a 1.5 x-the-primitive wall can gain on it.
+1d. Spheres near the wall, not touching it: the monolayer at a gap of 0.3 mm, inside
+   the tracking thickness (default: the skin, 0.5 mm), no push. fix wall/rigid passes
+   these open contacts to the law every step, as Abaqus does (rdisp(1) < 0), so they
+   cost what a touching contact does; 'ours_t0' is the same wall with tracking 0, where
+   they are queried but not tracked.
 2. Scaling: the same for N = 1e3 .. max-n (ours and prim; mesh at 1e4 only).
 3. Strong scaling: a rotating drum (REVOLUTION mantle and end caps, 2 rad/s, gravity)
    with a settling bed of interacting spheres, 1 and 2 MPI ranks, loop time.
@@ -35,6 +49,7 @@ import argparse
 import math
 import os
 import re
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -43,6 +58,12 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 R, RHO, RC, F0, DT = 1.0e-3, 2500.0, 0.05, 1.0e-3, 1.0e-5
 VFLOW = 0.5  # hoop speed of the flowing bed (m/s)
+SKIN = 0.0005  # neighbour skin of the decks (m)
+GAP_NEAR = 3.0e-4  # gap of the spheres of section 1d (m), inside the tracking thickness
+SECTIONS = ["1", "1b", "1c", "1d", "2", "3"]
+# Section 1c: the STL cylinder's quads (NTHETA x NZ, 4000 triangles) and the skin.
+MESH_CASES = [((400, 5), SKIN), ((200, 10), SKIN), ((100, 20), SKIN), ((63, 32), SKIN),
+              ((200, 10), 4 * SKIN)]
 MASS = RHO * 4.0 / 3.0 * math.pi * R ** 3
 GAP = 2.2 * R
 MPI_ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
@@ -57,7 +78,7 @@ newton off
 communicate single vel yes
 units si
 """
-DECK_MATERIALS = """neighbor 0.0005 bin
+DECK_MATERIALS = """neighbor %r bin
 neigh_modify delay 0
 fix m1 all property/global youngsModulus peratomtype 1e7 1e8
 fix m2 all property/global poissonsRatio peratomtype 0.3 0.3
@@ -68,6 +89,10 @@ pair_coeff * *
 """
 
 
+def materials(skin=SKIN):
+    return DECK_MATERIALS % skin
+
+
 def hertz_overlap(force):
     """Equilibrium overlap of a sphere under a normal force (Hertz, the deck's materials)."""
     y1, y2, n1, n2 = 1.0e7, 1.0e8, 0.3, 0.3
@@ -75,10 +100,11 @@ def hertz_overlap(force):
     return (3.0 * force / (4.0 * ystar * math.sqrt(R))) ** (2.0 / 3.0)
 
 
-def monolayer(n):
-    """Sphere centres: rings on r0 = RC - R + delta_eq, layers along z. Returns the
-    positions and the height of the layer stack."""
-    r0 = RC - R + hertz_overlap(F0)
+def monolayer(n, gap=None):
+    """Sphere centres: rings on r0 = RC - R + delta_eq (or RC - R - gap: spheres that
+    do not touch the wall), layers along z. Returns the positions and the height of the
+    layer stack."""
+    r0 = RC - R + (hertz_overlap(F0) if gap is None else -gap)
     per_ring = int(2 * math.pi * r0 / GAP)
     layers = (n + per_ring - 1) // per_ring
     pts = []
@@ -102,9 +128,9 @@ def write_data(path, pts, height):
             f.write("%d 1 %r %r %.12g %.12g %.12g\n" % (i + 1, 2 * R, RHO, x, y, z))
 
 
-def wall_deck(variant, data, steps, height, flow=False):
-    d = DECK_HEAD + "read_data %s\n" % data + DECK_MATERIALS + "timestep %r\n" % DT
-    f0 = 0.0 if variant == "none" else F0
+def wall_deck(variant, data, steps, height, flow=False, skin=SKIN, push=True):
+    d = DECK_HEAD + "read_data %s\n" % data + materials(skin) + "timestep %r\n" % DT
+    f0 = F0 if push and variant != "none" else 0.0
     d += "variable f0 equal %r\n" % f0
     if not flow:
         d += "variable fx atom v_f0*x/sqrt(x*x+y*y)\nvariable fy atom v_f0*y/sqrt(x*x+y*y)\n"
@@ -124,6 +150,8 @@ def wall_deck(variant, data, steps, height, flow=False):
         d += "fix w all wall/gran model hertz tangential history primitive type 2 zcylinder %r 0 0\n" % RC
     elif variant == "ours":
         d += "fix w all wall/rigid surface cyl.inp law hertz type 2\n"
+    elif variant == "ours_t0":
+        d += "fix w all wall/rigid surface cyl.inp law hertz type 2 tracking 0\n"
     elif variant == "mesh":
         d += "fix cad all mesh/surface file cyl.stl type 2\n"
         d += "fix w all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n"
@@ -133,6 +161,16 @@ def wall_deck(variant, data, steps, height, flow=False):
 
 
 LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms")
+
+
+def ratio(res, a, b):
+    """Cost of wall a over wall b: from the fastest runs, and the median of the ratios
+    of the repetitions (each against the baseline run just before it)."""
+    c = res["cost"]
+    rep = [p[a] / p[b] for p in res["per_rep"] if p[b] > 0]
+    return "%.2f (fastest runs), %s (median of %d repetition%s)" % (
+        c[a] / c[b], "%.2f" % statistics.median(rep) if rep else "n/a", len(rep),
+        "" if len(rep) == 1 else "s")
 
 
 def run_deck(exe, workdir, name, deck, np=1):
@@ -157,8 +195,11 @@ def run_deck(exe, workdir, name, deck, np=1):
             "builds": int(builds[-1]) if builds else -1}
 
 
-def wall_costs(exe, workdir, n, variants, reps, log, flow=False):
-    pts, height = monolayer(n)
+def wall_costs(exe, workdir, n, variants, reps, log, flow=False, grid=(200, 10), skin=SKIN,
+               gap=None):
+    """Wall cost per particle-step of each variant. grid: the STL's NTHETA x NZ; gap:
+    spheres that far from the wall and no push (None: pressed on the wall)."""
+    pts, height = monolayer(n, gap)
     data = os.path.join(workdir, "mono_%d.data" % n)
     write_data(data, pts, height)
     with open(os.path.join(workdir, "cyl.inp"), "w") as f:
@@ -167,22 +208,30 @@ def wall_costs(exe, workdir, n, variants, reps, log, flow=False):
     if "mesh" in variants:
         subprocess.run([sys.executable, os.path.join(HERE, "make_stl.py"),
                         os.path.join(workdir, "cyl.stl"), repr(RC), "-0.002",
-                        repr(height + 0.002), "200", "10"], check=True)
+                        repr(height + 0.002), str(grid[0]), str(grid[1])], check=True)
     steps = int(min(10000, max(100, 1.0e7 / n)))
     best = {}
+    per_rep = []  # loop times of each repetition, run back to back
     for rep in range(reps):
+        loops = {}
         for v in ["none"] + variants:
             r = run_deck(exe, workdir, "%s_%d" % (v, n),
-                         wall_deck(v, data, steps, height, flow))
+                         wall_deck(v, data, steps, height, flow, skin, gap is None))
             if r["atoms"] != n:
                 sys.exit("bench: %s lost atoms (%d of %d)" % (v, r["atoms"], n))
+            loops[v] = r["loop"]
             if v not in best or r["loop"] < best[v]["loop"]:
                 best[v] = r
+        per_rep.append(loops)
     os.remove(data)
-    res = {"n": n, "steps": steps, "loop": {v: best[v]["loop"] for v in best},
+    res = {"n": n, "steps": steps, "height": height, "loop": {v: best[v]["loop"] for v in best},
            "builds": {v: best[v]["builds"] for v in best}}
     base = best["none"]["loop"]
     res["cost"] = {v: (best[v]["loop"] - base) / (n * steps) for v in variants}
+    # Each repetition's wall costs against its own baseline, the runs minutes apart
+    # cancelling: the ratio of two walls is also given as the median over repetitions.
+    res["per_rep"] = [{v: (lp[v] - lp["none"]) / (n * steps) for v in variants}
+                      for lp in per_rep]
     line = "N=%-8d steps=%-5d%s baseline %.3g us/particle-step" % (
         n, steps, " flowing" if flow else "", 1e6 * base / (n * steps))
     for v in variants:
@@ -198,7 +247,7 @@ def drum_deck(n_target):
     d = DECK_HEAD + """processors * 1 1
 region box block -0.052 0.052 -0.052 0.052 -0.022 0.022 units box
 create_box 2 box
-""" + DECK_MATERIALS + """timestep 1e-5
+""" + materials() + """timestep 1e-5
 lattice sc 0.00205
 region bed cylinder z 0 0 0.0475 -0.0185 0.0185 units box
 region low block INF INF INF 0.01 INF INF units box
@@ -222,7 +271,13 @@ def main():
     ap.add_argument("--max-n", type=int, default=1000000)
     ap.add_argument("--reps", type=int, default=5)
     ap.add_argument("--out", default=None, help="also write the report here")
+    ap.add_argument("--sections", default=",".join(SECTIONS),
+                    help="comma-separated sections to run (default: all, %s)" % ",".join(SECTIONS))
     args = ap.parse_args()
+    want = args.sections.split(",")
+    for sec in want:
+        if sec not in SECTIONS:
+            ap.error("unknown section '%s' (expected some of %s)" % (sec, ",".join(SECTIONS)))
     exe = os.path.abspath(args.exe)
     work = tempfile.mkdtemp(prefix="rs_bench_lig_")
     lines = []
@@ -237,20 +292,52 @@ def main():
     log("# wall cost per particle-step in microseconds (loop time minus the no-wall "
         "baseline), fastest of %d" % reps)
 
-    log("## 1. cylinder wall cost, all walls side by side")
     n1 = 2000 if args.quick else 10000
-    r = wall_costs(exe, work, n1, ["prim", "ours", "mesh"], reps, log)
-    c = r["cost"]
-    log("ours / prim = %.2f (target <= 1.5)   mesh / ours = %.1f (target >= 20)"
-        % (c["ours"] / c["prim"], c["mesh"] / c["ours"]))
+    if "1" in want:
+        log("## 1. cylinder wall cost, all walls side by side")
+        r = wall_costs(exe, work, n1, ["prim", "ours", "mesh"], reps, log)
+        log("ours / prim = %s (target <= 1.5)" % ratio(r, "ours", "prim"))
+        log("mesh / ours = %s (target >= 20)" % ratio(r, "mesh", "ours"))
 
-    log("## 1b. cylinder wall cost, flowing bed (rolling at %g m/s, neighbour rebuilds)"
-        % VFLOW)
-    r = wall_costs(exe, work, n1, ["prim", "ours", "mesh"], reps, log, flow=True)
-    c = r["cost"]
-    log("ours / prim = %.2f (target <= 1.5)   mesh / ours = %.1f (target >= 20)"
-        % (c["ours"] / c["prim"], c["mesh"] / c["ours"]))
+    if "1b" in want:
+        log("## 1b. cylinder wall cost, flowing bed (rolling at %g m/s, neighbour rebuilds)"
+            % VFLOW)
+        r = wall_costs(exe, work, n1, ["prim", "ours", "mesh"], reps, log, flow=True)
+        log("ours / prim = %s (target <= 1.5)" % ratio(r, "ours", "prim"))
+        log("mesh / ours = %s (target >= 20)" % ratio(r, "mesh", "ours"))
 
+    if "1c" in want:
+        log("## 1c. the mesh wall against its facets and the skin (static deck, fastest of %d)"
+            % min(reps, 3))
+        for grid, skin in MESH_CASES:
+            r = wall_costs(exe, work, n1, ["prim", "ours", "mesh"], min(reps, 3), log,
+                           grid=grid, skin=skin)
+            log("%d x %d quads (%d triangles, %.2g x %.2g mm), skin %g mm:"
+                % (grid[0], grid[1], 2 * grid[0] * grid[1],
+                   1e3 * 2 * math.pi * RC / grid[0], 1e3 * r["height"] / grid[1], 1e3 * skin))
+            for a, b in (("mesh", "prim"), ("ours", "prim"), ("mesh", "ours")):
+                log("  %s / %s = %s" % (a, b, ratio(r, a, b)))
+
+    if "1d" in want:
+        log("## 1d. spheres near the wall, not touching it (gap %g mm, inside the tracking "
+            "thickness = skin %g mm; no push)" % (1e3 * GAP_NEAR, 1e3 * SKIN))
+        r = wall_costs(exe, work, n1, ["prim", "ours", "ours_t0", "mesh"], reps, log,
+                       gap=GAP_NEAR)
+        c = r["cost"]
+        log("ours (open contacts passed to the law) = %.3g us, ours with tracking 0 = %.3g us,"
+            " prim = %.3g us, mesh = %.3g us"
+            % tuple(1e6 * c[v] for v in ("ours", "ours_t0", "prim", "mesh")))
+
+    if "2" in want:
+        scaling(exe, work, args, reps, log)
+    if "3" in want:
+        strong_scaling(exe, work, reps, log)
+    if args.out:
+        with open(args.out, "w") as f:
+            f.write("\n".join(lines) + "\n")
+
+
+def scaling(exe, work, args, reps, log):
     log("## 2. scaling (ours and prim)")
     sizes = [1000, 10000] if args.quick else [1000, 10000, 100000, 1000000]
     rows = []
@@ -263,6 +350,8 @@ def main():
     log("ours per particle-step: min %.3g us, max %.3g us, max/min = %.2f (target <= 1.3)"
         % (1e6 * min(ours), 1e6 * max(ours), max(ours) / min(ours)))
 
+
+def strong_scaling(exe, work, reps, log):
     log("## 3. strong scaling, rotating drum with a settling bed")
     with open(os.path.join(work, "drum.inp"), "w") as f:
         f.write("*SURFACE, TYPE=REVOLUTION, NAME=drum\n0, 0, 0, 0, 0, 1\n"
@@ -278,9 +367,6 @@ def main():
         log("np=%d: %d atoms, %d steps, loop %.3f s" % (np, best["atoms"], best["steps"], best["loop"]))
     log("speed-up %.2f, parallel efficiency %.0f %%"
         % (t[1]["loop"] / t[2]["loop"], 100 * t[1]["loop"] / (2 * t[2]["loop"])))
-    if args.out:
-        with open(args.out, "w") as f:
-            f.write("\n".join(lines) + "\n")
 
 
 if __name__ == "__main__":
