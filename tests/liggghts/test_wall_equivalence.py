@@ -4,7 +4,8 @@
 Pins: our CYLINDER plane (one LINE, n = +z) is the Hertz wall of `fix wall/gran model
 hertz tangential history primitive zplane 0`, and the inside of our REVOLUTION drum is
 `primitive zcylinder`. The answer is LIGGGHTS's wall in the same deck, same executable;
-positions, velocities and spins agree to 1e-9 relative at every output step.
+positions, velocities and spins agree to 1e-9 relative at every output step, with the
+default tracking thickness and with `tracking 0`.
 """
 import math
 
@@ -65,6 +66,13 @@ def body(s):
     # 2. oblique impact with spin, under gravity: the tangential history and the
     #    contact-point lever arm (R - delta/2) both matter.
     compare(s, "oblique_spin", ours, ref,
+            L.sphere(1, (0, 0, R + GAP), R, RHO, v=(0.6, -0.3, -1.0),
+                     omega=(40.0, -90.0, 25.0)),
+            600, True, "nve/sphere", box, vz_flips)
+    # 2b. the same with tracking 0: the contact is made when the sphere touches, not
+    #     when it enters the skin; hertz's force is the same (docs: "Cost of the
+    #     tracking thickness").
+    compare(s, "oblique_spin_tracking0", ours + " tracking 0", ref,
             L.sphere(1, (0, 0, R + GAP), R, RHO, v=(0.6, -0.3, -1.0),
                      omega=(40.0, -90.0, 25.0)),
             600, True, "nve/sphere", box, vz_flips)
