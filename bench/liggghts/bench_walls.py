@@ -228,8 +228,8 @@ def wall_costs(exe, workdir, n, variants, reps, log, flow=False, grid=(200, 10),
            "builds": {v: best[v]["builds"] for v in best}}
     base = best["none"]["loop"]
     res["cost"] = {v: (best[v]["loop"] - base) / (n * steps) for v in variants}
-    # Each repetition's wall costs against its own baseline, the runs minutes apart
-    # cancelling: the ratio of two walls is also given as the median over repetitions.
+    # Each repetition's wall costs against its own baseline, run seconds before, so that
+    # the host's slow drifts cancel: ratio() also gives the median over repetitions.
     res["per_rep"] = [{v: (lp[v] - lp["none"]) / (n * steps) for v in variants}
                       for lp in per_rep]
     line = "N=%-8d steps=%-5d%s baseline %.3g us/particle-step" % (
@@ -280,12 +280,16 @@ def main():
             ap.error("unknown section '%s' (expected some of %s)" % (sec, ",".join(SECTIONS)))
     exe = os.path.abspath(args.exe)
     work = tempfile.mkdtemp(prefix="rs_bench_lig_")
-    lines = []
+    report = open(args.out, "w") if args.out else None
 
     def log(s):
+        """Prints a report line, and writes it to --out at once, so that a run stopped
+        part-way keeps what it measured."""
         print(s)
         sys.stdout.flush()
-        lines.append(s)
+        if report:
+            report.write(s + "\n")
+            report.flush()
 
     reps = 1 if args.quick else args.reps
     log("# LIGGGHTS walls benchmark, %s, %s" % (time.strftime("%Y-%m-%d %H:%M"), exe))
@@ -307,8 +311,8 @@ def main():
         log("mesh / ours = %s (target >= 20)" % ratio(r, "mesh", "ours"))
 
     if "1c" in want:
-        log("## 1c. the mesh wall against its facets and the skin (static deck, fastest of %d)"
-            % min(reps, 3))
+        log("## 1c. the mesh wall against its facets and the skin (static deck, %d "
+            "repetitions)" % min(reps, 3))
         for grid, skin in MESH_CASES:
             r = wall_costs(exe, work, n1, ["prim", "ours", "mesh"], min(reps, 3), log,
                            grid=grid, skin=skin)
@@ -332,9 +336,8 @@ def main():
         scaling(exe, work, args, reps, log)
     if "3" in want:
         strong_scaling(exe, work, reps, log)
-    if args.out:
-        with open(args.out, "w") as f:
-            f.write("\n".join(lines) + "\n")
+    if report:
+        report.close()
 
 
 def scaling(exe, work, args, reps, log):
