@@ -65,16 +65,14 @@ def body(s):
             400, False, "nve/sphere", box, vz_flips)
     # 2. oblique impact with spin, under gravity: the tangential history and the
     #    contact-point lever arm (R - delta/2) both matter.
-    compare(s, "oblique_spin", ours, ref,
-            L.sphere(1, (0, 0, R + GAP), R, RHO, v=(0.6, -0.3, -1.0),
-                     omega=(40.0, -90.0, 25.0)),
+    oblique = L.sphere(1, (0, 0, R + GAP), R, RHO, v=(0.6, -0.3, -1.0),
+                       omega=(40.0, -90.0, 25.0))
+    compare(s, "oblique_spin", ours, ref, oblique,
             600, True, "nve/sphere", box, vz_flips)
     # 2b. the same with tracking 0: the contact is made when the sphere touches, not
     #     when it enters the skin; hertz's force is the same (docs: "Cost of the
     #     tracking thickness").
-    compare(s, "oblique_spin_tracking0", ours + " tracking 0", ref,
-            L.sphere(1, (0, 0, R + GAP), R, RHO, v=(0.6, -0.3, -1.0),
-                     omega=(40.0, -90.0, 25.0)),
+    compare(s, "oblique_spin_tracking0", ours + " tracking 0", ref, oblique,
             600, True, "nve/sphere", box, vz_flips)
 
     # 3. slide to rest: starts touching with 0.5 m/s, spin frozen (fix nve), so friction
