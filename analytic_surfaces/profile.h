@@ -25,11 +25,11 @@
 #define RS_PROFILE_H
 
 #include "rigidsurf/surface.h"
+#include "rigidsurf/vec.h"
 
 /// Relative tolerance for tangent continuity (radians) and arc radius mismatch.
 #define RS_SMOOTH_ANGLE 1e-9
 #define RS_RADIUS_TOL 1e-9
-#define RS_PI 3.14159265358979323846
 
 /// LINE from p0 to p1. RS_ERR_GEOMETRY when it has zero length. where prefixes messages.
 int rs_segment_line(rs_segment *g, const double p0[2], const double p1[2],

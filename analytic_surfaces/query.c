@@ -5,7 +5,7 @@
  * the reference configuration and rotating the results back, so the frame turns with
  * the master (ARCHITECTURE.md, "Profiles and surfaces"). */
 #include "profile.h"
-#include "rs_compiler.h"
+#include "base/rs_compiler.h"
 
 #include <math.h>
 #include <stdlib.h>

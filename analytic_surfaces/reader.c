@@ -384,18 +384,6 @@ static int data_line(const parser *ps, tok *t, int nt, draft *d)
     return push_segment(ps, d, &g);
 }
 
-static double norm3(const double v[3])
-{
-    return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-}
-
-static void cross3(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 /* Local frame of the surface from a, b (and c). */
 static int build_frame(parser *ps, const draft *d, rs_surface *s)
 {
@@ -406,7 +394,7 @@ static int build_frame(parser *ps, const draft *d, rs_surface *s)
         scale = fmax(scale, fabs(d->c[i]));
     const double *a = d->ab, *b = d->ab + 3;
     double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    double lab = norm3(ab);
+    double lab = rs_norm3(ab);
     if (d->kind == RS_SURF_SEGMENTS) {
         memset(s->a, 0, sizeof s->a);
         double I[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -416,7 +404,7 @@ static int build_frame(parser *ps, const draft *d, rs_surface *s)
         return RS_OK;
     }
     ps->line = d->kline + 1;
-    if (!isfinite(lab) || !isfinite(norm3(d->c)) || !isfinite(norm3(d->ab)))
+    if (!isfinite(lab) || !isfinite(rs_norm3(d->c)) || !isfinite(rs_norm3(d->ab)))
         return rs_error_set(ps->err, RS_ERR_GEOMETRY,
                             "%s:%d: coordinates too large (expected finite a, b, c)",
                             ps->origin, d->kline + 1);
@@ -428,13 +416,13 @@ static int build_frame(parser *ps, const draft *d, rs_surface *s)
     memcpy(s->a, a, sizeof s->a);
     if (d->kind == RS_SURF_CYLINDER) {
         double ac[3] = {d->c[0] - a[0], d->c[1] - a[1], d->c[2] - a[2]};
-        double lac = norm3(ac);
+        double lac = rs_norm3(ac);
         for (int i = 0; i < 3; i++)
             s->ex[i] = ab[i] / lab;
         double along = ac[0] * s->ex[0] + ac[1] * s->ex[1] + ac[2] * s->ex[2];
         double z[3] = {ac[0] - along * s->ex[0], ac[1] - along * s->ex[1],
                        ac[2] - along * s->ex[2]};
-        double lz = norm3(z);
+        double lz = rs_norm3(z);
         if (!(lac > 1e-12 * scale) || !(lz > 1e-9 * lac))
             return rs_error_set(ps->err, RS_ERR_GEOMETRY,
                                 "%s:%d: point c coincides with a or lies on the line a-b "
@@ -442,7 +430,7 @@ static int build_frame(parser *ps, const draft *d, rs_surface *s)
                                 ps->origin, d->kline + 2);
         for (int i = 0; i < 3; i++)
             s->ez[i] = z[i] / lz;
-        cross3(s->ez, s->ex, s->ey);
+        rs_cross3(s->ez, s->ex, s->ey);
         return RS_OK;
     }
     for (int i = 0; i < 3; i++)
@@ -456,10 +444,10 @@ static int build_frame(parser *ps, const draft *d, rs_surface *s)
     g[m] = 1.0;
     double gz = s->ez[m];
     double x[3] = {g[0] - gz * s->ez[0], g[1] - gz * s->ez[1], g[2] - gz * s->ez[2]};
-    double lx = norm3(x);
+    double lx = rs_norm3(x);
     for (int i = 0; i < 3; i++)
         s->ex[i] = x[i] / lx;
-    cross3(s->ez, s->ex, s->ey);
+    rs_cross3(s->ez, s->ex, s->ey);
     return RS_OK;
 }
 

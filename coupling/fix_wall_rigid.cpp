@@ -1,6 +1,7 @@
 /* fix wall/rigid: a rigidsurf master surface as a LIGGGHTS wall.
  * Syntax, keywords and output: docs/fix_wall_rigid.md. Conventions: docs/conventions.md. */
 #include "fix_wall_rigid.h"
+#include "rigidsurf/vec.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -32,8 +33,6 @@ using namespace FixConst;
 namespace
 {
 
-const double kPi = 3.14159265358979323846;
-
 /* Global vector: 1-3 force on the wall, 4-6 moment on the wall about the surface
  * origin, 7 touching contacts, 8 ALLSE, 9 ALLFD, 10 ALLPD, 11 ALLVD, 12 ALLCD, 13 wall
  * temperature, 14 heat into the wall. */
@@ -47,13 +46,6 @@ int rates_callback(double t, double vel[3], double *omega, void *ctx)
     (void)t;
     static_cast<FixWallRigid *>(ctx)->motion_rates(vel, omega);
     return 0;
-}
-
-void cross3(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
 bool is_number(const char *s)
@@ -698,7 +690,7 @@ int FixWallRigid::parse_motion(int narg, char **arg, int iarg)
             if (var_omega_.empty()) {
                 if (period_ == 0.0)
                     fail("keyword 'rotate period' expects a non-zero period");
-                omega = 2.0 * kPi / period_;
+                omega = 2.0 * RS_PI / period_;
             }
             rot_by_period_ = true;
         } else {
@@ -731,7 +723,7 @@ void FixWallRigid::motion_rates(double vel[3], double *omega)
         if (rot_by_period_) {
             if (v == 0.0)
                 fail("variable v_" + var_omega_ + " (rotate period) is zero");
-            v = 2.0 * kPi / v;
+            v = 2.0 * RS_PI / v;
         }
         *omega = v;
     }
@@ -778,10 +770,10 @@ void FixWallRigid::init()
     spin_invariant_ = false;
     if (moving_ && surf_.kind == RS_SURF_REVOLUTION) {
         double ax[3], r[3], rx[3];
-        cross3(motion_.axis, surf_.ez, ax);
+        rs_cross3(motion_.axis, surf_.ez, ax);
         for (int d = 0; d < 3; d++)
             r[d] = motion_.center0[d] - surf_.a[d];
-        cross3(r, surf_.ez, rx);
+        rs_cross3(r, surf_.ez, rx);
         const double scale = std::max(1.0, std::sqrt(domain->xprd * domain->xprd +
                                                      domain->yprd * domain->yprd +
                                                      domain->zprd * domain->zprd));
@@ -1398,7 +1390,7 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
          * block with the same key left. */
         const double R = radius[idx[0]], m = rmass[idx[0]];
         const double A = area_mode_ == AREA_CONSTANT    ? area_const_
-                         : area_mode_ == AREA_PROJECTED ? kPi * R * R
+                         : area_mode_ == AREA_PROJECTED ? RS_PI * R * R
                                                         : 1.0;
         const double key[6] = {R, m, A, k10, k20, dt};
         bool same = uni_n_ > 0;
@@ -1434,7 +1426,7 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
             const int i = idx[pt[e]];
             const double R = radius[i], m = rmass[i];
             if (area_mode_ == AREA_PROJECTED)
-                A = kPi * R * R;
+                A = RS_PI * R * R;
             area[e] = A;
             crad[e] = R;
             cmass[e] = m;

@@ -2,17 +2,11 @@
  * surfaces"), feature adjacency for history hand-over, contact lists and surface
  * lifetime. */
 #include "rigidsurf/surface.h"
+#include "rigidsurf/vec.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-static void cross3(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 void rs_frame_segments(const double n[3], double t1[3], double t2[3])
 {
@@ -30,7 +24,7 @@ void rs_frame_cylinder(const double n[3], const double gen[3], double t1[3], dou
     t1[0] = gen[0];
     t1[1] = gen[1];
     t1[2] = gen[2];
-    cross3(n, gen, t2);
+    rs_cross3(n, gen, t2);
 }
 
 void rs_frame_revolution(const double n[3], const double hoop[3], double t1[3],
@@ -39,7 +33,7 @@ void rs_frame_revolution(const double n[3], const double hoop[3], double t1[3],
     t2[0] = hoop[0];
     t2[1] = hoop[1];
     t2[2] = hoop[2];
-    cross3(hoop, n, t1);
+    rs_cross3(hoop, n, t1);
 }
 
 void rs_frame_faceted(const double n[3], double t1[3], double t2[3])
@@ -58,7 +52,7 @@ void rs_frame_faceted(const double n[3], double t1[3], double t2[3])
     t1[0] = p[0] / l;
     t1[1] = p[1] / l;
     t1[2] = p[2] / l;
-    cross3(n, t1, t2);
+    rs_cross3(n, t1, t2);
 }
 
 int rs_surface_ndir(const rs_surface *s)

@@ -8,8 +8,9 @@
  * the kinematics and writes the history (frame, slip, rdisp1). rs_track_commit adds the
  * law's stress and statev and frees the leaving slots. */
 #include "rigidsurf/track.h"
+#include "rigidsurf/vec.h"
 
-#include "rs_compiler.h"
+#include "base/rs_compiler.h"
 #include "rs_v4.h"
 
 #include <math.h>
@@ -63,25 +64,6 @@ static int out_reserve(rs_track_out *o, int n, rs_error *err)
                             "rs_track_update: out of memory for %d contacts", n);
     o->cap = n;
     return RS_OK;
-}
-
-static inline double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static inline void cross3(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static inline void matvec(const double Q[9], const double v[3], double r[3])
-{
-    r[0] = Q[0] * v[0] + Q[1] * v[1] + Q[2] * v[2];
-    r[1] = Q[3] * v[0] + Q[4] * v[1] + Q[5] * v[2];
-    r[2] = Q[6] * v[0] + Q[7] * v[1] + Q[8] * v[2];
 }
 
 /* Below this value of 1 + a.b the normal has turned by ~180 deg and a.b x stops defining
@@ -338,8 +320,8 @@ static inline void rel_velocity(const rs_particles *p, int i, const master_rates
         w[1] = p->wy[i];
         w[2] = p->wz[i];
     }
-    cross3(w, r, wr);
-    cross3(mr->W, rm, Wr);
+    rs_cross3(w, r, wr);
+    rs_cross3(mr->W, rm, Wr);
     vr[0] = p->vx[i] + wr[0] - mr->V[0] - Wr[0];
     vr[1] = p->vy[i] + wr[1] - mr->V[1] - Wr[1];
     vr[2] = p->vz[i] + wr[2] - mr->V[2] - Wr[2];
@@ -630,9 +612,9 @@ static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
     const double rad = p->radius ? p->radius[i] : 0.0;
     const double xc[3] = {p->x[i], p->y[i], p->z[i]};
     double n[3], t1[3], t2[3], xcp[3], vr[3];
-    matvec(mr->Q, h + RS_H_N, n);
-    matvec(mr->Q, h + RS_H_T1, t1);
-    cross3(n, t1, t2);
+    rs_matvec3(mr->Q, h + RS_H_N, n);
+    rs_matvec3(mr->Q, h + RS_H_T1, t1);
+    rs_cross3(n, t1, t2);
     for (int b = 0; b < 3; b++)
         xcp[b] = xc[b] - rad * n[b];
     rel_velocity(p, i, mr, xc, xcp, vr);
@@ -649,10 +631,10 @@ static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
     }
     for (int b = 0; b < 4; b++)
         o->drot[(size_t)e * 4 + b] = RS_MAXVAL;
-    RS_A2(o->vrel, nd, 0, e) = dot3(vr, n);
-    RS_A2(o->vrel, nd, 1, e) = dot3(vr, t1);
+    RS_A2(o->vrel, nd, 0, e) = rs_dot3(vr, n);
+    RS_A2(o->vrel, nd, 1, e) = rs_dot3(vr, t1);
     if (nd == 3)
-        RS_A2(o->vrel, nd, 2, e) = dot3(vr, t2);
+        RS_A2(o->vrel, nd, 2, e) = rs_dot3(vr, t2);
     put_frame(o, nd, e, n, t1, t2);
     RS_A2(o->curv, 2, 0, e) = 0.0;
     RS_A2(o->curv, 2, 1, e) = 0.0;

@@ -18,7 +18,8 @@
  * tangential spring at the current kt), svd = (gn vn^2 + gt |vt|^2) dt/A while sticking,
  * sfd = mu |Fn| times the slip beyond the elastic limit, /A. */
 #include "builtin.h"
-#include "rs_compiler.h"
+#include "rigidsurf/vec.h"
+#include "base/rs_compiler.h"
 
 #include <math.h>
 
@@ -28,7 +29,6 @@ static const char *const rs_hertz_props[P_COUNT] = {"Y_particle", "nu_particle",
                                                     "nu_wall",    "restitution", "friction",
                                                     "curvature"};
 
-static const double rs_pi = 3.14159265358979323846;
 static const double rs_sqrt_five_over_six = 0.91287092917527685576161630466800355658790782;
 
 /* Checks lo < p[i] <= hi (open_lo) or lo <= p[i] <= hi. */
@@ -172,7 +172,7 @@ static int rs_hertz_update(const rs_law *law, rs_law_block *b, rs_error *err)
     const double Geff =
         1. / (2. * (2. - vp) * (1. + vp) / Yp + 2. * (2. - vw) * (1. + vw) / Yw);
     const double loge = log(p[P_E]);
-    const double beta = loge / sqrt(pow(loge, 2.) + pow(rs_pi, 2.));
+    const double beta = loge / sqrt(pow(loge, 2.) + pow(RS_PI, 2.));
     const double mu = p[P_MU];
     const double *rr = use_reff ? b->reff : b->radius;
     if (b->nDir == 3 && !b->setup)
