@@ -1,6 +1,6 @@
 /* Closest features of a profile in its plane: the ownership rules of profile.h. */
 #include "profile.h"
-#include "base/rs_compiler.h"
+#include "rs_compiler.h"
 
 #include <float.h>
 #include <math.h>

@@ -27,6 +27,15 @@
 #include "rigidsurf/surface.h"
 #include "rigidsurf/vec.h"
 
+/* The analytic kinds' operations (analytic.c): the table of kind, NULL for other kinds,
+ * and the parts that live in other files. */
+const rs_surface_ops *rs_analytic_ops(rs_surface_kind kind);
+int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out,
+                        rs_error *err);
+int rs_analytic_triangulate(const rs_surface *s, double span, int nhoop, rs_trimesh *m,
+                            rs_error *err);
+void rs_analytic_free(rs_surface *s);
+
 /// Relative tolerance for tangent continuity (radians) and arc radius mismatch.
 #define RS_SMOOTH_ANGLE 1e-9
 #define RS_RADIUS_TOL 1e-9

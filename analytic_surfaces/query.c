@@ -1,11 +1,12 @@
 /* Closest-feature query of the analytic surfaces: maps each point into the profile
  * plane of its kind (SEGMENTS: global x-y; CYLINDER: local x-y, extruded along ez;
- * REVOLUTION: (r, z)), asks the profile (closest.c) and maps the contacts back with the
- * frame convention of the kind. A pose x = R X + T is applied by taking the points to
- * the reference configuration and rotating the results back, so the frame turns with
- * the master (ARCHITECTURE.md, "Profiles and surfaces"). */
+ * REVOLUTION: (r, z)), asks the profile (closest.c) and maps the contacts back in their
+ * principal frame: d1 the profile's direction of travel, d2 = n x d1 (rs_frame_orient
+ * turns that into the kind's convention). A pose x = R X + T is applied by taking the
+ * points to the reference configuration and rotating the results back, so the frame
+ * turns with the master (ARCHITECTURE.md, "Profiles and surfaces"). */
 #include "profile.h"
-#include "base/rs_compiler.h"
+#include "rs_compiler.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -73,8 +74,8 @@ RS_MULTIVERSION static void local_extrusion(const double *F, int m,
 /* REVOLUTION contacts [k0, k1) from profile-plane form (xm[0..1] = (r, z) of the closest
  * point, nrm[0..1] = (n_r, n_z)), with (cx, cy) the radial direction of point i0 + j in
  * the local x-y plane, to 3D, in place: e_r = cx EX + cy EY, n = n_r e_r + n_z EZ,
- * t1 = t2 x n = n_z e_r - n_r EZ, t2 = hoop = EZ x e_r = cx EY - cy EX; hoop curvature
- * n_r / r at the contact point, 0 on the axis. */
+ * d1 = n_z e_r - n_r EZ (travel), d2 = n x d1 = hoop = EZ x e_r = cx EY - cy EX; hoop
+ * curvature n_r / r at the contact point, 0 on the axis. */
 RS_MULTIVERSION static void map_revolution(
     const double *F, double axis_tol, int k0, int k1, const int *restrict point, int i0,
     const double *restrict cxs, const double *restrict cys, double *restrict x0,
@@ -110,16 +111,15 @@ RS_MULTIVERSION static void map_revolution(
 }
 
 /* CYLINDER and SEGMENTS contacts [k0, k1) from profile-plane form (xm[0..1], nrm[0..1],
- * curv[0] = profile curvature), with lz the local z of point i0 + j, to 3D, in place.
- * CYLINDER: t1 = EZ, t2 = n x EZ = n_y EX - n_x EY, curvatures (0, kappa). SEGMENTS:
- * t1 = (0,0,-1) x n = n_y EX - n_x EY, t2 = -EZ, curvatures (kappa, 0). */
+ * curv[0] = profile curvature), with lz the local z of point i0 + j, to 3D, in place:
+ * d1 = n_y EX - n_x EY (travel), d2 = n x d1 = -EZ, curvatures (kappa, 0). */
 RS_MULTIVERSION static void
-map_extrusion(const double *F, int cyl, int k0, int k1, const int *restrict point, int i0,
+map_extrusion(const double *F, int k0, int k1, const int *restrict point, int i0,
               const double *restrict lzs, double *restrict x0, double *restrict x1,
               double *restrict x2, double *restrict n0, double *restrict n1,
               double *restrict n2, double *restrict a0, double *restrict a1,
               double *restrict a2, double *restrict b0, double *restrict b1,
-              double *restrict b2, double *restrict c0, double *restrict c1)
+              double *restrict b2, double *restrict c1)
 {
     const double A0 = F[F_A], A1 = F[F_A + 1], A2 = F[F_A + 2];
     const double X0 = F[F_X], X1 = F[F_X + 1], X2 = F[F_X + 2];
@@ -127,37 +127,26 @@ map_extrusion(const double *F, int cyl, int k0, int k1, const int *restrict poin
     const double Z0 = F[F_Z], Z1 = F[F_Z + 1], Z2 = F[F_Z + 2];
     for (int k = k0; k < k1; k++) {
         const double lz = lzs[point[k] - i0];
-        const double hx = x0[k], hy = x1[k], nx = n0[k], ny = n1[k], kap = c0[k];
-        const double tr0 = ny * X0 - nx * Y0, tr1 = ny * X1 - nx * Y1,
-                     tr2 = ny * X2 - nx * Y2;
+        const double hx = x0[k], hy = x1[k], nx = n0[k], ny = n1[k];
         x0[k] = A0 + hx * X0 + hy * Y0 + lz * Z0;
         x1[k] = A1 + hx * X1 + hy * Y1 + lz * Z1;
         x2[k] = A2 + hx * X2 + hy * Y2 + lz * Z2;
         n0[k] = nx * X0 + ny * Y0;
         n1[k] = nx * X1 + ny * Y1;
         n2[k] = nx * X2 + ny * Y2;
-        a0[k] = cyl ? Z0 : tr0;
-        a1[k] = cyl ? Z1 : tr1;
-        a2[k] = cyl ? Z2 : tr2;
-        b0[k] = cyl ? tr0 : -Z0;
-        b1[k] = cyl ? tr1 : -Z1;
-        b2[k] = cyl ? tr2 : -Z2;
-        c0[k] = cyl ? 0.0 : kap;
-        c1[k] = cyl ? kap : 0.0;
+        a0[k] = ny * X0 - nx * Y0;
+        a1[k] = ny * X1 - nx * Y1;
+        a2[k] = ny * X2 - nx * Y2;
+        b0[k] = -Z0;
+        b1[k] = -Z1;
+        b2[k] = -Z2;
+        c1[k] = 0.0;
     }
 }
 
-int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
-                     rs_error *err)
+int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out,
+                        rs_error *err)
 {
-    if (!s || !q || !out)
-        return rs_error_set(err, RS_ERR_ARG, "rs_surface_query: NULL argument");
-    if (s->klass) {
-        if (!s->klass->query)
-            return rs_error_set(err, RS_ERR_ARG, "surface '%s': class %s has no query",
-                                s->name, s->klass->name ? s->klass->name : "?");
-        return s->klass->query(s, q, out, err);
-    }
     if (q->n <= 0)
         return RS_OK;
     int kind = s->kind;
@@ -255,10 +244,10 @@ int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
                            out->t1[0], out->t1[1], out->t1[2], out->t2[0], out->t2[1],
                            out->t2[2], out->curv[1]);
         else
-            map_extrusion(F, kind == RS_SURF_CYLINDER, k0, out->n, out->point, i0, pw,
-                          out->xm[0], out->xm[1], out->xm[2], out->nrm[0], out->nrm[1],
-                          out->nrm[2], out->t1[0], out->t1[1], out->t1[2], out->t2[0],
-                          out->t2[1], out->t2[2], out->curv[0], out->curv[1]);
+            map_extrusion(F, k0, out->n, out->point, i0, pw, out->xm[0], out->xm[1],
+                          out->xm[2], out->nrm[0], out->nrm[1], out->nrm[2], out->t1[0],
+                          out->t1[1], out->t1[2], out->t2[0], out->t2[1], out->t2[2],
+                          out->curv[1]);
     }
 done:
     rs_pscratch_free(&sc);

@@ -384,6 +384,13 @@ static int data_line(const parser *ps, tok *t, int nt, draft *d)
     return push_segment(ps, d, &g);
 }
 
+/* Frees a surface this reader made and zeroes it. */
+static void surface_free(rs_surface *s)
+{
+    rs_analytic_free(s);
+    memset(s, 0, sizeof *s);
+}
+
 /* Local frame of the surface from a, b (and c). */
 static int build_frame(parser *ps, const draft *d, rs_surface *s)
 {
@@ -492,6 +499,7 @@ static int finish_draft(parser *ps, draft *d, rs_surface *s)
             "least one LINE, CIRCL or PARAB)",
             ps->origin, d->kline, d->name);
     s->kind = d->kind;
+    s->ops = rs_analytic_ops(d->kind);
     memcpy(s->name, d->name, sizeof s->name);
     s->sides = d->sides;
     s->fillet_radius = d->fillet;
@@ -527,7 +535,7 @@ static int finish_draft(parser *ps, draft *d, rs_surface *s)
     s->impl = pc;
     return RS_OK;
 fail:
-    rs_surface_free(s);
+    surface_free(s);
     return rc;
 }
 
@@ -606,7 +614,7 @@ int rs_surface_parse(const char *text, const char *origin, const char *name, rs_
                 *s = cur;
                 found = 1;
             } else {
-                rs_surface_free(&cur);
+                surface_free(&cur);
             }
             draft_free(&d);
         }
@@ -671,7 +679,7 @@ out:
     draft_free(&d);
     free(seen);
     if (rc && found)
-        rs_surface_free(s);
+        surface_free(s);
     if (!rc)
         rs_error_clear(err);
     return rc;

@@ -45,11 +45,11 @@ static int polyline(const rs_profile *p, int nh, double **out, int *count)
     return RS_OK;
 }
 
-int rs_surface_triangulate(const rs_surface *s, double span, int nhoop, rs_trimesh *mesh,
-                           rs_error *err)
+int rs_analytic_triangulate(const rs_surface *s, double span, int nhoop, rs_trimesh *mesh,
+                            rs_error *err)
 {
     memset(mesh, 0, sizeof *mesh);
-    if (s->klass || s->profile.nseg < 1)
+    if (s->profile.nseg < 1)
         return rs_error_set(err, RS_ERR_ARG,
                             "surface '%s': triangulation is for analytic profiles",
                             s->name);

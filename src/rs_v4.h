@@ -7,7 +7,7 @@
 #ifndef RS_V4_H
 #define RS_V4_H
 
-#include "base/rs_compiler.h"
+#include "rs_compiler.h"
 
 #include <string.h>
 

@@ -10,7 +10,7 @@
 #include "rigidsurf/track.h"
 #include "rigidsurf/vec.h"
 
-#include "base/rs_compiler.h"
+#include "rs_compiler.h"
 #include "rs_v4.h"
 
 #include <math.h>

@@ -61,26 +61,57 @@ typedef enum rs_surface_kind {
     RS_SURF_SEGMENTS = 1,   ///< 2D profile in the global x-y plane, nDir = 2
     RS_SURF_CYLINDER = 2,   ///< profile extruded along the generator
     RS_SURF_REVOLUTION = 3, ///< profile in (r, z) revolved about the axis
-    RS_SURF_FACETED = 4     ///< triangle mesh (provided through rs_surface_class)
+    RS_SURF_FACETED = 4     ///< triangle mesh
 } rs_surface_kind;
+
+/// How a kind orients its tangents (ARCHITECTURE.md, "Profiles and surfaces"). A kind's
+/// closest-feature operation writes the principal frame of each contact: the normal n,
+/// d1 and d2 = n x d1 in t1 and t2, with the curvatures along d1 and d2 in curv.
+/// rs_frame_orient (src/frame.c) turns that into the kind's convention, in place.
+typedef enum rs_frame_convention {
+    /// t1 = d1, the profile's direction of travel; t2 = n x t1 (SEGMENTS: -z,
+    /// REVOLUTION: the hoop direction). The principal frame is the contact frame.
+    RS_FRAME_TRAVEL = 1,
+    /// t1 = the generator, -d2; t2 = n x t1 = d1 (CYLINDER).
+    RS_FRAME_GENERATOR = 2,
+    /// t1 = global x projected on the tangent plane, global z when x is within 0.1 deg
+    /// of n; t2 = n x t1 (FACETED). curv keeps the principal curvatures (along d1, d2).
+    RS_FRAME_GLOBAL_X = 3
+} rs_frame_convention;
 
 struct rs_surface;
 struct rs_query;
 struct rs_contacts;
+struct rs_trimesh;
 
-/// Behaviour of surface kinds that live outside analytic_surfaces/ (meshes, user
-/// surfaces). A surface whose klass is set is answered through it.
-typedef struct rs_surface_class {
-    const char *name;
-    int (*query)(const struct rs_surface *s, const struct rs_query *q,
-                 struct rs_contacts *out, rs_error *err);
+/// The operations of one surface kind: the seam through which every kind joins. The
+/// table is chosen once, when the surface is made (rs_surface_read, rs_surface_parse),
+/// and the contact core reaches the geometry only through it (src/surface.c).
+typedef struct rs_surface_ops {
+    const char *name;              ///< the kind's keyword, e.g. "REVOLUTION"
+    int ndir;                      ///< local directions: 2 (a plane problem) or 3
+    rs_frame_convention frame;     ///< how t1 and t2 follow from the principal frame
+    /// Appends the contacts of every query point to out, in the principal frame (see
+    /// rs_frame_convention); contacts of one point are consecutive.
+    int (*closest)(const struct rs_surface *s, const struct rs_query *q,
+                   struct rs_contacts *out, rs_error *err);
     /// 1 when a contact may hand its history from feature fa to feature fb (the normal
     /// is continuous across the junction), 0 otherwise.
     int (*adjacent)(const struct rs_surface *s, int fa, int fb);
-    void (*destroy)(struct rs_surface *s);
-} rs_surface_class;
+    /// Axis-aligned bounds in the reference configuration; +-INFINITY where unbounded.
+    void (*bounds)(const struct rs_surface *s, double lo[3], double hi[3]);
+    /// 1 with a point and a unit axis when the surface is invariant under rotation about
+    /// that axis (a surface of revolution), 0 otherwise.
+    int (*spin_axis)(const struct rs_surface *s, double origin[3], double axis[3]);
+    /// A triangulation for display (see rs_surface_triangulate).
+    int (*triangulate)(const struct rs_surface *s, double span, int nhoop,
+                       struct rs_trimesh *m, rs_error *err);
+    /// Frees what the kind owns (not the surface struct itself).
+    void (*free)(struct rs_surface *s);
+} rs_surface_ops;
 
 typedef struct rs_surface {
+    const rs_surface_ops *ops; ///< the kind's operations
     rs_surface_kind kind;
     char name[80];
     int sides;            ///< 1 or 2
@@ -91,10 +122,9 @@ typedef struct rs_surface {
      * ex a fixed unit vector normal to ez (the on-axis fallback for e_r), ey = ez x ex.
      * SEGMENTS: a = 0 and the global axes. */
     double a[3], ex[3], ey[3], ez[3];
-    int bounded;                   ///< CYLINDER: EXTENT given
-    double zmin, zmax;             ///< CYLINDER: extent along the generator, local z
-    const rs_surface_class *klass; ///< NULL for the analytic kinds
-    void *impl;
+    int bounded;       ///< CYLINDER: EXTENT given
+    double zmin, zmax; ///< CYLINDER: extent along the generator, local z
+    void *impl;        ///< the kind's query data
 } rs_surface;
 
 /// Number of local directions: 2 for SEGMENTS, 3 otherwise.
@@ -119,11 +149,12 @@ typedef struct rs_contacts {
     double *xm[3];   ///< closest point on the master
     double *nrm[3];  ///< outward unit normal (toward the point's side)
     double *t1[3];   ///< first tangent, by the kind's convention
-    double *t2[3];   ///< second tangent (SEGMENTS: (0,0,-1))
+    double *t2[3];   ///< second tangent, t2 = n x t1 (SEGMENTS: (0,0,-1))
     double *dist;    ///< signed distance of the point from the surface along n
                      ///< (> 0 on the particle side); rdisp1 = radius - dist
-    double *curv[2]; ///< principal curvatures along t1 and t2 at xm, > 0 where the
-                     ///< wall is convex toward the particle; 0 at sharp vertices
+    double *curv[2]; ///< principal curvatures at xm, along t1 and t2 where the frame is
+                     ///< principal (the profile kinds), > 0 where the wall is convex
+                     ///< toward the particle; 0 at sharp vertices
 } rs_contacts;
 
 /// Allocates room for cap contacts (cap >= 1). Returns RS_ERR_NOMEM on failure.
@@ -132,12 +163,21 @@ int rs_contacts_reserve(rs_contacts *c, int cap, rs_error *err);
 void rs_contacts_free(rs_contacts *c);
 
 /// Appends the contacts of every query point to out (out->n grows; call with
-/// out->n = 0 for a fresh list). Contacts of one point are consecutive.
+/// out->n = 0 for a fresh list), each in the kind's frame convention. Contacts of one
+/// point are consecutive.
 int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
                      rs_error *err);
 
-/// 1 when history may pass from feature fa to feature fb (see rs_surface_class).
+/// 1 when history may pass from feature fa to feature fb (see rs_surface_ops).
 int rs_surface_adjacent(const rs_surface *s, int fa, int fb);
+
+/// Axis-aligned bounds of the surface in its reference configuration (+-INFINITY where
+/// it is unbounded).
+void rs_surface_bounds(const rs_surface *s, double lo[3], double hi[3]);
+
+/// 1 with origin and unit axis when the surface is invariant under rotation about that
+/// axis (reference configuration), 0 otherwise.
+int rs_surface_spin_axis(const rs_surface *s, double origin[3], double axis[3]);
 
 /// Reads surface NAME (NULL: the first) from an Abaqus-style keyword file.
 int rs_surface_read(const char *path, const char *name, rs_surface *s, rs_error *err);
@@ -159,15 +199,12 @@ int rs_surface_triangulate(const rs_surface *s, double span, int nhoop, rs_trime
                            rs_error *err);
 void rs_trimesh_free(rs_trimesh *m);
 
-/* Frame conventions, one function per kind. n is the unit outward normal (global). */
-/// SEGMENTS: t1 = (0,0,-1) x n, t2 = (0,0,-1).
-void rs_frame_segments(const double n[3], double t1[3], double t2[3]);
-/// CYLINDER: t1 = generator gen (unit), t2 = n x t1.
-void rs_frame_cylinder(const double n[3], const double gen[3], double t1[3], double t2[3]);
-/// REVOLUTION: t2 = hoop (unit), t1 = t2 x n.
-void rs_frame_revolution(const double n[3], const double hoop[3], double t1[3],
-                         double t2[3]);
-/// FACETED: t1 = global x on the tangent plane (global z within 0.1 deg), t2 = n x t1.
+/// Turns contacts [k0, k1) of c from the principal frame a kind's closest operation
+/// writes into the frame convention conv (t1, t2 and the curvatures along them).
+void rs_frame_orient(rs_frame_convention conv, rs_contacts *c, int k0, int k1);
+
+/// The FACETED tangents of unit normal n: t1 = global x on the tangent plane (global z
+/// when x is within 0.1 deg of n), t2 = n x t1.
 void rs_frame_faceted(const double n[3], double t1[3], double t2[3]);
 
 #ifdef __cplusplus

@@ -19,7 +19,7 @@
  * sfd = mu |Fn| times the slip beyond the elastic limit, /A. */
 #include "builtin.h"
 #include "rigidsurf/vec.h"
-#include "base/rs_compiler.h"
+#include "rs_compiler.h"
 
 #include <math.h>
 

@@ -687,7 +687,7 @@ static void test_leaving_slot_between_held_contacts(void)
     rs_track_out_free(&o);
 }
 
-/* Fixture surface class: features FACE 0 and FACE 1 meet tangentially; FACE 2 does not. */
+/* Fixture surface kind: features FACE 0 and FACE 1 meet tangentially; FACE 2 does not. */
 static int fixture_adjacent(const rs_surface *s, int fa, int fb)
 {
     (void)s;
@@ -695,7 +695,8 @@ static int fixture_adjacent(const rs_surface *s, int fa, int fb)
     return (fa == a && fb == b) || (fa == b && fb == a);
 }
 
-static const rs_surface_class fixture_class = {"fixture", NULL, fixture_adjacent, NULL};
+static const rs_surface_ops fixture_ops = {
+    "fixture", 3, RS_FRAME_GLOBAL_X, NULL, fixture_adjacent, NULL, NULL, NULL, NULL};
 
 /* History (slot, slip, stress, statev) carries across a smooth junction; across a sharp
  * one the old contact leaves (1e30) and the new one starts from zero. */
@@ -709,7 +710,7 @@ static void test_history_handover_across_smooth_junction(void)
     rs_surface surf;
     memset(&surf, 0, sizeof surf);
     surf.kind = RS_SURF_FACETED;
-    surf.klass = &fixture_class;
+    surf.ops = &fixture_ops;
     double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
     double x[3] = {0, 0, 0.0099}, v[3] = {0.2, 0.1, 0}, zero[3] = {0, 0, 0};
     const double dt = 1e-3;

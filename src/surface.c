@@ -1,0 +1,58 @@
+/* Surface dispatch: the contact core reaches every surface kind through its table of
+ * operations (rs_surface_ops), chosen when the surface was made. */
+#include "rigidsurf/surface.h"
+
+#include <math.h>
+#include <string.h>
+
+int rs_surface_ndir(const rs_surface *s)
+{
+    return s->ops->ndir;
+}
+
+int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
+                     rs_error *err)
+{
+    if (!s || !q || !out)
+        return rs_error_set(err, RS_ERR_ARG, "rs_surface_query: NULL argument");
+    if (!s->ops)
+        return rs_error_set(err, RS_ERR_ARG, "surface '%s' has no kind", s->name);
+    const int k0 = out->n;
+    int rc = s->ops->closest(s, q, out, err);
+    if (rc == RS_OK)
+        rs_frame_orient(s->ops->frame, out, k0, out->n);
+    return rc;
+}
+
+int rs_surface_adjacent(const rs_surface *s, int fa, int fb)
+{
+    return s->ops->adjacent(s, fa, fb);
+}
+
+void rs_surface_bounds(const rs_surface *s, double lo[3], double hi[3])
+{
+    s->ops->bounds(s, lo, hi);
+}
+
+int rs_surface_spin_axis(const rs_surface *s, double origin[3], double axis[3])
+{
+    return s->ops->spin_axis(s, origin, axis);
+}
+
+int rs_surface_triangulate(const rs_surface *s, double span, int nhoop, rs_trimesh *m,
+                           rs_error *err)
+{
+    memset(m, 0, sizeof *m);
+    if (!s->ops)
+        return rs_error_set(err, RS_ERR_ARG, "surface '%s' has no kind", s->name);
+    return s->ops->triangulate(s, span, nhoop, m, err);
+}
+
+void rs_surface_free(rs_surface *s)
+{
+    if (!s)
+        return;
+    if (s->ops)
+        s->ops->free(s);
+    memset(s, 0, sizeof *s);
+}
