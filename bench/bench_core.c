@@ -223,7 +223,7 @@ int main(int argc, char **argv)
 {
     int np = 8192, reps = 101, only = 0, still = 0;
     unsigned long long seed = 12345;
-    for (int a = 1; a < argc; a++) {
+    for (int a = 1; a < argc; a += 2) {
         char *end = NULL;
         long v = 0;
         if (a + 1 < argc)
@@ -250,7 +250,6 @@ int main(int argc, char **argv)
                 argv[a], RS_BLOCK);
             return 2;
         }
-        a++;
     }
     printf("command:");
     for (int a = 0; a < argc; a++)
