@@ -61,7 +61,8 @@ static void profile_box(const rs_surface *s, double box[4])
     box[1] = box[3] = -INFINITY;
     for (int k = 0; pc && k < pc->nseg; k++)
         for (int i = 0; i < 4; i++)
-            box[i] = (i & 1) ? fmax(box[i], pc->ps[k].box[i]) : fmin(box[i], pc->ps[k].box[i]);
+            box[i] =
+                (i & 1) ? fmax(box[i], pc->ps[k].box[i]) : fmin(box[i], pc->ps[k].box[i]);
 }
 
 static void analytic_bounds(const rs_surface *s, double lo[3], double hi[3])
@@ -121,18 +122,21 @@ void rs_analytic_free(rs_surface *s)
     s->profile.vkind = NULL;
 }
 
-static const rs_surface_ops segments_ops = {
-    "SEGMENTS",          2, RS_FRAME_TRAVEL,         rs_analytic_closest, analytic_adjacent,
-    analytic_bounds,     analytic_spin_axis,         rs_analytic_triangulate,
-    rs_analytic_free};
-static const rs_surface_ops cylinder_ops = {
-    "CYLINDER",          3, RS_FRAME_GENERATOR,      rs_analytic_closest, analytic_adjacent,
-    analytic_bounds,     analytic_spin_axis,         rs_analytic_triangulate,
-    rs_analytic_free};
-static const rs_surface_ops revolution_ops = {
-    "REVOLUTION",        3, RS_FRAME_TRAVEL,         rs_analytic_closest, analytic_adjacent,
-    analytic_bounds,     analytic_spin_axis,         rs_analytic_triangulate,
-    rs_analytic_free};
+static const rs_surface_ops segments_ops = {"SEGMENTS",         2,
+                                            RS_FRAME_TRAVEL,    rs_analytic_closest,
+                                            analytic_adjacent,  analytic_bounds,
+                                            analytic_spin_axis, rs_analytic_triangulate,
+                                            rs_analytic_free};
+static const rs_surface_ops cylinder_ops = {"CYLINDER",         3,
+                                            RS_FRAME_GENERATOR, rs_analytic_closest,
+                                            analytic_adjacent,  analytic_bounds,
+                                            analytic_spin_axis, rs_analytic_triangulate,
+                                            rs_analytic_free};
+static const rs_surface_ops revolution_ops = {"REVOLUTION",       3,
+                                              RS_FRAME_TRAVEL,    rs_analytic_closest,
+                                              analytic_adjacent,  analytic_bounds,
+                                              analytic_spin_axis, rs_analytic_triangulate,
+                                              rs_analytic_free};
 
 const rs_surface_ops *rs_analytic_ops(rs_surface_kind kind)
 {

@@ -60,4 +60,3 @@ void rs_contacts_free(rs_contacts *c)
     free(c->curv[1]);
     memset(c, 0, sizeof *c);
 }
-

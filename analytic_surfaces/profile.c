@@ -1,4 +1,4 @@
-/* Profile geometry: segments, arc lengths, vertex kinds and fillets (ARCHITECTURE.md,
+/* Profile geometry: segments, arc lengths, vertex kinds and fillets (docs/conventions.md,
  * "Profiles and surfaces"). */
 #include "profile.h"
 

@@ -1,7 +1,7 @@
 /* rigidsurf (private): profile geometry and the 2D closest-feature query shared by the
  * SEGMENTS, CYLINDER and REVOLUTION surfaces.
  *
- * Feature ownership in the profile plane (ARCHITECTURE.md, "One contact"). For a point
+ * Feature ownership in the profile plane (docs/conventions.md, "One contact"). For a point
  * P and a vertex v, let dA = (P - v).tA and dB = (P - v).tB with tA the end tangent of
  * the segment that ends at v and tB the start tangent of the one that starts there. A
  * SMOOTH vertex uses one shared tangent for both, so the two tests are one number.

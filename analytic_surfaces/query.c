@@ -4,7 +4,7 @@
  * principal frame: d1 the profile's direction of travel, d2 = n x d1 (rs_frame_orient
  * turns that into the kind's convention). A pose x = R X + T is applied by taking the
  * points to the reference configuration and rotating the results back, so the frame
- * turns with the master (ARCHITECTURE.md, "Profiles and surfaces"). */
+ * turns with the master (docs/conventions.md, "Profiles and surfaces"). */
 #include "profile.h"
 #include "rs_compiler.h"
 

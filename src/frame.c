@@ -1,4 +1,4 @@
-/* Local contact frames {n, t1, t2} by the kind's convention (ARCHITECTURE.md, "Profiles
+/* Local contact frames {n, t1, t2} by the kind's convention (docs/conventions.md, "Profiles
  * and surfaces"): a kind's closest-feature operation writes the principal frame, and
  * this is the one place that turns it into t1 and t2. */
 #include "rigidsurf/surface.h"

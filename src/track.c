@@ -1,5 +1,5 @@
 /* The contact tracker: contacts of a query -> VUINTER kinematics (rdisp, drdisp, drot)
- * with per-(particle, feature) history. Conventions: ARCHITECTURE.md, "rdisp, drdisp,
+ * with per-(particle, feature) history. Conventions: docs/conventions.md, "rdisp, drdisp,
  * drot"; slot layout: track.h.
  *
  * rs_track_update runs in two passes so that an input or capacity error leaves history

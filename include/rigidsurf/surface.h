@@ -64,7 +64,7 @@ typedef enum rs_surface_kind {
     RS_SURF_FACETED = 4     ///< triangle mesh
 } rs_surface_kind;
 
-/// How a kind orients its tangents (ARCHITECTURE.md, "Profiles and surfaces"). A kind's
+/// How a kind orients its tangents (docs/conventions.md, "Profiles and surfaces"). A kind's
 /// closest-feature operation writes the principal frame of each contact: the normal n,
 /// d1 and d2 = n x d1 in t1 and t2, with the curvatures along d1 and d2 in curv.
 /// rs_frame_orient (src/frame.c) turns that into the kind's convention, in place.
@@ -88,9 +88,9 @@ struct rs_trimesh;
 /// table is chosen once, when the surface is made (rs_surface_read, rs_surface_parse),
 /// and the contact core reaches the geometry only through it (src/surface.c).
 typedef struct rs_surface_ops {
-    const char *name;              ///< the kind's keyword, e.g. "REVOLUTION"
-    int ndir;                      ///< local directions: 2 (a plane problem) or 3
-    rs_frame_convention frame;     ///< how t1 and t2 follow from the principal frame
+    const char *name;          ///< the kind's keyword, e.g. "REVOLUTION"
+    int ndir;                  ///< local directions: 2 (a plane problem) or 3
+    rs_frame_convention frame; ///< how t1 and t2 follow from the principal frame
     /// Appends the contacts of every query point to out, in the principal frame (see
     /// rs_frame_convention); contacts of one point are consecutive.
     int (*closest)(const struct rs_surface *s, const struct rs_query *q,

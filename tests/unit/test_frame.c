@@ -334,6 +334,76 @@ static void test_frame_faceted_t1_is_projected_global_x(void)
     ENSURE_NEAR(t1[1], -cos(a), 1e-12); /* (sin a, -cos a, 0) */
 }
 
+/* rs_frame_orient turns the principal frame {n, d1, d2 = n x d1} with curvatures
+ * (k1, k2) into each convention, on contacts [k0, k1) only: TRAVEL keeps it, GENERATOR
+ * gives t1 = -d2, t2 = d1, curvatures (k2, k1), GLOBAL_X the FACETED tangents with the
+ * principal curvatures kept. */
+static void test_frame_orient_conventions_from_the_principal_frame(void)
+{
+    enum { N = 16 };
+    rs_contacts c = {0};
+    rs_error e;
+    ENSURE(rs_contacts_reserve(&c, N, &e) == RS_OK);
+    double nn[N][3], d1[N][3], d2[N][3], kk[N][2];
+    const rs_frame_convention convs[3] = {RS_FRAME_TRAVEL, RS_FRAME_GENERATOR,
+                                          RS_FRAME_GLOBAL_X};
+    for (int ic = 0; ic < 3; ic++) {
+        c.n = N;
+        for (int k = 0; k < N; k++) {
+            double a[3] = {2 * urand() - 1, 2 * urand() - 1, 2 * urand() - 1};
+            double n[3] = {2 * urand() - 1, 2 * urand() - 1, 2 * urand() - 1};
+            normalize(n);
+            const double an = dot(a, n);
+            for (int d = 0; d < 3; d++)
+                a[d] -= an * n[d];
+            normalize(a);
+            cross(n, a, d2[k]);
+            for (int d = 0; d < 3; d++) {
+                nn[k][d] = c.nrm[d][k] = n[d];
+                d1[k][d] = c.t1[d][k] = a[d];
+                c.t2[d][k] = d2[k][d];
+            }
+            kk[k][0] = c.curv[0][k] = urand();
+            kk[k][1] = c.curv[1][k] = -urand();
+        }
+        rs_frame_orient(convs[ic], &c, 3, 11);
+        for (int k = 0; k < N; k++) {
+            const int in = k >= 3 && k < 11;
+            double t1[3], t2[3], f1[3], f2[3];
+            for (int d = 0; d < 3; d++) {
+                t1[d] = c.t1[d][k];
+                t2[d] = c.t2[d][k];
+            }
+            if (in && convs[ic] == RS_FRAME_GENERATOR) {
+                for (int d = 0; d < 3; d++) {
+                    ENSURE(t1[d] == -d2[k][d]);
+                    ENSURE(t2[d] == d1[k][d]);
+                }
+                ENSURE(c.curv[0][k] == kk[k][1] && c.curv[1][k] == kk[k][0]);
+            } else if (in && convs[ic] == RS_FRAME_GLOBAL_X) {
+                rs_frame_faceted(nn[k], f1, f2);
+                for (int d = 0; d < 3; d++) {
+                    ENSURE(t1[d] == f1[d]);
+                    ENSURE(t2[d] == f2[d]);
+                }
+                ENSURE(c.curv[0][k] == kk[k][0] && c.curv[1][k] == kk[k][1]);
+            } else {
+                for (int d = 0; d < 3; d++) {
+                    ENSURE(t1[d] == d1[k][d]);
+                    ENSURE(t2[d] == d2[k][d]);
+                }
+                ENSURE(c.curv[0][k] == kk[k][0] && c.curv[1][k] == kk[k][1]);
+            }
+            /* whatever the convention, the frame stays right-handed: n x t1 = t2 */
+            double x[3];
+            cross(nn[k], t1, x);
+            for (int d = 0; d < 3; d++)
+                ENSURE_SMALL(x[d] - t2[d], 1e-12);
+        }
+    }
+    rs_contacts_free(&c);
+}
+
 int main(void)
 {
     RS_RUN(test_frame_segments_t1_is_minus_z_cross_n);
@@ -344,5 +414,6 @@ int main(void)
     RS_RUN(test_frame_turns_with_the_master_cylinder);
     RS_RUN(test_frame_turns_with_the_master_revolution);
     RS_RUN(test_frame_faceted_t1_is_projected_global_x);
+    RS_RUN(test_frame_orient_conventions_from_the_principal_frame);
     return rs_test_summary();
 }
