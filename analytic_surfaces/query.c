@@ -153,7 +153,7 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
     if (kind != RS_SURF_SEGMENTS && kind != RS_SURF_CYLINDER && kind != RS_SURF_REVOLUTION)
         return rs_error_set(err, RS_ERR_ARG, "surface '%s': kind %d has no analytic query",
                             s->name, (int)kind);
-    if (!q->x || !q->y || (kind != RS_SURF_SEGMENTS && !q->z))
+    if (!q->slave.x || !q->slave.y || (kind != RS_SURF_SEGMENTS && !q->slave.z))
         return rs_error_set(err, RS_ERR_ARG, "rs_surface_query: missing coordinates");
 
     rs_pcache *own = NULL;
@@ -210,17 +210,17 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
     double pu[CH], pv[CH], dh[CH], pw[CH], cxs[CH], cys[CH];
     for (int i0 = 0; i0 < q->n; i0 += CH) {
         const int m = q->n - i0 < CH ? q->n - i0 : CH;
-        if (q->radius)
-            reach_radius(m, q->gap_max, q->radius + i0, dh);
+        if (q->slave.radius)
+            reach_radius(m, q->gap_max, q->slave.radius + i0, dh);
         else
             for (int j = 0; j < m; j++)
                 dh[j] = q->gap_max + 0.0;
         if (kind == RS_SURF_REVOLUTION) {
-            local_revolution(F, axis_tol, m, q->x + i0, q->y + i0, q->z + i0, pu, pv, cxs,
-                             cys);
+            local_revolution(F, axis_tol, m, q->slave.x + i0, q->slave.y + i0,
+                             q->slave.z + i0, pu, pv, cxs, cys);
         } else {
-            local_extrusion(F, m, q->x + i0, q->y + i0, q->z ? q->z + i0 : NULL, pu, pv,
-                            pw);
+            local_extrusion(F, m, q->slave.x + i0, q->slave.y + i0,
+                            q->slave.z ? q->slave.z + i0 : NULL, pu, pv, pw);
             if (kind == RS_SURF_CYLINDER && s->bounded)
                 for (int j = 0; j < m; j++)
                     if (!(pw[j] >= s->zmin && pw[j] <= s->zmax))

@@ -168,8 +168,11 @@ static int block = RS_BLOCK;
 static int query_block(pipe *pp, const cloud *cl, int b, rs_error *err)
 {
     int b0 = b * block, nb = cl->n - b0 < block ? cl->n - b0 : block;
-    rs_query q = {nb,         cl->x + b0,  cl->y + b0,      cl->z + b0,
-                  cl->r + b0, &pp->m.pose, pp->tr.tracking, -RAD};
+    rs_query q = {nb,
+                  {cl->x + b0, cl->y + b0, cl->z + b0, cl->r + b0},
+                  &pp->m.pose,
+                  pp->tr.tracking,
+                  -RAD};
     pp->c.n = 0;
     int rc = rs_surface_query(&pp->s, &q, &pp->c, err);
     pp->contacts += pp->c.n;

@@ -1040,10 +1040,10 @@ void FixWallRigid::build_candidates()
         }
         rs_query q;
         q.n = n;
-        q.x = bx_.data();
-        q.y = by_.data();
-        q.z = bz_.data();
-        q.radius = brad_.data();
+        q.slave.x = bx_.data();
+        q.slave.y = by_.data();
+        q.slave.z = bz_.data();
+        q.slave.radius = brad_.data();
         q.pose = &motion_.pose;
         q.gap_max = tracking_ + neighbor->skin;
         q.dist_min = -rmax;
@@ -1183,8 +1183,8 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
 
     rs_query q;
     q.n = n;
-    q.x = bx_.data(), q.y = by_.data(), q.z = bz_.data();
-    q.radius = brad_.data();
+    q.slave.x = bx_.data(), q.slave.y = by_.data(), q.slave.z = bz_.data();
+    q.slave.radius = brad_.data();
     q.pose = &motion_.pose;
     q.gap_max = tracking_;
     q.dist_min = -rmax;

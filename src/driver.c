@@ -270,10 +270,10 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     rs_query q;
     memset(&q, 0, sizeof q);
     q.n = n;
-    q.x = d->x;
-    q.y = d->y;
-    q.z = d->z;
-    q.radius = d->radius;
+    q.slave.x = d->x;
+    q.slave.y = d->y;
+    q.slave.z = d->z;
+    q.slave.radius = d->radius;
     q.pose = &d->motion.pose;
     q.gap_max = d->tracking;
     q.dist_min = -INFINITY;

@@ -130,15 +130,23 @@ typedef struct rs_surface {
 /// Number of local directions: 2 for SEGMENTS, 3 otherwise.
 int rs_surface_ndir(const rs_surface *s);
 
-/// A block of query points (SoA), global coordinates, current configuration.
-typedef struct rs_query {
-    int n;
+/// The slaves of a query block (SoA, global coordinates, current configuration): points,
+/// or spheres when radius is set. A convex body given by its support function joins as
+/// a further form of slave in the contact core, answered through the kinds' sphere
+/// queries, so that no kind changes.
+typedef struct rs_slaves {
     const double *x, *y, *z; ///< points or sphere centres (z ignored for SEGMENTS)
     const double *radius;    ///< sphere radii, NULL for points
-    const rs_pose *pose;     ///< current pose of the master, NULL for identity
-    double gap_max;          ///< keep contacts with gap = dist - radius <= gap_max
-    double dist_min;         ///< drop contacts whose centre lies deeper than this signed
-                             ///< distance (use -INFINITY to keep every penetration)
+} rs_slaves;
+
+/// A block of query slaves against a surface in its current pose.
+typedef struct rs_query {
+    int n;               ///< slaves in the block
+    rs_slaves slave;     ///< where they are and what they are
+    const rs_pose *pose; ///< current pose of the master, NULL for identity
+    double gap_max;      ///< keep contacts with gap = dist - radius <= gap_max
+    double dist_min;     ///< drop contacts whose centre lies deeper than this signed
+                         ///< distance (use -INFINITY to keep every penetration)
 } rs_query;
 
 /// Contacts found by a query (SoA, global coordinates). Arrays grow as needed.

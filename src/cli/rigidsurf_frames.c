@@ -319,10 +319,7 @@ int main(int argc, char **argv)
     if (rc == 0 && pts.n > 0) {
         rows = malloc((size_t)pts.n * sizeof *rows);
         rs_query q = {.n = pts.n,
-                      .x = pts.x,
-                      .y = pts.y,
-                      .z = pts.z,
-                      .radius = NULL,
+                      .slave = {.x = pts.x, .y = pts.y, .z = pts.z, .radius = NULL},
                       .pose = NULL,
                       .gap_max = tracking,
                       .dist_min = -INFINITY};

@@ -93,7 +93,7 @@ static void test_frame_segments_t1_is_minus_z_cross_n(void)
     ENSURE(rs_surface_ndir(&s) == 2);
     double *x = malloc(3 * NPTS * sizeof *x), *y = x + NPTS, *z = y + NPTS;
     random_points(x, y, z, 3.0);
-    rs_query q = {NPTS, x, y, z, NULL, NULL, INFINITY, -INFINITY};
+    rs_query q = {NPTS, {x, y, z, NULL}, NULL, INFINITY, -INFINITY};
     rs_contacts c = {0};
     int rc = rs_surface_query(&s, &q, &c, NULL);
     ENSURE(rc == 0 && c.n >= NPTS / 2);
@@ -134,7 +134,7 @@ static void test_frame_cylinder_t1_is_generator(void)
         y[i] += a[1];
         z[i] += a[2];
     }
-    rs_query q = {NPTS, x, y, z, NULL, NULL, INFINITY, -INFINITY};
+    rs_query q = {NPTS, {x, y, z, NULL}, NULL, INFINITY, -INFINITY};
     rs_contacts c = {0};
     ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0 && c.n >= NPTS);
     ENSURE(frames_orthonormal(&c));
@@ -168,7 +168,7 @@ static void test_frame_revolution_t2_is_hoop(void)
         y[i] += a[1];
         z[i] += a[2];
     }
-    rs_query q = {NPTS, x, y, z, NULL, NULL, INFINITY, -INFINITY};
+    rs_query q = {NPTS, {x, y, z, NULL}, NULL, INFINITY, -INFINITY};
     rs_contacts c = {0};
     ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0 && c.n >= NPTS / 2);
     ENSURE(frames_orthonormal(&c));
@@ -211,7 +211,7 @@ static void test_frame_revolution_axis_is_finite_and_deterministic(void)
         y[i] = a[1] + h * ez[1];
         z[i] = a[2] + h * ez[2];
     }
-    rs_query q = {8, x, y, z, NULL, NULL, INFINITY, -INFINITY};
+    rs_query q = {8, {x, y, z, NULL}, NULL, INFINITY, -INFINITY};
     rs_contacts c = {0};
     ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
     ENSURE(c.n >= 8);
@@ -256,8 +256,8 @@ static void pose_check(const char *txt, int planar)
         y[i] = R[3] * P[0] + R[4] * P[1] + R[5] * P[2] + pose.T[1];
         z[i] = R[6] * P[0] + R[7] * P[1] + R[8] * P[2] + pose.T[2];
     }
-    rs_query q0 = {N, X, Y, Z, NULL, NULL, 0.5, -INFINITY};
-    rs_query q1 = {N, x, y, z, NULL, &pose, 0.5, -INFINITY};
+    rs_query q0 = {N, {X, Y, Z, NULL}, NULL, 0.5, -INFINITY};
+    rs_query q1 = {N, {x, y, z, NULL}, &pose, 0.5, -INFINITY};
     rs_contacts c0 = {0}, c1 = {0};
     ENSURE(rs_surface_query(&s, &q0, &c0, NULL) == 0);
     ENSURE(rs_surface_query(&s, &q1, &c1, NULL) == 0);

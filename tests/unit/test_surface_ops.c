@@ -143,8 +143,8 @@ static void test_spin_axis_of_a_revolution(void)
             r[d] = o[d] + pp[d] * cos(th) + axp[d] * sin(th) + ax[d] * ap * (1.0 - cos(th));
             q[d] = p[d];
         }
-        rs_query qa = {1, q, q + 1, q + 2, NULL, NULL, 10.0, -10.0};
-        rs_query qb = {1, r, r + 1, r + 2, NULL, NULL, 10.0, -10.0};
+        rs_query qa = {1, {q, q + 1, q + 2, NULL}, NULL, 10.0, -10.0};
+        rs_query qb = {1, {r, r + 1, r + 2, NULL}, NULL, 10.0, -10.0};
         c0.n = c1.n = 0;
         ENSURE(rs_surface_query(&s, &qa, &c0, &e) == RS_OK);
         ENSURE(rs_surface_query(&s, &qb, &c1, &e) == RS_OK);
