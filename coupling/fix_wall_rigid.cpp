@@ -77,6 +77,7 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
     std::memset(&loaded_, 0, sizeof loaded_);
     std::memset(&contacts_, 0, sizeof contacts_);
     std::memset(&tout_, 0, sizeof tout_);
+    std::memset(&cb_, 0, sizeof cb_);
     std::memset(&vtk_mesh_, 0, sizeof vtk_mesh_);
     std::memset(&tracker_, 0, sizeof tracker_);
     rs_law_block_init(&blk_);
@@ -141,6 +142,7 @@ FixWallRigid::~FixWallRigid()
     extlist = NULL;
     rs_contacts_free(&contacts_);
     rs_track_out_free(&tout_);
+    rs_cblock_free(&cb_);
     rs_trimesh_free(&vtk_mesh_);
     if (loaded_ok_)
         rs_law_unload(&loaded_);
@@ -976,23 +978,30 @@ bool FixWallRigid::wall_moved_beyond_skin() const
 void FixWallRigid::init_scratch()
 {
     const size_t np = RS_BLOCK, nc = (size_t)RS_BLOCK * capacity_, nd = ndir_;
-    const size_t ns = std::max(nstatev_, 1), npred = std::max((int)predef_names_.size(), 1);
+    const size_t npred = std::max((int)predef_names_.size(), 1);
     for (std::vector<double> *a :
          {&bx_, &by_, &bz_, &bvx_, &bvy_, &bvz_, &bwx_, &bwy_, &bwz_, &brad_})
         a->resize(np);
     bid_.resize(np), bdir_.resize(np), bhist_.resize(np), bidx_.resize(np);
     take_.resize(np);
     deepest_.resize(np);
-    for (std::vector<double> *a :
-         {&c_flux_slv_, &c_flux_mst_, &c_sed_, &c_sfd_, &c_scd_, &c_spd_, &c_svd_,
-          &c_stiff_, &c_cond_, &c_area_, &c_temp_, &c_dtemp_, &c_rad_, &c_mass_, &c_reff_})
-        a->resize(nc);
-    c_uid_.resize(nc), c_type_.resize(nc), leaving_.resize(nc), c_sedp_.resize(nc);
-    uni_n_ = 0;
+    for (std::vector<double> *a : {&bmass_, &bheat_, &btemp_, &bdtemp_})
+        a->resize(np);
+    btype_.resize(np);
+    bpred_.resize(np * npred), bdpred_.resize(np * npred);
+    leaving_.resize(nc), c_sedp_.resize(nc);
     nleave_ = 0;
     ident_ = false;
-    c_stress_.resize(nc * nd), c_statev_.resize(nc * ns);
-    c_pred_.resize(nc * npred), c_dpred_.resize(nc * npred);
+    cb_.area_mode = area_mode_ == AREA_CONSTANT    ? RS_AREA_CONSTANT
+                    : area_mode_ == AREA_PROJECTED ? RS_AREA_PROJECTED
+                                                   : RS_AREA_NODE;
+    cb_.area_const = area_const_;
+    cb_.ndir = (int)nd;
+    cb_.nstatev = nstatev_;
+    cb_.npred = (int)predef_names_.size();
+    rs_error err;
+    if (rs_cblock_reserve(&cb_, (int)nc, &err) != RS_OK)
+        fail(err.msg);
 
     /* The law block's fields that stay for the run. */
     rs_law_block_init(&blk_);
@@ -1144,7 +1153,6 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     const double *radius = atom->radius, *rmass = atom->rmass;
     const int *tag = atom->tag, *type = atom->type;
     const int nd = ndir_, ns = nstatev_, as = atom_size();
-    const int npred = (int)predef_names_.size();
     const double dt = update->dt;
     rs_error err;
     rs_error_clear(&err);
@@ -1160,7 +1168,9 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     int *__restrict qid = bid_.data();
     double **__restrict qd = bdir_.data();
     double **__restrict qh = bhist_.data();
-    double rmax = radius[idx[0]], rmin = rmax, mmax = rmass[idx[0]], mmin = mmax;
+    double *__restrict qm = bmass_.data();
+    int *__restrict qt = btype_.data();
+    double rmax = radius[idx[0]];
     for (int k = 0; k < n; k++) {
         const int i = idx[k];
         const double *xi = x[i], *vi = v[i], *wi = omega[i];
@@ -1169,11 +1179,12 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         qvx[k] = vi[0], qvy[k] = vi[1], qvz[k] = vi[2];
         qwx[k] = wi[0], qwy[k] = wi[1], qwz[k] = wi[2];
         qr[k] = R;
+        qm[k] = m;
+        qt[k] = type[i];
         qid[k] = tag[i];
         qd[k] = row_[i];
         qh[k] = slot0(i);
-        rmax = std::max(rmax, R), rmin = std::min(rmin, R);
-        mmax = std::max(mmax, m), mmin = std::min(mmin, m);
+        rmax = std::max(rmax, R);
     }
     if (setup_call) {
         saved_rows_.resize((size_t)n * as);
@@ -1217,7 +1228,7 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         fail_one(err.msg);
 
     const int ne = tout_.n;
-    if (ne > (int)c_sed_.size()) // not reached: at most capacity contacts per particle
+    if (ne > cb_.cap) // not reached: at most capacity contacts per particle
         fail_one("internal: block has more contacts than its scratch");
     if (ne == 0) {
         for (int k = 0; k < n; k++)
@@ -1229,12 +1240,8 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         return;
     }
     /* Stress of the previous increment in this increment's basis, and the law state. */
-    rs_track_load(&tracker_, &tout_, c_stress_.data(), ns ? c_statev_.data() : NULL);
-    /* fluxSlv and fluxMst are read/write and enter at zero (no flux history is kept);
-     * rs_law_call zeroes the write-only sfd, scd, spd and svd itself. */
-    std::fill_n(c_flux_slv_.begin(), ne, 0.0);
-    std::fill_n(c_flux_mst_.begin(), ne, 0.0);
-    law_inputs(idx, n, ne, setup_call, rmin == rmax && mmin == mmax);
+    rs_track_load(&tracker_, &tout_, cb_.stress, ns ? cb_.statev : NULL);
+    law_inputs(idx, n, ne, setup_call);
 
     /* The law, in slices of at most RS_BLOCK contacts. */
     const double *Temp = fix_temp_ ? fix_temp_->vector_atom : NULL;
@@ -1253,54 +1260,16 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         nprops = (int)type_props_[t].size();
     }
     const double time_end = update->atime + (update->ntimestep - update->atimestep) * dt;
-    for (int k0 = 0; k0 < ne; k0 += RS_BLOCK) {
-        const int nk = std::min(RS_BLOCK, ne - k0);
-        rs_law_block b = blk_;
-        b.kInc = (int)update->ntimestep;
-        b.nSlvNod = nk;
-        b.nProps = nprops;
-        b.nTemp = (Temp || temp_given_) ? 1 : 0;
-        b.jSlvUid = &c_uid_[k0];
-        b.jConMstid = tout_.feature + k0;
-        b.timStep = b.timGlb = setup_call ? time_end : time_end - dt;
-        b.dTimCur = dt;
-        b.rdisp = tout_.rdisp + (size_t)k0 * nd;
-        b.drdisp = tout_.drdisp + (size_t)k0 * nd;
-        b.drot = tout_.drot + (size_t)k0 * 4;
-        b.stiffDflt = &c_stiff_[k0];
-        b.condDflt = &c_cond_[k0];
-        b.coordSlv = tout_.coordslv + (size_t)k0 * nd;
-        b.coordMst = tout_.coordmst + (size_t)k0 * nd;
-        b.alocaldir = tout_.alocaldir + (size_t)k0 * nd * nd;
-        b.props = nprops ? props : NULL;
-        b.areaSlv = &c_area_[k0];
-        if (Temp) { // otherwise the block's defaults: zeros
-            b.tempSlv = &c_temp_[k0];
-            b.dtempSlv = &c_dtemp_[k0];
-        }
-        if (npred) {
-            b.preDefSlv = &c_pred_[(size_t)k0 * npred];
-            b.dpreDefSlv = &c_dpred_[(size_t)k0 * npred];
-        }
-        b.stress = &c_stress_[(size_t)k0 * nd];
-        b.fluxSlv = &c_flux_slv_[k0];
-        b.fluxMst = &c_flux_mst_[k0];
-        b.sed = &c_sed_[k0];
-        b.statev = ns ? &c_statev_[(size_t)k0 * ns] : NULL;
-        b.sfd = &c_sfd_[k0];
-        b.scd = &c_scd_[k0];
-        b.spd = &c_spd_[k0];
-        b.svd = &c_svd_[k0];
-        b.radius = &c_rad_[k0];
-        b.mass = &c_mass_[k0];
-        b.reff = &c_reff_[k0];
-        b.vrel = tout_.vrel + (size_t)k0 * nd;
-        b.curv = tout_.curv + (size_t)k0 * 2;
-        b.slv_type = &c_type_[k0];
-        b.setup = setup_call ? 1 : 0;
-        if (rs_law_call(law_, &b, &err) != RS_OK)
-            fail_one(err.msg);
-    }
+    rs_law_block b = blk_;
+    b.kInc = (int)update->ntimestep;
+    b.nProps = nprops;
+    b.nTemp = (Temp || temp_given_) ? 1 : 0;
+    b.timStep = b.timGlb = setup_call ? time_end : time_end - dt;
+    b.dTimCur = dt;
+    b.props = nprops ? props : NULL;
+    b.setup = setup_call ? 1 : 0;
+    if (rs_cblock_call(&cb_, law_, &b, &tout_, &err) != RS_OK)
+        fail_one(err.msg);
 
     /* The scatter also stores each live contact's sed in its slot (leaving: 0). A unit
      * area (the default) drops the products with A, which are exact. */
@@ -1327,157 +1296,78 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
             unpack_atom(idx[k], &saved_rows_[(size_t)k * as]);
         return;
     }
-    rs_track_commit(&tracker_, &tout_, c_stress_.data(), ns ? c_statev_.data() : NULL);
+    rs_track_commit(&tracker_, &tout_, cb_.stress, ns ? cb_.statev : NULL);
 }
 
-/* The law's per-contact inputs: ids, types, sed and the leaving flags; radius, mass,
- * area, default stiffness and conductance, effective radius; temperatures and predefined
- * fields. uniform_rm: all particles of the block have the same radius and mass. */
-void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call,
-                              bool uniform_rm)
+/* The law's per-contact inputs (rs_cblock_inputs) from the block's particles, with their
+ * heat capacities, temperatures and predefined fields; then each contact's sed from its
+ * slot, and the leaving flags. */
+void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call)
 {
-    (void)n;
-    const double *radius = atom->radius, *rmass = atom->rmass;
-    const int *type = atom->type;
+    const double *cp = fix_heatcap_ ? fix_heatcap_->get_values() : NULL;
+    double *const *__restrict bd = bdir_.data();
+    rs_block_particles p;
+    std::memset(&p, 0, sizeof p);
+    p.n = n;
+    p.radius = brad_.data();
+    p.mass = bmass_.data();
+    p.id = bid_.data();
+    p.type = btype_.data();
+    if (cp) {
+        for (int k = 0; k < n; k++)
+            bheat_[k] = bmass_[k] * cp[btype_[k] - 1];
+        p.heatcap = bheat_.data();
+    }
+    const double *Temp = fix_temp_ ? fix_temp_->vector_atom : NULL;
+    if (Temp) {
+        const int tp0 = tprev_offset();
+        for (int k = 0; k < n; k++) {
+            const int i = idx[k];
+            const double Tp = bd[k][tp0];
+            btemp_[k] = Temp[i];
+            bdtemp_[k] = (setup_call || std::isnan(Tp)) ? 0.0 : Temp[i] - Tp;
+        }
+        p.temp = btemp_.data();
+        p.dtemp = bdtemp_.data();
+    }
+    const int npred = (int)predef_names_.size();
+    if (npred) {
+        const int pd0 = pred_offset();
+        for (int k = 0; k < n; k++) {
+            const int i = idx[k];
+            for (int a = 0; a < npred; a++) {
+                const double val = predef_fix_[a]->vector_atom[i];
+                const double prev = bd[k][pd0 + a];
+                bpred_[(size_t)k * npred + a] = val;
+                bdpred_[(size_t)k * npred + a] =
+                    (setup_call || std::isnan(prev)) ? 0.0 : val - prev;
+            }
+        }
+        p.pred = bpred_.data();
+        p.dpred = bdpred_.data();
+    }
+    rs_cblock_inputs(&cb_, &tout_, &p, update->dt);
+
     const int sed0 = hist_size(); /* the sed follows the tracker's slot */
-    const double dt = update->dt;
     const int *__restrict pt = tout_.point;
     double *const *__restrict dir = tout_.dir;
     double *const *__restrict slot = tout_.slot;
-    double *const *__restrict bd = bdir_.data();
-    const int *__restrict bid = bid_.data();
-    const double *__restrict curv = tout_.curv;
     double **__restrict sedp = c_sedp_.data();
-    double *__restrict sed = c_sed_.data();
+    double *__restrict sed = cb_.sed;
     char *__restrict leaving = leaving_.data();
-    int *__restrict uid = c_uid_.data(), *__restrict ctype = c_type_.data();
-    const double k10 = curv[0], k20 = curv[1];
     int nleave = 0;
-    bool ident = true, same_curv = true;
+    bool ident = true;
     for (int e = 0; e < ne; e++) {
-        const int k = pt[e];
         double *sp = slot[e] + sed0;
         sedp[e] = sp;
         sed[e] = *sp;
         const char lv = RS_DIR_IS_LEAVING(*dir[e]);
         leaving[e] = lv;
         nleave += lv;
-        uid[e] = bid[k];
-        ctype[e] = type[idx[k]];
-        ident &= k == e;
-        same_curv &= (curv[2 * e] == k10) & (curv[2 * e + 1] == k20);
+        ident &= pt[e] == e;
     }
     nleave_ = nleave;
     ident_ = ident && ne == n;
-
-    const double *cp = fix_heatcap_ ? fix_heatcap_->get_values() : NULL;
-    double *__restrict area = c_area_.data(), *__restrict crad = c_rad_.data(),
-                       *__restrict cmass = c_mass_.data(),
-                       *__restrict stiffa = c_stiff_.data(),
-                       *__restrict conda = c_cond_.data(),
-                       *__restrict reffa = c_reff_.data();
-    /* Effective radius of a sphere on a surface with principal curvatures k1, k2
-     * (> 0 convex toward the particle): the geometric mean of the two principal relative
-     * radii 1/(1/R + k). A plane gives R. */
-    auto eff_radius = [](double R, double k1, double k2) {
-        const double floor_c = 1e-6 / R;
-        const double c1 = std::max(1.0 / R + k1, floor_c),
-                     c2 = std::max(1.0 / R + k2, floor_c);
-        return (k1 == 0.0 && k2 == 0.0) ? R : 1.0 / std::sqrt(c1 * c2);
-    };
-    if (uniform_rm && same_curv && !cp) {
-        /* One key for the whole block: the arrays are refilled only past what an earlier
-         * block with the same key left. */
-        const double R = radius[idx[0]], m = rmass[idx[0]];
-        const double A = area_mode_ == AREA_CONSTANT    ? area_const_
-                         : area_mode_ == AREA_PROJECTED ? RS_PI * R * R
-                                                        : 1.0;
-        const double key[6] = {R, m, A, k10, k20, dt};
-        bool same = uni_n_ > 0;
-        for (int a = 0; a < 6; a++)
-            same = same && key[a] == uni_key_[a];
-        if (!same) {
-            uni_n_ = 0;
-            for (int a = 0; a < 6; a++)
-                uni_key_[a] = key[a];
-        }
-        if (uni_n_ < ne) {
-            const double stiff = rs_law_default_stiffness(m, A, dt);
-            const double reff = eff_radius(R, k10, k20);
-            for (int e = uni_n_; e < ne; e++) {
-                area[e] = A;
-                crad[e] = R;
-                cmass[e] = m;
-                stiffa[e] = stiff;
-                conda[e] = 0.0;
-                reffa[e] = reff;
-            }
-            uni_n_ = ne;
-        }
-    } else {
-        /* Each value is recomputed when its inputs differ from the previous contact's,
-         * with the same functions. */
-        uni_n_ = 0;
-        double A = area_mode_ == AREA_CONSTANT ? area_const_ : 1.0;
-        double last_m = NAN, last_mA = NAN, stiff = 0.0;
-        double last_C = NAN, last_CA = NAN, cond = 0.0;
-        double last_R = NAN, last_k1 = NAN, last_k2 = NAN, reff = 0.0;
-        for (int e = 0; e < ne; e++) {
-            const int i = idx[pt[e]];
-            const double R = radius[i], m = rmass[i];
-            if (area_mode_ == AREA_PROJECTED)
-                A = RS_PI * R * R;
-            area[e] = A;
-            crad[e] = R;
-            cmass[e] = m;
-            const double k1 = curv[2 * e], k2 = curv[2 * e + 1];
-            if (!(R == last_R && k1 == last_k1 && k2 == last_k2)) {
-                reff = eff_radius(R, k1, k2);
-                last_R = R, last_k1 = k1, last_k2 = k2;
-            }
-            reffa[e] = reff;
-            if (!(m == last_m && A == last_mA)) {
-                stiff = rs_law_default_stiffness(m, A, dt);
-                last_m = m, last_mA = A;
-            }
-            stiffa[e] = stiff;
-            if (cp) {
-                const double C = m * cp[type[i] - 1];
-                if (!(C == last_C && A == last_CA)) {
-                    cond = rs_law_default_conductance(C, A, dt);
-                    last_C = C, last_CA = A;
-                }
-                conda[e] = cond;
-            } else {
-                conda[e] = 0.0;
-            }
-        }
-    }
-
-    const double *Temp = fix_temp_ ? fix_temp_->vector_atom : NULL;
-    if (Temp) {
-        const int tp0 = tprev_offset();
-        for (int e = 0; e < ne; e++) {
-            const int k = pt[e], i = idx[k];
-            const double Tp = bd[k][tp0];
-            c_temp_[e] = Temp[i];
-            c_dtemp_[e] = (setup_call || std::isnan(Tp)) ? 0.0 : Temp[i] - Tp;
-        }
-    }
-    const int npred = (int)predef_names_.size();
-    if (npred) {
-        const int pd0 = pred_offset();
-        for (int e = 0; e < ne; e++) {
-            const int k = pt[e], i = idx[k];
-            for (int a = 0; a < npred; a++) {
-                const double val = predef_fix_[a]->vector_atom[i];
-                const double prev = bd[k][pd0 + a];
-                c_pred_[(size_t)e * npred + a] = val;
-                c_dpred_[(size_t)e * npred + a] =
-                    (setup_call || std::isnan(prev)) ? 0.0 : val - prev;
-            }
-        }
-    }
 }
 
 /* Scatter: F = A (s1 n - s2 t1 - s3 t2) on the particle at x_cp, -F on the wall; the
@@ -1498,7 +1388,7 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
                              *__restrict pz = bz_.data();
     const double *__restrict alocal = tout_.alocaldir, *__restrict coord = tout_.coordslv,
                              *__restrict rdisp = tout_.rdisp;
-    const double *__restrict stress = c_stress_.data(), *__restrict area = c_area_.data();
+    const double *__restrict stress = cb_.stress, *__restrict area = cb_.area;
     const bool track_deepest = !ident_;
     int *__restrict deepest = deepest_.data();
     if (track_deepest)
@@ -1555,17 +1445,16 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
 
     /* Energies, heat, and sed into the slots (not in a setup call: its history is
      * restored). */
-    const double *__restrict sed = c_sed_.data();
+    const double *__restrict sed = cb_.sed;
     double se = se_now_;
     if (setup_call) {
         for (int e = 0; e < ne; e++)
             if (!(LEAVE && leaving[e]))
                 se += sed[e] * area[e];
     } else {
-        const double *__restrict sfd = c_sfd_.data(), *__restrict spd = c_spd_.data(),
-                                 *__restrict svd = c_svd_.data(),
-                                 *__restrict scd = c_scd_.data(),
-                                 *__restrict fmst = c_flux_mst_.data();
+        const double *__restrict sfd = cb_.sfd, *__restrict spd = cb_.spd,
+                                 *__restrict svd = cb_.svd, *__restrict scd = cb_.scd,
+                                 *__restrict fmst = cb_.flux_mst;
         double *const *__restrict sedp = c_sedp_.data();
         double d0 = diss_[0], d1 = diss_[1], d2 = diss_[2], d3 = diss_[3];
         double heat = heat_step_;
@@ -1587,7 +1476,7 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
         heat_step_ = heat;
         if (fix_heatflux_) {
             double *heatflux = fix_heatflux_->vector_atom;
-            const double *fslv = c_flux_slv_.data();
+            const double *fslv = cb_.flux_slv;
             for (int e = 0; e < ne; e++)
                 if (!(LEAVE && leaving[e]))
                     heatflux[idx[pt[e]]] += fslv[e] * area[e];

@@ -18,6 +18,7 @@ FixStyle(wall / rigid, FixWallRigid)
 
 #include "fix.h"
 
+#include "rigidsurf/contact_block.h"
 #include "rigidsurf/law.h"
 #include "rigidsurf/motion.h"
 #include "rigidsurf/surface.h"
@@ -92,7 +93,7 @@ class FixWallRigid : public Fix
     void build_candidates();
     bool wall_moved_beyond_skin() const;
     void process_block(const int *idx, int n, bool setup_call);
-    void law_inputs(const int *idx, int n, int ne, bool setup_call, bool uniform_rm);
+    void law_inputs(const int *idx, int n, int ne, bool setup_call);
     template <int ND, bool LEAVE, bool UNITA>
     void scatter(const int *idx, int n, int ne, bool setup_call);
     void write_vtk();
@@ -216,17 +217,12 @@ class FixWallRigid : public Fix
     std::vector<double *> c_sedp_; // each contact's sed in its particle's row
     int nleave_;                   // leaving contacts of the block
     bool ident_;                   // contact e is particle e's only contact, for all e
-    /* c_area_, c_rad_, c_mass_, c_stiff_, c_cond_ and c_reff_ hold on [0, uni_n_) the
-     * values of one contact with the key (R, m, A, k1, k2, dt): blocks with the same key
-     * (a monodisperse bed on one feature) reuse them. */
-    double uni_key_[6];
-    int uni_n_;
-    rs_law_block blk_; // the law block's fields that stay for the run
-    /* per contact of a block (RS_BLOCK * capacity) */
-    std::vector<int> c_uid_, c_type_;
-    std::vector<double> c_stress_, c_statev_, c_flux_slv_, c_flux_mst_, c_sed_, c_sfd_,
-        c_scd_, c_spd_, c_svd_, c_stiff_, c_cond_, c_area_, c_temp_, c_dtemp_, c_pred_,
-        c_dpred_, c_rad_, c_mass_, c_reff_;
+    rs_law_block blk_;             // the law block's fields that stay for the run
+    /* per particle of a block: mass, type, heat capacity, temperature and its
+     * increment, predefined fields and their increments (npred per particle) */
+    std::vector<double> bmass_, bheat_, btemp_, bdtemp_, bpred_, bdpred_;
+    std::vector<int> btype_;
+    rs_contact_block cb_; // per contact of a block (RS_BLOCK * capacity): law inputs
 
     /* per step, local sums; accumulated totals */
     double f_wall_[3], m_wall_[3], se_now_;

@@ -6,8 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { W_TEMP, W_DTEMP, W_STIFF, W_COND, W_AREA, W_MASS, W_RADIUS, W_REFF, W_COUNT };
-
 static void *zalloc(size_t count, size_t size, int *ok)
 {
     void *p = calloc(count ? count : 1, size);
@@ -46,6 +44,7 @@ int rs_driver_init(rs_driver *d, const rs_surface *s, int n, rs_error *err)
     d->heatcap = zalloc(un, sizeof(double), &ok);
     d->fcon = zalloc(3 * un, sizeof(double), &ok);
     d->temp_prev = zalloc(un, sizeof(double), &ok);
+    d->dtemp = zalloc(un, sizeof(double), &ok);
     d->id = zalloc(un, sizeof(int), &ok);
     d->hist_ptr = zalloc(un, sizeof(double *), &ok);
     d->dir_ptr = zalloc(un, sizeof(double *), &ok);
@@ -109,138 +108,56 @@ static int alloc_history(rs_driver *d, rs_error *err)
 
 static int grow_contacts(rs_driver *d, int nc, int nd, rs_error *err)
 {
-    if (nc <= d->ccap)
+    if (nc <= d->cb.cap && d->cb.ndir == nd)
         return RS_OK;
-    int cap = d->ccap ? d->ccap : 64;
+    int cap = d->cb.cap ? d->cb.cap : 64;
     while (cap < nc)
         cap *= 2;
-    size_t uc = (size_t)cap;
-    double **arr[] = {&d->csed, &d->csfd,      &d->cspd,     &d->csvd,
-                      &d->cscd, &d->cflux_slv, &d->cflux_mst};
-    int ok = 1;
-    for (size_t a = 0; a < sizeof arr / sizeof arr[0]; ++a) {
-        double *p = (double *)realloc(*arr[a], uc * sizeof(double));
-        if (p)
-            *arr[a] = p;
-        else
-            ok = 0;
-    }
-    double *p = (double *)realloc(d->cstress, uc * (size_t)nd * sizeof(double));
-    if (p)
-        d->cstress = p;
-    else
-        ok = 0;
-    p = (double *)realloc(d->cstatev,
-                          uc * (size_t)(d->nstatev ? d->nstatev : 1) * sizeof(double));
-    if (p)
-        d->cstatev = p;
-    else
-        ok = 0;
-    p = (double *)realloc(d->cwork, uc * W_COUNT * sizeof(double));
-    if (p)
-        d->cwork = p;
-    else
-        ok = 0;
-    int *q = (int *)realloc(d->cuid, uc * sizeof(int));
-    if (q)
-        d->cuid = q;
-    else
-        ok = 0;
-    if (!ok)
-        return rs_error_set(err, RS_ERR_NOMEM, "driver: out of memory for %d contacts", nc);
-    d->ccap = cap;
-    return RS_OK;
+    d->cb.area_mode = RS_AREA_NODE;
+    d->cb.ndir = nd;
+    d->cb.nstatev = d->nstatev;
+    d->cb.npred = 0;
+    return rs_cblock_reserve(&d->cb, cap, err);
 }
 
-/* Fills the per-contact inputs the block reads: previous stress and state (from
- * history, rs_track_load), temperatures and the DEM extension. */
-static void gather_contacts(rs_driver *d)
-{
-    const rs_track_out *o = &d->trk;
-    const int ns = d->nstatev;
-    const size_t uc = (size_t)d->ccap;
-    rs_track_load(&d->tracker, o, d->cstress, ns ? d->cstatev : NULL);
-    for (int e = 0; e < o->n; ++e) {
-        const int i = o->point[e];
-        double *w = d->cwork;
-        const double m = d->mass[i], a = d->area[i], r = d->radius[i];
-        w[W_TEMP * uc + e] = d->temp[i];
-        w[W_DTEMP * uc + e] = d->temp[i] - d->temp_prev[i];
-        w[W_STIFF * uc + e] = rs_law_default_stiffness(m, a, d->dt);
-        w[W_COND * uc + e] = rs_law_default_conductance(d->heatcap[i], a, d->dt);
-        w[W_AREA * uc + e] = a;
-        w[W_MASS * uc + e] = m;
-        w[W_RADIUS * uc + e] = r;
-        /* effective radius with the mean wall curvature, 1/reff = 1/R + kappa */
-        const double kap = 0.5 * (o->curv[2 * e] + o->curv[2 * e + 1]);
-        w[W_REFF * uc + e] = r > 0.0 && 1.0 + r * kap > 0.0 ? r / (1.0 + r * kap) : r;
-        d->cuid[e] = d->id[i];
-        d->csed[e] = 0.0; /* sed and the fluxes are not kept in history */
-        d->cflux_slv[e] = 0.0;
-        d->cflux_mst[e] = 0.0;
-    }
-}
-
+/* The law on the tracker's contacts: previous stress and state from history
+ * (rs_track_load), the per-contact inputs from the nodes (rs_cblock_inputs). */
 static int call_law(rs_driver *d, int nd, rs_error *err)
 {
-    const rs_track_out *o = &d->trk;
     const int ns = d->nstatev;
-    const size_t uc = (size_t)d->ccap;
+    rs_track_load(&d->tracker, &d->trk, d->cb.stress, ns ? d->cb.statev : NULL);
+    for (int i = 0; i < d->n; ++i)
+        d->dtemp[i] = d->temp[i] - d->temp_prev[i];
+    const rs_block_particles p = {.n = d->n,
+                                  .radius = d->radius,
+                                  .mass = d->mass,
+                                  .id = d->id,
+                                  .area = d->area,
+                                  .heatcap = d->heatcap,
+                                  .temp = d->temp,
+                                  .dtemp = d->dtemp};
+    rs_cblock_inputs(&d->cb, &d->trk, &p, d->dt);
+
     const double dtm = d->tmaster - d->tmaster_prev;
-    for (int e0 = 0; e0 < o->n; e0 += RS_BLOCK) {
-        const int nb = o->n - e0 < RS_BLOCK ? o->n - e0 : RS_BLOCK;
-        rs_law_block b;
-        rs_law_block_init(&b);
-        b.kStep = 1;
-        b.kInc = d->inc + 1;
-        b.nSlvNod = nb;
-        b.nDir = nd;
-        b.nSurfDir = nd - 1;
-        b.nStateVar = ns;
-        b.nProps = d->nprops;
-        b.jSlvUid = d->cuid + e0;
-        b.jConMstid = o->feature + e0;
-        b.timStep = b.timGlb = d->t;
-        b.dTimCur = d->dt;
-        memcpy(b.surfInt, d->surfInt, RS_LAW_NAMELEN);
-        memcpy(b.surfSlv, d->surfSlv, RS_LAW_NAMELEN);
-        rs_law_block_set_name(b.surfMst, d->surface->name);
-        b.rdisp = o->rdisp + (size_t)e0 * nd;
-        b.drdisp = o->drdisp + (size_t)e0 * nd;
-        b.drot = o->drot + (size_t)e0 * 4;
-        b.coordSlv = o->coordslv + (size_t)e0 * nd;
-        b.coordMst = o->coordmst + (size_t)e0 * nd;
-        b.alocaldir = o->alocaldir + (size_t)e0 * nd * nd;
-        b.props = d->props;
-        const double *w = d->cwork;
-        b.tempSlv = w + W_TEMP * uc + e0;
-        b.dtempSlv = w + W_DTEMP * uc + e0;
-        b.stiffDflt = w + W_STIFF * uc + e0;
-        b.condDflt = w + W_COND * uc + e0;
-        b.areaSlv = w + W_AREA * uc + e0;
-        b.mass = w + W_MASS * uc + e0;
-        b.radius = w + W_RADIUS * uc + e0;
-        b.reff = w + W_REFF * uc + e0;
-        b.tempMst = &d->tmaster;
-        b.dtempMst = &dtm;
-        b.vrel = o->vrel + (size_t)e0 * nd;
-        b.curv = o->curv + (size_t)e0 * 2;
-        b.stress = d->cstress + (size_t)e0 * nd;
-        b.statev = ns ? d->cstatev + (size_t)e0 * ns : NULL;
-        b.fluxSlv = d->cflux_slv + e0;
-        b.fluxMst = d->cflux_mst + e0;
-        b.sed = d->csed + e0;
-        b.sfd = d->csfd + e0;
-        b.scd = d->cscd + e0;
-        b.spd = d->cspd + e0;
-        b.svd = d->csvd + e0;
-        b.warn = d->warn;
-        b.warn_ctx = d->warn_ctx;
-        int rc = rs_law_call(d->law, &b, err);
-        if (rc)
-            return rc;
-    }
-    return RS_OK;
+    rs_law_block b;
+    rs_law_block_init(&b);
+    b.kStep = 1;
+    b.kInc = d->inc + 1;
+    b.nDir = nd;
+    b.nSurfDir = nd - 1;
+    b.nStateVar = ns;
+    b.nProps = d->nprops;
+    b.timStep = b.timGlb = d->t;
+    b.dTimCur = d->dt;
+    memcpy(b.surfInt, d->surfInt, RS_LAW_NAMELEN);
+    memcpy(b.surfSlv, d->surfSlv, RS_LAW_NAMELEN);
+    rs_law_block_set_name(b.surfMst, d->surface->name);
+    b.props = d->props;
+    b.tempMst = &d->tmaster;
+    b.dtempMst = &dtm;
+    b.warn = d->warn;
+    b.warn_ctx = d->warn_ctx;
+    return rs_cblock_call(&d->cb, d->law, &b, &d->trk, err);
 }
 
 int rs_driver_step(rs_driver *d, rs_error *err)
@@ -302,11 +219,11 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     rc = grow_contacts(d, d->trk.n, nd, err);
     if (rc)
         return rc;
-    gather_contacts(d);
     rc = call_law(d, nd, err);
     if (rc)
         return rc;
-    rs_track_commit(&d->tracker, &d->trk, d->cstress, d->nstatev ? d->cstatev : NULL);
+    const rs_contact_block *cb = &d->cb;
+    rs_track_commit(&d->tracker, &d->trk, cb->stress, d->nstatev ? cb->statev : NULL);
 
     /* contact forces, heat and energies */
     memset(d->fcon, 0, 3 * (size_t)n * sizeof(double));
@@ -320,18 +237,18 @@ int rs_driver_step(rs_driver *d, rs_error *err)
         const double a = d->area[i];
         const double *al = d->trk.alocaldir + (size_t)e * nd * nd;
         for (int c = 0; c < nd; ++c) {
-            double f = RS_A2(d->cstress, nd, 0, e) * al[c];
+            double f = RS_A2(cb->stress, nd, 0, e) * al[c];
             for (int j = 1; j < nd; ++j)
-                f -= RS_A2(d->cstress, nd, j, e) * al[j * nd + c];
+                f -= RS_A2(cb->stress, nd, j, e) * al[j * nd + c];
             d->fcon[3 * i + c] += a * f;
         }
-        qslv[i] += a * d->cflux_slv[e];
-        qmst += a * d->cflux_mst[e];
-        se += a * d->csed[e];
-        en->allfd += a * d->csfd[e];
-        en->allpd += a * d->cspd[e];
-        en->allvd += a * d->csvd[e];
-        en->allcd += a * d->cscd[e];
+        qslv[i] += a * cb->flux_slv[e];
+        qmst += a * cb->flux_mst[e];
+        se += a * cb->sed[e];
+        en->allfd += a * cb->sfd[e];
+        en->allpd += a * cb->spd[e];
+        en->allvd += a * cb->svd[e];
+        en->allcd += a * cb->scd[e];
     }
     en->allse = se;
     en->heat_mst += qmst * d->dt;
@@ -394,17 +311,8 @@ void rs_driver_free(rs_driver *d)
     free(d->hist_ptr);
     free(d->dir_ptr);
     free(d->hist);
-    free(d->cstress);
-    free(d->cstatev);
-    free(d->csed);
-    free(d->csfd);
-    free(d->cspd);
-    free(d->csvd);
-    free(d->cscd);
-    free(d->cflux_slv);
-    free(d->cflux_mst);
-    free(d->cwork);
-    free(d->cuid);
+    free(d->dtemp);
+    rs_cblock_free(&d->cb);
     rs_track_out_free(&d->trk);
     rs_contacts_free(&d->contacts);
     memset(d, 0, sizeof *d);

@@ -24,6 +24,7 @@
 #ifndef RIGIDSURF_DRIVER_H
 #define RIGIDSURF_DRIVER_H
 
+#include "rigidsurf/contact_block.h"
 #include "rigidsurf/law.h"
 #include "rigidsurf/motion.h"
 #include "rigidsurf/surface.h"
@@ -95,22 +96,17 @@ typedef struct rs_driver {
     int inc;  ///< increments done
     rs_driver_energy energy;
     rs_tracker tracker;
-    rs_track_out trk; ///< contacts of the last increment (kinematics)
-    double *cstress;  ///< (nDir, trk.n) law stress of the last increment
-    double *cstatev;  ///< (nstatev, trk.n)
-    double *csed, *csfd, *cspd, *csvd, *cscd; ///< (trk.n) energy densities
-    double *cflux_slv, *cflux_mst;            ///< (trk.n) heat fluxes per area
+    rs_track_out trk;    ///< contacts of the last increment (kinematics)
+    rs_contact_block cb; ///< their law inputs and results: stress (nDir, trk.n),
+                         ///< statev, sed, sfd, spd, svd, scd, flux_slv, flux_mst
 
     /* Internal storage. */
-    int ccap;
     double *hist; ///< per particle: directory (capacity), then capacity slots
     double **hist_ptr, **dir_ptr;
     int *id;
-    double *temp_prev;
+    double *temp_prev, *dtemp;
     double tmaster_prev;
     rs_contacts contacts;
-    double *cwork; ///< per-contact scratch for the block's read-only arrays
-    int *cuid;     ///< per-contact node ids
 } rs_driver;
 
 /// Allocates n nodes on surface s (not owned): positions and velocities 0, mass 1,

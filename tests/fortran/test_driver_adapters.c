@@ -70,8 +70,8 @@ static int run(const rs_law *law, const double *props, int nprops, int nstatev, 
             goto done;
         }
         y[k] = d.y[0];
-        tau[k] = d.trk.n ? RS_A2(d.cstress, 2, 1, 0) : 0.0;
-        p[k] = d.trk.n ? RS_A2(d.cstress, 2, 0, 0) : 0.0;
+        tau[k] = d.trk.n ? RS_A2(d.cb.stress, 2, 1, 0) : 0.0;
+        p[k] = d.trk.n ? RS_A2(d.cb.stress, 2, 0, 0) : 0.0;
     }
     *vy_end = d.vy[0];
     *warnings = wc.n;

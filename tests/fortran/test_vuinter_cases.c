@@ -139,10 +139,10 @@ static void run_case(int geo, int load, const rs_law *law, const double *props, 
             double x[3], n[3], t1[3];
             node_at(geo, i, x, n, t1);
             for (int c = 0; c < 3; ++c) {
-                h->s[k][i][c] = c < nd ? RS_A2(d.cstress, nd, c, e) : 0.0;
+                h->s[k][i][c] = c < nd ? RS_A2(d.cb.stress, nd, c, e) : 0.0;
                 h->r[k][i][c] = c < nd ? RS_A2(d.trk.rdisp, nd, c, e) : 0.0;
             }
-            spd[i] += d.cspd[e] * d.area[i];
+            spd[i] += d.cb.spd[e] * d.area[i];
             h->spd[k][i] = spd[i];
             h->f[k][i] =
                 d.fcon[3 * i] * n[0] + d.fcon[3 * i + 1] * n[1] + d.fcon[3 * i + 2] * n[2];

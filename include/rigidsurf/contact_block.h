@@ -1,0 +1,87 @@
+/* rigidsurf: the contact block, the per-contact inputs of a law call assembled from the
+ * tracker's output and the particles of one block, and the law called on it in slices
+ * of at most RS_BLOCK contacts. The standalone driver and fix wall/rigid both use it, so
+ * a law sees the same inputs in either. */
+#ifndef RIGIDSURF_CONTACT_BLOCK_H
+#define RIGIDSURF_CONTACT_BLOCK_H
+
+#include "rigidsurf/law.h"
+#include "rigidsurf/track.h"
+#include "rigidsurf/types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// Effective radius of a sphere of radius R on a wall with principal curvatures k1, k2
+/// (> 0 convex toward the particle): the equivalent radius of Hertz's elliptical contact,
+/// Re = sqrt(R' R'') with 1/R' = 1/R + k1 and 1/R'' = 1/R + k2 (docs/conventions.md,
+/// "Effective radius"). A plane gives R exactly; each relative curvature is floored at
+/// 1e-6 / R, so a sphere in a conforming pocket keeps a finite radius.
+double rs_effective_radius(double R, double k1, double k2);
+
+/// How the area of a contact (areaSlv) follows from its particle.
+typedef enum rs_area_mode {
+    RS_AREA_NODE = 0,      ///< 1: stress is force (a node-based surface)
+    RS_AREA_PROJECTED = 1, ///< pi R^2
+    RS_AREA_CONSTANT = 2   ///< a given constant
+} rs_area_mode;
+
+/// The particles of one block (SoA, index k as in rs_track_out.point). Optional arrays
+/// are NULL when the engine has none.
+typedef struct rs_block_particles {
+    int n;
+    const double *radius;  ///< radii
+    const double *mass;    ///< masses
+    const int *id;         ///< ids (jSlvUid)
+    const int *type;       ///< material types (slv_type), optional
+    const double *area;    ///< contact areas, optional: else the block's area mode
+    const double *heatcap; ///< heat capacities m c, optional: else conductance 0
+    const double *temp;    ///< temperatures at the end of the increment, optional
+    const double *dtemp;   ///< their increments (with temp)
+    const double *pred;    ///< predefined fields (npred, n), optional
+    const double *dpred;   ///< their increments (with pred)
+} rs_block_particles;
+
+/// Per-contact arrays of a block (capacity cap contacts), in the law's layout.
+typedef struct rs_contact_block {
+    /* settings, set before rs_cblock_reserve */
+    rs_area_mode area_mode; ///< when the particles give no area
+    double area_const;      ///< RS_AREA_CONSTANT: the area
+    int ndir, nstatev, npred;
+
+    int cap;
+    int *uid, *type;
+    double *stiff, *cond, *area, *radius, *mass, *reff, *temp, *dtemp, *pred, *dpred;
+    double *stress, *statev, *flux_slv, *flux_mst, *sed, *sfd, *scd, *spd, *svd;
+    int has_type, has_temp; ///< the last rs_cblock_inputs had types, temperatures
+    /* Contacts [0, uni_n) hold the values of the key (R, m, A, k1, k2, dt) of a block
+     * whose contacts all share it (a monodisperse bed on one feature): the next block
+     * with that key refills only past them. */
+    double uni_key[6];
+    int uni_n;
+} rs_contact_block;
+
+/// Sizes the arrays for cap contacts (cb's settings must be set). Keeps nothing.
+int rs_cblock_reserve(rs_contact_block *cb, int cap, rs_error *err);
+/// Frees the arrays and zeroes cb.
+void rs_cblock_free(rs_contact_block *cb);
+
+/// Fills the per-contact inputs of the contacts of o: ids, types, area, radius, mass,
+/// default stiffness and conductance (rs_law_default_stiffness, _conductance),
+/// effective radius (rs_effective_radius of the contact's curvatures), temperatures and
+/// predefined fields; fluxSlv, fluxMst and sed enter at zero. Stress and statev are
+/// the tracker's to load (rs_track_load into cb->stress, cb->statev).
+void rs_cblock_inputs(rs_contact_block *cb, const rs_track_out *o,
+                      const rs_block_particles *p, double dt);
+
+/// Calls law on the contacts of o in slices of at most RS_BLOCK: each slice is tmpl
+/// (the engine's scalars: kStep, kInc, times, names, props, wall temperature, setup,
+/// warnings) with the slice's arrays from o and cb.
+int rs_cblock_call(rs_contact_block *cb, const rs_law *law, const rs_law_block *tmpl,
+                   const rs_track_out *o, rs_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
