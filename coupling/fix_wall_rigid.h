@@ -66,6 +66,10 @@ class FixWallRigid : public Fix
     void motion_rates(double vel[3], double *omega);
 
   private:
+    /* Global vector: 1-3 force on the wall, 4-6 moment on the wall about the surface
+     * origin, 7 touching contacts, 8 ALLSE, 9 ALLFD, 10 ALLPD, 11 ALLVD, 12 ALLCD, 13
+     * wall temperature, 14 heat into the wall. */
+    static const int kNout = 14;
     enum AreaMode { AREA_NODE, AREA_PROJECTED, AREA_CONSTANT };
     enum LawKind { LAW_BUILTIN, LAW_LOADED };
 
@@ -228,7 +232,7 @@ class FixWallRigid : public Fix
     double f_wall_[3], m_wall_[3], se_now_;
     int ncontact_;
     double diss_[4]; // ALLFD, ALLPD, ALLVD, ALLCD (this rank's share since the start)
-    double out_[14];
+    double out_[kNout];
     bigint out_step_;
     bool out_valid_;
     double temp_mst_[1], dtemp_mst_[1];

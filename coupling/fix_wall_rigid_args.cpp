@@ -1,0 +1,625 @@
+/* fix wall/rigid: its arguments (docs/fix_wall_rigid.md, "Syntax") and the error
+ * messages that name them. */
+#include "fix_wall_rigid.h"
+#include "rigidsurf/vec.h"
+
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "input.h"
+#include "modify.h"
+#include "update.h"
+#include "variable.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <unistd.h>
+
+using namespace LAMMPS_NS;
+
+namespace
+{
+
+int rates_callback(double t, double vel[3], double *omega, void *ctx)
+{
+    (void)t;
+    static_cast<FixWallRigid *>(ctx)->motion_rates(vel, omega);
+    return 0;
+}
+
+bool is_number(const char *s)
+{
+    if (!s || !*s)
+        return false;
+    char *end = NULL;
+    errno = 0;
+    std::strtod(s, &end);
+    return end && *end == '\0' && errno == 0;
+}
+
+} // namespace
+
+/* ---------------------------------------------------------------------------------- */
+/* Input                                                                              */
+
+void FixWallRigid::fail(const std::string &msg)
+{
+    std::string m = std::string("Fix wall/rigid ") + id + ": " + msg;
+    error->all(FLERR, m.c_str());
+    std::abort(); // not reached: error->all ends the run
+}
+
+/* Error::one ends with MPI_Abort, which drops whatever stdio still buffers: on a pipe or
+ * a file the message and the last thermo lines would be lost. They are flushed here, and
+ * the message written to the log, before Error::one runs. */
+void FixWallRigid::fail_one(const std::string &msg)
+{
+    std::string m = std::string("Fix wall/rigid ") + id + ": " + msg;
+    if (screen) {
+        std::fflush(screen);
+        if (!isatty(fileno(screen))) {
+            std::fprintf(screen, "ERROR on proc %d: %s (%s:%d)\n", comm->me, m.c_str(),
+                         __FILE__, __LINE__);
+            std::fflush(screen);
+        }
+    }
+    if (logfile) {
+        std::fprintf(logfile, "ERROR on proc %d: %s (%s:%d)\n", comm->me, m.c_str(),
+                     __FILE__, __LINE__);
+        std::fflush(logfile);
+    }
+    error->one(FLERR, m.c_str());
+    std::abort();
+}
+
+double FixWallRigid::number(const char *keyword, const char *what, const char *s)
+{
+    if (!is_number(s))
+        fail(std::string("keyword '") + keyword + "' expects " + what + ", got '" +
+             (s ? s : "(end of line)") + "'");
+    double v = std::strtod(s, NULL);
+    if (!std::isfinite(v))
+        fail(std::string("keyword '") + keyword + "' expects a finite " + what);
+    return v;
+}
+
+int FixWallRigid::integer(const char *keyword, const char *what, const char *s)
+{
+    char *end = NULL;
+    long v = s ? std::strtol(s, &end, 10) : 0;
+    if (!s || !*s || *end != '\0' || v < -2147483647L || v > 2147483647L)
+        fail(std::string("keyword '") + keyword + "' expects " + what + ", got '" +
+             (s ? s : "(end of line)") + "'");
+    return (int)v;
+}
+
+bool FixWallRigid::is_keyword(const char *s) const
+{
+    static const char *const kw[] = {
+        "surface",  "name", "law",    "props",       "type",   "statev", "tracking", "area",
+        "contacts", "move", "rotate", "temperature", "predef", "vtk",    "curvature"};
+    for (const char *k : kw)
+        if (std::strcmp(s, k) == 0)
+            return true;
+    return false;
+}
+
+void FixWallRigid::parse(int narg, char **arg)
+{
+    if (narg < 4)
+        fail("expected 'fix ID group wall/rigid surface FILE law LAW [keyword value ...]'");
+
+    std::string surf_file, surf_name, surf_text;
+    bool have_surface = false, have_law = false;
+    bool curvature = false, curvature_given = false;
+    int user_statev = 0;
+
+    int iarg = 3;
+    while (iarg < narg) {
+        const char *kw = arg[iarg];
+        auto need = [&](int n, const char *what) {
+            if (iarg + n >= narg)
+                fail(std::string("keyword '") + kw + "' expects " + what);
+        };
+        if (std::strcmp(kw, "surface") == 0) {
+            need(1, "a surface file name or 'inline'");
+            if (have_surface)
+                fail("keyword 'surface' given twice");
+            have_surface = true;
+            if (std::strcmp(arg[iarg + 1], "inline") == 0) {
+                iarg = parse_surface(narg, arg, iarg + 2);
+                surf_text = "inline";
+            } else {
+                surf_file = arg[iarg + 1];
+                iarg += 2;
+            }
+        } else if (std::strcmp(kw, "name") == 0) {
+            need(1, "the name of a surface in the surface file");
+            surf_name = arg[iarg + 1];
+            iarg += 2;
+        } else if (std::strcmp(kw, "law") == 0) {
+            need(1, "a law name (hertz, hooke, bonded_interface, linear_softening, "
+                    "coulomb, user, vuinter, uinter, fric)");
+            if (have_law)
+                fail("keyword 'law' given twice");
+            have_law = true;
+            iarg = parse_law(narg, arg, iarg + 1);
+        } else if (std::strcmp(kw, "props") == 0) {
+            iarg++;
+            props_.clear();
+            while (iarg < narg && !is_keyword(arg[iarg])) {
+                props_.push_back(number("props", "numbers", arg[iarg]));
+                iarg++;
+            }
+            if (props_.empty())
+                fail("keyword 'props' expects at least one number");
+            props_given_ = true;
+        } else if (std::strcmp(kw, "type") == 0) {
+            need(1, "a wall material type (integer >= 1)");
+            wall_type_ =
+                integer("type", "a wall material type (integer >= 1)", arg[iarg + 1]);
+            if (wall_type_ < 1 || wall_type_ > atom->ntypes) {
+                std::ostringstream o;
+                o << "keyword 'type' expects a material type in 1.." << atom->ntypes
+                  << " (create_box), got " << wall_type_;
+                fail(o.str());
+            }
+            iarg += 2;
+        } else if (std::strcmp(kw, "statev") == 0) {
+            need(1, "a number of state variables (integer >= 0)");
+            user_statev = integer("statev", "a number of state variables (integer >= 0)",
+                                  arg[iarg + 1]);
+            if (user_statev < 0)
+                fail("keyword 'statev' expects an integer >= 0");
+            statev_given_ = true;
+            iarg += 2;
+        } else if (std::strcmp(kw, "tracking") == 0) {
+            need(1, "a tracking thickness (length >= 0)");
+            tracking_ =
+                number("tracking", "a tracking thickness (length >= 0)", arg[iarg + 1]);
+            if (tracking_ < 0.0)
+                fail("keyword 'tracking' expects a length >= 0");
+            tracking_given_ = true;
+            iarg += 2;
+        } else if (std::strcmp(kw, "area") == 0) {
+            need(1, "'node', 'projected' or a constant area > 0");
+            if (std::strcmp(arg[iarg + 1], "node") == 0) {
+                area_mode_ = AREA_NODE;
+            } else if (std::strcmp(arg[iarg + 1], "projected") == 0) {
+                area_mode_ = AREA_PROJECTED;
+            } else {
+                area_mode_ = AREA_CONSTANT;
+                area_const_ = number("area", "'node', 'projected' or a constant area > 0",
+                                     arg[iarg + 1]);
+                if (!(area_const_ > 0.0))
+                    fail("keyword 'area' expects a constant area > 0");
+            }
+            iarg += 2;
+        } else if (std::strcmp(kw, "contacts") == 0) {
+            need(1, "a per-particle contact capacity");
+            capacity_ =
+                integer("contacts", "a per-particle contact capacity", arg[iarg + 1]);
+            if (capacity_ < 1 || capacity_ > RS_TRACK_MAX_CAPACITY) {
+                std::ostringstream o;
+                o << "keyword 'contacts' expects a capacity in 1.." << RS_TRACK_MAX_CAPACITY
+                  << ", got " << capacity_;
+                fail(o.str());
+            }
+            iarg += 2;
+        } else if (std::strcmp(kw, "move") == 0 || std::strcmp(kw, "rotate") == 0) {
+            iarg = parse_motion(narg, arg, iarg);
+        } else if (std::strcmp(kw, "temperature") == 0) {
+            need(1, "a wall temperature");
+            temp_wall_ = number("temperature", "a wall temperature", arg[iarg + 1]);
+            temp_given_ = true;
+            iarg += 2;
+            if (iarg < narg && std::strcmp(arg[iarg], "capacity") == 0) {
+                if (iarg + 1 >= narg)
+                    fail("keyword 'capacity' expects a wall heat capacity > 0 (energy per "
+                         "kelvin)");
+                capacity_wall_ =
+                    number("capacity", "a wall heat capacity > 0", arg[iarg + 1]);
+                if (!(capacity_wall_ > 0.0))
+                    fail("keyword 'capacity' expects a wall heat capacity > 0");
+                iarg += 2;
+            }
+        } else if (std::strcmp(kw, "predef") == 0) {
+            iarg++;
+            while (iarg < narg && !is_keyword(arg[iarg])) {
+                predef_names_.push_back(arg[iarg]);
+                iarg++;
+            }
+            if (predef_names_.empty())
+                fail("keyword 'predef' expects the names of fix property/atom scalars");
+        } else if (std::strcmp(kw, "vtk") == 0) {
+            need(2, "a file name and an output interval N > 0");
+            vtk_file_ = arg[iarg + 1];
+            vtk_every_ = integer("vtk", "an output interval N > 0", arg[iarg + 2]);
+            if (vtk_every_ < 1)
+                fail("keyword 'vtk' expects an output interval N > 0");
+            iarg += 3;
+        } else if (std::strcmp(kw, "curvature") == 0) {
+            need(1, "'yes' or 'no'");
+            if (std::strcmp(arg[iarg + 1], "yes") == 0)
+                curvature = true;
+            else if (std::strcmp(arg[iarg + 1], "no") == 0)
+                curvature = false;
+            else
+                fail(std::string("keyword 'curvature' expects 'yes' or 'no', got '") +
+                     arg[iarg + 1] + "'");
+            curvature_given = true;
+            iarg += 2;
+        } else {
+            fail(std::string("unknown keyword '") + kw +
+                 "'; expected surface, name, law, props, type, statev, tracking, area, "
+                 "contacts, move, rotate, temperature, predef, vtk or curvature");
+        }
+    }
+
+    if (!have_surface)
+        fail("missing 'surface FILE' (or 'surface inline ...')");
+    if (!have_law)
+        fail("missing 'law LAW'");
+
+    /* The surface: one parser for files and inline definitions. */
+    rs_error err;
+    rs_error_clear(&err);
+    int rc;
+    if (surf_text == "inline") {
+        if (!surf_name.empty())
+            fail("keyword 'name' selects a surface in a file; an inline surface has none");
+        rc = rs_surface_parse(inline_text_.c_str(), "inline surface", NULL, &surf_, &err);
+    } else {
+        rc = rs_surface_read(surf_file.c_str(),
+                             surf_name.empty() ? NULL : surf_name.c_str(), &surf_, &err);
+    }
+    if (rc != RS_OK)
+        fail(err.msg);
+    surf_ok_ = true;
+
+    /* State variables. */
+    const int law_nsv = law_->nstatev;
+    if (law_kind_ == LAW_BUILTIN) {
+        if (statev_given_ && user_statev != law_nsv) {
+            std::ostringstream o;
+            o << "law '" << law_->name << "' has " << law_nsv
+              << " state variables; 'statev " << user_statev << "' does not match";
+            fail(o.str());
+        }
+        nstatev_ = law_nsv;
+    } else if (law_name_ == "uinter" || law_name_ == "fric") {
+        nstatev_ = law_nsv + user_statev; // the adapter's own first, then the routine's
+    } else {
+        if (law_nsv > 0 && statev_given_ && user_statev != law_nsv) {
+            std::ostringstream o;
+            o << "law '" << law_->name << "' declares " << law_nsv
+              << " state variables; 'statev " << user_statev << "' does not match";
+            fail(o.str());
+        }
+        nstatev_ = law_nsv > 0 ? law_nsv : user_statev;
+    }
+
+    /* Properties. */
+    if (curvature_given && !hertz_)
+        fail("keyword 'curvature' applies to law hertz only");
+    if (hertz_) {
+        if (props_given_) {
+            /* Explicit Hertz properties override the LIGGGHTS material properties. */
+            rc = rs_law_check_props(law_, props_.data(), (int)props_.size(), &err);
+            if (rc != RS_OK)
+                fail(err.msg);
+            if (curvature_given)
+                fail("law hertz with 'props': give the curvature flag as the 7th property");
+        } else {
+            props_.assign(1, curvature ? 1.0 : 0.0); // remembered until init()
+        }
+    } else {
+        rc = rs_law_check_props(law_, props_.data(), (int)props_.size(), &err);
+        if (rc != RS_OK)
+            fail(err.msg);
+    }
+}
+
+/* surface inline KIND ... profile ITEMS end: the same keyword text a surface file holds,
+ * built here and handed to rs_surface_parse. */
+int FixWallRigid::parse_surface(int narg, char **arg, int iarg)
+{
+    if (iarg >= narg)
+        fail("'surface inline' expects 'revolution', 'cylinder' or 'segments'");
+    std::string kind = arg[iarg++];
+    std::ostringstream head, data;
+    std::string sides, fillet, extent;
+    auto num = [&](const char *what) -> std::string {
+        if (iarg >= narg)
+            fail(std::string("'surface inline ") + kind + "' expects " + what);
+        number("surface inline", what, arg[iarg]);
+        return arg[iarg++];
+    };
+    auto fmt = [](double v) {
+        char buf[40];
+        std::snprintf(buf, sizeof buf, "%.17g", v);
+        return std::string(buf);
+    };
+    auto point = [&](const char *what, double p[3]) {
+        for (int d = 0; d < 3; d++)
+            p[d] = std::strtod(num(what).c_str(), NULL);
+        return fmt(p[0]) + ", " + fmt(p[1]) + ", " + fmt(p[2]);
+    };
+    std::string a, b, c;
+    double pa[3], pb[3], pc[3];
+    if (kind == "revolution") {
+        while (iarg < narg && std::strcmp(arg[iarg], "profile") != 0) {
+            std::string k = arg[iarg++];
+            if (k == "origin")
+                a = point("origin x y z", pa);
+            else if (k == "axis")
+                b = point("axis ax ay az", pb);
+            else if (k == "fillet")
+                fillet = num("a fillet radius");
+            else if (k == "sides")
+                sides = num("sides 1 or 2");
+            else
+                fail("'surface inline revolution' expects origin, axis, fillet, sides or "
+                     "profile, got '" +
+                     k + "'");
+        }
+        if (a.empty() || b.empty())
+            fail("'surface inline revolution' needs 'origin x y z' and 'axis ax ay az'");
+        /* The file gives a second point on the axis: origin + axis. */
+        b = fmt(pa[0] + pb[0]) + ", " + fmt(pa[1] + pb[1]) + ", " + fmt(pa[2] + pb[2]);
+    } else if (kind == "cylinder") {
+        while (iarg < narg && std::strcmp(arg[iarg], "profile") != 0) {
+            std::string k = arg[iarg++];
+            if (k == "a")
+                a = point("a x y z (origin)", pa);
+            else if (k == "b")
+                b = point("b x y z (on the local x axis)", pb);
+            else if (k == "c")
+                c = point("c x y z (on the generator)", pc);
+            else if (k == "extent")
+                extent = num("extent zmin zmax"), extent += ", " + num("extent zmin zmax");
+            else if (k == "fillet")
+                fillet = num("a fillet radius");
+            else if (k == "sides")
+                sides = num("sides 1 or 2");
+            else
+                fail("'surface inline cylinder' expects a, b, c, extent, fillet, sides or "
+                     "profile, got '" +
+                     k + "'");
+        }
+        if (a.empty() || b.empty() || c.empty())
+            fail("'surface inline cylinder' needs points 'a x y z', 'b x y z', 'c x y z'");
+    } else if (kind == "segments") {
+        while (iarg < narg && std::strcmp(arg[iarg], "profile") != 0) {
+            std::string k = arg[iarg++];
+            if (k == "fillet")
+                fillet = num("a fillet radius");
+            else if (k == "sides")
+                sides = num("sides 1 or 2");
+            else
+                fail("'surface inline segments' expects fillet, sides or profile, got '" +
+                     k + "'");
+        }
+    } else {
+        fail("'surface inline' expects 'revolution', 'cylinder' or 'segments', got '" +
+             kind + "'");
+    }
+    if (iarg >= narg)
+        fail("'surface inline " + kind + "' expects 'profile START x y ... end'");
+    iarg++; // profile
+
+    std::ostringstream prof;
+    bool ended = false;
+    while (iarg < narg) {
+        std::string k = arg[iarg++];
+        std::string K = k;
+        for (char &ch : K)
+            ch = (char)std::toupper((unsigned char)ch);
+        if (K == "END") {
+            ended = true;
+            break;
+        }
+        int nv;
+        if (K == "START" || K == "LINE")
+            nv = 2;
+        else if (K == "CIRCL" || K == "PARAB")
+            nv = 4;
+        else
+            fail(
+                "'surface inline' profile expects START, LINE, CIRCL, PARAB or end, got '" +
+                k + "'");
+        prof << K;
+        for (int v = 0; v < nv; v++)
+            prof << ", " << num("profile coordinates");
+        prof << "\n";
+    }
+    if (!ended)
+        fail("'surface inline' profile is not closed by 'end'");
+
+    std::string KIND = kind;
+    for (char &ch : KIND)
+        ch = (char)std::toupper((unsigned char)ch);
+    head << "*SURFACE, TYPE=" << KIND << ", NAME=" << id;
+    if (!fillet.empty())
+        head << ", FILLET RADIUS=" << fillet;
+    if (!sides.empty())
+        head << ", SIDES=" << sides;
+    if (!extent.empty())
+        head << ", EXTENT=" << extent;
+    head << "\n";
+    if (kind == "revolution")
+        data << a << ", " << b << "\n";
+    else if (kind == "cylinder")
+        data << a << ", " << b << "\n" << c << "\n";
+    std::string text = head.str() + data.str();
+    inline_text_ = text + prof.str();
+    return iarg;
+}
+
+/* law NAME | user LIB SYMBOL | vuinter LIB | uinter LIB [normal LAW] | fric LIB normal LAW
+ */
+int FixWallRigid::parse_law(int narg, char **arg, int iarg)
+{
+    law_name_ = arg[iarg++];
+    rs_error err;
+    rs_error_clear(&err);
+    auto lib_arg = [&](const char *what) -> const char * {
+        if (iarg >= narg || is_keyword(arg[iarg]))
+            fail("law " + law_name_ + " expects " + what);
+        return arg[iarg++];
+    };
+    auto normal_arg = [&](bool required) -> const rs_law * {
+        if (iarg + 1 < narg && std::strcmp(arg[iarg], "normal") == 0) {
+            const rs_law *n = rs_law_find(arg[iarg + 1]);
+            if (!n)
+                fail(std::string("law ") + law_name_ + ": 'normal " + arg[iarg + 1] +
+                     "' is not a built-in law (hertz, hooke, bonded_interface, "
+                     "linear_softening, coulomb)");
+            iarg += 2;
+            return n;
+        }
+        if (required)
+            fail("law " + law_name_ +
+                 " expects 'normal LAW' (a built-in law giving the "
+                 "contact pressure)");
+        return NULL;
+    };
+    int rc = RS_OK;
+    if (law_name_ == "user") {
+        const char *lib = lib_arg("a shared library and a symbol: user LIB.so SYMBOL");
+        const char *sym = lib_arg("a symbol after the library: user LIB.so SYMBOL");
+        rc = rs_law_load_c(lib, sym, &loaded_, &err);
+        law_kind_ = LAW_LOADED;
+    } else if (law_name_ == "vuinter") {
+        const char *lib = lib_arg("a shared library holding vuinter: vuinter LIB.so");
+        rc = rs_law_load_vuinter(lib, &loaded_, &err);
+        law_kind_ = LAW_LOADED;
+    } else if (law_name_ == "uinter") {
+        const char *lib = lib_arg("a shared library holding uinter: uinter LIB.so");
+        const rs_law *normal = normal_arg(false);
+        rc = rs_law_load_uinter(lib, normal, &loaded_, &err);
+        law_kind_ = LAW_LOADED;
+    } else if (law_name_ == "fric") {
+        const char *lib = lib_arg("a shared library holding fric: fric LIB.so normal LAW");
+        const rs_law *normal = normal_arg(true);
+        rc = rs_law_load_fric(lib, normal, &loaded_, &err);
+        law_kind_ = LAW_LOADED;
+    } else {
+        law_ = rs_law_find(law_name_.c_str());
+        if (!law_) {
+            std::string known;
+            for (int i = 0; i < rs_law_count(); i++)
+                known += std::string(i ? ", " : "") + rs_law_at(i)->name;
+            fail("unknown law '" + law_name_ + "'; expected one of " + known +
+                 ", user, vuinter, uinter or fric");
+        }
+        law_kind_ = LAW_BUILTIN;
+        hertz_ = std::strcmp(law_->name, "hertz") == 0;
+        return iarg;
+    }
+    if (rc != RS_OK)
+        fail(err.msg);
+    loaded_ok_ = true;
+    law_ = &loaded_;
+    return iarg;
+}
+
+/* move linear VX VY VZ | rotate origin X Y Z axis AX AY AZ (omega W | period P).
+ * A value may be v_NAME, an equal-style variable evaluated every step. */
+int FixWallRigid::parse_motion(int narg, char **arg, int iarg)
+{
+    auto value = [&](const char *kw, const char *what, std::string &var) -> double {
+        if (iarg >= narg)
+            fail(std::string("keyword '") + kw + "' expects " + what);
+        const char *s = arg[iarg++];
+        if (std::strncmp(s, "v_", 2) == 0 && s[2]) {
+            var = s + 2;
+            return 0.0;
+        }
+        var.clear();
+        return number(kw, what, s);
+    };
+    auto constant = [&](const char *kw, const char *what) -> double {
+        if (iarg >= narg)
+            fail(std::string("keyword '") + kw + "' expects " + what);
+        return number(kw, what, arg[iarg++]);
+    };
+    if (std::strcmp(arg[iarg], "move") == 0) {
+        iarg++;
+        if (iarg >= narg || std::strcmp(arg[iarg], "linear") != 0)
+            fail("keyword 'move' expects 'linear VX VY VZ'");
+        iarg++;
+        double vel[3];
+        for (int d = 0; d < 3; d++)
+            vel[d] = value("move linear", "a velocity component (number or v_name)",
+                           var_vel_[d]);
+        rs_motion_set_translation(&motion_, vel);
+    } else {
+        iarg++;
+        double origin[3], axis[3], omega = 0.0;
+        if (iarg >= narg || std::strcmp(arg[iarg], "origin") != 0)
+            fail("keyword 'rotate' expects 'origin X Y Z axis AX AY AZ omega W' (or period "
+                 "P)");
+        iarg++;
+        for (int d = 0; d < 3; d++)
+            origin[d] = constant("rotate origin", "a coordinate");
+        if (iarg >= narg || std::strcmp(arg[iarg], "axis") != 0)
+            fail("keyword 'rotate' expects 'axis AX AY AZ' after the origin");
+        iarg++;
+        for (int d = 0; d < 3; d++)
+            axis[d] = constant("rotate axis", "an axis component");
+        if (iarg + 1 >= narg)
+            fail("keyword 'rotate' expects 'omega W' or 'period P' after the axis");
+        if (std::strcmp(arg[iarg], "omega") == 0) {
+            iarg++;
+            omega = value("rotate omega", "an angular speed in rad/time (number or v_name)",
+                          var_omega_);
+            rot_by_period_ = false;
+        } else if (std::strcmp(arg[iarg], "period") == 0) {
+            iarg++;
+            period_ = value("rotate period", "a period (number or v_name)", var_omega_);
+            if (var_omega_.empty()) {
+                if (period_ == 0.0)
+                    fail("keyword 'rotate period' expects a non-zero period");
+                omega = 2.0 * RS_PI / period_;
+            }
+            rot_by_period_ = true;
+        } else {
+            fail(std::string("keyword 'rotate' expects 'omega W' or 'period P', got '") +
+                 arg[iarg] + "'");
+        }
+        rs_error err;
+        rs_error_clear(&err);
+        if (rs_motion_set_rotation(&motion_, origin, axis, omega, &err) != RS_OK)
+            fail(err.msg);
+    }
+    moving_ = true;
+    bool vars = !var_omega_.empty();
+    for (int d = 0; d < 3; d++)
+        vars = vars || !var_vel_[d].empty();
+    if (vars) {
+        motion_.rates = rates_callback;
+        motion_.ctx = this;
+    }
+    return iarg;
+}
+
+void FixWallRigid::motion_rates(double vel[3], double *omega)
+{
+    for (int d = 0; d < 3; d++)
+        if (ivar_vel_[d] >= 0)
+            vel[d] = input->variable->compute_equal(ivar_vel_[d]);
+    if (ivar_omega_ >= 0) {
+        double v = input->variable->compute_equal(ivar_omega_);
+        if (rot_by_period_) {
+            if (v == 0.0)
+                fail("variable v_" + var_omega_ + " (rotate period) is zero");
+            v = 2.0 * RS_PI / v;
+        }
+        *omega = v;
+    }
+}

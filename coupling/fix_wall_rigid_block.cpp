@@ -1,0 +1,374 @@
+/* fix wall/rigid: one block of particles per call: gather, surface query, tracker, the
+ * law on the contact block (rs_cblock_inputs, rs_cblock_call), scatter. */
+#include "fix_wall_rigid.h"
+#include "rigidsurf/vec.h"
+
+#include "atom.h"
+#include "error.h"
+#include "fix_property_atom.h"
+#include "fix_property_global.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+using namespace LAMMPS_NS;
+
+void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
+{
+    double **x = atom->x, **v = atom->v, **omega = atom->omega;
+    const double *radius = atom->radius, *rmass = atom->rmass;
+    const int *tag = atom->tag, *type = atom->type;
+    const int nd = ndir_, ns = nstatev_, as = atom_size();
+    const double dt = update->dt;
+    rs_error err;
+    rs_error_clear(&err);
+
+    /* Gather; the extremes of R and m tell whether the block is monodisperse. */
+    double *__restrict qx = bx_.data(), *__restrict qy = by_.data(),
+                       *__restrict qz = bz_.data();
+    double *__restrict qvx = bvx_.data(), *__restrict qvy = bvy_.data(),
+                       *__restrict qvz = bvz_.data();
+    double *__restrict qwx = bwx_.data(), *__restrict qwy = bwy_.data(),
+                       *__restrict qwz = bwz_.data();
+    double *__restrict qr = brad_.data();
+    int *__restrict qid = bid_.data();
+    double **__restrict qd = bdir_.data();
+    double **__restrict qh = bhist_.data();
+    double *__restrict qm = bmass_.data();
+    int *__restrict qt = btype_.data();
+    double rmax = radius[idx[0]];
+    for (int k = 0; k < n; k++) {
+        const int i = idx[k];
+        const double *xi = x[i], *vi = v[i], *wi = omega[i];
+        const double R = radius[i], m = rmass[i];
+        qx[k] = xi[0], qy[k] = xi[1], qz[k] = xi[2];
+        qvx[k] = vi[0], qvy[k] = vi[1], qvz[k] = vi[2];
+        qwx[k] = wi[0], qwy[k] = wi[1], qwz[k] = wi[2];
+        qr[k] = R;
+        qm[k] = m;
+        qt[k] = type[i];
+        qid[k] = tag[i];
+        qd[k] = row_[i];
+        qh[k] = slot0(i);
+        rmax = std::max(rmax, R);
+    }
+    if (setup_call) {
+        saved_rows_.resize((size_t)n * as);
+        for (int k = 0; k < n; k++)
+            pack_atom(idx[k], &saved_rows_[(size_t)k * as]);
+    }
+
+    rs_query q;
+    q.n = n;
+    q.slave.x = bx_.data(), q.slave.y = by_.data(), q.slave.z = bz_.data();
+    q.slave.radius = brad_.data();
+    q.pose = &motion_.pose;
+    q.gap_max = tracking_;
+    q.dist_min = -rmax;
+    contacts_.n = 0;
+    if (rs_surface_query(&surf_, &q, &contacts_, &err) != RS_OK)
+        fail_one(std::string("surface query: ") + err.msg);
+
+    rs_particles p;
+    p.n = n;
+    p.x = bx_.data(), p.y = by_.data(), p.z = bz_.data();
+    p.vx = bvx_.data(), p.vy = bvy_.data(), p.vz = bvz_.data();
+    p.wx = bwx_.data(), p.wy = bwy_.data(), p.wz = bwz_.data();
+    p.radius = brad_.data();
+    p.id = bid_.data();
+    p.dir = bdir_.data();
+    p.hist = bhist_.data();
+    p.slot_stride = slot_stride();
+
+    /* A setup call has no increment: no slip, no master rotation. */
+    rs_motion still;
+    const rs_motion *mp = moving_ ? &motion_ : NULL;
+    if (setup_call && moving_) {
+        still = motion_;
+        for (int a = 0; a < 9; a++)
+            still.dQ[a] = (a % 4 == 0) ? 1.0 : 0.0;
+        mp = &still;
+    }
+    if (rs_track_update(&tracker_, &surf_, mp, setup_call ? 0.0 : dt, &p, &contacts_,
+                        &tout_, &err) != RS_OK)
+        fail_one(err.msg);
+
+    const int ne = tout_.n;
+    if (ne > cb_.cap) // not reached: at most capacity contacts per particle
+        fail_one("internal: block has more contacts than its scratch");
+    if (ne == 0) {
+        for (int k = 0; k < n; k++)
+            for (int c = 0; c < 6; c++)
+                array_atom[idx[k]][c] = 0.0;
+        if (setup_call)
+            for (int k = 0; k < n; k++)
+                unpack_atom(idx[k], &saved_rows_[(size_t)k * as]);
+        return;
+    }
+    /* Stress of the previous increment in this increment's basis, and the law state. */
+    rs_track_load(&tracker_, &tout_, cb_.stress, ns ? cb_.statev : NULL);
+    law_inputs(idx, n, ne, setup_call);
+
+    /* The law, in slices of at most RS_BLOCK contacts. */
+    const double *Temp = fix_temp_ ? fix_temp_->vector_atom : NULL;
+    const double *props = props_.data();
+    int nprops = (int)props_.size();
+    if (hertz_ && !props_given_) {
+        const int t = type[idx[0]];
+        if (t >= (int)type_props_.size() || type_props_[t].empty()) {
+            std::ostringstream o;
+            o << "law hertz: no material properties for particle type " << t
+              << " (youngsModulus, poissonsRatio, coefficientRestitution, "
+                 "coefficientFriction must cover it)";
+            fail_one(o.str());
+        }
+        props = type_props_[t].data();
+        nprops = (int)type_props_[t].size();
+    }
+    const double time_end = update->atime + (update->ntimestep - update->atimestep) * dt;
+    rs_law_block b = blk_;
+    b.kInc = (int)update->ntimestep;
+    b.nProps = nprops;
+    b.nTemp = (Temp || temp_given_) ? 1 : 0;
+    b.timStep = b.timGlb = setup_call ? time_end : time_end - dt;
+    b.dTimCur = dt;
+    b.props = nprops ? props : NULL;
+    b.setup = setup_call ? 1 : 0;
+    if (rs_cblock_call(&cb_, law_, &b, &tout_, &err) != RS_OK)
+        fail_one(err.msg);
+
+    /* The scatter also stores each live contact's sed in its slot (leaving: 0). A unit
+     * area (the default) drops the products with A, which are exact. */
+    const bool unit =
+        area_mode_ == AREA_NODE || (area_mode_ == AREA_CONSTANT && area_const_ == 1.0);
+    if (nd == 3) {
+        if (unit)
+            nleave_ ? scatter<3, true, true>(idx, n, ne, setup_call)
+                    : scatter<3, false, true>(idx, n, ne, setup_call);
+        else
+            nleave_ ? scatter<3, true, false>(idx, n, ne, setup_call)
+                    : scatter<3, false, false>(idx, n, ne, setup_call);
+    } else {
+        if (unit)
+            nleave_ ? scatter<2, true, true>(idx, n, ne, setup_call)
+                    : scatter<2, false, true>(idx, n, ne, setup_call);
+        else
+            nleave_ ? scatter<2, true, false>(idx, n, ne, setup_call)
+                    : scatter<2, false, false>(idx, n, ne, setup_call);
+    }
+
+    if (setup_call) {
+        for (int k = 0; k < n; k++)
+            unpack_atom(idx[k], &saved_rows_[(size_t)k * as]);
+        return;
+    }
+    rs_track_commit(&tracker_, &tout_, cb_.stress, ns ? cb_.statev : NULL);
+}
+
+/* The law's per-contact inputs (rs_cblock_inputs) from the block's particles, with their
+ * heat capacities, temperatures and predefined fields; then each contact's sed from its
+ * slot, and the leaving flags. */
+void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call)
+{
+    const double *cp = fix_heatcap_ ? fix_heatcap_->get_values() : NULL;
+    double *const *__restrict bd = bdir_.data();
+    rs_block_particles p;
+    std::memset(&p, 0, sizeof p);
+    p.n = n;
+    p.radius = brad_.data();
+    p.mass = bmass_.data();
+    p.id = bid_.data();
+    p.type = btype_.data();
+    if (cp) {
+        for (int k = 0; k < n; k++)
+            bheat_[k] = bmass_[k] * cp[btype_[k] - 1];
+        p.heatcap = bheat_.data();
+    }
+    const double *Temp = fix_temp_ ? fix_temp_->vector_atom : NULL;
+    if (Temp) {
+        const int tp0 = tprev_offset();
+        for (int k = 0; k < n; k++) {
+            const int i = idx[k];
+            const double Tp = bd[k][tp0];
+            btemp_[k] = Temp[i];
+            bdtemp_[k] = (setup_call || std::isnan(Tp)) ? 0.0 : Temp[i] - Tp;
+        }
+        p.temp = btemp_.data();
+        p.dtemp = bdtemp_.data();
+    }
+    const int npred = (int)predef_names_.size();
+    if (npred) {
+        const int pd0 = pred_offset();
+        for (int k = 0; k < n; k++) {
+            const int i = idx[k];
+            for (int a = 0; a < npred; a++) {
+                const double val = predef_fix_[a]->vector_atom[i];
+                const double prev = bd[k][pd0 + a];
+                bpred_[(size_t)k * npred + a] = val;
+                bdpred_[(size_t)k * npred + a] =
+                    (setup_call || std::isnan(prev)) ? 0.0 : val - prev;
+            }
+        }
+        p.pred = bpred_.data();
+        p.dpred = bdpred_.data();
+    }
+    rs_cblock_inputs(&cb_, &tout_, &p, update->dt);
+
+    const int sed0 = hist_size(); /* the sed follows the tracker's slot */
+    const int *__restrict pt = tout_.point;
+    double *const *__restrict dir = tout_.dir;
+    double *const *__restrict slot = tout_.slot;
+    double **__restrict sedp = c_sedp_.data();
+    double *__restrict sed = cb_.sed;
+    char *__restrict leaving = leaving_.data();
+    int nleave = 0;
+    bool ident = true;
+    for (int e = 0; e < ne; e++) {
+        double *sp = slot[e] + sed0;
+        sedp[e] = sp;
+        sed[e] = *sp;
+        const char lv = RS_DIR_IS_LEAVING(*dir[e]);
+        leaving[e] = lv;
+        nleave += lv;
+        ident &= pt[e] == e;
+    }
+    nleave_ = nleave;
+    ident_ = ident && ne == n;
+}
+
+/* Scatter: F = A (s1 n - s2 t1 - s3 t2) on the particle at x_cp, -F on the wall; the
+ * wall's sums, energies, each contact's sed into its slot and the per-atom output of the
+ * block's particles. ND = 2: the plane is z = const, t2 = -ez and the contact point keeps
+ * the particle's z. LEAVE: some contacts are leaving (they apply nothing). UNITA: every
+ * area is 1. */
+template <int ND, bool LEAVE, bool UNITA>
+void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
+{
+    double **f = atom->f, **torque = atom->torque;
+    double origin[3];
+    rs_pose_to_global(&motion_.pose, surf_.a, origin);
+    const double o0 = origin[0], o1 = origin[1], o2 = origin[2];
+    const int *__restrict pt = tout_.point;
+    const char *__restrict leaving = leaving_.data();
+    const double *__restrict px = bx_.data(), *__restrict py = by_.data(),
+                             *__restrict pz = bz_.data();
+    const double *__restrict alocal = tout_.alocaldir, *__restrict coord = tout_.coordslv,
+                             *__restrict rdisp = tout_.rdisp;
+    const double *__restrict stress = cb_.stress, *__restrict area = cb_.area;
+    const bool track_deepest = !ident_;
+    int *__restrict deepest = deepest_.data();
+    if (track_deepest)
+        for (int k = 0; k < n; k++)
+            deepest[k] = -1;
+
+    double fw0 = f_wall_[0], fw1 = f_wall_[1], fw2 = f_wall_[2];
+    double mw0 = m_wall_[0], mw1 = m_wall_[1], mw2 = m_wall_[2];
+    int ncontact = ncontact_;
+    for (int e = 0; e < ne; e++) {
+        if (LEAVE && leaving[e])
+            continue;
+        const int k = pt[e];
+        const double A = UNITA ? 1.0 : area[e];
+        const double *s = stress + (size_t)e * ND;
+        const double *L = alocal + (size_t)e * ND * ND; // columns n, t1[, t2]
+        const double *xc = coord + (size_t)e * ND;
+        double F0, F1, F2, xc0, xc1, xc2;
+        if (ND == 3) {
+            F0 = A * (s[0] * L[0] - s[1] * L[3] - s[2] * L[6]);
+            F1 = A * (s[0] * L[1] - s[1] * L[4] - s[2] * L[7]);
+            F2 = A * (s[0] * L[2] - s[1] * L[5] - s[2] * L[8]);
+            xc0 = xc[0], xc1 = xc[1], xc2 = xc[2];
+        } else {
+            /* n = (L0, L1, 0), t1 = (L2, L3, 0), t2 = (0, 0, -1) */
+            F0 = A * (s[0] * L[0] - s[1] * L[2] - 0.0 * 0.0);
+            F1 = A * (s[0] * L[1] - s[1] * L[3] - 0.0 * 0.0);
+            F2 = A * (s[0] * 0.0 - s[1] * 0.0 - 0.0 * -1.0);
+            xc0 = xc[0], xc1 = xc[1], xc2 = pz[k];
+        }
+        const double r0 = xc0 - px[k], r1 = xc1 - py[k], r2 = xc2 - pz[k];
+        const double rw0 = xc0 - o0, rw1 = xc1 - o1, rw2 = xc2 - o2;
+        const double Fw0 = -F0, Fw1 = -F1, Fw2 = -F2;
+        double *fi = f[idx[k]], *ti = torque[idx[k]];
+        fi[0] += F0, fi[1] += F1, fi[2] += F2;
+        ti[0] += r1 * F2 - r2 * F1;
+        ti[1] += r2 * F0 - r0 * F2;
+        ti[2] += r0 * F1 - r1 * F0;
+        fw0 += Fw0, fw1 += Fw1, fw2 += Fw2;
+        mw0 += rw1 * Fw2 - rw2 * Fw1;
+        mw1 += rw2 * Fw0 - rw0 * Fw2;
+        mw2 += rw0 * Fw1 - rw1 * Fw0;
+        const double rd1 = rdisp[(size_t)e * ND];
+        ncontact += rd1 > 0.0;
+        if (track_deepest) {
+            const int d = deepest[k];
+            if (d < 0 || rd1 > rdisp[(size_t)d * ND])
+                deepest[k] = e;
+        }
+    }
+    f_wall_[0] = fw0, f_wall_[1] = fw1, f_wall_[2] = fw2;
+    m_wall_[0] = mw0, m_wall_[1] = mw1, m_wall_[2] = mw2;
+    ncontact_ = ncontact;
+
+    /* Energies, heat, and sed into the slots (not in a setup call: its history is
+     * restored). */
+    const double *__restrict sed = cb_.sed;
+    double se = se_now_;
+    if (setup_call) {
+        for (int e = 0; e < ne; e++)
+            if (!(LEAVE && leaving[e]))
+                se += sed[e] * area[e];
+    } else {
+        const double *__restrict sfd = cb_.sfd, *__restrict spd = cb_.spd,
+                                 *__restrict svd = cb_.svd, *__restrict scd = cb_.scd,
+                                 *__restrict fmst = cb_.flux_mst;
+        double *const *__restrict sedp = c_sedp_.data();
+        double d0 = diss_[0], d1 = diss_[1], d2 = diss_[2], d3 = diss_[3];
+        double heat = heat_step_;
+        for (int e = 0; e < ne; e++) {
+            if (LEAVE && leaving[e]) {
+                *sedp[e] = 0.0;
+                continue;
+            }
+            const double A = UNITA ? 1.0 : area[e];
+            se += sed[e] * A;
+            d0 += sfd[e] * A;
+            d1 += spd[e] * A;
+            d2 += svd[e] * A;
+            d3 += scd[e] * A;
+            heat += fmst[e] * A;
+            *sedp[e] = sed[e];
+        }
+        diss_[0] = d0, diss_[1] = d1, diss_[2] = d2, diss_[3] = d3;
+        heat_step_ = heat;
+        if (fix_heatflux_) {
+            double *heatflux = fix_heatflux_->vector_atom;
+            const double *fslv = cb_.flux_slv;
+            for (int e = 0; e < ne; e++)
+                if (!(LEAVE && leaving[e]))
+                    heatflux[idx[pt[e]]] += fslv[e] * area[e];
+        }
+    }
+    se_now_ = se;
+
+    /* Per-atom output: the deepest live contact of each particle with this wall, zeros
+     * for a particle without one. */
+    for (int k = 0; k < n; k++) {
+        const int e = track_deepest ? deepest[k] : (LEAVE && leaving[k]) ? -1 : k;
+        double *o = array_atom[idx[k]];
+        if (e < 0) {
+            o[0] = o[1] = o[2] = o[3] = o[4] = o[5] = 0.0;
+            continue;
+        }
+        const double *s = stress + (size_t)e * ND;
+        const double *rd = rdisp + (size_t)e * ND;
+        o[0] = rd[0];
+        o[1] = rd[1];
+        o[2] = ND == 3 ? rd[2] : 0.0;
+        o[3] = s[0];
+        o[4] = s[1];
+        o[5] = ND == 3 ? s[2] : 0.0;
+    }
+}

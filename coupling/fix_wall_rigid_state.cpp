@@ -1,0 +1,255 @@
+/* fix wall/rigid: per-atom contact history (rows and slot-major slots) with its MPI
+ * exchange, and the restart file (global record and per-atom records). */
+#include "fix_wall_rigid.h"
+#include "rigidsurf/vec.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "memory.h"
+
+#include <cstring>
+#include <sstream>
+
+using namespace LAMMPS_NS;
+
+namespace
+{
+
+/* Restart layout version (global record). */
+const double kRestartVersion = 2.0; // 2: directory in the row, slots after it
+
+} // namespace
+
+void FixWallRigid::clear_row(int i)
+{
+    double *r = row_[i];
+    double *h = slot0(i);
+    const ptrdiff_t stride = slot_stride();
+    rs_track_clear(&tracker_, r, h, stride);
+    for (int j = 0; j < capacity_; j++)
+        h[j * stride + hist_size()] = 0.0; /* sed */
+    r[tprev_offset()] = NAN;
+    for (size_t p = 0; p < predef_names_.size(); p++)
+        r[pred_offset() + (int)p] = NAN;
+}
+
+/* The wall may have moved since the candidates were chosen: every point of the box moved
+ * by at most |dD| + |dphi| * (largest distance of a box corner from the rotation centre).
+ * Beyond half the skin the list is refreshed, as LIGGGHTS reneighbours when a particle
+ * moved half the skin. */
+/* ---------------------------------------------------------------------------------- */
+/* Restart: global state (motion, wall heat, energy totals) and per-atom history.     */
+
+enum {
+    RST_VERSION,
+    RST_CAPACITY,
+    RST_NSTATEV,
+    RST_NPRED,
+    RST_T,
+    RST_T_ERR,
+    RST_DISP,
+    RST_DISP_ERR = RST_DISP + 3,
+    RST_PHI = RST_DISP_ERR + 3,
+    RST_PHI_ERR,
+    RST_VEL,
+    RST_OMEGA = RST_VEL + 3,
+    RST_TEMP,
+    RST_DTEMP,
+    RST_HEAT,
+    RST_DISS,
+    RST_COUNT = RST_DISS + 4
+};
+
+void FixWallRigid::write_restart(FILE *fp)
+{
+    double loc[5] = {heat_wall_, diss_[0], diss_[1], diss_[2], diss_[3]}, all[5];
+    MPI_Allreduce(loc, all, 5, MPI_DOUBLE, MPI_SUM, world);
+    double list[RST_COUNT];
+    list[RST_VERSION] = kRestartVersion;
+    list[RST_CAPACITY] = capacity_;
+    list[RST_NSTATEV] = nstatev_;
+    list[RST_NPRED] = (double)predef_names_.size();
+    list[RST_T] = motion_.t;
+    list[RST_T_ERR] = motion_.t_err;
+    for (int d = 0; d < 3; d++) {
+        list[RST_DISP + d] = motion_.disp[d];
+        list[RST_DISP_ERR + d] = motion_.disp_err[d];
+        list[RST_VEL + d] = motion_.vel[d];
+    }
+    list[RST_PHI] = motion_.phi;
+    list[RST_PHI_ERR] = motion_.phi_err;
+    list[RST_OMEGA] = motion_.omega;
+    list[RST_TEMP] = temp_wall_;
+    list[RST_DTEMP] = dtemp_wall_;
+    list[RST_HEAT] = all[0];
+    for (int d = 0; d < 4; d++)
+        list[RST_DISS + d] = all[1 + d];
+    if (comm->me == 0) {
+        int size = RST_COUNT * sizeof(double);
+        std::fwrite(&size, sizeof(int), 1, fp);
+        std::fwrite(list, sizeof(double), RST_COUNT, fp);
+    }
+}
+
+void FixWallRigid::restart(char *buf)
+{
+    const double *list = reinterpret_cast<const double *>(buf);
+    if (list[RST_VERSION] != kRestartVersion)
+        fail("the restart file holds wall/rigid data of another layout version");
+    if ((int)list[RST_CAPACITY] != capacity_ || (int)list[RST_NSTATEV] != nstatev_ ||
+        (int)list[RST_NPRED] != (int)predef_names_.size()) {
+        std::ostringstream o;
+        o << "restart file has contacts " << (int)list[RST_CAPACITY] << ", "
+          << (int)list[RST_NSTATEV] << " state variables and " << (int)list[RST_NPRED]
+          << " predef fields; this fix has " << capacity_ << ", " << nstatev_ << " and "
+          << predef_names_.size() << " (keep contacts, law, statev and predef unchanged)";
+        fail(o.str());
+    }
+    motion_.t = list[RST_T];
+    motion_.t_err = list[RST_T_ERR];
+    for (int d = 0; d < 3; d++) {
+        motion_.disp[d] = list[RST_DISP + d];
+        motion_.disp_err[d] = list[RST_DISP_ERR + d];
+        if (!var_vel_[d].empty())
+            motion_.vel[d] = list[RST_VEL + d];
+    }
+    motion_.phi = list[RST_PHI];
+    motion_.phi_err = list[RST_PHI_ERR];
+    if (!var_omega_.empty())
+        motion_.omega = list[RST_OMEGA];
+    /* The pose from the restored phi and D: a zero step with the rates switched off. */
+    rs_motion_rates_fn rates = motion_.rates;
+    motion_.rates = NULL;
+    rs_error err;
+    rs_error_clear(&err);
+    rs_motion_advance(&motion_, 0.0, &err);
+    motion_.rates = rates;
+    temp_wall_ = list[RST_TEMP];
+    dtemp_wall_ = list[RST_DTEMP];
+    temp_mst_[0] = temp_wall_;
+    dtemp_mst_[0] = dtemp_wall_;
+    /* Totals live on rank 0; the others add their shares from here on. */
+    const bool root = comm->me == 0;
+    heat_wall_ = root ? list[RST_HEAT] : 0.0;
+    for (int d = 0; d < 4; d++)
+        diss_[d] = root ? list[RST_DISS + d] : 0.0;
+}
+
+void FixWallRigid::grow_arrays(int nmax)
+{
+    if (nmax <= nmax_)
+        return;
+    memory->grow(row_, nmax, row_size(), "wall/rigid:history");
+    memory->grow(array_atom, nmax, 6, "wall/rigid:array_atom");
+    /* The slots move: slot j of the old nmax_ atoms to the start of block j. */
+    const size_t hs = slot_size(), oldblk = (size_t)nmax_ * hs, blk = (size_t)nmax * hs;
+    double *h = (double *)memory->smalloc((bigint)(capacity_ * blk * sizeof(double)),
+                                          "wall/rigid:slots");
+    for (int j = 0; j < capacity_; j++)
+        if (oldblk)
+            std::memcpy(h + j * blk, hist_ + j * oldblk, sizeof(double) * oldblk);
+    memory->sfree(hist_);
+    hist_ = h;
+    const int old = nmax_;
+    nmax_ = nmax;
+    for (int i = old; i < nmax; i++) {
+        clear_row(i);
+        for (int c = 0; c < 6; c++)
+            array_atom[i][c] = 0.0;
+    }
+}
+
+/* One atom's history as plain doubles: its row, then its slots in slot order. */
+void FixWallRigid::pack_atom(int i, double *buf) const
+{
+    const int rs = row_size(), hs = slot_size();
+    const ptrdiff_t stride = slot_stride();
+    std::memcpy(buf, row_[i], sizeof(double) * rs);
+    const double *h = slot0(i);
+    for (int j = 0; j < capacity_; j++)
+        std::memcpy(buf + rs + j * hs, h + j * stride, sizeof(double) * hs);
+}
+
+void FixWallRigid::unpack_atom(int i, const double *buf)
+{
+    const int rs = row_size(), hs = slot_size();
+    const ptrdiff_t stride = slot_stride();
+    std::memcpy(row_[i], buf, sizeof(double) * rs);
+    double *h = slot0(i);
+    for (int j = 0; j < capacity_; j++)
+        std::memcpy(h + j * stride, buf + rs + j * hs, sizeof(double) * hs);
+}
+
+void FixWallRigid::copy_arrays(int i, int j, int delflag)
+{
+    (void)delflag;
+    const int hs = slot_size();
+    const ptrdiff_t stride = slot_stride();
+    std::memcpy(row_[j], row_[i], sizeof(double) * row_size());
+    for (int s = 0; s < capacity_; s++)
+        std::memcpy(slot0(j) + s * stride, slot0(i) + s * stride, sizeof(double) * hs);
+    for (int c = 0; c < 6; c++)
+        array_atom[j][c] = array_atom[i][c];
+}
+
+void FixWallRigid::set_arrays(int i)
+{
+    clear_row(i);
+    for (int c = 0; c < 6; c++)
+        array_atom[i][c] = 0.0;
+}
+
+int FixWallRigid::pack_exchange(int i, double *buf)
+{
+    pack_atom(i, buf);
+    return atom_size();
+}
+
+int FixWallRigid::unpack_exchange(int nlocal, double *buf)
+{
+    unpack_atom(nlocal, buf);
+    for (int c = 0; c < 6; c++)
+        array_atom[nlocal][c] = 0.0;
+    return atom_size();
+}
+
+int FixWallRigid::pack_restart(int i, double *buf)
+{
+    const int n = atom_size();
+    buf[0] = n + 1;
+    pack_atom(i, buf + 1);
+    return n + 1;
+}
+
+void FixWallRigid::unpack_restart(int nlocal, int nth)
+{
+    double **extra = atom->extra;
+    int m = 0;
+    for (int k = 0; k < nth; k++)
+        m += static_cast<int>(extra[nlocal][m]);
+    const int n = static_cast<int>(extra[nlocal][m]) - 1;
+    if (n != atom_size()) {
+        std::ostringstream o;
+        o << "restart file has " << n << " history values per atom, this fix needs "
+          << atom_size() << " (keep contacts, law, statev and predef unchanged)";
+        fail_one(o.str());
+    }
+    unpack_atom(nlocal, &extra[nlocal][m + 1]);
+}
+
+int FixWallRigid::size_restart(int nlocal)
+{
+    (void)nlocal;
+    return atom_size() + 1;
+}
+
+int FixWallRigid::maxsize_restart()
+{
+    return atom_size() + 1;
+}
+
+double FixWallRigid::memory_usage()
+{
+    return (double)nmax_ * (atom_size() + 6) * sizeof(double);
+}
