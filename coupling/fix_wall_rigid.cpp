@@ -159,18 +159,17 @@ void FixWallRigid::init()
     /* A surface of revolution spun about its own axis keeps its shape in space: the
      * rotation then never moves it toward a particle. */
     spin_invariant_ = false;
-    if (moving_ && surf_.kind == RS_SURF_REVOLUTION) {
+    double sa_origin[3], sa_axis[3];
+    if (moving_ && rs_surface_spin_axis(&surf_, sa_origin, sa_axis)) {
         double ax[3], r[3], rx[3];
-        rs_cross3(motion_.axis, surf_.ez, ax);
+        rs_cross3(motion_.axis, sa_axis, ax);
         for (int d = 0; d < 3; d++)
-            r[d] = motion_.center0[d] - surf_.a[d];
-        rs_cross3(r, surf_.ez, rx);
+            r[d] = motion_.center0[d] - sa_origin[d];
+        rs_cross3(r, sa_axis, rx);
         const double scale = std::max(1.0, std::sqrt(domain->xprd * domain->xprd +
                                                      domain->yprd * domain->yprd +
                                                      domain->zprd * domain->zprd));
-        spin_invariant_ =
-            std::sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]) < 1e-12 &&
-            std::sqrt(rx[0] * rx[0] + rx[1] * rx[1] + rx[2] * rx[2]) < 1e-12 * scale;
+        spin_invariant_ = rs_norm3(ax) < 1e-12 && rs_norm3(rx) < 1e-12 * scale;
     }
     if (hertz_ && !props_given_)
         init_hertz_props();

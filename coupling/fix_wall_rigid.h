@@ -157,7 +157,7 @@ class FixWallRigid : public Fix
     bool rot_by_period_;
     double period_;
     double disp_at_build_[3], phi_at_build_;
-    bool spin_invariant_; // REVOLUTION spun about its own axis
+    bool spin_invariant_; // spun about the surface's own spin axis (rs_surface_spin_axis)
 
     /* law */
     LawKind law_kind_;
