@@ -213,8 +213,7 @@ void rs_segment_eval(const rs_segment *g, double u, double x[2], double t[2], do
     }
 }
 
-/* End tangents straight from the defining points (no trigonometry for CIRCL). */
-static void seg_tangent(const rs_segment *g, int at_end, double t[2])
+void rs_segment_end_tangent(const rs_segment *g, int at_end, double t[2])
 {
     switch (g->type) {
     case RS_CIRCL: {
@@ -317,8 +316,8 @@ int rs_profile_finish(rs_profile *p, const unsigned char *smooth, rs_error *err)
             continue;
         }
         double ta[2], tb[2];
-        seg_tangent(&p->seg[sa], 1, ta);
-        seg_tangent(&p->seg[sb], 0, tb);
+        rs_segment_end_tangent(&p->seg[sa], 1, ta);
+        rs_segment_end_tangent(&p->seg[sb], 0, tb);
         vk[j] = classify(ta, tb);
     }
     return RS_OK;
@@ -344,7 +343,7 @@ static int make_offset(const rs_segment *g, double delta, offset_curve *o)
 {
     memset(o, 0, sizeof *o);
     if (g->type == RS_LINE) {
-        seg_tangent(g, 0, o->u);
+        rs_segment_end_tangent(g, 0, o->u);
         o->p[0] = g->p0[0] - delta * o->u[1];
         o->p[1] = g->p0[1] + delta * o->u[0];
         return 1;

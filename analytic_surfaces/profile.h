@@ -50,6 +50,10 @@ int rs_segment_circl(rs_segment *g, const double p0[2], const double p1[2],
 int rs_segment_parab(rs_segment *g, const double p0[2], const double pm[2],
                      const double p1[2], const char *where, rs_error *err);
 
+/// Unit tangent (direction of travel) at the start (at_end = 0) or the end of the
+/// segment, straight from its defining points (no trigonometry for CIRCL).
+void rs_segment_end_tangent(const rs_segment *g, int at_end, double t[2]);
+
 /// Point, unit tangent (direction of travel) and signed curvature (> 0 turning left,
 /// toward n) at parameter u in [0, 1] along the segment (CIRCL: angle fraction, PARAB:
 /// xi = 2u - 1, LINE: length fraction).
@@ -92,6 +96,28 @@ typedef struct rs_pseg {
     double sgn;           ///< CIRCL: sign of the sweep
     double B[2], C[2];    ///< PARAB: X(xi) = pm + xi B + xi^2 C
 } rs_pseg;
+
+/* The offsets dB, dA of (px, py) along segment q's start and end tangents from its
+ * start and end vertices (see the top of this file); q's slab is dB > 0 and dA < 0. */
+static inline void rs_pseg_offsets(const rs_pseg *q, double px, double py, double *dB,
+                                   double *dA)
+{
+    *dB = (px - q->v0[0]) * q->tb0[0] + (py - q->v0[1]) * q->tb0[1];
+    *dA = (px - q->v1[0]) * q->ta1[0] + (py - q->v1[1]) * q->ta1[1];
+}
+
+/* The ownership test of segment q (see the top of this file): the point is past its
+ * start vertex (in_start: dB > 0, or dB = 0 where the start is inclusive) and before
+ * its end vertex (in_end: dA < 0, or dA = 0 where the end is inclusive); q owns it when
+ * both hold. */
+static inline void rs_pseg_owns(const rs_pseg *q, double px, double py, int *in_start,
+                                int *in_end)
+{
+    double dB, dA;
+    rs_pseg_offsets(q, px, py, &dB, &dA);
+    *in_start = q->start_incl ? dB >= 0.0 : dB > 0.0;
+    *in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
+}
 
 typedef struct rs_pvert {
     double v[2];
