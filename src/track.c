@@ -5,8 +5,8 @@
  * rs_track_update runs in two passes so that an input or capacity error leaves history
  * untouched (bar freeing slots an uncommitted call left LEAVING): pass 1 assigns a slot
  * to every contact, lists the leaving slots and checks the block order, pass 2 computes
- * the kinematics and writes the history (frame, slip, rdisp1). rs_track_commit adds the
- * law's stress and statev and frees the leaving slots. */
+ * the kinematics and writes the history (frame, slip, rdisp1). rs_track_commit
+ * (track_history.c) adds the law's stress and statev and frees the leaving slots. */
 #include "rigidsurf/track.h"
 #include "rigidsurf/vec.h"
 
@@ -774,128 +774,4 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
         emit_all(tr, &mr, dt, p, c, out, ne, ident, 2);
     out->n = ne;
     return RS_OK;
-}
-
-/* statev(ns, e) <-> the slot's statev for one entry; ns is a constant in the copies
- * for the common counts. */
-RS_INLINE void copy_statev(double *restrict dst, const double *restrict src, const int ns)
-{
-    for (int b = 0; b < ns; b++)
-        dst[b] = src[b];
-}
-
-#define RS_STATEV_COPY(NS, DST, SRC)                                                       \
-    switch (NS) {                                                                          \
-    case 1:                                                                                \
-        copy_statev(DST, SRC, 1);                                                          \
-        break;                                                                             \
-    case 2:                                                                                \
-        copy_statev(DST, SRC, 2);                                                          \
-        break;                                                                             \
-    default:                                                                               \
-        copy_statev(DST, SRC, NS);                                                         \
-    }
-
-/* The previous stress of the n entries (none leaving, ndir = 3), 4 at a time: rows
- * (rdisp1, s1, s2, s3) of the slots and the entries' drot to columns, the shear carried
- * by drot, and the rows of stress(3, n). */
-RS_INLINE void load_stress3(const rs_track_out *out, int n, double *restrict stress)
-{
-    int e = 0;
-    for (; e + 4 <= n; e += 4) {
-        double *const *h = out->slot + e;
-        const double *dr = out->drot + (size_t)4 * e;
-        double rd[4], s1[4], s2[4], s3[4], d0[4], d1[4], d2[4], d3[4], u2[4], u3[4];
-        rs_transpose4(h[0] + RS_H_RDISP1, h[1] + RS_H_RDISP1, h[2] + RS_H_RDISP1,
-                      h[3] + RS_H_RDISP1, rd, s1, s2, s3);
-        rs_transpose4(dr, dr + 4, dr + 8, dr + 12, d0, d1, d2, d3);
-        for (int l = 0; l < 4; l++) {
-            u2[l] = d0[l] * s2[l] + d2[l] * s3[l];
-            u3[l] = d1[l] * s2[l] + d3[l] * s3[l];
-        }
-        rs_cols3_to_rows4(s1, u2, u3, stress + (size_t)3 * e);
-    }
-    for (; e < n; e++) {
-        const double *h = out->slot[e], *dr = out->drot + (size_t)4 * e;
-        const double s2 = h[RS_H_STRESS + 1], s3 = h[RS_H_STRESS + 2];
-        stress[3 * e] = h[RS_H_STRESS];
-        stress[3 * e + 1] = dr[0] * s2 + dr[2] * s3;
-        stress[3 * e + 2] = dr[1] * s2 + dr[3] * s3;
-    }
-}
-
-_Static_assert(RS_H_STRESS == RS_H_RDISP1 + 1, "rdisp1 and stress(1:3) are one row");
-
-RS_MULTIVERSION
-void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress,
-                   double *statev)
-{
-    const int nd = out->ndir, ns = tr->nstatev, n = out->n;
-    if (stress && nd == 2) {
-        for (int e = 0; e < n; e++) {
-            const double *h = out->slot[e];
-            stress[2 * e] = h[RS_H_STRESS];
-            stress[2 * e + 1] = h[RS_H_STRESS + 1];
-        }
-    } else if (stress && out->nleave == 0) {
-        /* The shear traction is carried into this increment's basis, as the slip. */
-        load_stress3(out, n, stress);
-    } else if (stress) {
-        /* As above; a leaving contact keeps its own. */
-        for (int e = 0; e < n; e++) {
-            const double *h = out->slot[e], *dr = out->drot + (size_t)4 * e;
-            const double s2 = h[RS_H_STRESS + 1], s3 = h[RS_H_STRESS + 2];
-            const int keep = RS_DIR_IS_LEAVING(*out->dir[e]);
-            stress[3 * e] = h[RS_H_STRESS];
-            stress[3 * e + 1] = keep ? s2 : dr[0] * s2 + dr[2] * s3;
-            stress[3 * e + 2] = keep ? s3 : dr[1] * s2 + dr[3] * s3;
-        }
-    }
-    if (statev && ns > 0)
-        for (int e = 0; e < n; e++)
-            RS_STATEV_COPY(ns, statev + (size_t)ns * e, out->slot[e] + RS_H_STATEV)
-}
-
-void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stress,
-                     const double *statev)
-{
-    const int nd = out->ndir, ns = tr->nstatev, anyleave = out->nleave > 0;
-    if (!anyleave && stress && nd == 3) {
-        /* The usual call: every entry live, stress(3, n). */
-        for (int e = 0; e < out->n; e++) {
-            double *h = out->slot[e];
-            const double *se = stress + (size_t)3 * e;
-            h[RS_H_STRESS] = se[0];
-            h[RS_H_STRESS + 1] = se[1];
-            h[RS_H_STRESS + 2] = se[2];
-        }
-        if (statev && ns > 0)
-            for (int e = 0; e < out->n; e++)
-                RS_STATEV_COPY(ns, out->slot[e] + RS_H_STATEV, statev + (size_t)ns * e)
-        return;
-    }
-    for (int e = 0; e < out->n; e++) {
-        double *h = out->slot[e];
-        if (anyleave && RS_DIR_IS_LEAVING(*out->dir[e])) {
-            *out->dir[e] = RS_DIR_EMPTY;
-            continue;
-        }
-        if (stress) {
-            const double *se = stress + (size_t)nd * e;
-            h[RS_H_STRESS] = se[0];
-            h[RS_H_STRESS + 1] = se[1];
-            h[RS_H_STRESS + 2] = nd == 3 ? se[2] : 0.0;
-        }
-        if (statev && ns > 0)
-            RS_STATEV_COPY(ns, h + RS_H_STATEV, statev + (size_t)ns * e)
-    }
-}
-
-void rs_track_clear(const rs_tracker *tr, double *dir, double *hist, ptrdiff_t stride)
-{
-    const int hs = RS_HIST_SIZE(tr->nstatev);
-    for (int j = 0; j < tr->capacity; j++) {
-        dir[j] = RS_DIR_EMPTY;
-        memset(hist + j * (stride ? stride : hs), 0, (size_t)hs * sizeof *hist);
-    }
 }
