@@ -32,20 +32,11 @@
 #include <string.h>
 #include <time.h>
 
+#include "bench_rng.h"
+
 #define RD 0.15
 #define H 0.05
 #define RAD 0.004
-
-/* xorshift64*: a fixed, portable stream so runs are reproducible. */
-static unsigned long long rng_state;
-static double urand(void)
-{
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return (double)((rng_state * 2685821657736338717ULL) >> 11) *
-           (1.0 / 9007199254740992.0);
-}
 
 typedef struct cloud {
     int n;

@@ -20,17 +20,9 @@
 #include <string.h>
 #include <time.h>
 
-#define N RS_BLOCK
+#include "bench_rng.h"
 
-static unsigned long long rng_state = 0x9e3779b97f4a7c15ull;
-static double urand(void)
-{
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return (double)((rng_state * 2685821657736338717ull) >> 11) *
-           (1.0 / 9007199254740992.0);
-}
+#define N RS_BLOCK
 
 typedef struct bench_block {
     rs_law_block b;

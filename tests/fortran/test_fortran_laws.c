@@ -4,14 +4,9 @@
  * the LM = 1 / LM = 2 semantics, warnings for PNEWDT < 1 and unstable stiffness, setup
  * calls, and the VUINTER argument order probed from Fortran. */
 #include "rigidsurf/law.h"
+#define RS_TEST_SEED 88172645463325252ull
 #include "rs_test.h"
 #include "test_law_fixture.h"
-
-static unsigned long long rng_state = 88172645463325252ull;
-static double urand(void) /* xorshift64, uniform in [0, 1) */
-{
-    return rs_test_urand(&rng_state);
-}
 
 static double rel_diff(double a, double b)
 {

@@ -84,6 +84,18 @@ static inline double rs_test_urand(unsigned long long *state)
     return (double)(rs_test_xorshift(state) >> 11) * (1.0 / 9007199254740992.0);
 }
 
+/* The test file's own stream: a file sets RS_TEST_SEED before including this header
+ * to have a stream of its own. */
+#ifndef RS_TEST_SEED
+#define RS_TEST_SEED 0x9E3779B97F4A7C15ull
+#endif
+/// Uniform in [0, 1) from the test file's stream.
+static inline double urand(void)
+{
+    static unsigned long long state = RS_TEST_SEED;
+    return rs_test_urand(&state);
+}
+
 static inline int rs_test_summary(void)
 {
     printf("%d passed, %d failed\n", rs_test_passed, rs_test_failed);

@@ -1,34 +1,18 @@
-/* Small vector helpers and a surface-parsing helper shared by the unit tests. They are
- * written out here, apart from the library, so tests do not check the library with its
- * own arithmetic. */
+/* Vector helpers beyond include/rigidsurf/vec.h and a surface-parsing helper shared by
+ * the unit tests. */
 #ifndef RS_TEST_GEOM_H
 #define RS_TEST_GEOM_H
 
 #include "rigidsurf/surface.h"
+#include "rigidsurf/vec.h"
 
 #include <math.h>
 #include <stdio.h>
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-
-static inline double dot(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static inline void cross(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 /// Scales v to unit length.
 static inline void unit(double v[3])
 {
-    double l = sqrt(dot(v, v));
+    double l = rs_norm3(v);
     v[0] /= l;
     v[1] /= l;
     v[2] /= l;

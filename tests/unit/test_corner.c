@@ -157,19 +157,19 @@ static void test_corner_fillet_normal_is_continuous(void)
     int prev = -1;
     double pn[2] = {0, 1};
     const int N = 3000;
-    double total = 1.0 + 0.5 * M_PI * (rf + h) + 1.0, ds = total / N;
+    double total = 1.0 + 0.5 * RS_PI * (rf + h) + 1.0, ds = total / N;
     for (int i = 0; i <= N; i++) {
         double sarc = i * ds, x, y;
         if (sarc < 1.0) {
             x = -1.2 + sarc;
             y = h;
-        } else if (sarc < 1.0 + 0.5 * M_PI * (rf + h)) {
-            double th = 0.5 * M_PI - (sarc - 1.0) / (rf + h);
+        } else if (sarc < 1.0 + 0.5 * RS_PI * (rf + h)) {
+            double th = 0.5 * RS_PI - (sarc - 1.0) / (rf + h);
             x = C[0] + (rf + h) * cos(th);
             y = C[1] + (rf + h) * sin(th);
         } else {
             x = h;
-            y = -0.2 - (sarc - 1.0 - 0.5 * M_PI * (rf + h));
+            y = -0.2 - (sarc - 1.0 - 0.5 * RS_PI * (rf + h));
         }
         ENSURE(query(&s, x, y, 0.0, 0.5, &c) == 0);
         ENSURE(c.n == 1);
@@ -290,16 +290,16 @@ static void test_corner_drum_fillet_sweep(void)
     int prev = -1;
     for (int i = 0; i <= 4000; i++) {
         /* the centre path: r = 0.5 - R until the fillet, then around it, then the cap */
-        double sarc = i * (0.8 + 0.5 * M_PI * 0.05 + 0.3) / 4000.0, r, z;
+        double sarc = i * (0.8 + 0.5 * RS_PI * 0.05 + 0.3) / 4000.0, r, z;
         if (sarc < 0.8) {
             r = 0.45;
             z = 0.1 + sarc;
-        } else if (sarc < 0.8 + 0.5 * M_PI * 0.05) {
+        } else if (sarc < 0.8 + 0.5 * RS_PI * 0.05) {
             double th = (sarc - 0.8) / 0.05;
             r = 0.4 + 0.05 * cos(th);
             z = 0.9 + 0.05 * sin(th);
         } else {
-            r = 0.4 - (sarc - 0.8 - 0.5 * M_PI * 0.05);
+            r = 0.4 - (sarc - 0.8 - 0.5 * RS_PI * 0.05);
             z = 0.95;
         }
         double x = r * cos(0.3), y = r * sin(0.3), zz = z;

@@ -3,25 +3,12 @@
  * t2 = hoop; FACETED t1 = global x on the tangent plane; the frame turns with the
  * master under a pose. */
 #include "rigidsurf/surface.h"
+#define RS_TEST_SEED 0x9E3779B97F4A7C15ull
 #include "rs_test.h"
 #include "rs_test_geom.h"
 
 #include <math.h>
 #include <stdlib.h>
-
-static unsigned long long rng_state = 0x9E3779B97F4A7C15ull;
-static double urand(void)
-{
-    return rs_test_urand(&rng_state);
-}
-
-static void normalize(double a[3])
-{
-    double l = sqrt(dot(a, a));
-    a[0] /= l;
-    a[1] /= l;
-    a[2] /= l;
-}
 
 /* Rotation by angle about a unit axis, written out here (Rodrigues), row-major. */
 static void rotation(const double ax[3], double ang, double R[9])
@@ -51,13 +38,13 @@ static int frames_orthonormal(const rs_contacts *c)
         get(c, c->nrm, k, n);
         get(c, c->t1, k, t1);
         get(c, c->t2, k, t2);
-        if (!(fabs(dot(n, n) - 1.0) <= 1e-12 && fabs(dot(t1, t1) - 1.0) <= 1e-12 &&
-              fabs(dot(t2, t2) - 1.0) <= 1e-12))
+        if (!(fabs(rs_dot3(n, n) - 1.0) <= 1e-12 && fabs(rs_dot3(t1, t1) - 1.0) <= 1e-12 &&
+              fabs(rs_dot3(t2, t2) - 1.0) <= 1e-12))
             return 0;
-        if (!(fabs(dot(n, t1)) <= 1e-12 && fabs(dot(n, t2)) <= 1e-12 &&
-              fabs(dot(t1, t2)) <= 1e-12))
+        if (!(fabs(rs_dot3(n, t1)) <= 1e-12 && fabs(rs_dot3(n, t2)) <= 1e-12 &&
+              fabs(rs_dot3(t1, t2)) <= 1e-12))
             return 0;
-        cross(n, t1, x);
+        rs_cross3(n, t1, x);
         for (int d = 0; d < 3; d++)
             if (!(fabs(x[d] - t2[d]) <= 1e-12))
                 return 0;
@@ -102,7 +89,7 @@ static void test_frame_segments_t1_is_minus_z_cross_n(void)
     for (int k = 0; k < c.n; k++) {
         double n[3], t1[3];
         get(&c, c.nrm, k, n);
-        cross(mz, n, t1);
+        rs_cross3(mz, n, t1);
         ENSURE(n[2] == 0.0);
         for (int d = 0; d < 3; d++) {
             ENSURE_SMALL(c.t1[d][k] - t1[d], 1e-15);
@@ -122,11 +109,11 @@ static void test_frame_cylinder_t1_is_generator(void)
     ENSURE(rs_surface_ndir(&s) == 3);
     /* generator: c - a made orthogonal to b - a, computed here */
     double a[3] = {1, 2, 3}, ab[3] = {1, 0.5, 0.2}, ac[3] = {-0.3, 0.3, 1.1}, gen[3];
-    normalize(ab);
-    double k = dot(ac, ab);
+    unit(ab);
+    double k = rs_dot3(ac, ab);
     for (int d = 0; d < 3; d++)
         gen[d] = ac[d] - k * ab[d];
-    normalize(gen);
+    unit(gen);
     double *x = malloc(3 * NPTS * sizeof *x), *y = x + NPTS, *z = y + NPTS;
     random_points(x, y, z, 3.0);
     for (int i = 0; i < NPTS; i++) {
@@ -141,14 +128,14 @@ static void test_frame_cylinder_t1_is_generator(void)
     for (int m = 0; m < c.n; m++) {
         double n[3];
         get(&c, c.nrm, m, n);
-        ENSURE_SMALL(dot(n, gen), 1e-12);
+        ENSURE_SMALL(rs_dot3(n, gen), 1e-12);
         for (int d = 0; d < 3; d++)
             ENSURE_SMALL(c.t1[d][m] - gen[d], 1e-12);
         /* two-sided: n points to the point's side, dist >= 0 */
         int i = c.point[m];
         double w[3] = {x[i] - c.xm[0][m], y[i] - c.xm[1][m], z[i] - c.xm[2][m]};
         ENSURE(c.dist[m] >= 0.0);
-        ENSURE_NEAR(dot(w, n), c.dist[m], 1e-12 * 4.0);
+        ENSURE_NEAR(rs_dot3(w, n), c.dist[m], 1e-12 * 4.0);
     }
     free(x);
     rs_contacts_free(&c);
@@ -160,7 +147,7 @@ static void test_frame_revolution_t2_is_hoop(void)
     rs_surface s;
     ENSURE(parse(REVOLUTION_TXT, &s) == 0);
     double a[3] = {0.5, -1, 2}, ez[3] = {0.6, 0.8, 0.9};
-    normalize(ez);
+    unit(ez);
     double *x = malloc(3 * NPTS * sizeof *x), *y = x + NPTS, *z = y + NPTS;
     random_points(x, y, z, 3.0);
     for (int i = 0; i < NPTS; i++) {
@@ -175,20 +162,20 @@ static void test_frame_revolution_t2_is_hoop(void)
     for (int m = 0; m < c.n; m++) {
         int i = c.point[m];
         double w[3] = {x[i] - a[0], y[i] - a[1], z[i] - a[2]}, er[3], hoop[3];
-        double zz = dot(w, ez);
+        double zz = rs_dot3(w, ez);
         for (int d = 0; d < 3; d++)
             er[d] = w[d] - zz * ez[d];
-        double r = sqrt(dot(er, er));
+        double r = sqrt(rs_dot3(er, er));
         if (r < 1e-6)
             continue;
-        normalize(er);
-        cross(ez, er, hoop);
+        unit(er);
+        rs_cross3(ez, er, hoop);
         for (int d = 0; d < 3; d++)
             ENSURE_SMALL(c.t2[d][m] - hoop[d], 1e-12);
         double n[3], t1[3], t2[3];
         get(&c, c.nrm, m, n);
         get(&c, c.t2, m, t2);
-        cross(t2, n, t1);
+        rs_cross3(t2, n, t1);
         for (int d = 0; d < 3; d++)
             ENSURE_SMALL(c.t1[d][m] - t1[d], 1e-12);
     }
@@ -203,7 +190,7 @@ static void test_frame_revolution_axis_is_finite_and_deterministic(void)
     rs_surface s;
     ENSURE(parse(REVOLUTION_TXT, &s) == 0);
     double a[3] = {0.5, -1, 2}, ez[3] = {0.6, 0.8, 0.9};
-    normalize(ez);
+    unit(ez);
     double x[8], y[8], z[8];
     for (int i = 0; i < 8; i++) {
         double h = 0.2 + 0.3 * i;
@@ -238,7 +225,7 @@ static void pose_check(const char *txt, int planar)
         ax[0] = ax[1] = 0.0;
         ax[2] = 1.0;
     }
-    normalize(ax);
+    unit(ax);
     rs_pose pose;
     rotation(ax, 0.7, pose.R);
     pose.T[0] = 0.4;
@@ -303,31 +290,31 @@ static void test_frame_faceted_t1_is_projected_global_x(void)
     for (int it = 0; it < NPTS; it++) {
         double n[3] = {2 * urand() - 1, 2 * urand() - 1, 2 * urand() - 1}, t1[3], t2[3],
                x[3];
-        if (dot(n, n) < 1e-6)
+        if (rs_dot3(n, n) < 1e-6)
             continue;
-        normalize(n);
+        unit(n);
         rs_frame_faceted(n, t1, t2);
         double g[3] = {1, 0, 0};
-        if (fabs(n[0]) >= cos(0.1 * M_PI / 180.0)) {
+        if (fabs(n[0]) >= cos(0.1 * RS_PI / 180.0)) {
             g[0] = 0;
             g[2] = 1;
         }
-        double p[3], k = dot(g, n);
+        double p[3], k = rs_dot3(g, n);
         for (int d = 0; d < 3; d++)
             p[d] = g[d] - k * n[d];
-        normalize(p);
-        cross(n, t1, x);
+        unit(p);
+        rs_cross3(n, t1, x);
         for (int d = 0; d < 3; d++) {
             ENSURE_SMALL(t1[d] - p[d], 1e-12);
             ENSURE_SMALL(t2[d] - x[d], 1e-12);
         }
-        ENSURE_SMALL(dot(t1, n), 1e-12);
+        ENSURE_SMALL(rs_dot3(t1, n), 1e-12);
     }
     /* the switch: x within 0.1 degree of n */
-    double a = 0.099 * M_PI / 180.0, n[3] = {cos(a), sin(a), 0}, t1[3], t2[3];
+    double a = 0.099 * RS_PI / 180.0, n[3] = {cos(a), sin(a), 0}, t1[3], t2[3];
     rs_frame_faceted(n, t1, t2);
     ENSURE_NEAR(t1[2], 1.0, 1e-12);
-    a = 0.101 * M_PI / 180.0;
+    a = 0.101 * RS_PI / 180.0;
     double m[3] = {cos(a), sin(a), 0};
     rs_frame_faceted(m, t1, t2);
     ENSURE_SMALL(t1[2], 1e-12);
@@ -352,12 +339,12 @@ static void test_frame_orient_conventions_from_the_principal_frame(void)
         for (int k = 0; k < N; k++) {
             double a[3] = {2 * urand() - 1, 2 * urand() - 1, 2 * urand() - 1};
             double n[3] = {2 * urand() - 1, 2 * urand() - 1, 2 * urand() - 1};
-            normalize(n);
-            const double an = dot(a, n);
+            unit(n);
+            const double an = rs_dot3(a, n);
             for (int d = 0; d < 3; d++)
                 a[d] -= an * n[d];
-            normalize(a);
-            cross(n, a, d2[k]);
+            unit(a);
+            rs_cross3(n, a, d2[k]);
             for (int d = 0; d < 3; d++) {
                 nn[k][d] = c.nrm[d][k] = n[d];
                 d1[k][d] = c.t1[d][k] = a[d];
@@ -396,7 +383,7 @@ static void test_frame_orient_conventions_from_the_principal_frame(void)
             }
             /* whatever the convention, the frame stays right-handed: n x t1 = t2 */
             double x[3];
-            cross(nn[k], t1, x);
+            rs_cross3(nn[k], t1, x);
             for (int d = 0; d < 3; d++)
                 ENSURE_SMALL(x[d] - t2[d], 1e-12);
         }

@@ -10,8 +10,8 @@ static void quat_rotate(const double axis[3], double a, const double v[3], doubl
 {
     double q[3] = {axis[0] * sin(0.5 * a), axis[1] * sin(0.5 * a), axis[2] * sin(0.5 * a)};
     double q0 = cos(0.5 * a), qv[3], qqv[3];
-    cross(q, v, qv);
-    cross(q, qv, qqv);
+    rs_cross3(q, v, qv);
+    rs_cross3(q, qv, qqv);
     for (int i = 0; i < 3; i++)
         r[i] = v[i] + 2.0 * q0 * qv[i] + 2.0 * qqv[i];
 }

@@ -43,13 +43,13 @@ static void test_profile_arc_lengths(void)
     ENSURE(s.profile.nseg == 3);
     ENSURE_REL(s.profile.seg[0].length, 5.0, 1e-15);
     /* CIRCL about (5, 4) from (3, 4) to (5, 2): a quarter turn of radius 2 */
-    ENSURE_REL(s.profile.seg[1].length, M_PI, 1e-14);
-    ENSURE_REL(fabs(s.profile.seg[1].sweep), 0.5 * M_PI, 1e-15);
+    ENSURE_REL(s.profile.seg[1].length, RS_PI, 1e-14);
+    ENSURE_REL(fabs(s.profile.seg[1].sweep), 0.5 * RS_PI, 1e-15);
     /* the parabola y - 1 = (x - 6)^2 from x = 5 to 7: sqrt(5) + asinh(2)/2 */
     ENSURE_REL(s.profile.seg[2].length, sqrt(5.0) + 0.5 * asinh(2.0), 1e-14);
     ENSURE(s.profile.seg[0].s0 == 0.0);
     ENSURE_REL(s.profile.seg[1].s0, 5.0, 1e-15);
-    ENSURE_REL(s.profile.seg[2].s0, 5.0 + M_PI, 1e-14);
+    ENSURE_REL(s.profile.seg[2].s0, 5.0 + RS_PI, 1e-14);
     ENSURE(s.profile.closed == 0 && s.profile.nvert == 4);
     rs_surface_free(&s);
 }
@@ -120,7 +120,7 @@ static void test_profile_fillet_line_line(void)
     ENSURE_NEAR(f->pm[1], 0.2, 1e-14);
     ENSURE_NEAR(fabs(f->pm[0] - f->pm[1]) / sqrt(2.0), 0.2, 1e-14);
     /* tangent length r tan(theta/2) with theta = 45 degrees */
-    ENSURE_NEAR(s.profile.seg[0].p1[0], -0.2 * tan(M_PI / 8.0), 1e-14);
+    ENSURE_NEAR(s.profile.seg[0].p1[0], -0.2 * tan(RS_PI / 8.0), 1e-14);
     rs_surface_free(&s);
 }
 
@@ -167,7 +167,7 @@ static void test_profile_fillet_closed_square(void)
     double total = 0.0;
     for (int k = 0; k < 8; k++)
         total += s.profile.seg[k].length;
-    ENSURE_REL(total, 4.0 - 8 * 0.25 + 2.0 * M_PI * 0.25, 1e-14);
+    ENSURE_REL(total, 4.0 - 8 * 0.25 + 2.0 * RS_PI * 0.25, 1e-14);
     rs_surface_free(&s);
 }
 

@@ -3,18 +3,13 @@
  * a block answers exactly as its points queried one at a time. */
 #include "rigidsurf/motion.h"
 #include "rigidsurf/surface.h"
+#define RS_TEST_SEED 0x2545F4914F6CDD1Dull
 #include "rs_test.h"
 #include "rs_test_geom.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-static unsigned long long rng_state = 0x2545F4914F6CDD1Dull;
-static double urand(void)
-{
-    return rs_test_urand(&rng_state);
-}
 
 /* Distance from (u, v) to segment g of the profile, written from the segment's end
  * points and centre only: LINE by the clamped projection, CIRCL by the radial
@@ -30,13 +25,13 @@ static double seg_distance(const rs_segment *g, double u, double v)
     double c[2] = {g->pm[0], g->pm[1]};
     double a0 = atan2(g->p0[1] - c[1], g->p0[0] - c[0]);
     double a1 = atan2(g->p1[1] - c[1], g->p1[0] - c[0]);
-    double sw = remainder(a1 - a0, 2.0 * M_PI); /* arcs are under 180 degrees */
+    double sw = remainder(a1 - a0, 2.0 * RS_PI); /* arcs are under 180 degrees */
     double rad = hypot(g->p0[0] - c[0], g->p0[1] - c[1]);
     double rho = hypot(u - c[0], v - c[1]);
     double d0 = hypot(u - g->p0[0], v - g->p0[1]), d1 = hypot(u - g->p1[0], v - g->p1[1]);
     double best = d0 < d1 ? d0 : d1;
     if (rho > 0.0) {
-        double a = remainder(atan2(v - c[1], u - c[0]) - a0, 2.0 * M_PI);
+        double a = remainder(atan2(v - c[1], u - c[0]) - a0, 2.0 * RS_PI);
         if (sw > 0.0 ? (a >= 0.0 && a <= sw) : (a <= 0.0 && a >= sw))
             best = fabs(rho - rad) < best ? fabs(rho - rad) : best;
     }
@@ -98,7 +93,7 @@ static void check_block_against_brute_force(const char *deck, int revolution)
             u = fabs(u);
             if (i % 17 == 0)
                 u = 0.0; /* on the axis */
-            double th = 2.0 * M_PI * urand();
+            double th = 2.0 * RS_PI * urand();
             L[0] = u * cos(th);
             L[1] = u * sin(th);
             L[2] = v;
@@ -229,7 +224,7 @@ static void check_collinear_chain(int sides, int npc)
     enum { N = 2000 };
     static double x[N], y[N], z[N];
     for (int i = 0; i < N; i++) {
-        const double rr = R + 2.5 * h * (2.0 * urand() - 1.0), th = 2.0 * M_PI * urand();
+        const double rr = R + 2.5 * h * (2.0 * urand() - 1.0), th = 2.0 * RS_PI * urand();
         x[i] = rr * cos(th);
         y[i] = rr * sin(th);
         z[i] = (H - 2.0 * h) * (2.0 * urand() - 1.0);
@@ -292,7 +287,7 @@ static void check_oblique_chain(int sides, int npc)
             const double jn = fmin(fmax(floor(sj / L * npc + 0.5), jlo), jhi);
             sj = L * jn / npc + 1e-12 * L * (2.0 * urand() - 1.0);
         }
-        const double d = 2.5 * h * (2.0 * urand() - 1.0), th = 2.0 * M_PI * urand();
+        const double d = 2.5 * h * (2.0 * urand() - 1.0), th = 2.0 * RS_PI * urand();
         const double rr = r0 + sj * tr + d * nr;
         x[i] = rr * cos(th);
         y[i] = rr * sin(th);

@@ -2,17 +2,12 @@
  * closed forms: a cylinder (CYLINDER of four arcs, REVOLUTION of one line), a cone, a
  * sphere of arcs, and a parabola (known closest points and a brute-force search). */
 #include "rigidsurf/surface.h"
+#define RS_TEST_SEED 88172645463325252ull
 #include "rs_test.h"
 #include "rs_test_geom.h"
 
 #include <math.h>
 #include <stdlib.h>
-
-static unsigned long long rng_state = 88172645463325252ull;
-static double urand(void)
-{
-    return rs_test_urand(&rng_state);
-}
 
 static int query1(const rs_surface *s, double x, double y, double z, double gap,
                   rs_contacts *c)
@@ -40,7 +35,7 @@ static void test_cylinder_of_arcs_closest_point_is_radial(void)
         ENSURE(s.profile.vkind[j] == RS_VTX_SMOOTH);
     rs_contacts c = {0};
     for (int it = 0; it < 20000; it++) {
-        double rho = R * (0.01 + 1.98 * urand()), phi = 2.0 * M_PI * urand();
+        double rho = R * (0.01 + 1.98 * urand()), phi = 2.0 * RS_PI * urand();
         double z = 10.0 * (urand() - 0.5);
         double x = rho * cos(phi), y = rho * sin(phi);
         ENSURE(query1(&s, x, y, z, INFINITY, &c) == 0);
@@ -76,7 +71,7 @@ static void test_revolution_line_equals_cylinder_of_arcs(void)
                  &rev) == 0);
     rs_contacts a = {0}, b = {0};
     for (int it = 0; it < 20000; it++) {
-        double rho = R * (0.01 + 1.98 * urand()), phi = 2.0 * M_PI * urand();
+        double rho = R * (0.01 + 1.98 * urand()), phi = 2.0 * RS_PI * urand();
         double z = 10.0 * (urand() - 0.5);
         double x = rho * cos(phi), y = rho * sin(phi);
         ENSURE(query1(&cyl, x, y, z, INFINITY, &a) == 0);
@@ -114,7 +109,7 @@ static void test_revolution_cone_distance_and_hoop_curvature(void)
     rs_contacts c = {0};
     int seen = 0;
     for (int it = 0; it < 20000; it++) {
-        double r = 1.3 * urand(), z = 2.0 * urand() - 0.2, phi = 2.0 * M_PI * urand();
+        double r = 1.3 * urand(), z = 2.0 * urand() - 0.2, phi = 2.0 * RS_PI * urand();
         double tau = ((r - r0) * t[0] + z * t[1]) / L;
         if (!(tau > 1e-9 && tau < 1.0 - 1e-9) || r < 1e-6)
             continue;

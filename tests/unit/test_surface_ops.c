@@ -26,7 +26,7 @@ static const char *TXT =
     "*SURFACE, TYPE=REVOLUTION, NAME=rev\n"
     "0,0,1, 0.2,0.1,2\nSTART, 0, 0\nLINE, 1, 0\nLINE, 1, 2\nLINE, 0.5, 2.5\n";
 
-static void parse(const char *name, rs_surface *s)
+static void surface_named(const char *name, rs_surface *s)
 {
     rs_error e;
     ENSURE(rs_surface_parse(TXT, "ops", name, s, &e) == RS_OK);
@@ -37,7 +37,7 @@ static void parse(const char *name, rs_surface *s)
 static void check_bounds_against_nodes(const char *name, double slack)
 {
     rs_surface s;
-    parse(name, &s);
+    surface_named(name, &s);
     double lo[3], hi[3];
     rs_surface_bounds(&s, lo, hi);
     rs_trimesh m;
@@ -78,7 +78,7 @@ static void test_bounds_closed_forms(void)
     rs_surface s;
     double lo[3], hi[3];
     /* a drum about z: |x|, |y| <= 0.15, z in [-0.05, 0.05] */
-    parse("drum0", &s);
+    surface_named("drum0", &s);
     rs_surface_bounds(&s, lo, hi);
     const double elo[3] = {-0.15, -0.15, -0.05}, ehi[3] = {0.15, 0.15, 0.05};
     for (int d = 0; d < 3; d++) {
@@ -87,7 +87,7 @@ static void test_bounds_closed_forms(void)
     }
     rs_surface_free(&s);
     /* a bounded plate: x in [-1, 1], y in [0.25, 0.5], z in [-0.2, 0.7] */
-    parse("cylb", &s);
+    surface_named("cylb", &s);
     rs_surface_bounds(&s, lo, hi);
     const double plo[3] = {-1, 0.25, -0.2}, phi[3] = {1, 0.5, 0.7};
     for (int d = 0; d < 3; d++) {
@@ -97,7 +97,7 @@ static void test_bounds_closed_forms(void)
     rs_surface_free(&s);
     /* without EXTENT the plate is unbounded along its generator z only; SEGMENTS are
      * unbounded along z */
-    parse("cylz", &s);
+    surface_named("cylz", &s);
     rs_surface_bounds(&s, lo, hi);
     for (int d = 0; d < 2; d++) {
         ENSURE_SMALL(lo[d] - plo[d], 1e-9);
@@ -105,7 +105,7 @@ static void test_bounds_closed_forms(void)
     }
     ENSURE(lo[2] == -INFINITY && hi[2] == INFINITY);
     rs_surface_free(&s);
-    parse("seg", &s);
+    surface_named("seg", &s);
     rs_surface_bounds(&s, lo, hi);
     ENSURE_SMALL(lo[0] + 1.0, 1e-9);
     ENSURE(isfinite(hi[0]) && isfinite(lo[1]) && isfinite(hi[1]));
@@ -116,7 +116,7 @@ static void test_bounds_closed_forms(void)
 static void test_spin_axis_of_a_revolution(void)
 {
     rs_surface s;
-    parse("rev", &s);
+    surface_named("rev", &s);
     double o[3], ax[3];
     ENSURE(rs_surface_spin_axis(&s, o, ax) == 1);
     /* a = (0, 0, 1), b = (0.2, 0.1, 2): the axis is (b - a) / |b - a| */
@@ -159,7 +159,7 @@ static void test_spin_axis_of_a_revolution(void)
     rs_surface_free(&s);
     const char *others[3] = {"seg", "cyl", "cylb"};
     for (int i = 0; i < 3; i++) {
-        parse(others[i], &s);
+        surface_named(others[i], &s);
         ENSURE(rs_surface_spin_axis(&s, o, ax) == 0);
         rs_surface_free(&s);
     }
@@ -178,7 +178,7 @@ static void test_each_kind_has_its_table(void)
                  {"rev", "REVOLUTION", 3, RS_FRAME_TRAVEL}};
     for (int i = 0; i < 3; i++) {
         rs_surface s;
-        parse(want[i].surf, &s);
+        surface_named(want[i].surf, &s);
         ENSURE(s.ops != NULL);
         ENSURE(strcmp(s.ops->name, want[i].name) == 0);
         ENSURE(s.ops->ndir == want[i].ndir && rs_surface_ndir(&s) == want[i].ndir);

@@ -18,11 +18,6 @@ static void axpy(double *y, double a, const double x[3], const double b[3])
     for (int i = 0; i < 3; i++)
         y[i] = b[i] + a * x[i];
 }
-static void matvec(const double R[9], const double v[3], double r[3])
-{
-    for (int i = 0; i < 3; i++)
-        r[i] = R[3 * i] * v[0] + R[3 * i + 1] * v[1] + R[3 * i + 2] * v[2];
-}
 /* A right-handed orthonormal frame n, t1, t2 = n x t1 from a normal and a hint. */
 static void make_frame(const double nin[3], const double hint[3], double n[3], double t1[3],
                        double t2[3])
@@ -30,11 +25,11 @@ static void make_frame(const double nin[3], const double hint[3], double n[3], d
     for (int i = 0; i < 3; i++)
         n[i] = nin[i];
     unit(n);
-    double h = dot(hint, n);
+    double h = rs_dot3(hint, n);
     for (int i = 0; i < 3; i++)
         t1[i] = hint[i] - h * n[i];
     unit(t1);
-    cross(n, t1, t2);
+    rs_cross3(n, t1, t2);
 }
 
 /* ---- fixtures: a block of particles and a hand-built contact list ---- */
@@ -122,7 +117,7 @@ static void add_plane(clist *l, int point, int feature, const double x[3],
                       const double t2[3])
 {
     double d[3] = {x[0] - P[0], x[1] - P[1], x[2] - P[2]}, xm[3];
-    double dist = dot(d, n);
+    double dist = rs_dot3(d, n);
     axpy(xm, -dist, n, x);
     clist_add(l, point, feature, xm, n, t1, t2, dist);
 }
@@ -133,14 +128,14 @@ static void add_drum(clist *l, int point, int feature, const double x[3], const 
                      const double g[3], double Rc)
 {
     double d[3] = {x[0] - A[0], x[1] - A[1], x[2] - A[2]}, rad[3], n[3], t2[3], xm[3];
-    double h = dot(d, g);
+    double h = rs_dot3(d, g);
     axpy(rad, -h, g, d);
-    double r = sqrt(dot(rad, rad));
+    double r = sqrt(rs_dot3(rad, rad));
     for (int i = 0; i < 3; i++) {
         n[i] = -rad[i] / r;
         xm[i] = A[i] + h * g[i] + Rc * rad[i] / r;
     }
-    cross(n, g, t2);
+    rs_cross3(n, g, t2);
     clist_add(l, point, feature, xm, n, g, t2, Rc - r);
 }
 
@@ -159,16 +154,62 @@ static int drot_is(const rs_track_out *o, int e, double a, double b, double c, d
            fabs(RS_DROT(o->drot, 1, 1, e) - d) <= tol;
 }
 
+/* The usual set-up of a test: a tracker (capacity CAP, NS state variables, tracking
+ * 1e-3), a block of particles, a contact list and the tracker's output. */
+typedef struct fixture {
+    rs_tracker tr;
+    block b;
+    clist l;
+    rs_track_out o;
+    rs_error err;
+} fixture;
+
+static void fixture_init(fixture *f, int ndir)
+{
+    memset(f, 0, sizeof *f);
+    f->tr = tracker(ndir);
+}
+
+static void fixture_free(fixture *f)
+{
+    rs_track_out_free(&f->o);
+}
+
+/* One call of the tracker on the fixture's block and contact list. */
+static int track_call(fixture *fx, const rs_surface *s, const rs_motion *m, double dt)
+{
+    return rs_track_update(&fx->tr, s, m, dt, &fx->b.p, &fx->l.c, &fx->o, &fx->err);
+}
+
+/* Objectivity under rigid motion (docs/conventions.md, "drot"): one contact, drot = I,
+ * no slip, the penetration kept. */
+static void check_rigid_contact(const rs_track_out *o, double pen)
+{
+    ENSURE(o->n == 1);
+    ENSURE(drot_is(o, 0, 1, 0, 0, 1, 1e-12));
+    ENSURE_SMALL(RS_A2(o->rdisp, 3, 1, 0), 1e-12);
+    ENSURE_SMALL(RS_A2(o->rdisp, 3, 2, 0), 1e-12);
+    ENSURE_NEAR(RS_A2(o->rdisp, 3, 0, 0), pen, 1e-12);
+}
+
+/* One call with particle 0 against the plane through P (normal n, tangents t1, t2) as
+ * its only contact, feature f: the contact list is rebuilt, the tracker run. */
+static int plane_call(fixture *fx, const rs_surface *s, const rs_motion *m, double dt,
+                      int feature, const double x[3], const double P[3], const double n[3],
+                      const double t1[3], const double t2[3])
+{
+    clist_init(&fx->l);
+    add_plane(&fx->l, 0, feature, x, P, n, t1, t2);
+    return track_call(fx, s, m, dt);
+}
+
 /* Plane master translating with V; the sphere rides along with it (x = x0 + V t): the
  * frame does not turn, so drot = I, no slip accumulates and the penetration stays. */
 static void test_drot_identity_under_rigid_translation(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
+    fixture fx;
+    fixture_init(&fx, 3);
     rs_motion m;
-    rs_error err;
     double V[3] = {0.7, -1.3, 0.4}, P0[3] = {0.1, 0.2, 0.3}, nin[3] = {1, 2, 2};
     double hint[3] = {1, 0, 0}, n[3], t1[3], t2[3], zero[3] = {0, 0, 0};
     const double R = 0.01, pen = 2e-4, dt = 1e-3;
@@ -177,24 +218,19 @@ static void test_drot_identity_under_rigid_translation(void)
     axpy(x0, R - pen, n, P0);
     rs_motion_init(&m);
     rs_motion_set_translation(&m, V);
-    block_init(&b, 1, &tr);
+    block_init(&fx.b, 1, &fx.tr);
     for (int step = 1; step <= 3000; step++) {
-        ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+        ENSURE(rs_motion_advance(&m, dt, &fx.err) == RS_OK);
         double t = step * dt, x[3], P[3];
         axpy(x, t, V, x0);
         axpy(P, t, V, P0);
-        block_set(&b, 0, x, V, zero, R);
-        clist_init(&l);
-        add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1, t2);
-        ENSURE(rs_track_update(&tr, NULL, &m, dt, &b.p, &l.c, &o, &err) == RS_OK);
-        ENSURE(o.n == 1);
-        ENSURE(drot_is(&o, 0, 1, 0, 0, 1, 1e-12));
-        ENSURE_SMALL(RS_A2(o.rdisp, 3, 1, 0), 1e-12);
-        ENSURE_SMALL(RS_A2(o.rdisp, 3, 2, 0), 1e-12);
-        ENSURE_NEAR(RS_A2(o.rdisp, 3, 0, 0), pen, 1e-12);
-        rs_track_commit(&tr, &o, NULL, NULL);
+        block_set(&fx.b, 0, x, V, zero, R);
+        ENSURE(plane_call(&fx, NULL, &m, dt, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1,
+                          t2) == RS_OK);
+        check_rigid_contact(&fx.o, pen);
+        rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     }
-    rs_track_out_free(&o);
+    fixture_free(&fx);
 }
 
 /* Drum (cylinder) master rotating about an arbitrary axis through an arbitrary point
@@ -203,19 +239,16 @@ static void test_drot_identity_under_rigid_translation(void)
  * and no slip accumulates (objectivity). */
 static void test_drot_identity_under_rigid_rotation(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
+    fixture fx;
+    fixture_init(&fx, 3);
     rs_motion m;
-    rs_error err;
     double axis[3] = {0.3, -1.0, 0.6}, C[3] = {0.2, 0.1, -0.3}, V[3] = {0.05, 0.0, -0.02};
     double A0[3] = {0.0, 0.5, 0.1}, g0[3] = {0.2, 0.1, 1.0};
     const double omega = 3.0, dt = 1e-3, Rc = 0.5, R = 0.02, pen = 3e-4;
     unit(g0);
     rs_motion_init(&m);
     rs_motion_set_translation(&m, V);
-    ENSURE(rs_motion_set_rotation(&m, C, axis, omega, &err) == RS_OK);
+    ENSURE(rs_motion_set_rotation(&m, C, axis, omega, &fx.err) == RS_OK);
     double ax[3] = {axis[0], axis[1], axis[2]};
     unit(ax);
     /* Reference particle centre: on the drum's inner side at depth pen. */
@@ -223,13 +256,13 @@ static void test_drot_identity_under_rigid_rotation(void)
     make_frame(g0, hint, e0, er, e1); /* er: a unit vector normal to g0 */
     for (int i = 0; i < 3; i++)
         X0[i] = A0[i] + 0.3 * g0[i] + (Rc - R + pen) * er[i];
-    block_init(&b, 1, &tr);
+    block_init(&fx.b, 1, &fx.tr);
     for (int step = 1; step <= 2000; step++) {
-        ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+        ENSURE(rs_motion_advance(&m, dt, &fx.err) == RS_OK);
         double x[3], A[3], g[3], c[3], v[3], w[3], r[3], wr[3];
         rs_pose_to_global(&m.pose, X0, x);
         rs_pose_to_global(&m.pose, A0, A);
-        matvec(m.pose.R, g0, g);
+        rs_matvec3(m.pose.R, g0, g);
         /* Material velocity of the master at x: V + omega axis x (x - (C + V t)). */
         double t = step * dt;
         for (int i = 0; i < 3; i++) {
@@ -237,21 +270,17 @@ static void test_drot_identity_under_rigid_rotation(void)
             r[i] = x[i] - c[i];
             w[i] = omega * ax[i];
         }
-        cross(w, r, wr);
+        rs_cross3(w, r, wr);
         for (int i = 0; i < 3; i++)
             v[i] = V[i] + wr[i];
-        block_set(&b, 0, x, v, w, R);
-        clist_init(&l);
-        add_drum(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc);
-        ENSURE(rs_track_update(&tr, NULL, &m, dt, &b.p, &l.c, &o, &err) == RS_OK);
-        ENSURE(o.n == 1);
-        ENSURE(drot_is(&o, 0, 1, 0, 0, 1, 1e-12));
-        ENSURE_SMALL(RS_A2(o.rdisp, 3, 1, 0), 1e-12);
-        ENSURE_SMALL(RS_A2(o.rdisp, 3, 2, 0), 1e-12);
-        ENSURE_NEAR(RS_A2(o.rdisp, 3, 0, 0), pen, 1e-12);
-        rs_track_commit(&tr, &o, NULL, NULL);
+        block_set(&fx.b, 0, x, v, w, R);
+        clist_init(&fx.l);
+        add_drum(&fx.l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc);
+        ENSURE(track_call(&fx, NULL, &m, dt) == RS_OK);
+        check_rigid_contact(&fx.o, pen);
+        rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     }
-    rs_track_out_free(&o);
+    fixture_free(&fx);
 }
 
 /* A faceted master spun by theta about the contact normal keeps its tangent basis tied
@@ -264,12 +293,9 @@ static void test_drot_identity_under_rigid_rotation(void)
  * only the master's rotation relative to the basis counts. */
 static void test_drot_is_rotation_by_theta(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
+    fixture fx;
+    fixture_init(&fx, 3);
     rs_motion m;
-    rs_error err;
     double nin[3] = {0.3, -0.4, 1.0}, hint[3] = {1, 0, 0}, n[3], t1[3], t2[3];
     double zero[3] = {0, 0, 0}, P[3] = {0.5, 0.5, 0.5}, x[3];
     const double R = 0.01, theta = 0.3, dt = 1e-3, c = cos(theta), s = sin(theta);
@@ -280,36 +306,33 @@ static void test_drot_is_rotation_by_theta(void)
     rs_motion_init(&m);
     double xcp[3];
     axpy(xcp, -R, n, x);
-    ENSURE(rs_motion_set_rotation(&m, xcp, n, theta / dt, &err) == RS_OK);
-    block_init(&b, 1, &tr);
-    block_set(&b, 0, x, zero, zero, R);
-    clist_init(&l);
-    add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 3), x, P, n, t1, t2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
-    rs_track_commit(&tr, &o, NULL, NULL);
-    ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
-    ENSURE(rs_track_update(&tr, NULL, &m, dt, &b.p, &l.c, &o, &err) == RS_OK);
-    ENSURE(o.n == 1);
-    ENSURE(drot_is(&o, 0, c, -s, s, c, 1e-14));
+    ENSURE(rs_motion_set_rotation(&m, xcp, n, theta / dt, &fx.err) == RS_OK);
+    block_init(&fx.b, 1, &fx.tr);
+    block_set(&fx.b, 0, x, zero, zero, R);
+    ENSURE(plane_call(&fx, NULL, NULL, dt, RS_FEATURE(RS_FEAT_FACE, 3), x, P, n, t1, t2) ==
+           RS_OK);
+    rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
+    ENSURE(rs_motion_advance(&m, dt, &fx.err) == RS_OK);
+    ENSURE(track_call(&fx, NULL, &m, dt) == RS_OK);
+    ENSURE(fx.o.n == 1);
+    ENSURE(drot_is(&fx.o, 0, c, -s, s, c, 1e-14));
 
     /* (b) Fixed master, basis turned by +theta about n. */
-    block_init(&b, 1, &tr);
-    block_set(&b, 0, x, zero, zero, R);
-    clist_init(&l);
-    add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 3), x, P, n, t1, t2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
-    rs_track_commit(&tr, &o, NULL, NULL);
+    block_init(&fx.b, 1, &fx.tr);
+    block_set(&fx.b, 0, x, zero, zero, R);
+    ENSURE(plane_call(&fx, NULL, NULL, dt, RS_FEATURE(RS_FEAT_FACE, 3), x, P, n, t1, t2) ==
+           RS_OK);
+    rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     double u1[3], u2[3];
     for (int i = 0; i < 3; i++) {
         u1[i] = c * t1[i] + s * t2[i];
         u2[i] = -s * t1[i] + c * t2[i];
     }
-    clist_init(&l);
-    add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 3), x, P, n, u1, u2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
-    ENSURE(o.n == 1);
-    ENSURE(drot_is(&o, 0, c, s, -s, c, 1e-14));
-    rs_track_out_free(&o);
+    ENSURE(plane_call(&fx, NULL, NULL, dt, RS_FEATURE(RS_FEAT_FACE, 3), x, P, n, u1, u2) ==
+           RS_OK);
+    ENSURE(fx.o.n == 1);
+    ENSURE(drot_is(&fx.o, 0, c, s, -s, c, 1e-14));
+    fixture_free(&fx);
 }
 
 /* rs_track_load: the previous shear traction is a vector fixed in space on a fixed
@@ -317,23 +340,19 @@ static void test_drot_is_rotation_by_theta(void)
  * are T . u_i, T = s2 t1 + s3 t2. The pressure and statev come back unchanged. */
 static void test_previous_stress_shear_carried_by_drot(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
-    rs_error err;
+    fixture fx;
+    fixture_init(&fx, 3);
     double nin[3] = {-0.2, 0.7, 0.4}, hint[3] = {0, 0, 1}, n[3], t1[3], t2[3];
     double zero[3] = {0, 0, 0}, P[3] = {0.1, 0.2, 0.3}, x[3];
     const double R = 0.02, theta = -0.7, dt = 1e-3, c = cos(theta), s = sin(theta);
     make_frame(nin, hint, n, t1, t2);
     axpy(x, R - 1e-4, n, P);
-    block_init(&b, 1, &tr);
-    block_set(&b, 0, x, zero, zero, R);
-    clist_init(&l);
-    add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1, t2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+    block_init(&fx.b, 1, &fx.tr);
+    block_set(&fx.b, 0, x, zero, zero, R);
+    ENSURE(plane_call(&fx, NULL, NULL, dt, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1, t2) ==
+           RS_OK);
     const double stress[3] = {3.5, 2.0, -1.0}, statev[NS] = {4, 5};
-    rs_track_commit(&tr, &o, stress, statev);
+    rs_track_commit(&fx.tr, &fx.o, stress, statev);
 
     double u1[3], u2[3], T[3];
     for (int i = 0; i < 3; i++) {
@@ -341,37 +360,33 @@ static void test_previous_stress_shear_carried_by_drot(void)
         u2[i] = -s * t1[i] + c * t2[i];
         T[i] = stress[1] * t1[i] + stress[2] * t2[i];
     }
-    clist_init(&l);
-    add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, u1, u2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
-    ENSURE(o.n == 1);
+    ENSURE(plane_call(&fx, NULL, NULL, dt, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, u1, u2) ==
+           RS_OK);
+    ENSURE(fx.o.n == 1);
     double sl[3], sv[NS];
-    rs_track_load(&tr, &o, sl, sv);
+    rs_track_load(&fx.tr, &fx.o, sl, sv);
     ENSURE(sl[0] == stress[0]);
-    ENSURE_NEAR(sl[1], dot(T, u1), 1e-14);
-    ENSURE_NEAR(sl[2], dot(T, u2), 1e-14);
+    ENSURE_NEAR(sl[1], rs_dot3(T, u1), 1e-14);
+    ENSURE_NEAR(sl[2], rs_dot3(T, u2), 1e-14);
     ENSURE(sv[0] == statev[0] && sv[1] == statev[1]);
-    rs_track_commit(&tr, &o, sl, sv);
+    rs_track_commit(&fx.tr, &fx.o, sl, sv);
 
     /* Leaving: the stored stress comes back as it is (drot holds 1e30). */
-    clist_init(&l);
-    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
-    ENSURE(o.n == 1 && RS_DROT(o.drot, 0, 0, 0) == RS_MAXVAL);
+    clist_init(&fx.l);
+    ENSURE(track_call(&fx, NULL, NULL, dt) == RS_OK);
+    ENSURE(fx.o.n == 1 && RS_DROT(fx.o.drot, 0, 0, 0) == RS_MAXVAL);
     double sl2[3];
-    rs_track_load(&tr, &o, sl2, NULL);
+    rs_track_load(&fx.tr, &fx.o, sl2, NULL);
     ENSURE(sl2[0] == sl[0] && sl2[1] == sl[1] && sl2[2] == sl[2]);
-    rs_track_out_free(&o);
+    fixture_free(&fx);
 }
 
 /* Sliding along a fixed drum's generator: n and t1 = generator do not change, so
  * drot = I and the slip is the distance slid along t1. */
 static void test_drot_identity_sliding_along_generator(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
-    rs_error err;
+    fixture fx;
+    fixture_init(&fx, 3);
     double A[3] = {1, -1, 0.5}, g[3] = {1, 1, 1}, hint[3] = {1, 0, 0}, er[3], e0[3], e1[3];
     const double Rc = 0.4, R = 0.05, u = 0.8, dt = 1e-3;
     unit(g);
@@ -379,23 +394,23 @@ static void test_drot_identity_sliding_along_generator(void)
     double x0[3], v[3] = {u * g[0], u * g[1], u * g[2]}, zero[3] = {0, 0, 0};
     for (int i = 0; i < 3; i++)
         x0[i] = A[i] + (Rc - R + 1e-4) * er[i];
-    block_init(&b, 1, &tr);
+    block_init(&fx.b, 1, &fx.tr);
     const int N = 500;
     for (int step = 0; step < N; step++) {
         double x[3];
         axpy(x, u * step * dt, g, x0);
-        block_set(&b, 0, x, v, zero, R);
-        clist_init(&l);
-        add_drum(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc);
-        ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
-        ENSURE(o.n == 1);
-        ENSURE(drot_is(&o, 0, 1, 0, 0, 1, 1e-14));
-        rs_track_commit(&tr, &o, NULL, NULL);
+        block_set(&fx.b, 0, x, v, zero, R);
+        clist_init(&fx.l);
+        add_drum(&fx.l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc);
+        ENSURE(track_call(&fx, NULL, NULL, dt) == RS_OK);
+        ENSURE(fx.o.n == 1);
+        ENSURE(drot_is(&fx.o, 0, 1, 0, 0, 1, 1e-14));
+        rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     }
     /* N increments of u dt along t1: a new contact's first call carries its increment. */
-    ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), N * u * dt, 1e-12);
-    ENSURE_SMALL(RS_A2(o.rdisp, 3, 2, 0), 1e-14);
-    rs_track_out_free(&o);
+    ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 1, 0), N * u * dt, 1e-12);
+    ENSURE_SMALL(RS_A2(fx.o.rdisp, 3, 2, 0), 1e-14);
+    fixture_free(&fx);
 }
 
 /* Sliding around a fixed drum along the hoop: n turns about the generator by da per call
@@ -403,18 +418,15 @@ static void test_drot_identity_sliding_along_generator(void)
  * the old basis onto the new one, so drot = I; the slip grows along t2 only. */
 static void test_drot_identity_sliding_around_drum_hoop(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
-    rs_error err;
+    fixture fx;
+    fixture_init(&fx, 3);
     double A[3] = {0.2, 0.1, -0.4}, g[3] = {0.5, -1, 0.3}, hint[3] = {1, 0, 0};
     double e0[3], ea[3], eb[3], zero[3] = {0, 0, 0};
     const double Rc = 0.3, R = 0.02, pen = 2e-4, u = 1.2, dt = 1e-3;
     const double rho = Rc - R + pen, om = u / rho;
     unit(g);
     make_frame(g, hint, e0, ea, eb); /* ea, eb, g right-handed */
-    block_init(&b, 1, &tr);
+    block_init(&fx.b, 1, &fx.tr);
     const int N = 300;
     for (int step = 0; step < N; step++) {
         double a = om * step * dt, x[3], v[3];
@@ -424,18 +436,18 @@ static void test_drot_identity_sliding_around_drum_hoop(void)
             x[i] = A[i] + 0.1 * g[i] + rho * er;
             v[i] = u * et;
         }
-        block_set(&b, 0, x, v, zero, R);
-        clist_init(&l);
-        add_drum(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc);
-        ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
-        ENSURE(o.n == 1);
-        ENSURE(drot_is(&o, 0, 1, 0, 0, 1, 1e-14));
-        rs_track_commit(&tr, &o, NULL, NULL);
+        block_set(&fx.b, 0, x, v, zero, R);
+        clist_init(&fx.l);
+        add_drum(&fx.l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc);
+        ENSURE(track_call(&fx, NULL, NULL, dt) == RS_OK);
+        ENSURE(fx.o.n == 1);
+        ENSURE(drot_is(&fx.o, 0, 1, 0, 0, 1, 1e-14));
+        rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     }
     /* t2 = n x g = -e_r x g = e_theta, since (e_r, e_theta, g) is right-handed. */
-    ENSURE_SMALL(RS_A2(o.rdisp, 3, 1, 0), 1e-14);
-    ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), N * u * dt, 1e-12);
-    rs_track_out_free(&o);
+    ENSURE_SMALL(RS_A2(fx.o.rdisp, 3, 1, 0), 1e-14);
+    ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 2, 0), N * u * dt, 1e-12);
+    fixture_free(&fx);
 }
 
 /* A normal that flips (n_new = -Q n_old) has no unique minimal rotation; the tracker takes
@@ -443,27 +455,24 @@ static void test_drot_identity_sliding_around_drum_hoop(void)
  * (t1, -t2) that is drot = I, finite and deterministic. */
 static void test_drot_antiparallel_normal_is_half_turn_about_t1(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
-    rs_error err;
+    fixture fx;
+    fixture_init(&fx, 3);
     double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
     double nf[3] = {0, 0, -1}, t2f[3] = {0, -1, 0}, x[3] = {0, 0, 0.0099}, zero[3] = {0};
-    block_init(&b, 1, &tr);
-    block_set(&b, 0, x, zero, zero, 0.01);
-    clist_init(&l);
-    add_plane(&l, 0, 0, x, P, n, t1, t2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
-    rs_track_commit(&tr, &o, NULL, NULL);
+    block_init(&fx.b, 1, &fx.tr);
+    block_set(&fx.b, 0, x, zero, zero, 0.01);
+    clist_init(&fx.l);
+    add_plane(&fx.l, 0, 0, x, P, n, t1, t2);
+    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+    rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     double xf[3] = {0, 0, -0.0099};
-    block_set(&b, 0, xf, zero, zero, 0.01);
-    clist_init(&l);
-    add_plane(&l, 0, 0, xf, P, nf, t1, t2f);
-    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
-    ENSURE(o.n == 1);
-    ENSURE(drot_is(&o, 0, 1, 0, 0, 1, 0.0));
-    rs_track_out_free(&o);
+    block_set(&fx.b, 0, xf, zero, zero, 0.01);
+    clist_init(&fx.l);
+    add_plane(&fx.l, 0, 0, xf, P, nf, t1, t2f);
+    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+    ENSURE(fx.o.n == 1);
+    ENSURE(drot_is(&fx.o, 0, 1, 0, 0, 1, 0.0));
+    fixture_free(&fx);
 }
 
 /* Slip = sum of [(v + w x (x_cp - x)) - v_master]_t dt. Plane with basis (t1, t2, n);
@@ -475,12 +484,9 @@ static void test_drot_antiparallel_normal_is_half_turn_about_t1(void)
  * -0.2905). */
 static void test_slip_equals_integrated_tangential_velocity(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
+    fixture fx;
+    fixture_init(&fx, 3);
     rs_motion m;
-    rs_error err;
     double nin[3] = {-1, 0.5, 2}, hint[3] = {0, 1, 0}, n[3], t1[3], t2[3];
     const double R = 0.01, d = 1e-3, dt = 2e-4;
     make_frame(nin, hint, n, t1, t2);
@@ -493,40 +499,36 @@ static void test_slip_equals_integrated_tangential_velocity(void)
     axpy(x0, R - d, n, P0);
     rs_motion_init(&m);
     rs_motion_set_translation(&m, V);
-    block_init(&b, 1, &tr);
+    block_init(&fx.b, 1, &fx.tr);
     const int N = 1000;
     for (int step = 1; step <= N; step++) {
-        ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+        ENSURE(rs_motion_advance(&m, dt, &fx.err) == RS_OK);
         double x[3], P[3];
         axpy(x, step * dt, u, x0);
         axpy(P, step * dt, V, P0);
-        block_set(&b, 0, x, u, w, R);
-        clist_init(&l);
-        add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1, t2);
-        ENSURE(rs_track_update(&tr, NULL, &m, dt, &b.p, &l.c, &o, &err) == RS_OK);
-        ENSURE(o.n == 1);
-        ENSURE_NEAR(RS_A2(o.drdisp, 3, 1, 0), 0.181 * dt, 1e-13);
-        ENSURE_NEAR(RS_A2(o.drdisp, 3, 2, 0), -0.2905 * dt, 1e-13);
-        ENSURE_NEAR(RS_A2(o.vrel, 3, 0, 0), 0.0, 1e-12);
-        ENSURE_NEAR(RS_A2(o.vrel, 3, 1, 0), 0.181, 1e-12);
-        ENSURE_NEAR(RS_A2(o.vrel, 3, 2, 0), -0.2905, 1e-12);
-        rs_track_commit(&tr, &o, NULL, NULL);
+        block_set(&fx.b, 0, x, u, w, R);
+        ENSURE(plane_call(&fx, NULL, &m, dt, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1,
+                          t2) == RS_OK);
+        ENSURE(fx.o.n == 1);
+        ENSURE_NEAR(RS_A2(fx.o.drdisp, 3, 1, 0), 0.181 * dt, 1e-13);
+        ENSURE_NEAR(RS_A2(fx.o.drdisp, 3, 2, 0), -0.2905 * dt, 1e-13);
+        ENSURE_NEAR(RS_A2(fx.o.vrel, 3, 0, 0), 0.0, 1e-12);
+        ENSURE_NEAR(RS_A2(fx.o.vrel, 3, 1, 0), 0.181, 1e-12);
+        ENSURE_NEAR(RS_A2(fx.o.vrel, 3, 2, 0), -0.2905, 1e-12);
+        rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     }
-    ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), N * dt * 0.181, 1e-11);
-    ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), N * dt * -0.2905, 1e-11);
-    ENSURE_NEAR(RS_A2(o.rdisp, 3, 0, 0), d, 1e-12);
-    rs_track_out_free(&o);
+    ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 1, 0), N * dt * 0.181, 1e-11);
+    ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 2, 0), N * dt * -0.2905, 1e-11);
+    ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 0, 0), d, 1e-12);
+    fixture_free(&fx);
 }
 
 /* The slip vector S (a global vector, fixed master) is re-expressed in the new basis
  * before the increment is added: s_new = (S . t1', S . t2') + dt (v . t1', v . t2'). */
 static void test_slip_rotated_by_drot_before_increment(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
-    rs_error err;
+    fixture fx;
+    fixture_init(&fx, 3);
     double nin[3] = {0, 0, 1}, hint[3] = {1, 0.2, 0}, n[3], t1[3], t2[3],
            zero[3] = {0, 0, 0};
     double P[3] = {0, 0, 0}, x[3];
@@ -538,107 +540,100 @@ static void test_slip_rotated_by_drot_before_increment(void)
         v1[i] = 0.5 * t1[i] - 0.25 * t2[i];
         v2[i] = -0.3 * t1[i] + 0.7 * t2[i];
     }
-    block_init(&b, 1, &tr);
-    block_set(&b, 0, x, v1, zero, R);
-    clist_init(&l);
-    add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1, t2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
-    rs_track_commit(&tr, &o, NULL, NULL);
-    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
-    rs_track_commit(&tr, &o, NULL, NULL);
+    block_init(&fx.b, 1, &fx.tr);
+    block_set(&fx.b, 0, x, v1, zero, R);
+    ENSURE(plane_call(&fx, NULL, NULL, dt, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1, t2) ==
+           RS_OK);
+    rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
+    ENSURE(track_call(&fx, NULL, NULL, dt) == RS_OK);
+    rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     /* slip vector after two calls, each adding v1 dt */
     double S[3] = {2 * v1[0] * dt, 2 * v1[1] * dt, 2 * v1[2] * dt};
-    ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), dot(S, t1), 1e-15);
-    ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), dot(S, t2), 1e-15);
+    ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 1, 0), rs_dot3(S, t1), 1e-15);
+    ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 2, 0), rs_dot3(S, t2), 1e-15);
 
     double u1[3], u2[3];
     for (int i = 0; i < 3; i++) {
         u1[i] = c * t1[i] + s * t2[i];
         u2[i] = -s * t1[i] + c * t2[i];
     }
-    block_set(&b, 0, x, v2, zero, R);
-    clist_init(&l);
-    add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, u1, u2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
-    ENSURE(o.n == 1);
-    ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), dot(S, u1) + dt * dot(v2, u1), 1e-15);
-    ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), dot(S, u2) + dt * dot(v2, u2), 1e-15);
-    ENSURE_NEAR(RS_A2(o.drdisp, 3, 1, 0), dt * dot(v2, u1), 1e-15);
-    ENSURE_NEAR(RS_A2(o.drdisp, 3, 2, 0), dt * dot(v2, u2), 1e-15);
-    rs_track_out_free(&o);
+    block_set(&fx.b, 0, x, v2, zero, R);
+    ENSURE(plane_call(&fx, NULL, NULL, dt, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, u1, u2) ==
+           RS_OK);
+    ENSURE(fx.o.n == 1);
+    ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 1, 0), rs_dot3(S, u1) + dt * rs_dot3(v2, u1), 1e-15);
+    ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 2, 0), rs_dot3(S, u2) + dt * rs_dot3(v2, u2), 1e-15);
+    ENSURE_NEAR(RS_A2(fx.o.drdisp, 3, 1, 0), dt * rs_dot3(v2, u1), 1e-15);
+    ENSURE_NEAR(RS_A2(fx.o.drdisp, 3, 2, 0), dt * rs_dot3(v2, u2), 1e-15);
+    fixture_free(&fx);
 }
 
 /* A contact that disappears is emitted exactly once with 1e30 in every entry of rdisp,
  * drdisp and drot, then never again: after commit, and also when commit is skipped. */
 static void test_maxval_once_after_leaving(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
-    rs_error err;
+    fixture fx;
+    fixture_init(&fx, 3);
     double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
     double x[3] = {0, 0, 0.0095}, zero[3] = {0, 0, 0};
     const int f = RS_FEATURE(RS_FEAT_FACE, 2);
     for (int with_commit = 0; with_commit < 2; with_commit++) {
-        block_init(&b, 1, &tr);
-        block_set(&b, 0, x, zero, zero, 0.01);
-        clist_init(&l);
-        add_plane(&l, 0, f, x, P, n, t1, t2);
-        ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
-        rs_track_commit(&tr, &o, NULL, NULL);
-        l.c.n = 0;
-        ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
-        ENSURE(o.n == 1);
-        ENSURE(o.point[0] == 0 && o.feature[0] == f);
+        block_init(&fx.b, 1, &fx.tr);
+        block_set(&fx.b, 0, x, zero, zero, 0.01);
+        clist_init(&fx.l);
+        add_plane(&fx.l, 0, f, x, P, n, t1, t2);
+        ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+        rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
+        fx.l.c.n = 0;
+        ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+        ENSURE(fx.o.n == 1);
+        ENSURE(fx.o.point[0] == 0 && fx.o.feature[0] == f);
         for (int i = 0; i < 3; i++) {
-            ENSURE(RS_A2(o.rdisp, 3, i, 0) == 1.0e30);
-            ENSURE(RS_A2(o.drdisp, 3, i, 0) == 1.0e30);
+            ENSURE(RS_A2(fx.o.rdisp, 3, i, 0) == 1.0e30);
+            ENSURE(RS_A2(fx.o.drdisp, 3, i, 0) == 1.0e30);
         }
         for (int i = 0; i < 2; i++)
             for (int j = 0; j < 2; j++)
-                ENSURE(RS_DROT(o.drot, i, j, 0) == 1.0e30);
-        ENSURE(*o.dir[0] == RS_DIR_LEAVING(f) && o.dir[0] == &b.dir[0][0]);
+                ENSURE(RS_DROT(fx.o.drot, i, j, 0) == 1.0e30);
+        ENSURE(*fx.o.dir[0] == RS_DIR_LEAVING(f) && fx.o.dir[0] == &fx.b.dir[0][0]);
         if (with_commit) {
-            rs_track_commit(&tr, &o, NULL, NULL);
-            ENSURE(b.dir[0][0] == RS_DIR_EMPTY);
+            rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
+            ENSURE(fx.b.dir[0][0] == RS_DIR_EMPTY);
         }
-        ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
-        ENSURE(o.n == 0);
+        ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+        ENSURE(fx.o.n == 0);
         for (int j = 0; j < CAP; j++)
-            ENSURE(b.dir[0][j] == RS_DIR_EMPTY);
+            ENSURE(fx.b.dir[0][j] == RS_DIR_EMPTY);
     }
-    rs_track_out_free(&o);
+    fixture_free(&fx);
 }
 
 /* A contact whose gap exceeds the tracking thickness counts as gone. */
 static void test_contact_beyond_tracking_leaves(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
-    rs_error err;
+    fixture fx;
+    fixture_init(&fx, 3);
     double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
     double x[3] = {0, 0, 0.0095}, zero[3] = {0, 0, 0};
-    block_init(&b, 1, &tr);
-    block_set(&b, 0, x, zero, zero, 0.01);
-    clist_init(&l);
-    add_plane(&l, 0, 0, x, P, n, t1, t2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
-    rs_track_commit(&tr, &o, NULL, NULL);
+    block_init(&fx.b, 1, &fx.tr);
+    block_set(&fx.b, 0, x, zero, zero, 0.01);
+    clist_init(&fx.l);
+    add_plane(&fx.l, 0, 0, x, P, n, t1, t2);
+    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+    rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     x[2] = 0.01 + 0.9e-3; /* gap 0.9e-3 <= tracking 1e-3: kept */
-    clist_init(&l);
-    add_plane(&l, 0, 0, x, P, n, t1, t2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
-    ENSURE(o.n == 1 && RS_A2(o.rdisp, 3, 0, 0) < 0 && RS_A2(o.rdisp, 3, 0, 0) > -1e-3);
-    rs_track_commit(&tr, &o, NULL, NULL);
+    clist_init(&fx.l);
+    add_plane(&fx.l, 0, 0, x, P, n, t1, t2);
+    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+    ENSURE(fx.o.n == 1 && RS_A2(fx.o.rdisp, 3, 0, 0) < 0 &&
+           RS_A2(fx.o.rdisp, 3, 0, 0) > -1e-3);
+    rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     x[2] = 0.01 + 1.1e-3; /* gap 1.1e-3 > tracking */
-    clist_init(&l);
-    add_plane(&l, 0, 0, x, P, n, t1, t2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
-    ENSURE(o.n == 1 && RS_A2(o.rdisp, 3, 0, 0) == RS_MAXVAL);
-    rs_track_out_free(&o);
+    clist_init(&fx.l);
+    add_plane(&fx.l, 0, 0, x, P, n, t1, t2);
+    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+    ENSURE(fx.o.n == 1 && RS_A2(fx.o.rdisp, 3, 0, 0) == RS_MAXVAL);
+    fixture_free(&fx);
 }
 
 /* Three particles, one plane contact each; then the middle one's gap exceeds the
@@ -648,43 +643,40 @@ static void test_contact_beyond_tracking_leaves(void)
  * penetration R - dist and the frame of their contact. */
 static void test_leaving_slot_between_held_contacts(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
-    rs_error err;
+    fixture fx;
+    fixture_init(&fx, 3);
     double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
     double zero[3] = {0, 0, 0};
     const double R = 0.01, z[3] = {0.0095, 0.0097, 0.0099};
-    block_init(&b, 3, &tr);
+    block_init(&fx.b, 3, &fx.tr);
     for (int step = 0; step < 3; step++) {
-        clist_init(&l);
+        clist_init(&fx.l);
         for (int i = 0; i < 3; i++) {
             /* step 2: particle 1 at gap 1.1e-3 > tracking 1e-3 */
             double x[3] = {0.1 * i, 0, step == 2 && i == 1 ? R + 1.1e-3 : z[i]};
-            block_set(&b, i, x, zero, zero, R);
-            add_plane(&l, i, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1, t2);
+            block_set(&fx.b, i, x, zero, zero, R);
+            add_plane(&fx.l, i, RS_FEATURE(RS_FEAT_FACE, 0), x, P, n, t1, t2);
         }
-        ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
-        ENSURE(o.n == 3);
+        ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+        ENSURE(fx.o.n == 3);
         for (int e = 0; e < 3; e++) {
-            ENSURE(o.point[e] == e);
+            ENSURE(fx.o.point[e] == e);
             if (step == 2 && e == 1) {
-                ENSURE(*o.dir[e] == RS_DIR_LEAVING(RS_FEATURE(RS_FEAT_FACE, 0)));
+                ENSURE(*fx.o.dir[e] == RS_DIR_LEAVING(RS_FEATURE(RS_FEAT_FACE, 0)));
                 for (int a = 0; a < 3; a++)
-                    ENSURE(RS_A2(o.rdisp, 3, a, e) == RS_MAXVAL);
+                    ENSURE(RS_A2(fx.o.rdisp, 3, a, e) == RS_MAXVAL);
                 continue;
             }
-            ENSURE(fabs(RS_A2(o.rdisp, 3, 0, e) - (R - z[e])) <= 1e-15);
+            ENSURE(fabs(RS_A2(fx.o.rdisp, 3, 0, e) - (R - z[e])) <= 1e-15);
             for (int a = 0; a < 3; a++) {
-                ENSURE(RS_A3(o.alocaldir, 3, a, 0, e) == n[a]);
-                ENSURE(RS_A3(o.alocaldir, 3, a, 1, e) == t1[a]);
+                ENSURE(RS_A3(fx.o.alocaldir, 3, a, 0, e) == n[a]);
+                ENSURE(RS_A3(fx.o.alocaldir, 3, a, 1, e) == t1[a]);
             }
         }
-        ENSURE(o.nleave == (step == 2));
-        rs_track_commit(&tr, &o, NULL, NULL);
+        ENSURE(fx.o.nleave == (step == 2));
+        rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     }
-    rs_track_out_free(&o);
+    fixture_free(&fx);
 }
 
 /* Fixture surface kind: features FACE 0 and FACE 1 meet tangentially; FACE 2 does not. */
@@ -702,11 +694,8 @@ static const rs_surface_ops fixture_ops = {
  * one the old contact leaves (1e30) and the new one starts from zero. */
 static void test_history_handover_across_smooth_junction(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
-    rs_error err;
+    fixture fx;
+    fixture_init(&fx, 3);
     rs_surface surf;
     memset(&surf, 0, sizeof surf);
     surf.kind = RS_SURF_FACETED;
@@ -719,88 +708,85 @@ static void test_history_handover_across_smooth_junction(void)
     const double stress[3] = {5, 6, 7}, statev[NS] = {8, 9};
 
     for (int sharp = 0; sharp < 2; sharp++) {
-        block_init(&b, 1, &tr);
-        block_set(&b, 0, x, v, zero, 0.01);
+        block_init(&fx.b, 1, &fx.tr);
+        block_set(&fx.b, 0, x, v, zero, 0.01);
         for (int call = 0; call < 3; call++) {
-            clist_init(&l);
-            add_plane(&l, 0, fa, x, P, n, t1, t2);
-            ENSURE(rs_track_update(&tr, &surf, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
-            ENSURE(o.n == 1);
-            rs_track_commit(&tr, &o, stress, statev);
+            clist_init(&fx.l);
+            add_plane(&fx.l, 0, fa, x, P, n, t1, t2);
+            ENSURE(track_call(&fx, &surf, NULL, dt) == RS_OK);
+            ENSURE(fx.o.n == 1);
+            rs_track_commit(&fx.tr, &fx.o, stress, statev);
         }
-        double *slot = o.slot[0];
-        clist_init(&l);
-        add_plane(&l, 0, sharp ? fc : fb, x, P, n, t1, t2);
-        ENSURE(rs_track_update(&tr, &surf, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
+        double *slot = fx.o.slot[0];
+        clist_init(&fx.l);
+        add_plane(&fx.l, 0, sharp ? fc : fb, x, P, n, t1, t2);
+        ENSURE(track_call(&fx, &surf, NULL, dt) == RS_OK);
         if (!sharp) {
-            ENSURE(o.n == 1);
-            ENSURE(o.slot[0] == slot && o.feature[0] == fb);
-            ENSURE(*o.dir[0] == fb);
-            ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), 4 * 0.2 * dt, 1e-15);
-            ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), 4 * 0.1 * dt, 1e-15);
+            ENSURE(fx.o.n == 1);
+            ENSURE(fx.o.slot[0] == slot && fx.o.feature[0] == fb);
+            ENSURE(*fx.o.dir[0] == fb);
+            ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 1, 0), 4 * 0.2 * dt, 1e-15);
+            ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 2, 0), 4 * 0.1 * dt, 1e-15);
             ENSURE(slot[RS_H_STRESS] == 5 && slot[RS_H_STRESS + 2] == 7);
             ENSURE(slot[RS_H_STATEV] == 8 && slot[RS_H_STATEV + 1] == 9);
         } else {
-            ENSURE(o.n == 2);
-            ENSURE(o.feature[0] == fc && o.slot[0] != slot);
+            ENSURE(fx.o.n == 2);
+            ENSURE(fx.o.feature[0] == fc && fx.o.slot[0] != slot);
             /* fresh history: the slip is this call's increment only */
-            ENSURE_NEAR(RS_A2(o.rdisp, 3, 1, 0), 0.2 * dt, 1e-15);
-            ENSURE_NEAR(RS_A2(o.rdisp, 3, 2, 0), 0.1 * dt, 1e-15);
-            ENSURE(o.slot[0][RS_H_STRESS] == 0 && o.slot[0][RS_H_STATEV + 1] == 0);
-            ENSURE(o.feature[1] == fa && o.slot[1] == slot);
-            ENSURE(RS_A2(o.rdisp, 3, 0, 1) == RS_MAXVAL);
+            ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 1, 0), 0.2 * dt, 1e-15);
+            ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 2, 0), 0.1 * dt, 1e-15);
+            ENSURE(fx.o.slot[0][RS_H_STRESS] == 0 && fx.o.slot[0][RS_H_STATEV + 1] == 0);
+            ENSURE(fx.o.feature[1] == fa && fx.o.slot[1] == slot);
+            ENSURE(RS_A2(fx.o.rdisp, 3, 0, 1) == RS_MAXVAL);
         }
     }
-    rs_track_out_free(&o);
+    fixture_free(&fx);
 }
 
 /* More contacts than slots: RS_ERR_CAPACITY naming the particle's id and the capacity,
  * and history untouched. A leaving contact still holds its slot on that call. */
 static void test_capacity_error_names_particle(void)
 {
-    rs_tracker tr = tracker(3);
-    tr.capacity = 2;
-    block b;
-    clist l;
-    rs_track_out o = {0};
-    rs_error err;
+    fixture fx;
+    fixture_init(&fx, 3);
+    fx.tr.capacity = 2;
     double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
     double x[3] = {0, 0, 0.0099}, zero[3] = {0, 0, 0};
-    block_init(&b, 2, &tr);
-    b.id[1] = 4711;
-    block_set(&b, 0, x, zero, zero, 0.01);
-    block_set(&b, 1, x, zero, zero, 0.01);
-    clist_init(&l);
-    add_plane(&l, 0, 0, x, P, n, t1, t2);
-    add_plane(&l, 1, 0, x, P, n, t1, t2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
-    rs_track_commit(&tr, &o, NULL, NULL);
+    block_init(&fx.b, 2, &fx.tr);
+    fx.b.id[1] = 4711;
+    block_set(&fx.b, 0, x, zero, zero, 0.01);
+    block_set(&fx.b, 1, x, zero, zero, 0.01);
+    clist_init(&fx.l);
+    add_plane(&fx.l, 0, 0, x, P, n, t1, t2);
+    add_plane(&fx.l, 1, 0, x, P, n, t1, t2);
+    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+    rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
 
     double before[2][CAP * HS], dbefore[2][CAP];
-    memcpy(before, b.hist, sizeof before);
-    memcpy(dbefore, b.dir, sizeof dbefore);
+    memcpy(before, fx.b.hist, sizeof before);
+    memcpy(dbefore, fx.b.dir, sizeof dbefore);
     /* Particle 4711: feature 0 leaves, features 4 and 8 arrive: 3 slots needed, 2 held. */
-    clist_init(&l);
-    add_plane(&l, 0, 0, x, P, n, t1, t2);
-    add_plane(&l, 1, 4, x, P, n, t1, t2);
-    add_plane(&l, 1, 8, x, P, n, t1, t2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_ERR_CAPACITY);
-    ENSURE(err.code == RS_ERR_CAPACITY);
-    ENSURE(strstr(err.msg, "4711") != NULL);
-    ENSURE(strstr(err.msg, "capacity 2") != NULL);
-    ENSURE(memcmp(before, b.hist, sizeof before) == 0);
-    ENSURE(memcmp(dbefore, b.dir, sizeof dbefore) == 0);
+    clist_init(&fx.l);
+    add_plane(&fx.l, 0, 0, x, P, n, t1, t2);
+    add_plane(&fx.l, 1, 4, x, P, n, t1, t2);
+    add_plane(&fx.l, 1, 8, x, P, n, t1, t2);
+    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_ERR_CAPACITY);
+    ENSURE(fx.err.code == RS_ERR_CAPACITY);
+    ENSURE(strstr(fx.err.msg, "4711") != NULL);
+    ENSURE(strstr(fx.err.msg, "capacity 2") != NULL);
+    ENSURE(memcmp(before, fx.b.hist, sizeof before) == 0);
+    ENSURE(memcmp(dbefore, fx.b.dir, sizeof dbefore) == 0);
 
     /* Three new contacts at once for a fresh particle. */
-    block_init(&b, 1, &tr);
-    b.id[0] = 99;
-    block_set(&b, 0, x, zero, zero, 0.01);
-    clist_init(&l);
+    block_init(&fx.b, 1, &fx.tr);
+    fx.b.id[0] = 99;
+    block_set(&fx.b, 0, x, zero, zero, 0.01);
+    clist_init(&fx.l);
     for (int f = 0; f < 3; f++)
-        add_plane(&l, 0, RS_FEATURE(RS_FEAT_FACE, f), x, P, n, t1, t2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_ERR_CAPACITY);
-    ENSURE(strstr(err.msg, "99") != NULL);
-    rs_track_out_free(&o);
+        add_plane(&fx.l, 0, RS_FEATURE(RS_FEAT_FACE, f), x, P, n, t1, t2);
+    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_ERR_CAPACITY);
+    ENSURE(strstr(fx.err.msg, "99") != NULL);
+    fixture_free(&fx);
 }
 
 /* nDir = 2 (SEGMENTS): a disc rolling-free sliding inside a fixed circular wall in the
@@ -808,49 +794,43 @@ static void test_capacity_error_names_particle(void)
  * so a counter-clockwise speed u slides +u dt per call; alocaldir is 2x2 (n, t1). */
 static void test_ndir2_drot_identity(void)
 {
-    rs_tracker tr = tracker(2);
-    block b;
-    clist l;
-    rs_track_out o = {0};
-    rs_error err;
+    fixture fx;
+    fixture_init(&fx, 2);
     const double Rw = 1.0, R = 0.05, pen = 1e-4, u = 0.6, dt = 1e-3;
     const double rho = Rw - R + pen, om = u / rho, mz[3] = {0, 0, -1}, zero[3] = {0, 0, 0};
-    block_init(&b, 1, &tr);
+    block_init(&fx.b, 1, &fx.tr);
     const int N = 800;
     for (int step = 0; step < N; step++) {
         double a = om * step * dt, er[3] = {cos(a), sin(a), 0};
         double x[3] = {rho * er[0], rho * er[1], 0}, v[3] = {-u * er[1], u * er[0], 0};
         double n[3] = {-er[0], -er[1], 0}, t1[3], xm[3] = {Rw * er[0], Rw * er[1], 0};
-        cross(mz, n, t1);
-        block_set(&b, 0, x, v, zero, R);
-        clist_init(&l);
-        clist_add(&l, 0, RS_FEATURE(RS_FEAT_FACE, 0), xm, n, t1, mz, Rw - rho);
-        ENSURE(rs_track_update(&tr, NULL, NULL, dt, &b.p, &l.c, &o, &err) == RS_OK);
-        ENSURE(o.n == 1 && o.ndir == 2);
-        ENSURE(drot_is(&o, 0, 1, 0, 0, 1, 0.0));
-        ENSURE_NEAR(RS_A3(o.alocaldir, 2, 0, 0, 0), n[0], 1e-15);
-        ENSURE_NEAR(RS_A3(o.alocaldir, 2, 1, 0, 0), n[1], 1e-15);
-        ENSURE_NEAR(RS_A3(o.alocaldir, 2, 0, 1, 0), -er[1], 1e-15);
-        ENSURE_NEAR(RS_A3(o.alocaldir, 2, 1, 1, 0), er[0], 1e-15);
-        ENSURE_NEAR(RS_A2(o.rdisp, 2, 0, 0), pen, 1e-12);
-        ENSURE_NEAR(RS_A2(o.rdisp, 2, 1, 0), (step + 1) * u * dt, 1e-12);
-        ENSURE_NEAR(RS_A2(o.coordmst, 2, 0, 0), xm[0], 1e-15);
-        ENSURE_NEAR(RS_A2(o.coordmst, 2, 1, 0), xm[1], 1e-15);
-        rs_track_commit(&tr, &o, NULL, NULL);
+        rs_cross3(mz, n, t1);
+        block_set(&fx.b, 0, x, v, zero, R);
+        clist_init(&fx.l);
+        clist_add(&fx.l, 0, RS_FEATURE(RS_FEAT_FACE, 0), xm, n, t1, mz, Rw - rho);
+        ENSURE(track_call(&fx, NULL, NULL, dt) == RS_OK);
+        ENSURE(fx.o.n == 1 && fx.o.ndir == 2);
+        ENSURE(drot_is(&fx.o, 0, 1, 0, 0, 1, 0.0));
+        ENSURE_NEAR(RS_A3(fx.o.alocaldir, 2, 0, 0, 0), n[0], 1e-15);
+        ENSURE_NEAR(RS_A3(fx.o.alocaldir, 2, 1, 0, 0), n[1], 1e-15);
+        ENSURE_NEAR(RS_A3(fx.o.alocaldir, 2, 0, 1, 0), -er[1], 1e-15);
+        ENSURE_NEAR(RS_A3(fx.o.alocaldir, 2, 1, 1, 0), er[0], 1e-15);
+        ENSURE_NEAR(RS_A2(fx.o.rdisp, 2, 0, 0), pen, 1e-12);
+        ENSURE_NEAR(RS_A2(fx.o.rdisp, 2, 1, 0), (step + 1) * u * dt, 1e-12);
+        ENSURE_NEAR(RS_A2(fx.o.coordmst, 2, 0, 0), xm[0], 1e-15);
+        ENSURE_NEAR(RS_A2(fx.o.coordmst, 2, 1, 0), xm[1], 1e-15);
+        rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     }
-    rs_track_out_free(&o);
+    fixture_free(&fx);
 }
 
 /* drdisp(1) is the change of rdisp(1) since the last call; on the first call it is
  * -v_rel.n dt. Particle at -0.2 n, plane moving +0.3 n: penetration grows 0.5 per time. */
 static void test_drdisp1_is_change_of_penetration(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
+    fixture fx;
+    fixture_init(&fx, 3);
     rs_motion m;
-    rs_error err;
     double nin[3] = {1, 1, 1}, hint[3] = {0, 0, 1}, n[3], t1[3], t2[3], zero[3] = {0, 0, 0};
     const double R = 0.02, d0 = 1e-4, dt = 1e-4;
     make_frame(nin, hint, n, t1, t2);
@@ -862,23 +842,21 @@ static void test_drdisp1_is_change_of_penetration(void)
     }
     rs_motion_init(&m);
     rs_motion_set_translation(&m, V);
-    block_init(&b, 1, &tr);
+    block_init(&fx.b, 1, &fx.tr);
     for (int step = 1; step <= 50; step++) {
-        ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+        ENSURE(rs_motion_advance(&m, dt, &fx.err) == RS_OK);
         double x[3], P[3];
         axpy(x, step * dt, u, x0);
         axpy(P, step * dt, V, P0);
-        block_set(&b, 0, x, u, zero, R);
-        clist_init(&l);
-        add_plane(&l, 0, 0, x, P, n, t1, t2);
-        ENSURE(rs_track_update(&tr, NULL, &m, dt, &b.p, &l.c, &o, &err) == RS_OK);
-        ENSURE(o.n == 1);
-        ENSURE_NEAR(RS_A2(o.rdisp, 3, 0, 0), d0 + 0.5 * step * dt, 1e-14);
-        ENSURE_NEAR(RS_A2(o.drdisp, 3, 0, 0), 0.5 * dt, 1e-14);
-        ENSURE_NEAR(RS_A2(o.vrel, 3, 0, 0), -0.5, 1e-14);
-        rs_track_commit(&tr, &o, NULL, NULL);
+        block_set(&fx.b, 0, x, u, zero, R);
+        ENSURE(plane_call(&fx, NULL, &m, dt, 0, x, P, n, t1, t2) == RS_OK);
+        ENSURE(fx.o.n == 1);
+        ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 0, 0), d0 + 0.5 * step * dt, 1e-14);
+        ENSURE_NEAR(RS_A2(fx.o.drdisp, 3, 0, 0), 0.5 * dt, 1e-14);
+        ENSURE_NEAR(RS_A2(fx.o.vrel, 3, 0, 0), -0.5, 1e-14);
+        rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     }
-    rs_track_out_free(&o);
+    fixture_free(&fx);
 }
 
 /* alocaldir columns are n, t1, t2 (component i of direction j at RS_A3(a, 3, i, j, k));
@@ -886,48 +864,45 @@ static void test_drdisp1_is_change_of_penetration(void)
  * copied. Two particles, the first with two contacts (a concave corner). */
 static void test_alocaldir_columns_and_contact_point(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
-    rs_error err;
+    fixture fx;
+    fixture_init(&fx, 3);
     double na[3] = {0, 0, 1}, nb[3] = {1, 0, 0}, hint[3] = {0, 1, 0}, zero[3] = {0, 0, 0};
     double fr[2][3][3], P[3] = {0, 0, 0};
     make_frame(na, hint, fr[0][0], fr[0][1], fr[0][2]);
     make_frame(nb, hint, fr[1][0], fr[1][1], fr[1][2]);
     const double R = 0.01, x0[3] = {0.0098, 0.3, 0.0097}, x1[3] = {0.5, 0.5, 0.0095};
-    block_init(&b, 2, &tr);
-    block_set(&b, 0, x0, zero, zero, R);
-    block_set(&b, 1, x1, zero, zero, R);
-    clist_init(&l);
-    add_plane(&l, 0, 0, x0, P, fr[0][0], fr[0][1], fr[0][2]);
-    add_plane(&l, 0, 4, x0, P, fr[1][0], fr[1][1], fr[1][2]);
-    add_plane(&l, 1, 0, x1, P, fr[0][0], fr[0][1], fr[0][2]);
-    l.curv[0][1] = -2.0;
-    l.curv[1][1] = 0.5;
-    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_OK);
-    ENSURE(o.n == 3);
+    block_init(&fx.b, 2, &fx.tr);
+    block_set(&fx.b, 0, x0, zero, zero, R);
+    block_set(&fx.b, 1, x1, zero, zero, R);
+    clist_init(&fx.l);
+    add_plane(&fx.l, 0, 0, x0, P, fr[0][0], fr[0][1], fr[0][2]);
+    add_plane(&fx.l, 0, 4, x0, P, fr[1][0], fr[1][1], fr[1][2]);
+    add_plane(&fx.l, 1, 0, x1, P, fr[0][0], fr[0][1], fr[0][2]);
+    fx.l.curv[0][1] = -2.0;
+    fx.l.curv[1][1] = 0.5;
+    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+    ENSURE(fx.o.n == 3);
     const int fk[3] = {0, 1, 0};
     const double *xs[3] = {x0, x0, x1};
     const double pen[3] = {R - x0[2], R - x0[0], R - x1[2]};
     for (int e = 0; e < 3; e++) {
-        ENSURE_NEAR(RS_A2(o.rdisp, 3, 0, e), pen[e], 1e-15);
+        ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 0, e), pen[e], 1e-15);
         for (int j = 0; j < 3; j++)
             for (int i = 0; i < 3; i++)
-                ENSURE(RS_A3(o.alocaldir, 3, i, j, e) == fr[fk[e]][j][i]);
+                ENSURE(RS_A3(fx.o.alocaldir, 3, i, j, e) == fr[fk[e]][j][i]);
         for (int i = 0; i < 3; i++) {
             double xcp = xs[e][i] - (R - 0.5 * pen[e]) * fr[fk[e]][0][i];
             double xm = xs[e][i] - (R - pen[e]) * fr[fk[e]][0][i];
-            ENSURE_NEAR(RS_A2(o.coordslv, 3, i, e), xcp, 1e-15);
-            ENSURE_NEAR(RS_A2(o.coordmst, 3, i, e), xm, 1e-15);
+            ENSURE_NEAR(RS_A2(fx.o.coordslv, 3, i, e), xcp, 1e-15);
+            ENSURE_NEAR(RS_A2(fx.o.coordmst, 3, i, e), xm, 1e-15);
         }
     }
-    ENSURE(o.point[0] == 0 && o.point[1] == 0 && o.point[2] == 1);
-    ENSURE(RS_A2(o.curv, 2, 0, 1) == -2.0 && RS_A2(o.curv, 2, 1, 1) == 0.5);
-    ENSURE(o.slot[0] != o.slot[1]);
+    ENSURE(fx.o.point[0] == 0 && fx.o.point[1] == 0 && fx.o.point[2] == 1);
+    ENSURE(RS_A2(fx.o.curv, 2, 0, 1) == -2.0 && RS_A2(fx.o.curv, 2, 1, 1) == 0.5);
+    ENSURE(fx.o.slot[0] != fx.o.slot[1]);
     /* A new contact's history starts at zero stress and statev. */
-    ENSURE(o.slot[2][RS_H_STRESS] == 0 && o.slot[2][RS_H_STATEV] == 0);
-    rs_track_out_free(&o);
+    ENSURE(fx.o.slot[2][RS_H_STRESS] == 0 && fx.o.slot[2][RS_H_STATEV] == 0);
+    fixture_free(&fx);
 }
 
 /* The slots may sit anywhere the caller likes (rs_particles.slot_stride): slot j of every
@@ -1043,23 +1018,20 @@ static void test_slot_major_layout_matches_contiguous(void)
 /* Contacts must come in block order with valid point indices: a clear error otherwise. */
 static void test_rejects_unordered_contacts(void)
 {
-    rs_tracker tr = tracker(3);
-    block b;
-    clist l;
-    rs_track_out o = {0};
-    rs_error err;
+    fixture fx;
+    fixture_init(&fx, 3);
     double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
     double x[3] = {0, 0, 0.0099};
-    block_init(&b, 2, &tr);
-    clist_init(&l);
-    add_plane(&l, 1, 0, x, P, n, t1, t2);
-    add_plane(&l, 0, 0, x, P, n, t1, t2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_ERR_ARG);
-    ENSURE(strstr(err.msg, "block order") != NULL);
-    clist_init(&l);
-    add_plane(&l, 2, 0, x, P, n, t1, t2);
-    ENSURE(rs_track_update(&tr, NULL, NULL, 1e-3, &b.p, &l.c, &o, &err) == RS_ERR_ARG);
-    rs_track_out_free(&o);
+    block_init(&fx.b, 2, &fx.tr);
+    clist_init(&fx.l);
+    add_plane(&fx.l, 1, 0, x, P, n, t1, t2);
+    add_plane(&fx.l, 0, 0, x, P, n, t1, t2);
+    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_ERR_ARG);
+    ENSURE(strstr(fx.err.msg, "block order") != NULL);
+    clist_init(&fx.l);
+    add_plane(&fx.l, 2, 0, x, P, n, t1, t2);
+    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_ERR_ARG);
+    fixture_free(&fx);
 }
 
 /* A block answers as its particles one at a time. rs_track_update copies a run of
@@ -1118,7 +1090,8 @@ static void block_vs_single(int nd)
     for (int step = 0; step < 7; step++) {
         ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
         for (int i = 0; i < NB; i++) {
-            const double th = 2.0 * M_PI * i / NB + 2.0 * dt * step + 1e-3 * step * (i % 3);
+            const double th =
+                2.0 * RS_PI * i / NB + 2.0 * dt * step + 1e-3 * step * (i % 3);
             const double rr = 0.1 - rad + 1e-4 * (1 + (i + step) % 4);
             a.x[i] = rr * cos(th);
             a.y[i] = rr * sin(th);

@@ -77,7 +77,7 @@ static void test_drot_identity_rigid_motion_through_revolution_query(void)
         rs_pose_to_global(&m.pose, X0, x);
         for (int i = 0; i < 3; i++)
             d[i] = x[i] - (C[i] + V[i] * t);
-        cross(W, d, wd);
+        rs_cross3(W, d, wd);
         o.x = x[0];
         o.y = x[1];
         o.z = x[2];
