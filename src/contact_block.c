@@ -16,17 +16,38 @@ double rs_effective_radius(double R, double k1, double k2)
     return 1.0 / sqrt(c1 * c2);
 }
 
+enum { NDOUBLE = 19 };
+
+/* The double arrays of cb, each with its length for n contacts. */
+static void double_arrays(rs_contact_block *cb, size_t n, double **p[NDOUBLE],
+                          size_t len[NDOUBLE])
+{
+    const size_t ns = cb->nstatev > 0 ? (size_t)cb->nstatev : 1,
+                 np = cb->npred > 0 ? (size_t)cb->npred : 1,
+                 nd = cb->ndir > 0 ? (size_t)cb->ndir : 3;
+    double **const a[NDOUBLE] = {&cb->stiff,    &cb->cond,     &cb->area,   &cb->radius,
+                                 &cb->mass,     &cb->reff,     &cb->temp,   &cb->dtemp,
+                                 &cb->pred,     &cb->dpred,    &cb->stress, &cb->statev,
+                                 &cb->flux_slv, &cb->flux_mst, &cb->sed,    &cb->sfd,
+                                 &cb->scd,      &cb->spd,      &cb->svd};
+    for (int i = 0; i < NDOUBLE; i++) {
+        p[i] = a[i];
+        len[i] = n;
+    }
+    len[8] = len[9] = n * np; /* pred, dpred */
+    len[10] = n * nd;         /* stress */
+    len[11] = n * ns;         /* statev */
+}
+
 void rs_cblock_free(rs_contact_block *cb)
 {
-    int **iv[] = {&cb->uid, &cb->type};
-    double **dv[] = {&cb->stiff,  &cb->cond,   &cb->area,     &cb->radius,   &cb->mass,
-                     &cb->reff,   &cb->temp,   &cb->dtemp,    &cb->pred,     &cb->dpred,
-                     &cb->stress, &cb->statev, &cb->flux_slv, &cb->flux_mst, &cb->sed,
-                     &cb->sfd,    &cb->scd,    &cb->spd,      &cb->svd};
-    for (size_t a = 0; a < sizeof iv / sizeof iv[0]; a++)
-        free(*iv[a]);
-    for (size_t a = 0; a < sizeof dv / sizeof dv[0]; a++)
-        free(*dv[a]);
+    double **p[NDOUBLE];
+    size_t len[NDOUBLE];
+    double_arrays(cb, 0, p, len);
+    for (int i = 0; i < NDOUBLE; i++)
+        free(*p[i]);
+    free(cb->uid);
+    free(cb->type);
     memset(cb, 0, sizeof *cb);
 }
 
@@ -45,33 +66,13 @@ int rs_cblock_reserve(rs_contact_block *cb, int cap, rs_error *err)
     cb->nstatev = keep.nstatev;
     cb->npred = keep.npred;
 
-    const size_t n = (size_t)cap, ns = keep.nstatev ? (size_t)keep.nstatev : 1,
-                 np = keep.npred ? (size_t)keep.npred : 1;
-    struct {
-        double **p;
-        size_t count;
-    } dv[] = {{&cb->stiff, n},
-              {&cb->cond, n},
-              {&cb->area, n},
-              {&cb->radius, n},
-              {&cb->mass, n},
-              {&cb->reff, n},
-              {&cb->temp, n},
-              {&cb->dtemp, n},
-              {&cb->pred, n * np},
-              {&cb->dpred, n * np},
-              {&cb->stress, n * (size_t)keep.ndir},
-              {&cb->statev, n * ns},
-              {&cb->flux_slv, n},
-              {&cb->flux_mst, n},
-              {&cb->sed, n},
-              {&cb->sfd, n},
-              {&cb->scd, n},
-              {&cb->spd, n},
-              {&cb->svd, n}};
+    const size_t n = (size_t)cap;
+    double **p[NDOUBLE];
+    size_t len[NDOUBLE];
+    double_arrays(cb, n, p, len);
     int ok = (cb->uid = calloc(n, sizeof(int))) && (cb->type = calloc(n, sizeof(int)));
-    for (size_t a = 0; ok && a < sizeof dv / sizeof dv[0]; a++)
-        ok = (*dv[a].p = calloc(dv[a].count, sizeof(double))) != NULL;
+    for (int i = 0; ok && i < NDOUBLE; i++)
+        ok = (*p[i] = calloc(len[i], sizeof(double))) != NULL;
     if (!ok) {
         rs_cblock_free(cb);
         return rs_error_set(err, RS_ERR_NOMEM,

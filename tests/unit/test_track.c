@@ -192,6 +192,16 @@ static void check_rigid_contact(const rs_track_out *o, double pen)
     ENSURE_NEAR(RS_A2(o->rdisp, 3, 0, 0), pen, 1e-12);
 }
 
+/* One call with particle 0 inside the drum through A along unit g, radius Rc, as its only
+ * contact, feature f: the contact list is rebuilt, the tracker run. */
+static int drum_call(fixture *fx, const rs_motion *m, double dt, int feature,
+                     const double x[3], const double A[3], const double g[3], double Rc)
+{
+    clist_init(&fx->l);
+    add_drum(&fx->l, 0, feature, x, A, g, Rc);
+    return track_call(fx, NULL, m, dt);
+}
+
 /* One call with particle 0 against the plane through P (normal n, tangents t1, t2) as
  * its only contact, feature f: the contact list is rebuilt, the tracker run. */
 static int plane_call(fixture *fx, const rs_surface *s, const rs_motion *m, double dt,
@@ -274,9 +284,7 @@ static void test_drot_identity_under_rigid_rotation(void)
         for (int i = 0; i < 3; i++)
             v[i] = V[i] + wr[i];
         block_set(&fx.b, 0, x, v, w, R);
-        clist_init(&fx.l);
-        add_drum(&fx.l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc);
-        ENSURE(track_call(&fx, NULL, &m, dt) == RS_OK);
+        ENSURE(drum_call(&fx, &m, dt, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc) == RS_OK);
         check_rigid_contact(&fx.o, pen);
         rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     }
@@ -400,9 +408,7 @@ static void test_drot_identity_sliding_along_generator(void)
         double x[3];
         axpy(x, u * step * dt, g, x0);
         block_set(&fx.b, 0, x, v, zero, R);
-        clist_init(&fx.l);
-        add_drum(&fx.l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc);
-        ENSURE(track_call(&fx, NULL, NULL, dt) == RS_OK);
+        ENSURE(drum_call(&fx, NULL, dt, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc) == RS_OK);
         ENSURE(fx.o.n == 1);
         ENSURE(drot_is(&fx.o, 0, 1, 0, 0, 1, 1e-14));
         rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
@@ -437,9 +443,7 @@ static void test_drot_identity_sliding_around_drum_hoop(void)
             v[i] = u * et;
         }
         block_set(&fx.b, 0, x, v, zero, R);
-        clist_init(&fx.l);
-        add_drum(&fx.l, 0, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc);
-        ENSURE(track_call(&fx, NULL, NULL, dt) == RS_OK);
+        ENSURE(drum_call(&fx, NULL, dt, RS_FEATURE(RS_FEAT_FACE, 0), x, A, g, Rc) == RS_OK);
         ENSURE(fx.o.n == 1);
         ENSURE(drot_is(&fx.o, 0, 1, 0, 0, 1, 1e-14));
         rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
