@@ -465,15 +465,11 @@ static void test_drot_antiparallel_normal_is_half_turn_about_t1(void)
     double nf[3] = {0, 0, -1}, t2f[3] = {0, -1, 0}, x[3] = {0, 0, 0.0099}, zero[3] = {0};
     block_init(&fx.b, 1, &fx.tr);
     block_set(&fx.b, 0, x, zero, zero, 0.01);
-    clist_init(&fx.l);
-    add_plane(&fx.l, 0, 0, x, P, n, t1, t2);
-    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+    ENSURE(plane_call(&fx, NULL, NULL, 1e-3, 0, x, P, n, t1, t2) == RS_OK);
     rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     double xf[3] = {0, 0, -0.0099};
     block_set(&fx.b, 0, xf, zero, zero, 0.01);
-    clist_init(&fx.l);
-    add_plane(&fx.l, 0, 0, xf, P, nf, t1, t2f);
-    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+    ENSURE(plane_call(&fx, NULL, NULL, 1e-3, 0, xf, P, nf, t1, t2f) == RS_OK);
     ENSURE(fx.o.n == 1);
     ENSURE(drot_is(&fx.o, 0, 1, 0, 0, 1, 0.0));
     fixture_free(&fx);
@@ -584,9 +580,7 @@ static void test_maxval_once_after_leaving(void)
     for (int with_commit = 0; with_commit < 2; with_commit++) {
         block_init(&fx.b, 1, &fx.tr);
         block_set(&fx.b, 0, x, zero, zero, 0.01);
-        clist_init(&fx.l);
-        add_plane(&fx.l, 0, f, x, P, n, t1, t2);
-        ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+        ENSURE(plane_call(&fx, NULL, NULL, 1e-3, f, x, P, n, t1, t2) == RS_OK);
         rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
         fx.l.c.n = 0;
         ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
@@ -621,21 +615,15 @@ static void test_contact_beyond_tracking_leaves(void)
     double x[3] = {0, 0, 0.0095}, zero[3] = {0, 0, 0};
     block_init(&fx.b, 1, &fx.tr);
     block_set(&fx.b, 0, x, zero, zero, 0.01);
-    clist_init(&fx.l);
-    add_plane(&fx.l, 0, 0, x, P, n, t1, t2);
-    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+    ENSURE(plane_call(&fx, NULL, NULL, 1e-3, 0, x, P, n, t1, t2) == RS_OK);
     rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     x[2] = 0.01 + 0.9e-3; /* gap 0.9e-3 <= tracking 1e-3: kept */
-    clist_init(&fx.l);
-    add_plane(&fx.l, 0, 0, x, P, n, t1, t2);
-    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+    ENSURE(plane_call(&fx, NULL, NULL, 1e-3, 0, x, P, n, t1, t2) == RS_OK);
     ENSURE(fx.o.n == 1 && RS_A2(fx.o.rdisp, 3, 0, 0) < 0 &&
            RS_A2(fx.o.rdisp, 3, 0, 0) > -1e-3);
     rs_track_commit(&fx.tr, &fx.o, NULL, NULL);
     x[2] = 0.01 + 1.1e-3; /* gap 1.1e-3 > tracking */
-    clist_init(&fx.l);
-    add_plane(&fx.l, 0, 0, x, P, n, t1, t2);
-    ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
+    ENSURE(plane_call(&fx, NULL, NULL, 1e-3, 0, x, P, n, t1, t2) == RS_OK);
     ENSURE(fx.o.n == 1 && RS_A2(fx.o.rdisp, 3, 0, 0) == RS_MAXVAL);
     fixture_free(&fx);
 }
@@ -715,16 +703,12 @@ static void test_history_handover_across_smooth_junction(void)
         block_init(&fx.b, 1, &fx.tr);
         block_set(&fx.b, 0, x, v, zero, 0.01);
         for (int call = 0; call < 3; call++) {
-            clist_init(&fx.l);
-            add_plane(&fx.l, 0, fa, x, P, n, t1, t2);
-            ENSURE(track_call(&fx, &surf, NULL, dt) == RS_OK);
+            ENSURE(plane_call(&fx, &surf, NULL, dt, fa, x, P, n, t1, t2) == RS_OK);
             ENSURE(fx.o.n == 1);
             rs_track_commit(&fx.tr, &fx.o, stress, statev);
         }
         double *slot = fx.o.slot[0];
-        clist_init(&fx.l);
-        add_plane(&fx.l, 0, sharp ? fc : fb, x, P, n, t1, t2);
-        ENSURE(track_call(&fx, &surf, NULL, dt) == RS_OK);
+        ENSURE(plane_call(&fx, &surf, NULL, dt, sharp ? fc : fb, x, P, n, t1, t2) == RS_OK);
         if (!sharp) {
             ENSURE(fx.o.n == 1);
             ENSURE(fx.o.slot[0] == slot && fx.o.feature[0] == fb);
