@@ -14,6 +14,8 @@
  * ignored (Abaqus rules); values are comma-separated; numbers may use a Fortran D
  * exponent. Every surface of the file is checked; the one named (or the first) is
  * returned. Messages read "ORIGIN:LINE: what was expected". */
+#define _POSIX_C_SOURCE 200809L /* fileno, fstat */
+
 #include "profile.h"
 
 #include <ctype.h>
@@ -22,6 +24,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define MAXTOK 16
 
@@ -120,6 +123,10 @@ static int parse_number(const parser *ps, const tok *t, double *v)
     double x = strtod(buf, &end);
     if (end != buf + t->len || end == buf || !isfinite(x))
         return perr(ps, RS_ERR_PARSE, "expected a finite number, found '%s'%s", show, NULL);
+    if (fabs(x) > RS_COORD_MAX)
+        return perr(ps, RS_ERR_PARSE,
+                    "expected a number of magnitude at most 1e100, found '%s'%s", show,
+                    NULL);
     *v = x;
     return RS_OK;
 }
@@ -511,6 +518,19 @@ static int finish_draft(parser *ps, draft *d, rs_surface *s)
     s->profile.seg = d->seg;
     s->profile.nseg = d->nseg;
     d->seg = NULL;
+    const double size = rs_profile_size(&s->profile);
+    for (int k = 0; k < s->profile.nseg; k++) {
+        const double len = s->profile.seg[k].length;
+        if (!(len >= RS_LENGTH_REL * size && len >= RS_LENGTH_MIN)) {
+            rc = rs_error_set(ps->err, RS_ERR_GEOMETRY,
+                              "%s:%d: segment of length %g in a profile of size %g "
+                              "(expected a length of at least %g of the profile's size "
+                              "and at least %g)",
+                              ps->origin, d->segline[k], len, size, RS_LENGTH_REL,
+                              RS_LENGTH_MIN);
+            goto fail;
+        }
+    }
     if ((rc = rs_profile_finish(&s->profile, NULL, ps->err)) != RS_OK)
         goto fail;
     if (d->fillet > 0.0 && (rc = rs_profile_fillet(&s->profile, d->fillet, &d->segline,
@@ -547,6 +567,22 @@ static int name_eq(const char *a, const char *b)
     return *a == *b;
 }
 
+/* Appends name to the comma-separated list in buf, bounded by size; once a name does not
+ * fit, the list ends in "..." and *full is set. */
+static void names_add(char *buf, size_t size, int *full, const char *name)
+{
+    if (*full)
+        return;
+    const size_t used = strlen(buf);
+    const char *sep = used ? ", " : "";
+    if (used + strlen(sep) + strlen(name) + sizeof ", ..." <= size) {
+        snprintf(buf + used, size - used, "%s%s", sep, name);
+    } else {
+        snprintf(buf + used, size - used, "%s...", sep);
+        *full = 1;
+    }
+}
+
 int rs_surface_parse(const char *text, const char *origin, const char *name, rs_surface *s,
                      rs_error *err)
 {
@@ -555,6 +591,7 @@ int rs_surface_parse(const char *text, const char *origin, const char *name, rs_
     rs_surface cur;
     int found = 0, nsurf = 0, rc = RS_OK;
     char names[200] = "";
+    int names_full = 0;
     struct seen_name {
         char name[80];
         int line;
@@ -605,11 +642,8 @@ int rs_surface_parse(const char *text, const char *origin, const char *name, rs_
             if (rc)
                 goto out;
             nsurf++;
-            if (strlen(names) + strlen(cur.name) + 3 < sizeof names) {
-                if (names[0])
-                    strcat(names, ", ");
-                strcat(names, cur.name[0] ? cur.name : "(unnamed)");
-            }
+            names_add(names, sizeof names, &names_full,
+                      cur.name[0] ? cur.name : "(unnamed)");
             if (!found && (!name || name_eq(name, cur.name))) {
                 *s = cur;
                 found = 1;
@@ -694,9 +728,16 @@ int rs_surface_read(const char *path, const char *name, rs_surface *s, rs_error 
     if (!f)
         return rs_error_set(err, RS_ERR_IO, "%s: cannot open surface file: %s", path,
                             strerror(errno));
+    struct stat st;
+    if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
+        fclose(f);
+        return rs_error_set(err, RS_ERR_IO, "%s: is a directory (expected a surface file)",
+                            path);
+    }
     size_t cap = 4096, n = 0;
     char *buf = malloc(cap);
     int rc = RS_OK;
+    errno = 0;
     while (buf) {
         if (n + 1 >= cap) {
             char *nb = realloc(buf, cap * 2);
@@ -713,13 +754,13 @@ int rs_surface_read(const char *path, const char *name, rs_surface *s, rs_error 
         if (got == 0)
             break;
     }
-    int rerr = ferror(f);
+    const int rerr = ferror(f) ? (errno ? errno : EIO) : 0;
     fclose(f);
     if (!buf)
         return rs_error_set(err, RS_ERR_NOMEM, "%s: out of memory reading the file", path);
     if (rerr) {
         free(buf);
-        return rs_error_set(err, RS_ERR_IO, "%s: read error", path);
+        return rs_error_set(err, RS_ERR_IO, "%s: read error: %s", path, strerror(rerr));
     }
     buf[n] = '\0';
     if (memchr(buf, '\0', n)) {

@@ -23,9 +23,12 @@
 #include "variable.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <sstream>
+#include <sys/stat.h>
+#include <unistd.h>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -260,8 +263,9 @@ void FixWallRigid::init_predef()
         FixPropertyAtom *f = static_cast<FixPropertyAtom *>(modify->find_fix_property(
             name.c_str(), "property/atom", "scalar", 0, 0, style, false));
         if (!f)
-            fail("predef " + name +
-                 ": no fix property/atom holding a per-atom scalar named '" + name + "'");
+            fail(
+                "keyword 'predef': no fix property/atom holding a per-atom scalar named '" +
+                name + "'");
         predef_fix_.push_back(f);
     }
 }
@@ -274,8 +278,25 @@ void FixWallRigid::init_vtk_mesh()
     rs_error err;
     rs_error_clear(&err);
     if (rs_surface_triangulate(&surf_, span, 72, &vtk_mesh_, &err) != RS_OK)
-        fail(std::string("vtk: ") + err.msg);
+        fail(std::string("keyword 'vtk': ") + err.msg);
     vtk_mesh_ok_ = true;
+
+    /* Rank 0 writes the files: their folder must exist and take files, and the name must
+     * not be a folder. Found here, every rank stops with the same message. */
+    int bad = 0;
+    if (comm->me == 0) {
+        const size_t slash = vtk_file_.rfind('/');
+        const std::string dir =
+            slash == std::string::npos ? "." : vtk_file_.substr(0, slash + 1);
+        struct stat st;
+        if (stat(vtk_file_.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+            bad = EISDIR;
+        else if (access(dir.c_str(), W_OK) != 0)
+            bad = errno ? errno : EACCES;
+    }
+    MPI_Bcast(&bad, 1, MPI_INT, 0, world);
+    if (bad)
+        fail("keyword 'vtk': cannot write '" + vtk_file_ + "': " + std::strerror(bad));
 }
 
 /* ---------------------------------------------------------------------------------- */

@@ -83,7 +83,11 @@ double FixWallRigid::number(const char *keyword, const char *what, const char *s
              (s ? s : "(end of line)") + "'");
     double v = std::strtod(s, NULL);
     if (!std::isfinite(v))
-        fail(std::string("keyword '") + keyword + "' expects a finite " + what);
+        fail(std::string("keyword '") + keyword + "' expects " + what + ", got '" + s +
+             "' (not a finite number)");
+    if (std::fabs(v) > RS_COORD_MAX)
+        fail(std::string("keyword '") + keyword + "' expects " + what + ", got '" + s +
+             "' (magnitude above 1e100)");
     return v;
 }
 
@@ -173,8 +177,12 @@ void FixWallRigid::parse(int narg, char **arg)
             need(1, "a number of state variables (integer >= 0)");
             user_statev = integer("statev", "a number of state variables (integer >= 0)",
                                   arg[iarg + 1]);
-            if (user_statev < 0)
-                fail("keyword 'statev' expects an integer >= 0");
+            if (user_statev < 0 || user_statev > RS_MAX_STATEV) {
+                std::ostringstream o;
+                o << "keyword 'statev' expects a number of state variables in 0.."
+                  << RS_MAX_STATEV << ", got " << user_statev;
+                fail(o.str());
+            }
             statev_given_ = true;
             iarg += 2;
         } else if (std::strcmp(kw, "tracking") == 0) {
@@ -182,7 +190,8 @@ void FixWallRigid::parse(int narg, char **arg)
             tracking_ =
                 number("tracking", "a tracking thickness (length >= 0)", arg[iarg + 1]);
             if (tracking_ < 0.0)
-                fail("keyword 'tracking' expects a length >= 0");
+                fail(std::string("keyword 'tracking' expects a length >= 0, got ") +
+                     arg[iarg + 1]);
             tracking_given_ = true;
             iarg += 2;
         } else if (std::strcmp(kw, "area") == 0) {
@@ -196,7 +205,8 @@ void FixWallRigid::parse(int narg, char **arg)
                 area_const_ = number("area", "'node', 'projected' or a constant area > 0",
                                      arg[iarg + 1]);
                 if (!(area_const_ > 0.0))
-                    fail("keyword 'area' expects a constant area > 0");
+                    fail(std::string("keyword 'area' expects a constant area > 0, got ") +
+                         arg[iarg + 1]);
             }
             iarg += 2;
         } else if (std::strcmp(kw, "contacts") == 0) {
@@ -224,7 +234,9 @@ void FixWallRigid::parse(int narg, char **arg)
                 capacity_wall_ =
                     number("capacity", "a wall heat capacity > 0", arg[iarg + 1]);
                 if (!(capacity_wall_ > 0.0))
-                    fail("keyword 'capacity' expects a wall heat capacity > 0");
+                    fail(std::string("keyword 'capacity' expects a wall heat capacity > 0, "
+                                     "got ") +
+                         arg[iarg + 1]);
                 iarg += 2;
             }
         } else if (std::strcmp(kw, "predef") == 0) {
@@ -240,7 +252,8 @@ void FixWallRigid::parse(int narg, char **arg)
             vtk_file_ = arg[iarg + 1];
             vtk_every_ = integer("vtk", "an output interval N > 0", arg[iarg + 2]);
             if (vtk_every_ < 1)
-                fail("keyword 'vtk' expects an output interval N > 0");
+                fail(std::string("keyword 'vtk' expects an output interval N > 0, got ") +
+                     arg[iarg + 2]);
             iarg += 3;
         } else if (std::strcmp(kw, "curvature") == 0) {
             need(1, "'yes' or 'no'");
@@ -278,7 +291,7 @@ void FixWallRigid::parse(int narg, char **arg)
                              surf_name.empty() ? NULL : surf_name.c_str(), &surf_, &err);
     }
     if (rc != RS_OK)
-        fail(err.msg);
+        fail(std::string("keyword 'surface': ") + err.msg);
     surf_ok_ = true;
 
     /* State variables. */
@@ -302,6 +315,12 @@ void FixWallRigid::parse(int narg, char **arg)
         }
         nstatev_ = law_nsv > 0 ? law_nsv : user_statev;
     }
+    if (nstatev_ > RS_MAX_STATEV) {
+        std::ostringstream o;
+        o << "law '" << law_->name << "' with 'statev " << user_statev << "' needs "
+          << nstatev_ << " state variables per contact, more than " << RS_MAX_STATEV;
+        fail(o.str());
+    }
 
     /* Properties. */
     if (curvature_given && !hertz_)
@@ -311,7 +330,7 @@ void FixWallRigid::parse(int narg, char **arg)
             /* Explicit Hertz properties override the LIGGGHTS material properties. */
             rc = rs_law_check_props(law_, props_.data(), (int)props_.size(), &err);
             if (rc != RS_OK)
-                fail(err.msg);
+                fail(std::string("keyword 'props': ") + err.msg);
             if (curvature_given)
                 fail("law hertz with 'props': give the curvature flag as the 7th property");
         } else {
@@ -320,7 +339,7 @@ void FixWallRigid::parse(int narg, char **arg)
     } else {
         rc = rs_law_check_props(law_, props_.data(), (int)props_.size(), &err);
         if (rc != RS_OK)
-            fail(err.msg);
+            fail(std::string("keyword 'props': ") + err.msg);
     }
 }
 
@@ -469,21 +488,22 @@ int FixWallRigid::parse_law(int narg, char **arg, int iarg)
     rs_error_clear(&err);
     auto lib_arg = [&](const char *what) -> const char * {
         if (iarg >= narg || is_keyword(arg[iarg]))
-            fail("law " + law_name_ + " expects " + what);
+            fail("keyword 'law': law " + law_name_ + " expects " + what);
         return arg[iarg++];
     };
     auto normal_arg = [&](bool required) -> const rs_law * {
         if (iarg + 1 < narg && std::strcmp(arg[iarg], "normal") == 0) {
             const rs_law *n = rs_law_find(arg[iarg + 1]);
             if (!n)
-                fail(std::string("law ") + law_name_ + ": 'normal " + arg[iarg + 1] +
+                fail(std::string("keyword 'law': law ") + law_name_ + ": 'normal " +
+                     arg[iarg + 1] +
                      "' is not a built-in law (hertz, hooke, bonded_interface, "
                      "linear_softening, coulomb)");
             iarg += 2;
             return n;
         }
         if (required)
-            fail("law " + law_name_ +
+            fail("keyword 'law': law " + law_name_ +
                  " expects 'normal LAW' (a built-in law giving the "
                  "contact pressure)");
         return NULL;
@@ -514,15 +534,15 @@ int FixWallRigid::parse_law(int narg, char **arg, int iarg)
             std::string known;
             for (int i = 0; i < rs_law_count(); i++)
                 known += std::string(i ? ", " : "") + rs_law_at(i)->name;
-            fail("unknown law '" + law_name_ + "'; expected one of " + known +
-                 ", user, vuinter, uinter or fric");
+            fail("keyword 'law': unknown law '" + law_name_ + "'; expected one of " +
+                 known + ", user, vuinter, uinter or fric");
         }
         law_kind_ = LAW_BUILTIN;
         hertz_ = std::strcmp(law_->name, "hertz") == 0;
         return iarg;
     }
     if (rc != RS_OK)
-        fail(err.msg);
+        fail(std::string("keyword 'law': ") + err.msg);
     loaded_ok_ = true;
     law_ = &loaded_;
     return iarg;
@@ -572,7 +592,7 @@ int FixWallRigid::parse_motion(int narg, char **arg, int iarg)
         iarg++;
         for (int d = 0; d < 3; d++)
             axis[d] = constant("rotate axis", "an axis component");
-        if (iarg + 1 >= narg)
+        if (iarg >= narg)
             fail("keyword 'rotate' expects 'omega W' or 'period P' after the axis");
         if (std::strcmp(arg[iarg], "omega") == 0) {
             iarg++;

@@ -9,7 +9,9 @@
 #include "fix_property_atom.h"
 #include "update.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <sstream>
 #include <string>
 
@@ -48,7 +50,8 @@ void FixWallRigid::write_vtk()
     }
     FILE *fp = std::fopen(name.c_str(), "w");
     if (!fp)
-        fail_one("vtk: cannot open '" + name + "' for writing");
+        fail_one("keyword 'vtk': cannot open '" + name +
+                 "' for writing: " + std::strerror(errno));
     std::fprintf(fp,
                  "# vtk DataFile Version 2.0\nfix wall/rigid %s step " BIGINT_FORMAT
                  "\nASCII\nDATASET POLYDATA\nPOINTS %d double\n",

@@ -68,6 +68,10 @@ int rs_driver_set_law(rs_driver *d, const rs_law *law, const double *props, int 
     if (nprops < 0 || nprops > (int)(sizeof d->props / sizeof d->props[0]))
         return rs_error_set(err, RS_ERR_ARG, "driver: %d properties, expected 0..%d",
                             nprops, (int)(sizeof d->props / sizeof d->props[0]));
+    if (nstatev > RS_MAX_STATEV)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "driver: %d state variables, expected at most %d", nstatev,
+                            RS_MAX_STATEV);
     if (nstatev < law->nstatev)
         return rs_error_set(err, RS_ERR_ARG,
                             "driver: %d state variables, the law '%s' needs %d", nstatev,

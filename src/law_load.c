@@ -133,6 +133,14 @@ int rs_law_load_c(const char *lib, const char *symbol, rs_law *out, rs_error *er
     dlerror();
     const rs_law *desc = (const rs_law *)dlsym(ld->handle, dname);
     if (!dlerror() && desc) {
+        if (desc->nstatev < 0 || desc->nstatev > RS_MAX_STATEV) {
+            const int nsv = desc->nstatev;
+            rs_law_unload(out);
+            return rs_error_set(err, RS_ERR_ARG,
+                                "%s: descriptor %s declares %d state variables (expected "
+                                "0..%d)",
+                                lib, dname, nsv, RS_MAX_STATEV);
+        }
         if (desc->name && desc->name[0])
             snprintf(ld->name, sizeof ld->name, "%s", desc->name);
         out->nprops = desc->nprops;

@@ -692,9 +692,10 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
         return rs_error_set(err, RS_ERR_ARG,
                             "rs_track_update: capacity = %d, expected 1 to %d",
                             tr->capacity, RS_TRACK_MAX_CAPACITY);
-    if (tr->nstatev < 0)
-        return rs_error_set(err, RS_ERR_ARG, "rs_track_update: nstatev = %d is negative",
-                            tr->nstatev);
+    if (tr->nstatev < 0 || tr->nstatev > RS_MAX_STATEV)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_track_update: nstatev = %d, expected 0 to %d", tr->nstatev,
+                            RS_MAX_STATEV);
     const int nc = c ? c->n : 0;
     int rc = out_reserve(out, nc + p->n * tr->capacity, err);
     if (rc)

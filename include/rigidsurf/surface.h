@@ -57,6 +57,13 @@ typedef struct rs_profile {
     int *vkind;      ///< rs_vertex_kind for each vertex
 } rs_profile;
 
+/// Limits of a surface file's numbers, so that squares and products of coordinates and
+/// lengths stay normal doubles: every number has |x| <= RS_COORD_MAX, and every segment
+/// is at least RS_LENGTH_MIN long and at least RS_LENGTH_REL times the profile's size.
+#define RS_COORD_MAX 1e100
+#define RS_LENGTH_MIN 1e-100
+#define RS_LENGTH_REL 1e-12
+
 typedef enum rs_surface_kind {
     RS_SURF_SEGMENTS = 1,   ///< 2D profile in the global x-y plane, nDir = 2
     RS_SURF_CYLINDER = 2,   ///< profile extruded along the generator

@@ -15,6 +15,9 @@ extern "C" {
 /// Largest number of contacts handed to a law in one call (VUINTER nblock).
 #define RS_BLOCK 128
 
+/// Largest number of state variables per contact (laws, tracker, driver, fix).
+#define RS_MAX_STATEV 1000
+
 /// Return codes. Every failing call also fills an rs_error with a message.
 enum rs_status {
     RS_OK = 0,

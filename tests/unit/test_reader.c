@@ -140,8 +140,20 @@ static const bad_case BAD[] = {
     {"empty value", "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, , 0\n", RS_ERR_PARSE, 2,
      "empty value"},
     {"overflowing coordinates",
-     "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, 1e308, 0\nLINE, -1e308, 0\n", RS_ERR_GEOMETRY,
-     3, "too large"},
+     "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, 1e308, 0\nLINE, -1e308, 0\n", RS_ERR_PARSE, 2,
+     "at most 1e100, found '1e308'"},
+    {"coordinate whose square overflows",
+     "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, 0, 0\nLINE, 1, -2e154\n", RS_ERR_PARSE, 3,
+     "at most 1e100, found '-2e154'"},
+    {"LINE of denormal length",
+     "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, 0, 0\nLINE, 1e-310, 0\n", RS_ERR_GEOMETRY, 3,
+     "length of at least"},
+    {"segment under 1e-12 of the profile's size",
+     "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, 0, 0\nLINE, 1e-13, 0\nLINE, 1, 0\n",
+     RS_ERR_GEOMETRY, 3, "of the profile's size"},
+    {"cylinder placement beyond 1e100",
+     "*SURFACE, TYPE=CYLINDER, NAME=a\n0,0,0, 1e101,0,0\n0,1,0\nSTART,0,0\nLINE,1,0\n",
+     RS_ERR_PARSE, 2, "at most 1e100"},
     {"no surface at all", "** only a comment\n", RS_ERR_NOTFOUND, 0, "no *SURFACE"},
 };
 
@@ -172,6 +184,41 @@ static void test_reader_missing_file_names_the_path(void)
     int rc = rs_surface_read("no/such/dir/surf.inp", NULL, &s, &e);
     ENSURE(rc == RS_ERR_IO && e.code == RS_ERR_IO);
     ENSURE(strstr(e.msg, "no/such/dir/surf.inp") != NULL);
+}
+
+/* A directory given as the surface file says so. */
+static void test_reader_directory_is_named(void)
+{
+    rs_surface s;
+    rs_error e;
+    int rc = rs_surface_read(".", NULL, &s, &e);
+    ENSURE(rc == RS_ERR_IO && e.code == RS_ERR_IO);
+    ENSURE(strstr(e.msg, ".: is a directory (expected a surface file)") != NULL);
+    ENSURE(s.profile.seg == NULL && s.impl == NULL);
+}
+
+/* Many unnamed surfaces and a name that is not among them: the list of names in the
+ * message is bounded (the sanitizer build checks the writes) and ends in "...". */
+static void test_reader_many_unnamed_surfaces(void)
+{
+    enum { NSURF = 60 };
+    static char text[NSURF * 64];
+    size_t m = 0;
+    for (int i = 0; i < NSURF; i++)
+        m += (size_t)snprintf(text + m, sizeof text - m,
+                              "*SURFACE, TYPE=SEGMENTS\nSTART, 0, %d\nLINE, 1, %d\n", i, i);
+    rs_surface s;
+    rs_error e;
+    int rc = rs_surface_parse(text, "many.inp", "absent", &s, &e);
+    ENSURE(rc == RS_ERR_NOTFOUND);
+    ENSURE(strstr(e.msg, "surface 'absent' not found (found: (unnamed), (unnamed)") !=
+           NULL);
+    ENSURE(strstr(e.msg, ", ...)") != NULL);
+    ENSURE(strlen(e.msg) < sizeof e.msg - 1);
+    /* the first unnamed surface is the one taken without a name */
+    ENSURE(rs_surface_parse(text, "many.inp", NULL, &s, &e) == RS_OK);
+    ENSURE(s.profile.nseg == 1 && s.profile.seg[0].p0[1] == 0.0);
+    rs_surface_free(&s);
 }
 
 /* The example files parse, and their geometry is what their comments say. */
@@ -333,6 +380,8 @@ int main(void)
     RS_RUN(test_reader_keywords_case_comments_and_names);
     RS_RUN(test_reader_bad_input_codes_and_lines);
     RS_RUN(test_reader_missing_file_names_the_path);
+    RS_RUN(test_reader_directory_is_named);
+    RS_RUN(test_reader_many_unnamed_surfaces);
     RS_RUN(test_reader_example_files);
     RS_RUN(test_reader_fuzz_never_crashes);
     return rs_test_summary();
