@@ -94,13 +94,16 @@ static int read_points(FILE *f, const char *origin, int ndim, point_list *pts)
             char *end;
             errno = 0;
             double d = strtod(s, &end);
-            if (end == s || (*end && !isspace((unsigned char)*end)) || !isfinite(d)) {
+            if (end == s || (*end && !isspace((unsigned char)*end)) || !isfinite(d) ||
+                fabs(d) > RS_COORD_MAX) {
                 int w = 0;
                 while (s[w] && !isspace((unsigned char)s[w]) && w < 40)
                     w++;
-                fprintf(stderr,
-                        "rigidsurf-frames: %s:%ld: expected a finite number, got '%.*s'\n",
-                        origin, lineno, w, s);
+                fprintf(
+                    stderr,
+                    "rigidsurf-frames: %s:%ld: expected a finite number of magnitude at "
+                    "most 1e100, got '%.*s'\n",
+                    origin, lineno, w, s);
                 return 1;
             }
             v[nv++] = d;
@@ -262,11 +265,12 @@ int main(int argc, char **argv)
             } else {
                 char *end;
                 tracking = strtod(v, &end);
-                if (end == v || *end || !(tracking >= 0.0)) {
-                    fprintf(stderr,
-                            "rigidsurf-frames: --tracking expects a non-negative number, "
-                            "got '%s'\n",
-                            v);
+                if (end == v || *end || !(tracking >= 0.0) || !(tracking <= RS_COORD_MAX)) {
+                    fprintf(
+                        stderr,
+                        "rigidsurf-frames: --tracking expects a number from 0 to 1e100, "
+                        "got '%s'\n",
+                        v);
                     return 2;
                 }
             }
