@@ -28,11 +28,32 @@ static void bucket_span(const rs_pcache *pc, double c0, double c1, int *b0, int 
     *b1 = (int)f1;
 }
 
+/* The sum over the buckets of the squared list lengths at margin: the cost of scanning
+ * a bucket summed over the buckets. The lengths come from a difference array (diff:
+ * nbucket + 1 ints), so the cost is O(nseg + nbucket) however crowded the buckets. */
+static double bucket_cost(const rs_pcache *pc, double margin, int *diff)
+{
+    const int nb = pc->nbucket, ax = pc->axis;
+    memset(diff, 0, (size_t)(nb + 1) * sizeof(int));
+    for (int k = 0; k < pc->nseg; k++) {
+        int b0, b1;
+        const double *box = pc->ps[k].box + 2 * ax;
+        bucket_span(pc, box[0] - margin, box[1] + margin, &b0, &b1);
+        diff[b0]++;
+        diff[b1 + 1]--;
+    }
+    double sq = 0.0;
+    long run = 0;
+    for (int b = 0; b < nb; b++) {
+        run += diff[b];
+        sq += (double)run * (double)run;
+    }
+    return sq;
+}
+
 /* Entries of one level; with bstart and blist, also the lists (bstart: nbucket + 1
- * offsets). *sq (when not NULL) gets the sum of the squared list lengths, the cost of
- * scanning a bucket summed over the buckets. */
-static long bucket_level(const rs_pcache *pc, double margin, int *bstart, int *blist,
-                         double *sq)
+ * offsets). */
+static long bucket_level(const rs_pcache *pc, double margin, int *bstart, int *blist)
 {
     int nb = pc->nbucket, ax = pc->axis;
     long total = 0;
@@ -48,14 +69,7 @@ static long bucket_level(const rs_pcache *pc, double margin, int *bstart, int *b
             for (int b = b0; b <= b1; b++)
                 cnt[b + 1]++;
     }
-    if (!cnt)
-        return total;
-    if (sq) {
-        *sq = 0.0;
-        for (int b = 0; b < nb; b++)
-            *sq += (double)cnt[b + 1] * (double)cnt[b + 1];
-    }
-    if (!blist)
+    if (!cnt || !blist)
         return total;
     for (int b = 0; b < nb; b++)
         bstart[b + 1] += bstart[b];
@@ -81,7 +95,7 @@ static int bucket_levels(rs_pcache *pc, double extent, long budget, long *entrie
     int nl = 0;
     long tot = 0;
     for (double m = 0.25 * w; nl < RS_PC_MAXLEVEL; m *= 2.0) {
-        long e = bucket_level(pc, m, NULL, NULL, NULL);
+        long e = bucket_level(pc, m, NULL, NULL);
         if (e > budget)
             break;
         pc->margin[nl++] = m;
@@ -126,8 +140,12 @@ static int chain_owner(const rs_pcache *pc, double margin, int b, const int *lis
             scale = fmax(scale, fmax(fabs(P[c][0]), fabs(P[c][1])));
         }
         const double tol = 1e-9 * scale;
+        /* piece e's own test first: most pieces fail it, so a bucket costs O(cnt) */
         int ok = 1;
-        for (int f = 0; f < cnt && ok; f++) {
+        for (int i = -1; i < cnt && ok; i++) {
+            const int f = i < 0 ? e : i;
+            if (i == e)
+                continue;
             const rs_pseg *r = &pc->ps[list[f]];
             int in = 1, before = 1, after = 1;
             for (int c = 0; c < 4; c++) {
@@ -314,17 +332,18 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
         }
     double best = -1.0;
     int best_axis = 0;
-    const int nb = n * RS_PC_BUCKETS_PER_SEG;
+    const int bps = n > RS_PC_LARGE ? 1 : RS_PC_BUCKETS_PER_SEG;
+    const int nb = n * bps;
     pc->nbucket = nb;
     int *cnt = n > 1 ? malloc((size_t)(nb + 1) * sizeof(int)) : NULL;
     for (int a = 0; a < 2 && cnt; a++) {
-        double ext = hi[a] - lo[a], sq = 0.0;
+        double ext = hi[a] - lo[a];
         if (!(ext > 0.0) || !isfinite(ext))
             continue;
         pc->axis = a;
         pc->lo = lo[a];
         pc->inv_w = (double)nb / ext;
-        bucket_level(pc, 0.25 * ext / nb, cnt, NULL, &sq);
+        const double sq = bucket_cost(pc, 0.25 * ext / nb, cnt);
         if (best < 0.0 || sq < best) {
             best = sq;
             best_axis = a;
@@ -345,8 +364,8 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
         pc->axis = best_axis;
         pc->lo = lo[best_axis];
         pc->inv_w = (double)nb / (hi[best_axis] - lo[best_axis]);
-        pc->nlevel = bucket_levels(pc, hi[best_axis] - lo[best_axis],
-                                   32L * RS_PC_BUCKETS_PER_SEG * n + 64, &entries);
+        pc->nlevel =
+            bucket_levels(pc, hi[best_axis] - lo[best_axis], 32L * bps * n + 64, &entries);
     }
     size_t ints = (size_t)pc->nlevel * (size_t)(2 * pc->nbucket + 1) +
                   2 * ((size_t)entries + (size_t)n);
@@ -379,7 +398,7 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
             off += n;
             continue;
         }
-        long e = bucket_level(pc, pc->margin[l], bs, pc->blist + off, NULL);
+        long e = bucket_level(pc, pc->margin[l], bs, pc->blist + off);
         for (int b = 0; b <= pc->nbucket; b++)
             bs[b] += (int)off;
         off += e;

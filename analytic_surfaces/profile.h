@@ -136,8 +136,11 @@ typedef struct rs_pvert {
  * beyond the last level scan every segment. */
 #define RS_PC_MAXLEVEL 12
 /* Buckets per segment: fine enough that most buckets along a chain of collinear pieces
- * lie inside one piece (rs_pcache_build gives those an owner). */
+ * lie inside one piece (rs_pcache_build gives those an owner). Profiles of more than
+ * RS_PC_LARGE segments take one bucket per segment: the lists then hold a quarter of the
+ * entries for the same reach, which bounds the index's memory. */
 #define RS_PC_BUCKETS_PER_SEG 4
+#define RS_PC_LARGE 16384
 typedef struct rs_pcache {
     int nseg, nvert, closed, sides;
     double size;

@@ -9,8 +9,8 @@ malformed fix line (the error path).
 
 What counts: every memcheck error (invalid read/write/free, uninitialised value,
 mismatched free), and every definitely or indirectly lost block whose allocation stack
-passes through rigidsurf (rs_* functions, FixWallRigid, the law, surface and tracker
-sources). OpenMPI's own start-up and shut-down leaks are not ours and are not counted.
+passes through rigidsurf: an rs_* or rigidsurf_* function, a FixWallRigid member, or a
+frame in one of rigidsurf's source files. OpenMPI's own start-up and shut-down leaks are not ours and are not counted.
 One known LIGGGHTS 3.8.0 bug is set aside: Error::all prints a random "Tip of the
 day" one time in ten from a std::string it has already freed; records whose stack
 holds LAMMPS_NS::Error::all are skipped.
@@ -21,8 +21,13 @@ import re
 import liglib as L
 
 R, RHO = 0.004, 2500.0
-OURS = re.compile(r"\b(rs_\w+|FixWallRigid\w*|rigidsurf\w*)|fix_wall_rigid\.cpp|"
-                  r"analytic_surfaces/|/src/(laws/|track|law|frame|motion|faceted)")
+# Our frames, by function or by source file; never by the executable's path (the
+# "(in .../liggghts-rigidsurf)" of frames without debug information, OpenMPI's included).
+OURS = re.compile(r"\b(rs_\w+|rigidsurf_\w+|LAMMPS_NS::FixWallRigid::\w+)\s*\(|"
+                  r"\((fix_wall_rigid\w*|rigidsurf_styles)\.cpp:\d+\)|"
+                  r"\((analytic|closest|contacts|pcache|profile|query|reader|triangulate|"
+                  r"contact_block|driver|frame|law\w*|motion|surface|track\w*|error|"
+                  r"bonded_interface|coulomb|hertz|hooke|linear_softening)\.c:\d+\)")
 VALGRIND = ["valgrind", "--tool=memcheck", "--leak-check=full", "--num-callers=30",
             "--track-origins=no"]
 

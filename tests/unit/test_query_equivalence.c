@@ -183,6 +183,63 @@ static void test_query_block_open_lines_and_arcs_is_brute_force_closest(void)
         0);
 }
 
+/* A profile of 24000 segments (more than RS_PC_LARGE: one bucket per segment), turned
+ * by 30 degrees in its plane: tall teeth, collinear runs (LINE chains) and arcs, queried
+ * at a reach of a few segment lengths, within the levels of its bucket index. Each point
+ * near the profile gets, as its nearest contact, its brute-force distance over all
+ * segments; a point beyond reach gets none. */
+static void test_query_large_profile_is_brute_force_closest(void)
+{
+    enum { NSEG = 24000, N = 4000 };
+    static char deck[NSEG * 80 + 256];
+    const double h = 1.0 / NSEG, c30 = cos(RS_PI / 6), s30 = sin(RS_PI / 6);
+    size_t o = (size_t)snprintf(deck, sizeof deck,
+                                "*SURFACE, TYPE=SEGMENTS, NAME=big\nSTART, 0, 0\n");
+    for (int k = 1; k <= NSEG; k++) {
+        const int part = (k / 1000) % 3;
+        double P[2] = {k * h, part == 0 && k % 2 ? 4.0 * h : 0.0},
+               C[2] = {(k - 0.5) * h, (k % 2 ? 1.0 : -1.0) * h};
+        const double X = c30 * P[0] - s30 * P[1], Y = s30 * P[0] + c30 * P[1];
+        if (part < 2) /* teeth, then a collinear run */
+            o += (size_t)snprintf(deck + o, sizeof deck - o, "LINE, %.17g, %.17g\n", X, Y);
+        else /* arcs, alternately bulging up and down */
+            o += (size_t)snprintf(deck + o, sizeof deck - o,
+                                  "CIRCL, %.17g, %.17g, %.17g, %.17g\n", X, Y,
+                                  c30 * C[0] - s30 * C[1], s30 * C[0] + c30 * C[1]);
+    }
+    rs_surface s;
+    ENSURE(parse(deck, &s) == 0);
+    ENSURE(s.profile.nseg == NSEG);
+    const double reach = 3.0 * h;
+    static double x[N], y[N], z[N];
+    for (int i = 0; i < N; i++) {
+        const double u = urand(), v = (8.0 * urand() - 2.0) * h;
+        x[i] = c30 * u - s30 * v;
+        y[i] = s30 * u + c30 * v;
+        z[i] = 0.0;
+    }
+    rs_query q = {N, {x, y, z, NULL}, NULL, reach, -reach};
+    rs_contacts c = {0};
+    ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
+    int k = 0, checked = 0;
+    for (int i = 0; i < N; i++) {
+        double best = INFINITY;
+        for (; k < c.n && c.point[k] == i; k++)
+            best = fabs(c.dist[k]) < best ? fabs(c.dist[k]) : best;
+        const double d = profile_distance(&s, x[i], y[i]);
+        if (d <= 0.99 * reach) {
+            ENSURE_NEAR(best, d, 1e-12);
+            checked++;
+        } else if (d > 1.01 * reach) {
+            ENSURE(best == INFINITY);
+        }
+    }
+    ENSURE(k == c.n);
+    ENSURE(checked > N / 2);
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+}
+
 /* A REVOLUTION profile about z: a cap from the axis to (r0, -H), npc collinear LINE
  * pieces to (r1, H), a cap back to the axis. */
 static void parse_chain(int sides, double r0, double r1, double H, int npc, rs_surface *s)
@@ -341,6 +398,7 @@ int main(void)
     RS_RUN(test_query_block_revolution_two_sides_is_brute_force_closest);
     RS_RUN(test_query_block_closed_one_side_is_brute_force_closest);
     RS_RUN(test_query_block_open_lines_and_arcs_is_brute_force_closest);
+    RS_RUN(test_query_large_profile_is_brute_force_closest);
     RS_RUN(test_query_collinear_chain_gives_one_face_contact);
     RS_RUN(test_query_oblique_chain_gives_one_face_contact);
     return rs_test_summary();
