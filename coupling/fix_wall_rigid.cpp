@@ -43,8 +43,9 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       tracking_(0.0), tracking_given_(false), area_mode_(AREA_NODE), area_const_(1.0),
       temp_given_(false), temp_wall_(0.0), dtemp_wall_(0.0), capacity_wall_(0.0),
       heat_wall_(0.0), heat_step_(0.0), fix_temp_(NULL), fix_heatflux_(NULL),
-      fix_heatcap_(NULL), vtk_every_(0), vtk_mesh_ok_(false), row_(NULL), hist_(NULL),
-      nmax_(0), rebuild_(true), se_now_(0.0), ncontact_(0), out_step_(-1), out_valid_(false)
+      fix_heatcap_(NULL), vtk_every_(0), vtk_mesh_ok_(false), step_checked_(false),
+      row_(NULL), hist_(NULL), nmax_(0), rebuild_(true), se_now_(0.0), ncontact_(0),
+      out_step_(-1), out_valid_(false)
 {
     std::memset(&surf_, 0, sizeof surf_);
     std::memset(&loaded_, 0, sizeof loaded_);
@@ -299,6 +300,46 @@ void FixWallRigid::init_vtk_mesh()
         fail("keyword 'vtk': cannot write '" + vtk_file_ + "': " + std::strerror(bad));
 }
 
+/* Once per fix, as LIGGGHTS checks its own contact models: a warning when the time step
+ * exceeds RS_STEP_FRACTION of the law's critical step (rs_law_critical_step_fn) for the
+ * smallest value over the group's particles. A law without one is not checked. */
+void FixWallRigid::check_step()
+{
+    step_checked_ = true;
+    if (!law_->critical_step)
+        return;
+    const double *radius = atom->radius, *rmass = atom->rmass;
+    const int *mask = atom->mask, *type = atom->type;
+    double tmin = INFINITY;
+    for (int i = 0; i < atom->nlocal; i++) {
+        if (!(mask[i] & groupbit))
+            continue;
+        const double R = radius[i];
+        const double A = area_mode_ == AREA_CONSTANT    ? area_const_
+                         : area_mode_ == AREA_PROJECTED ? RS_PI * R * R
+                                                        : 1.0;
+        const std::vector<double> *pv = &props_;
+        if (hertz_ && !props_given_ && type[i] < (int)type_props_.size())
+            pv = &type_props_[type[i]];
+        const double t =
+            law_->critical_step(law_, pv->data(), (int)pv->size(), R, rmass[i], A);
+        if (t > 0.0)
+            tmin = std::min(tmin, t);
+    }
+    double tall = INFINITY;
+    MPI_Allreduce(&tmin, &tall, 1, MPI_DOUBLE, MPI_MIN, world);
+    const double dt = update->dt;
+    if (comm->me == 0 && std::isfinite(tall) && dt > RS_STEP_FRACTION * tall) {
+        std::ostringstream o;
+        o.precision(6);
+        o << "Fix wall/rigid " << id << ": time step " << dt << " is " << dt / tall
+          << " of the critical step " << tall << " of law '" << law_->name << "'"
+          << (hertz_ ? " (Rayleigh time)" : " (2 sqrt(m/k))")
+          << "; contacts with the wall may be unstable above " << RS_STEP_FRACTION;
+        error->warning(FLERR, o.str().c_str());
+    }
+}
+
 /* ---------------------------------------------------------------------------------- */
 /* The step                                                                           */
 
@@ -308,6 +349,8 @@ void FixWallRigid::init_vtk_mesh()
 void FixWallRigid::setup(int vflag)
 {
     (void)vflag;
+    if (!step_checked_)
+        check_step();
     compute(true);
     if (vtk_every_ > 0 && update->ntimestep % vtk_every_ == 0)
         write_vtk();

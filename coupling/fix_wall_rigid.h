@@ -90,6 +90,7 @@ class FixWallRigid : public Fix
     void init_heat();
     void init_predef();
     void init_vtk_mesh();
+    void check_step();
 
     /* the step */
     void compute(bool setup_call);
@@ -199,6 +200,7 @@ class FixWallRigid : public Fix
     int vtk_every_;
     rs_trimesh vtk_mesh_;
     bool vtk_mesh_ok_;
+    bool step_checked_; ///< the time step was checked against the law's critical step
 
     /* per-atom storage */
     double **row_;

@@ -231,6 +231,17 @@ double rs_law_default_stiffness(double mass, double area, double dt)
     return 0.1 * 4.0 * mass / (area * dt * dt);
 }
 
+double rs_rayleigh_time(double radius, double mass, double young, double poisson)
+{
+    if (!(radius > 0.0) || !(mass > 0.0) || !(young > 0.0) ||
+        !(poisson > -1.0 && poisson < 0.5))
+        return 0.0;
+    const double pi = 3.14159265358979323846;
+    const double rho = 3.0 * mass / (4.0 * pi * radius * radius * radius);
+    const double shear = young / (2.0 * (1.0 + poisson));
+    return pi * radius * sqrt(rho / shear) / (0.1631 * poisson + 0.8766);
+}
+
 double rs_law_default_conductance(double heat_capacity, double area, double dt)
 {
     if (!(heat_capacity > 0.0) || !(area > 0.0) || !(dt > 0.0)) {

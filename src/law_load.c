@@ -149,6 +149,7 @@ int rs_law_load_c(const char *lib, const char *symbol, rs_law *out, rs_error *er
         out->init = desc->init;
         if (desc->update)
             out->update = desc->update;
+        out->critical_step = desc->critical_step;
     }
     return RS_OK;
 }

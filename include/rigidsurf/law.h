@@ -124,9 +124,27 @@ typedef struct rs_law_block {
 
 typedef struct rs_law rs_law;
 
+/// Rayleigh time of a sphere of radius R, mass m, Young's modulus Y and Poisson ratio
+/// nu: pi R sqrt(rho / G) / (0.1631 nu + 0.8766), rho = 3 m / (4 pi R^3),
+/// G = Y / (2 (1 + nu)). 0 when an argument is out of range.
+double rs_rayleigh_time(double radius, double mass, double young, double poisson);
+
 /// Validates props (count, sign, range). Optional (NULL: any finite values).
 typedef int (*rs_law_init_fn)(const rs_law *law, const double *props, int nprops,
                               rs_error *err);
+
+/// The critical time step of one contact under props, for a particle of radius R, mass
+/// m and contact area A: Hertz's Rayleigh time for hertz, 2 sqrt(m / K) for a linear
+/// normal stiffness K (force per length: kn, or a stiffness per area times A). Engines
+/// warn when their step exceeds RS_STEP_FRACTION of it. Optional (NULL or a result <= 0:
+/// no check).
+typedef double (*rs_law_critical_step_fn)(const rs_law *law, const double *props,
+                                          int nprops, double radius, double mass,
+                                          double area);
+
+/// The fraction of a law's critical step (rs_law_critical_step_fn) above which the
+/// engines warn.
+#define RS_STEP_FRACTION 0.2
 
 /// One vectorized call over the block: reads the read-only arrays, updates stress,
 /// fluxes, sed, statev and writes sfd, scd, spd, svd for every contact. Returns RS_OK
@@ -144,6 +162,7 @@ struct rs_law {
     rs_law_update_fn update;       ///< the block call (required)
     void *ctx;                     ///< loader data (library handle, wrapped routines)
     void (*destroy)(rs_law *law);  ///< optional: releases ctx
+    rs_law_critical_step_fn critical_step; ///< optional: the time-step check
 };
 
 /* Registry of built-in laws (props in order; statev count; src/laws/ documents each):

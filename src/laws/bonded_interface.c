@@ -128,6 +128,15 @@ static int rs_bonded_update(const rs_law *law, rs_law_block *b, rs_error *err)
     return RS_OK;
 }
 
+/* The bonded layer in compression: s = E h / t, a stiffness E A / t. */
+static double rs_bonded_critical_step(const rs_law *law, const double *p, int np, double R,
+                                      double m, double A)
+{
+    (void)law, (void)R;
+    const double K = np >= P_COUNT && p[P_T] > 0.0 ? p[P_E] * A / p[P_T] : 0.0;
+    return K > 0.0 && m > 0.0 ? 2.0 * sqrt(m / K) : 0.0;
+}
+
 const rs_law rs_law_bonded_interface = {
     .name = "bonded_interface",
     .nprops = P_COUNT,
@@ -135,4 +144,5 @@ const rs_law rs_law_bonded_interface = {
     .prop_names = rs_bonded_props,
     .init = rs_bonded_init,
     .update = rs_bonded_update,
+    .critical_step = rs_bonded_critical_step,
 };

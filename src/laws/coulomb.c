@@ -78,6 +78,16 @@ static int rs_coulomb_update(const rs_law *law, rs_law_block *b, rs_error *err)
     return RS_OK;
 }
 
+/* p = kn h: a stiffness kn A; the sticking spring k_stick A acts on the contact point,
+ * of effective mass 2 m / 7 for a sphere (as in hooke). */
+static double rs_coulomb_critical_step(const rs_law *law, const double *p, int np,
+                                       double R, double m, double A)
+{
+    (void)law, (void)R;
+    const double K = np >= 3 ? fmax(p[P_KN], 3.5 * p[P_KS]) * A : 0.0;
+    return K > 0.0 && m > 0.0 ? 2.0 * sqrt(m / K) : 0.0;
+}
+
 const rs_law rs_law_coulomb = {
     .name = "coulomb",
     .nprops = P_COUNT,
@@ -85,4 +95,5 @@ const rs_law rs_law_coulomb = {
     .prop_names = rs_coulomb_props,
     .init = rs_coulomb_init,
     .update = rs_coulomb_update,
+    .critical_step = rs_coulomb_critical_step,
 };

@@ -197,6 +197,14 @@ static int rs_hertz_update(const rs_law *law, rs_law_block *b, rs_error *err)
     return RS_OK;
 }
 
+/* The particle's Rayleigh time (LIGGGHTS's criterion for its granular models). */
+static double rs_hertz_critical_step(const rs_law *law, const double *p, int np, double R,
+                                     double m, double A)
+{
+    (void)law, (void)A;
+    return np >= 2 ? rs_rayleigh_time(R, m, p[0], p[1]) : 0.0;
+}
+
 const rs_law rs_law_hertz = {
     .name = "hertz",
     .nprops = P_COUNT,
@@ -204,4 +212,5 @@ const rs_law rs_law_hertz = {
     .prop_names = rs_hertz_props,
     .init = rs_hertz_init,
     .update = rs_hertz_update,
+    .critical_step = rs_hertz_critical_step,
 };

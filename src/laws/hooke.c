@@ -83,6 +83,17 @@ static int rs_hooke_update(const rs_law *law, rs_law_block *b, rs_error *err)
     return RS_OK;
 }
 
+/* kn and kt are forces per length. The tangential spring acts on a sphere's contact
+ * point, whose effective mass with rotation is 2 m / 7: it counts as a stiffness 7 kt / 2
+ * on m. */
+static double rs_hooke_critical_step(const rs_law *law, const double *p, int np, double R,
+                                     double m, double A)
+{
+    (void)law, (void)R, (void)A;
+    const double K = np >= 2 ? fmax(p[0], 3.5 * p[1]) : 0.0;
+    return K > 0.0 && m > 0.0 ? 2.0 * sqrt(m / K) : 0.0;
+}
+
 const rs_law rs_law_hooke = {
     .name = "hooke",
     .nprops = P_COUNT,
@@ -90,4 +101,5 @@ const rs_law rs_law_hooke = {
     .prop_names = rs_hooke_props,
     .init = rs_hooke_init,
     .update = rs_hooke_update,
+    .critical_step = rs_hooke_critical_step,
 };

@@ -3,6 +3,8 @@
  * props: k (pressure per length, > 0). sed = k h^2 / 2. */
 #include "builtin.h"
 
+#include <math.h>
+
 static int rs_linear_softening_init(const rs_law *law, const double *props, int nprops,
                                     rs_error *err)
 {
@@ -33,6 +35,15 @@ static int rs_linear_softening_update(const rs_law *law, rs_law_block *b, rs_err
 
 static const char *const rs_linear_softening_props[] = {"k"};
 
+/* p = k h: a stiffness k A. */
+static double rs_linear_softening_critical_step(const rs_law *law, const double *p, int np,
+                                                double R, double m, double A)
+{
+    (void)law, (void)R;
+    const double K = np >= 1 ? p[0] * A : 0.0;
+    return K > 0.0 && m > 0.0 ? 2.0 * sqrt(m / K) : 0.0;
+}
+
 const rs_law rs_law_linear_softening = {
     .name = "linear_softening",
     .nprops = 1,
@@ -40,4 +51,5 @@ const rs_law rs_law_linear_softening = {
     .prop_names = rs_linear_softening_props,
     .init = rs_linear_softening_init,
     .update = rs_linear_softening_update,
+    .critical_step = rs_linear_softening_critical_step,
 };
