@@ -156,8 +156,14 @@ void FixWallRigid::init()
              "sphere)");
     if (std::strstr(update->integrate_style, "respa"))
         fail("run_style respa is not supported; use verlet");
-    if (!tracking_given_)
-        tracking_ = neighbor->skin;
+    /* Default tracking: the law's reach (0 for a law of touching contacts), else the
+     * neighbor skin. */
+    if (!tracking_given_) {
+        const double *pv = props_.empty() ? NULL : props_.data();
+        const double reach =
+            law_->reach ? law_->reach(law_, pv, (int)props_.size()) : -1.0;
+        tracking_ = reach >= 0.0 ? reach : neighbor->skin;
+    }
     tracker_.tracking = tracking_;
 
     /* A surface of revolution spun about its own axis keeps its shape in space: the

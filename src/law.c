@@ -231,6 +231,12 @@ double rs_law_default_stiffness(double mass, double area, double dt)
     return 0.1 * 4.0 * mass / (area * dt * dt);
 }
 
+double rs_law_reach_touching(const rs_law *law, const double *props, int nprops)
+{
+    (void)law, (void)props, (void)nprops;
+    return 0.0;
+}
+
 double rs_rayleigh_time(double radius, double mass, double young, double poisson)
 {
     if (!(radius > 0.0) || !(mass > 0.0) || !(young > 0.0) ||

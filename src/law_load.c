@@ -150,6 +150,7 @@ int rs_law_load_c(const char *lib, const char *symbol, rs_law *out, rs_error *er
         if (desc->update)
             out->update = desc->update;
         out->critical_step = desc->critical_step;
+        out->reach = desc->reach;
     }
     return RS_OK;
 }

@@ -124,6 +124,9 @@ typedef struct rs_law_block {
 
 typedef struct rs_law rs_law;
 
+/// The reach of a law that acts only on touching contacts: 0.
+double rs_law_reach_touching(const rs_law *law, const double *props, int nprops);
+
 /// Rayleigh time of a sphere of radius R, mass m, Young's modulus Y and Poisson ratio
 /// nu: pi R sqrt(rho / G) / (0.1631 nu + 0.8766), rho = 3 m / (4 pi R^3),
 /// G = Y / (2 (1 + nu)). 0 when an argument is out of range.
@@ -141,6 +144,12 @@ typedef int (*rs_law_init_fn)(const rs_law *law, const double *props, int nprops
 typedef double (*rs_law_critical_step_fn)(const rs_law *law, const double *props,
                                           int nprops, double radius, double mass,
                                           double area);
+
+/// The largest gap (-rdisp(1)) at which a law can give a force or change its state under
+/// props: 0 for a law that acts only on touching contacts. Engines take it as the
+/// default tracking thickness. Optional: NULL (or a negative result) for a law that may
+/// act across a gap of its own, which then keeps the engine's default.
+typedef double (*rs_law_reach_fn)(const rs_law *law, const double *props, int nprops);
 
 /// The fraction of a law's critical step (rs_law_critical_step_fn) above which the
 /// engines warn.
@@ -163,6 +172,7 @@ struct rs_law {
     void *ctx;                     ///< loader data (library handle, wrapped routines)
     void (*destroy)(rs_law *law);  ///< optional: releases ctx
     rs_law_critical_step_fn critical_step; ///< optional: the time-step check
+    rs_law_reach_fn reach;                 ///< optional: the default tracking thickness
 };
 
 /* Registry of built-in laws (props in order; statev count; src/laws/ documents each):

@@ -96,4 +96,5 @@ const rs_law rs_law_coulomb = {
     .init = rs_coulomb_init,
     .update = rs_coulomb_update,
     .critical_step = rs_coulomb_critical_step,
+    .reach = rs_law_reach_touching,
 };

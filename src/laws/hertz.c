@@ -213,4 +213,5 @@ const rs_law rs_law_hertz = {
     .init = rs_hertz_init,
     .update = rs_hertz_update,
     .critical_step = rs_hertz_critical_step,
+    .reach = rs_law_reach_touching,
 };

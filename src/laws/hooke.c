@@ -102,4 +102,5 @@ const rs_law rs_law_hooke = {
     .init = rs_hooke_init,
     .update = rs_hooke_update,
     .critical_step = rs_hooke_critical_step,
+    .reach = rs_law_reach_touching,
 };

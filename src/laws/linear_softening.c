@@ -52,4 +52,5 @@ const rs_law rs_law_linear_softening = {
     .init = rs_linear_softening_init,
     .update = rs_linear_softening_update,
     .critical_step = rs_linear_softening_critical_step,
+    .reach = rs_law_reach_touching,
 };

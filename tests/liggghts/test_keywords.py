@@ -8,7 +8,8 @@
   or reff = 1/sqrt((1/R + k1)(1/R + k2)), k1 = 0 along the generator, k2 = -1/Rc (hoop,
   concave).
 - tracking D: a sphere hovering at gap g is a tracked contact (per-atom rdisp1 = -g) when
-  g <= D, and no contact (0) when g > D.
+  g <= D, and no contact (0) when g > D. Without the keyword the thickness is the law's
+  reach: 0 for hertz and linear_softening, the neighbor skin for bonded_interface.
 - vtk FILE N with move linear V: the surface written at step s lies at z = V s dt.
 Spheres have no integrator, so positions are exact.
 """
@@ -44,9 +45,10 @@ def drum_case(s, tag, curvature, rc, delta):
     return L.read_table(s.path(tag + ".txt"))[-1][0]
 
 
-def tracking_case(s, tag, tracking, gap):
+def tracking_case(s, tag, tracking, gap, law="hertz type 2"):
     d = L.header(BOX, DT) + L.sphere(1, (0.0, 0.0, R + gap), R, RHO)
-    d += "fix w all wall/rigid surface plane.inp law hertz type 2 tracking %r\n" % tracking
+    d += "fix w all wall/rigid surface plane.inp law %s%s\n" % (
+        law, "" if tracking is None else " tracking %r" % tracking)
     d += L.dump_lines("d", 1, tag + ".dump", "id f_w[1]") + "run 2\n"
     s.run(tag, d)
     return L.read_dump(s.path(tag + ".dump"))[-1][1][1]["f_w[1]"]
@@ -76,6 +78,15 @@ def body(s):
         r1 = tracking_case(s, "tracking_%g" % tr, tr, gap)
         ck.check("tracking %g, gap %g: per-atom rdisp1 = %g" % (tr, gap, expect),
                  abs(r1 - expect) <= 1e-15, "%.17g" % r1)
+    # default tracking: the law's reach. hertz and linear_softening act on touching
+    # contacts only (reach 0: no contact at a gap); bonded_interface acts across a gap
+    # and keeps the neighbor skin (2 mm, liglib.header): a tracked contact at rdisp1 = -g.
+    bonded = "bonded_interface props 1e-4 1e7 0.3 1e9 0 1e-3 10 type 2"
+    for law, expect in (("hertz type 2", 0.0), ("linear_softening props 1e6 type 2", 0.0),
+                        (bonded, -gap)):
+        r1 = tracking_case(s, "tracking_default_" + law.split()[0], None, gap, law)
+        ck.check("default tracking, law %s, gap %g: per-atom rdisp1 = %g"
+                 % (law.split()[0], gap, expect), abs(r1 - expect) <= 1e-15, "%.17g" % r1)
 
     v, nsteps, every = 0.1, 20, 10
     d = L.header(BOX, DT) + L.sphere(1, (0.0, 0.0, 0.02), R, RHO)
