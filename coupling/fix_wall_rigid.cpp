@@ -44,8 +44,8 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       temp_given_(false), temp_wall_(0.0), dtemp_wall_(0.0), capacity_wall_(0.0),
       heat_wall_(0.0), heat_step_(0.0), fix_temp_(NULL), fix_heatflux_(NULL),
       fix_heatcap_(NULL), vtk_every_(0), vtk_mesh_ok_(false), step_checked_(false),
-      row_(NULL), hist_(NULL), nmax_(0), rebuild_(true), se_now_(0.0), ncontact_(0),
-      out_step_(-1), out_valid_(false)
+      row_(NULL), hist_(NULL), nmax_(0), rebuild_(true), lookahead_(0.0), bounds_ok_(false),
+      se_now_(0.0), ncontact_(0), out_step_(-1), out_valid_(false)
 {
     std::memset(&surf_, 0, sizeof surf_);
     std::memset(&loaded_, 0, sizeof loaded_);
@@ -160,8 +160,7 @@ void FixWallRigid::init()
      * neighbor skin. */
     if (!tracking_given_) {
         const double *pv = props_.empty() ? NULL : props_.data();
-        const double reach =
-            law_->reach ? law_->reach(law_, pv, (int)props_.size()) : -1.0;
+        const double reach = law_->reach ? law_->reach(law_, pv, (int)props_.size()) : -1.0;
         tracking_ = reach >= 0.0 ? reach : neighbor->skin;
     }
     tracker_.tracking = tracking_;
@@ -181,6 +180,13 @@ void FixWallRigid::init()
                                                      domain->zprd * domain->zprd));
         spin_invariant_ = rs_norm3(ax) < 1e-12 && rs_norm3(rx) < 1e-12 * scale;
     }
+    /* Distance bounds hold while the surface stays where it is in space: at rest, or
+     * spun about its own axis without translation. */
+    bool translates = !var_vel_[0].empty() || !var_vel_[1].empty() || !var_vel_[2].empty();
+    for (int d = 0; d < 3; d++)
+        translates = translates || motion_.vel[d] != 0.0;
+    bounds_ok_ = !moving_ || (spin_invariant_ && !translates);
+    lookahead_ = bounds_ok_ ? neighbor->skin : 0.0;
     if (hertz_ && !props_given_)
         init_hertz_props();
     init_variables();
@@ -426,7 +432,7 @@ void FixWallRigid::init_scratch()
     bid_.resize(np), bdir_.resize(np), bhist_.resize(np), bidx_.resize(np);
     take_.resize(np);
     deepest_.resize(np);
-    for (std::vector<double> *a : {&bmass_, &bheat_, &btemp_, &bdtemp_})
+    for (std::vector<double> *a : {&bmass_, &bheat_, &btemp_, &bdtemp_, &bgap_})
         a->resize(np);
     btype_.resize(np);
     bpred_.resize(np * npred), bdpred_.resize(np * npred);
@@ -525,6 +531,31 @@ void FixWallRigid::build_candidates()
         disp_at_build_[d] = motion_.disp[d];
     phi_at_build_ = motion_.phi;
     rebuild_ = false;
+    /* No bound yet: every candidate is queried on its next step. */
+    if ((int)gapref_.size() < nlocal) {
+        gapref_.resize(nlocal);
+        xref_.resize(4 * (size_t)nlocal);
+    }
+    std::fill(gapref_.begin(), gapref_.begin() + nlocal, -INFINITY);
+}
+
+/* After a block's query: each particle's smallest gap (gmin, the look-ahead where it has
+ * no contact within it) at its position now. */
+void FixWallRigid::update_bounds(const int *idx, int n, const double *gmin)
+{
+    double **x = atom->x;
+    const double *radius = atom->radius;
+    for (int k = 0; k < n; k++) {
+        const int i = idx[k];
+        gapref_[i] = gmin[k];
+        if (!(gmin[k] > tracking_))
+            continue; /* no room: the position does not matter */
+        double *xr = &xref_[4 * (size_t)i];
+        xr[0] = x[i][0];
+        xr[1] = x[i][1];
+        xr[2] = x[i][2];
+        xr[3] = radius[i];
+    }
 }
 
 void FixWallRigid::compute(bool setup_call)
@@ -555,20 +586,50 @@ void FixWallRigid::compute(bool setup_call)
     if (refresh)
         build_candidates();
 
+    /* The candidates this step: all of them, less those that hold no contact and whose
+     * distance bound keeps them beyond the tracking thickness (a test as cheap as a
+     * primitive wall's). */
+    const int *list = cand_.data();
+    int nc = (int)cand_.size();
+    if (bounds_ok_ && !setup_call) {
+        double **x = atom->x;
+        const double *radius = atom->radius;
+        active_.resize(cand_.size());
+        int na = 0;
+        for (int c = 0; c < nc; c++) {
+            const int i = cand_[c];
+            const double room = gapref_[i] - tracking_;
+            const double *xr = &xref_[4 * (size_t)i];
+            if (room > 0.0 && radius[i] == xr[3]) {
+                const double dx = x[i][0] - xr[0], dy = x[i][1] - xr[1],
+                             dz = x[i][2] - xr[2];
+                if (dx * dx + dy * dy + dz * dz < room * room) {
+                    bool held = false;
+                    for (int j = 0; j < capacity_; j++)
+                        held |= row_[i][j] != RS_DIR_EMPTY;
+                    if (!held)
+                        continue;
+                }
+            }
+            active_[na++] = i;
+        }
+        list = active_.data();
+        nc = na;
+    }
+
     /* Blocks of at most RS_BLOCK particles; with per-type properties a block holds one
      * particle type (the candidates are sorted by type). */
     const bool per_type = hertz_ && !props_given_;
     const int *type = atom->type;
-    const int nc = (int)cand_.size();
     for (int b0 = 0; b0 < nc;) {
         int b1 = std::min(nc, b0 + RS_BLOCK);
         if (per_type)
             for (int k = b0 + 1; k < b1; k++)
-                if (type[cand_[k]] != type[cand_[b0]]) {
+                if (type[list[k]] != type[list[b0]]) {
                     b1 = k;
                     break;
                 }
-        process_block(&cand_[b0], b1 - b0, setup_call);
+        process_block(&list[b0], b1 - b0, setup_call);
         b0 = b1;
     }
 

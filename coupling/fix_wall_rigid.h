@@ -210,6 +210,19 @@ class FixWallRigid : public Fix
     /* candidates: local atom indices near the surface, bucketed by type for hertz */
     std::vector<int> cand_;
     bool rebuild_;
+    /* Distance bounds: a candidate queried at x_ref with radius R_ref had gap >= gap_ref
+     * to every feature (the query looks ahead by lookahead_ beyond tracking). While its
+     * radius is R_ref, |x - x_ref| < gap_ref - tracking and it holds no contact, it
+     * cannot come within the tracking thickness: the step skips it. Per local atom (x,
+     * y, z, R in xref_), reset with the candidates; only for a wall that stays in
+     * place. */
+    std::vector<double> xref_, gapref_;
+    std::vector<int> active_;
+    double lookahead_;
+    bool bounds_ok_;
+    std::vector<double> bgap_; // per particle of a block: its smallest gap
+    void update_bounds(const int *idx, int n, const double *gmin);
+    void keep_tracked(const int *idx, int n, double dist_min);
 
     /* scratch of one block, sized once in init() (init_scratch) */
     rs_contacts contacts_;

@@ -66,11 +66,13 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     q.slave.x = bx_.data(), q.slave.y = by_.data(), q.slave.z = bz_.data();
     q.slave.radius = brad_.data();
     q.pose = &motion_.pose;
-    q.gap_max = tracking_;
-    q.dist_min = -rmax;
+    q.gap_max = tracking_ + lookahead_;
+    q.dist_min = bounds_ok_ ? -INFINITY : -rmax;
     contacts_.n = 0;
     if (rs_surface_query(&surf_, &q, &contacts_, &err) != RS_OK)
         fail_one(std::string("surface query: ") + err.msg);
+    if (bounds_ok_)
+        keep_tracked(idx, n, -rmax);
 
     rs_particles p;
     p.n = n;
@@ -166,6 +168,44 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         return;
     }
     rs_track_commit(&tracker_, &tout_, cb_.stress, ns ? cb_.statev : NULL);
+}
+
+/* The query looked ahead beyond the tracking thickness, and behind the surface without
+ * limit: each particle's smallest gap over every feature within reach (any depth)
+ * becomes its distance bound. The contacts beyond the thickness or deeper than dist_min
+ * leave the list (kept in order), so the tracker sees what a query to the thickness
+ * gives. */
+void FixWallRigid::keep_tracked(const int *idx, int n, double dist_min)
+{
+    double *__restrict gmin = bgap_.data();
+    const double *__restrict R = brad_.data();
+    for (int k = 0; k < n; k++)
+        gmin[k] = tracking_ + lookahead_;
+    rs_contacts &c = contacts_;
+    int m = 0;
+    for (int e = 0; e < c.n; e++) {
+        const int k = c.point[e];
+        const double gap = c.dist[e] - R[k];
+        gmin[k] = std::min(gmin[k], gap);
+        if (gap > tracking_ || c.dist[e] < dist_min)
+            continue;
+        if (m != e) {
+            c.point[m] = c.point[e];
+            c.feature[m] = c.feature[e];
+            for (int d = 0; d < 3; d++) {
+                c.xm[d][m] = c.xm[d][e];
+                c.nrm[d][m] = c.nrm[d][e];
+                c.t1[d][m] = c.t1[d][e];
+                c.t2[d][m] = c.t2[d][e];
+            }
+            c.dist[m] = c.dist[e];
+            c.curv[0][m] = c.curv[0][e];
+            c.curv[1][m] = c.curv[1][e];
+        }
+        m++;
+    }
+    c.n = m;
+    update_bounds(idx, n, gmin);
 }
 
 /* The law's per-contact inputs (rs_cblock_inputs) from the block's particles, with their

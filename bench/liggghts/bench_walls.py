@@ -2,7 +2,7 @@
 """LIGGGHTS-side benchmarks of fix wall/rigid, measured side by side in one run.
 
     bench_walls.py --exe liggghts-rigidsurf [--quick] [--max-n N] [--reps K] [--out FILE]
-                   [--sections 1,1b,1c,1d,2,3]
+                   [--sections 1,1b,1c,1d,1e,2,3]
 
 1. Wall cost, cylinder. N spheres (R = 1 mm) form a monolayer on the inside of a
    cylinder of radius 50 mm about z (rings of spheres 2.2 R apart, layers 2.2 R apart,
@@ -41,6 +41,13 @@
    these open contacts to the law every step, as Abaqus does (rdisp(1) < 0), so they
    cost what a touching contact does; 'ours_t0' is the same wall with tracking 0, where
    they are queried but not tracked.
+1e. A bouncing bed, default keywords: 20000 spheres pressed on the wall (equilibrium
+   overlap under the push), kicked inward at 0.2 m/s at the start. The push brings them
+   back: they rebound inside the skin (0.2 mm high, 4 ms the first flight), hit the wall
+   again at restitution 0.5, and bounce lower each time, 1000 steps (10 ms): most
+   particle-steps are spheres in the skin, not touching. Variants none, prim, ours (no
+   keyword beyond the law: tracking is the law's reach, 0 for hertz) and ours_skin
+   (tracking = the skin, every sphere in the skin an open contact).
 2. Scaling: the same for N = 1e3 .. max-n (ours and prim; mesh at 1e4 only).
 3. Strong scaling: a rotating drum (REVOLUTION mantle and end caps, 2 rad/s, gravity)
    with a settling bed of interacting spheres, 1 and 2 MPI ranks, loop time.
@@ -60,7 +67,9 @@ R, RHO, RC, F0, DT = 1.0e-3, 2500.0, 0.05, 1.0e-3, 1.0e-5
 VFLOW = 0.5  # hoop speed of the flowing bed (m/s)
 SKIN = 0.0005  # neighbour skin of the decks (m)
 GAP_NEAR = 3.0e-4  # gap of the spheres of section 1d (m), inside the tracking thickness
-SECTIONS = ["1", "1b", "1c", "1d", "2", "3"]
+SECTIONS = ["1", "1b", "1c", "1d", "1e", "2", "3"]
+VKICK = 0.2  # inward speed of the bouncing bed at the start (m/s), section 1e
+N_BOUNCE = 20000  # spheres of the bouncing bed
 # Section 1c: the STL cylinder's quads (NTHETA x NZ, 4000 triangles) and the skin.
 MESH_CASES = [((400, 5), SKIN), ((200, 10), SKIN), ((100, 20), SKIN), ((63, 32), SKIN),
               ((200, 10), 4 * SKIN)]
@@ -128,7 +137,7 @@ def write_data(path, pts, height):
             f.write("%d 1 %r %r %.12g %.12g %.12g\n" % (i + 1, 2 * R, RHO, x, y, z))
 
 
-def wall_deck(variant, data, steps, height, flow=False, skin=SKIN, push=True):
+def wall_deck(variant, data, steps, height, flow=False, skin=SKIN, push=True, kick=0.0):
     d = DECK_HEAD + "read_data %s\n" % data + materials(skin) + "timestep %r\n" % DT
     f0 = F0 if push and variant != "none" else 0.0
     d += "variable f0 equal %r\n" % f0
@@ -145,6 +154,9 @@ def wall_deck(variant, data, steps, height, flow=False, skin=SKIN, push=True):
         d += ("variable vx atom -%r*y/sqrt(x*x+y*y)\nvariable vy atom %r*x/sqrt(x*x+y*y)\n"
               % (VFLOW, VFLOW))
         d += "set group all vx v_vx vy v_vy omegaz %r\n" % (-VFLOW / R)
+    if kick and variant != "none":
+        d += ("variable kx atom -%r*x/sqrt(x*x+y*y)\nvariable ky atom -%r*y/sqrt(x*x+y*y)\n"
+              "set group all vx v_kx vy v_ky\n" % (kick, kick))
     d += "fix push all addforce v_fx v_fy 0\n"
     if variant == "prim":
         d += "fix w all wall/gran model hertz tangential history primitive type 2 zcylinder %r 0 0\n" % RC
@@ -152,6 +164,8 @@ def wall_deck(variant, data, steps, height, flow=False, skin=SKIN, push=True):
         d += "fix w all wall/rigid surface cyl.inp law hertz type 2\n"
     elif variant == "ours_t0":
         d += "fix w all wall/rigid surface cyl.inp law hertz type 2 tracking 0\n"
+    elif variant == "ours_skin":
+        d += "fix w all wall/rigid surface cyl.inp law hertz type 2 tracking %r\n" % skin
     elif variant == "mesh":
         d += "fix cad all mesh/surface file cyl.stl type 2\n"
         d += "fix w all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n"
@@ -196,7 +210,7 @@ def run_deck(exe, workdir, name, deck, np=1):
 
 
 def wall_costs(exe, workdir, n, variants, reps, log, flow=False, grid=(200, 10), skin=SKIN,
-               gap=None):
+               gap=None, kick=0.0, steps=None):
     """Wall cost per particle-step of each variant. grid: the STL's NTHETA x NZ; gap:
     spheres that far from the wall and no push (None: pressed on the wall)."""
     pts, height = monolayer(n, gap)
@@ -209,14 +223,14 @@ def wall_costs(exe, workdir, n, variants, reps, log, flow=False, grid=(200, 10),
         subprocess.run([sys.executable, os.path.join(HERE, "make_stl.py"),
                         os.path.join(workdir, "cyl.stl"), repr(RC), "-0.002",
                         repr(height + 0.002), str(grid[0]), str(grid[1])], check=True)
-    steps = int(min(10000, max(100, 1.0e7 / n)))
+    steps = steps or int(min(10000, max(100, 1.0e7 / n)))
     best = {}
     per_rep = []  # loop times of each repetition, run back to back
     for rep in range(reps):
         loops = {}
         for v in ["none"] + variants:
             r = run_deck(exe, workdir, "%s_%d" % (v, n),
-                         wall_deck(v, data, steps, height, flow, skin, gap is None))
+                         wall_deck(v, data, steps, height, flow, skin, gap is None, kick))
             if r["atoms"] != n:
                 sys.exit("bench: %s lost atoms (%d of %d)" % (v, r["atoms"], n))
             loops[v] = r["loop"]
@@ -331,6 +345,15 @@ def main():
         log("ours (open contacts passed to the law) = %.3g us, ours with tracking 0 = %.3g us,"
             " prim = %.3g us, mesh = %.3g us"
             % tuple(1e6 * c[v] for v in ("ours", "ours_t0", "prim", "mesh")))
+
+    if "1e" in want:
+        nb = 2000 if args.quick else N_BOUNCE
+        log("## 1e. a bouncing bed, default keywords (kicked inward at %g m/s: rebounds "
+            "inside the skin, %d spheres, 1000 steps)" % (VKICK, nb))
+        r = wall_costs(exe, work, nb, ["prim", "ours", "ours_skin"], reps, log, kick=VKICK,
+                       steps=1000)
+        log("ours / prim = %s (target <= 1.2)" % ratio(r, "ours", "prim"))
+        log("ours_skin / prim = %s" % ratio(r, "ours_skin", "prim"))
 
     if "2" in want:
         scaling(exe, work, args, reps, log)
