@@ -15,6 +15,10 @@ static int analytic_adjacent(const rs_surface *s, int fa, int fb)
 {
     if (fa == fb)
         return 1;
+    if (fa >= 0 && fb >= 0 && RS_FEATURE_SECTOR(fa) != RS_FEATURE_SECTOR(fb))
+        return 0; /* ring sectors of a REVOLUTION hand over within their sector */
+    fa = fa < 0 ? fa : RS_FEATURE_BASE(fa);
+    fb = fb < 0 ? fb : RS_FEATURE_BASE(fb);
     const rs_profile *p = &s->profile;
     int n = p->nseg, nv = p->nvert;
     if (n < 1 || !p->vkind || fa < 0 || fb < 0)

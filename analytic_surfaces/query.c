@@ -6,6 +6,7 @@
  * points to the reference configuration and rotating the results back, so the frame
  * turns with the master (docs/conventions.md, "Profiles and surfaces"). */
 #include "profile.h"
+#include "rigidsurf/vec.h"
 #include "rs_compiler.h"
 
 #include <math.h>
@@ -144,6 +145,180 @@ map_extrusion(const double *F, int k0, int k1, const int *restrict point, int i0
     }
 }
 
+/* Profile contacts of 2D points pts into tmp (emptied first), growing it as needed. */
+static int profile_contacts(const rs_pcache *pc, const rs_ppoints *pts, rs_contacts *tmp,
+                            rs_pscratch *sc, rs_error *err)
+{
+    tmp->n = 0;
+    for (int i = 0;;) {
+        int need = 0;
+        i = rs_pcache_points(pc, pts, i, tmp, sc, &need);
+        if (i >= pts->n)
+            return RS_OK;
+        int rc = rs_contacts_reserve(tmp, 2 * (tmp->n + need) + 64, err);
+        if (rc)
+            return rc;
+    }
+}
+
+/* Appends contact k of src to dst (room reserved by the caller). */
+static void copy_contact(rs_contacts *dst, const rs_contacts *src, int k)
+{
+    const int m = dst->n++;
+    dst->point[m] = src->point[k];
+    dst->feature[m] = src->feature[k];
+    for (int d = 0; d < 3; d++) {
+        dst->xm[d][m] = src->xm[d][k];
+        dst->nrm[d][m] = src->nrm[d][k];
+        dst->t1[d][m] = src->t1[d][k];
+        dst->t2[d][m] = src->t2[d][k];
+    }
+    dst->dist[m] = src->dist[k];
+    dst->curv[0][m] = src->curv[0][k];
+    dst->curv[1][m] = src->curv[1][k];
+}
+
+/* Rings around the axis (REVOLUTION, spheres; docs/conventions.md). A sphere whose
+ * reach contains the axis may touch the surface all around it, as in an outlet narrower
+ * than the sphere. The ring closes when, in the half-plane opposite the sphere's own
+ * azimuth, the profile's closest point (at any distance) lies off the axis. Then the
+ * half-planes at the azimuths theta + 2 pi s / RS_RING_SECTORS, s = 1 .. RS_RING_SECTORS
+ * - 1, each give the contacts of their closest profile points Q off the axis, with the
+ * 3D distance |P - Q|, the normal along P - Q and the feature f + s RS_SECTOR_STRIDE.
+ * In the chunk's contacts [k0, out->n) they follow each point's own, in sector order. */
+static int ring_sectors(const rs_pcache *pc, const double *F, double axis_tol, int i0,
+                        int m, const double *pu, const double *pv, const double *dh,
+                        const double *cxs, const double *cys, const rs_query *q, int sides,
+                        int k0, rs_contacts *out, rs_contacts *tmp, rs_contacts *extra,
+                        rs_pscratch *sc, rs_error *err)
+{
+    enum { CH = 128 };
+    const int K = RS_RING_SECTORS;
+    int idx[CH], ring[CH], map[CH], n = 0, nring = 0;
+    double su[CH], sv[CH], sd[CH];
+    for (int j = 0; j < m; j++)
+        if (pu[j] < dh[j])
+            idx[n++] = j;
+    if (n == 0)
+        return RS_OK;
+    /* the gate: the opposite half-plane's closest profile point, at any distance */
+    for (int a = 0; a < n; a++) {
+        su[a] = -pu[idx[a]];
+        sv[a] = pv[idx[a]];
+        sd[a] = INFINITY;
+    }
+    {
+        const rs_ppoints pts = {n, su, sv, sd, -INFINITY, 0};
+        int rc = profile_contacts(pc, &pts, tmp, sc, err);
+        if (rc)
+            return rc;
+        double best[CH];
+        for (int a = 0; a < n; a++) {
+            best[a] = INFINITY;
+            ring[a] = 0;
+        }
+        for (int k = 0; k < tmp->n; k++) {
+            const int a = tmp->point[k];
+            if (fabs(tmp->dist[k]) < best[a]) {
+                best[a] = fabs(tmp->dist[k]);
+                ring[a] = tmp->xm[0][k] > axis_tol;
+            }
+        }
+        for (int a = 0; a < n; a++)
+            nring += ring[a];
+    }
+    extra->n = 0;
+    for (int s = 1; s < K && nring > 0; s++) {
+        const double ang = 2.0 * RS_PI * s / K, ca = cos(ang), sa = sin(ang);
+        int nn = 0;
+        for (int a = 0; a < n; a++) {
+            if (!ring[a])
+                continue;
+            const int j = idx[a];
+            su[nn] = pu[j] * ca;
+            sv[nn] = pv[j];
+            sd[nn] = dh[j]; /* the in-plane distance is at most the 3D one */
+            map[nn++] = a;
+        }
+        const rs_ppoints pts = {nn, su, sv, sd, -INFINITY, 0};
+        int rc = profile_contacts(pc, &pts, tmp, sc, err);
+        if (rc)
+            return rc;
+        if ((rc = rs_contacts_reserve(extra, extra->n + tmp->n + 1, err)) != RS_OK)
+            return rc;
+        for (int k = 0; k < tmp->n; k++) {
+            const double qr = tmp->xm[0][k], qz = tmp->xm[1][k];
+            if (!(qr > axis_tol))
+                continue; /* on the axis: the surface closes there */
+            const int j = idx[map[tmp->point[k]]], i = i0 + j;
+            const double cx = cxs[j] * ca - cys[j] * sa, cy = cxs[j] * sa + cys[j] * ca;
+            double er[3], Q[3], w[3];
+            const double P[3] = {q->slave.x[i], q->slave.y[i], q->slave.z[i]};
+            for (int d = 0; d < 3; d++) {
+                er[d] = cx * F[3 + d] + cy * F[6 + d];
+                Q[d] = F[d] + qr * er[d] + qz * F[9 + d];
+                w[d] = P[d] - Q[d];
+            }
+            const double nr = tmp->nrm[0][k], nz = tmp->nrm[1][k], d3 = rs_norm3(w);
+            /* the side of the profile the point is on, as the profile query found it */
+            const double side = tmp->dist[k] < 0.0 ? -1.0 : 1.0, dist = side * d3;
+            if ((sides != 2 && dist < 0.0) || !(dist - q->slave.radius[i] <= q->gap_max) ||
+                !(dist >= q->dist_min))
+                continue;
+            double n3[3], d1[3], d2[3], dot = 0.0;
+            for (int d = 0; d < 3; d++)
+                n3[d] =
+                    d3 > 1e-12 * pc->size ? side * w[d] / d3 : nr * er[d] + nz * F[9 + d];
+            /* d1: the profile's travel in this half-plane, made normal to n */
+            for (int d = 0; d < 3; d++) {
+                d1[d] = nz * er[d] - nr * F[9 + d];
+                dot += d1[d] * n3[d];
+            }
+            for (int d = 0; d < 3; d++)
+                d1[d] -= dot * n3[d];
+            const double l1 = rs_norm3(d1);
+            for (int d = 0; d < 3; d++)
+                d1[d] /= l1;
+            rs_cross3(n3, d1, d2);
+            const int e = extra->n++;
+            extra->point[e] = i;
+            extra->feature[e] = tmp->feature[k] + s * RS_SECTOR_STRIDE;
+            for (int d = 0; d < 3; d++) {
+                extra->xm[d][e] = Q[d];
+                extra->nrm[d][e] = n3[d];
+                extra->t1[d][e] = d1[d];
+                extra->t2[d][e] = d2[d];
+            }
+            extra->dist[e] = dist;
+            extra->curv[0][e] = tmp->curv[0][k];
+            extra->curv[1][e] = nr / qr;
+        }
+    }
+    if (extra->n == 0)
+        return RS_OK;
+    /* merge: each point's own contacts, then its ring contacts (already in sector
+     * order, as they were made sector by sector) */
+    const int nown = out->n - k0;
+    int rc = rs_contacts_reserve(tmp, nown + 1, err);
+    if (rc)
+        return rc;
+    tmp->n = 0;
+    for (int k = k0; k < out->n; k++)
+        copy_contact(tmp, out, k);
+    if ((rc = rs_contacts_reserve(out, k0 + nown + extra->n + 1, err)) != RS_OK)
+        return rc;
+    out->n = k0;
+    for (int j = 0, a = 0; j < m; j++) {
+        const int i = i0 + j;
+        for (; a < tmp->n && tmp->point[a] == i; a++)
+            copy_contact(out, tmp, a);
+        for (int e = 0; e < extra->n; e++)
+            if (extra->point[e] == i)
+                copy_contact(out, extra, e);
+    }
+    return RS_OK;
+}
+
 int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out,
                         rs_error *err)
 {
@@ -203,6 +378,9 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
     }
     const double axis_tol = 1e-12 * pc->size;
     int rc = RS_OK;
+    rs_contacts tmp, extra; /* the ring sectors' scratch */
+    memset(&tmp, 0, sizeof tmp);
+    memset(&extra, 0, sizeof extra);
     /* Per chunk of points, in three passes: the local coordinates of every point, the
      * profile contacts (written in profile-plane form into out, with the values the
      * mapping needs carried along), then each contact mapped to 3D in place. */
@@ -238,18 +416,26 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
                 goto done;
             }
         }
-        if (kind == RS_SURF_REVOLUTION)
+        if (kind == RS_SURF_REVOLUTION) {
             map_revolution(F, axis_tol, k0, out->n, out->point, i0, cxs, cys, out->xm[0],
                            out->xm[1], out->xm[2], out->nrm[0], out->nrm[1], out->nrm[2],
                            out->t1[0], out->t1[1], out->t1[2], out->t2[0], out->t2[1],
                            out->t2[2], out->curv[1]);
-        else
+            if (q->slave.radius &&
+                (rc = ring_sectors(pc, F, axis_tol, i0, m, pu, pv, dh, cxs, cys, q,
+                                   s->sides, k0, out, &tmp, &extra, &sc, err)) != RS_OK) {
+                out->n = k0;
+                goto done;
+            }
+        } else
             map_extrusion(F, k0, out->n, out->point, i0, pw, out->xm[0], out->xm[1],
                           out->xm[2], out->nrm[0], out->nrm[1], out->nrm[2], out->t1[0],
                           out->t1[1], out->t1[2], out->t2[0], out->t2[1], out->t2[2],
                           out->curv[1]);
     }
 done:
+    rs_contacts_free(&tmp);
+    rs_contacts_free(&extra);
     rs_pscratch_free(&sc);
     free(own);
     return rc;

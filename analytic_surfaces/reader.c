@@ -536,6 +536,13 @@ static int finish_draft(parser *ps, draft *d, rs_surface *s)
     if (d->fillet > 0.0 && (rc = rs_profile_fillet(&s->profile, d->fillet, &d->segline,
                                                    ps->origin, ps->err)) != RS_OK)
         goto fail;
+    if (s->profile.nseg > RS_SECTOR_STRIDE / 4 - 2) {
+        rc = rs_error_set(ps->err, RS_ERR_GEOMETRY,
+                          "%s:%d: surface '%s' has %d segments (expected at most %d)",
+                          ps->origin, d->kline, d->name, s->profile.nseg,
+                          RS_SECTOR_STRIDE / 4 - 2);
+        goto fail;
+    }
     if (s->kind == RS_SURF_REVOLUTION) {
         double tol = 1e-12 * rs_profile_size(&s->profile);
         for (int k = 0; k < s->profile.nseg; k++) {

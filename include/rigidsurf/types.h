@@ -57,6 +57,13 @@ void rs_error_clear(rs_error *err);
 #define RS_FEATURE_TYPE(f) ((f)&3)
 #define RS_FEATURE_INDEX(f) ((f) >> 2)
 #define RS_FEATURE_NONE (-1)
+/* A REVOLUTION surface's ring sector s (1 .. RS_RING_SECTORS - 1) of a profile feature
+ * f: f + s * RS_SECTOR_STRIDE (docs/conventions.md, "Rings around the axis"). Type and
+ * the equality of ids work as for any feature. */
+#define RS_RING_SECTORS 4
+#define RS_SECTOR_STRIDE (1 << 24)
+#define RS_FEATURE_SECTOR(f) ((f) / RS_SECTOR_STRIDE)
+#define RS_FEATURE_BASE(f) ((f) % RS_SECTOR_STRIDE)
 
 /* Abaqus (column-major) layout. i, j are 0-based components, k the contact.
  *   a(nd, n):        RS_A2(a, nd, i, k)      e.g. stress, rdisp, coordSlv
