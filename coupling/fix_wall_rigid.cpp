@@ -539,17 +539,20 @@ void FixWallRigid::build_candidates()
     std::fill(gapref_.begin(), gapref_.begin() + nlocal, -INFINITY);
 }
 
-/* After a block's query: each particle's smallest gap (gmin, the look-ahead where it has
- * no contact within it) at its position now. */
+/* After a block's query: the bound of each particle without a contact within the
+ * tracking thickness, its smallest gap (gmin, the look-ahead where nothing is within
+ * it) at its position now. A particle with a contact holds it, so is not skipped; an
+ * older bound stays valid for it (the distance to a fixed surface changes no faster
+ * than the particle moves). */
 void FixWallRigid::update_bounds(const int *idx, int n, const double *gmin)
 {
     double **x = atom->x;
     const double *radius = atom->radius;
     for (int k = 0; k < n; k++) {
+        if (!(gmin[k] > tracking_))
+            continue;
         const int i = idx[k];
         gapref_[i] = gmin[k];
-        if (!(gmin[k] > tracking_))
-            continue; /* no room: the position does not matter */
         double *xr = &xref_[4 * (size_t)i];
         xr[0] = x[i][0];
         xr[1] = x[i][1];
