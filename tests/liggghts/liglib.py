@@ -236,5 +236,29 @@ def error_lines(out):
     return [l for l in out.splitlines() if l.startswith("ERROR")]
 
 
+def one_sphere_deck(fix_line):
+    """A deck with one sphere above plane.inp and fix_line, 10 steps: valid unless the
+    fix line is not."""
+    d = header((-0.1, 0.1, -0.1, 0.1, -0.05, 0.2), 1e-5)
+    d += sphere(1, (0, 0, 0.02), 0.005, 2500.0)
+    d += fix_line + "\n"
+    d += "fix integr all nve/sphere\nrun 10\n"
+    return d
+
+
+def check_rejected(ck, name, line, want, rc, out):
+    """The run of a bad line ended cleanly (exit 1: no signal, no abort, no uncaught
+    exception) with one error message that holds every string of want. An error found
+    on one rank (error->one) may print its message twice; it is one message."""
+    errs = sorted(set(e.split(": ", 1)[-1] for e in error_lines(out)))
+    crash = rc is None or rc < 0 or rc in (134, 136, 139) or "Segmentation" in out \
+        or "MPI_ABORT" in out or "terminate called" in out or "signal" in out.lower()
+    text = errs[0] if errs else ""
+    missing = [w for w in want if w not in text]
+    return ck.check(name, rc == 1 and not crash and len(errs) == 1 and not missing, text,
+                    why="exit %s, %d error messages, missing %s\n  line: %s\n  tail: %s"
+                    % (rc, len(errs), missing, line, " | ".join(out.splitlines()[-4:])))
+
+
 def isfinite_all(vals):
     return all(math.isfinite(v) for v in vals)
