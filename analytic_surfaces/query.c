@@ -262,7 +262,7 @@ static int ring_sectors(const rs_pcache *pc, const double *F, double axis_tol, i
             const double nr = tmp->nrm[0][k], nz = tmp->nrm[1][k], d3 = rs_norm3(w);
             /* the side of the profile the point is on, as the profile query found it */
             const double side = tmp->dist[k] < 0.0 ? -1.0 : 1.0, dist = side * d3;
-            if ((sides != 2 && dist < 0.0) || !(dist - q->slave.radius[i] <= q->gap_max) ||
+            if ((sides != 2 && dist < 0.0) || !(dist <= q->gap_max + q->slave.radius[i]) ||
                 !(dist >= q->dist_min))
                 continue;
             double n3[3], d1[3], d2[3], dot = 0.0;

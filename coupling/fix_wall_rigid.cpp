@@ -552,7 +552,7 @@ void FixWallRigid::update_bounds(const int *idx, int n, const double *gmin)
         if (!(gmin[k] > tracking_))
             continue;
         const int i = idx[k];
-        gapref_[i] = gmin[k];
+        gapref_[i] = gmin[k] - 1e-9 * radius[i]; /* a margin for the rounding of the gap */
         double *xr = &xref_[4 * (size_t)i];
         xr[0] = x[i][0];
         xr[1] = x[i][1];

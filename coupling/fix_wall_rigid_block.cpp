@@ -187,8 +187,8 @@ void FixWallRigid::keep_tracked(const int *idx, int n, double dist_min)
         const int k = c.point[e];
         const double gap = c.dist[e] - R[k];
         gmin[k] = std::min(gmin[k], gap);
-        if (gap > tracking_ || c.dist[e] < dist_min)
-            continue;
+        if (!(c.dist[e] <= tracking_ + R[k]) || c.dist[e] < dist_min)
+            continue; /* the query's own test with gap_max = tracking */
         if (m != e) {
             c.point[m] = c.point[e];
             c.feature[m] = c.feature[e];
