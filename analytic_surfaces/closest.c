@@ -348,18 +348,18 @@ int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double
     int l = 0;
     while (l < pc->nlevel && pc->margin[l] < reach)
         l++;
-    const int *list = pc->all, *end = pc->all + n;
+    const int *list = pc->boff + pc->all_at, *end = list + n;
     if (l < pc->nlevel) {
         double c = pc->axis ? py : px;
         double f = (c - pc->lo) * pc->inv_w, top = (double)(pc->nbucket - 1);
         int b = f > 0.0 ? (int)(f < top ? f : top) : 0;
         const int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
-        list = pc->blist + bs[b];
-        end = pc->blist + bs[b + 1];
+        list = pc->boff + bs[b];
+        end = pc->boff + bs[b + 1];
     }
     int neg = 0;
     for (; list < end; list++) {
-        const int k = *list;
+        const int k = rs_pcache_seg(*list);
         const rs_pseg *q = &pc->ps[k];
         if (q->box[0] - px > reach || px - q->box[1] > reach || q->box[2] - py > reach ||
             py - q->box[3] > reach)
@@ -490,7 +490,8 @@ RS_INLINE int put_line(const pout *o, int nh, int k, const rs_pseg *q, int pt, d
 enum { PP_SUB = 64 };
 
 /* Per point: a pre-pass over a run of points finds each one's reach and its bucket's
- * list (offsets into blist; pc->all lies after it), then one pass per point walks the
+ * list (offsets into boff; every segment's list starts at all_at), then one pass per
+ * point walks the
  * near segments in profile order, each followed at once by its contacts (vertex k,
  * segment k, closing vertex), which is the order of rs_pcache_hits when no Voronoi pair
  * can drop a face. A penetrated face with one side (the Voronoi pass) and the start
@@ -630,8 +631,8 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
     const double top = (double)(pc->nbucket - 1);
     const int base = pts->base;
     const rs_pseg *ps = pc->ps;
-    const int *const blist = pc->blist, *const boff = pc->boff;
-    const int all = (int)(pc->all - blist);
+    const int *const boff = pc->boff;
+    const int all = pc->all_at;
     const double *const pu = pts->u, *const pv = pts->v, *const pdh = pts->dhi;
     const double *const pax = pc->axis ? pv : pu;
     const pout o = {out->point,  out->feature, out->xm[0], out->xm[1],

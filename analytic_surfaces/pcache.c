@@ -52,7 +52,7 @@ static double bucket_cost(const rs_pcache *pc, double margin, int *diff)
 }
 
 /* Entries of one level; with bstart and blist, also the lists (bstart: nbucket + 1
- * offsets). */
+ * offsets; blist: byte offsets of the segments into ps). */
 static long bucket_level(const rs_pcache *pc, double margin, int *bstart, int *blist)
 {
     int nb = pc->nbucket, ax = pc->axis;
@@ -79,7 +79,7 @@ static long bucket_level(const rs_pcache *pc, double margin, int *bstart, int *b
         const double *box = pc->ps[k].box + 2 * ax;
         bucket_span(pc, box[0] - margin, box[1] + margin, &b0, &b1);
         for (int b = b0; b <= b1; b++)
-            blist[bstart[b]++] = k;
+            blist[bstart[b]++] = k * (int)sizeof(rs_pseg);
     }
     for (int b = nb; b > 0; b--)
         bstart[b] = bstart[b - 1];
@@ -127,7 +127,7 @@ static int chain_owner(const rs_pcache *pc, double margin, int b, const int *lis
     const double c0 = pc->lo + b * w - slack, c1 = pc->lo + (b + 1) * w + slack;
     const double strip = margin + 1e-6 * pc->size;
     for (int e = 0; e < cnt; e++) {
-        const rs_pseg *q = &pc->ps[list[e]];
+        const rs_pseg *q = &pc->ps[rs_pcache_seg(list[e])];
         const double tax = q->t[ax];
         if (!(fabs(tax) > 1e-3))
             continue; /* the strip runs along the band: no bounded region */
@@ -146,7 +146,7 @@ static int chain_owner(const rs_pcache *pc, double margin, int b, const int *lis
             const int f = i < 0 ? e : i;
             if (i == e)
                 continue;
-            const rs_pseg *r = &pc->ps[list[f]];
+            const rs_pseg *r = &pc->ps[rs_pcache_seg(list[f])];
             int in = 1, before = 1, after = 1;
             for (int c = 0; c < 4; c++) {
                 double dB, dA;
@@ -158,7 +158,7 @@ static int chain_owner(const rs_pcache *pc, double margin, int b, const int *lis
             ok = f == e ? in : (before || after);
         }
         if (ok)
-            return list[e];
+            return rs_pcache_seg(list[e]);
     }
     return -1;
 }
@@ -367,8 +367,8 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
         pc->nlevel =
             bucket_levels(pc, hi[best_axis] - lo[best_axis], 32L * bps * n + 64, &entries);
     }
-    size_t ints = (size_t)pc->nlevel * (size_t)(2 * pc->nbucket + 1) +
-                  2 * ((size_t)entries + (size_t)n);
+    size_t ints =
+        (size_t)pc->nlevel * (size_t)(2 * pc->nbucket + 1) + (size_t)entries + (size_t)n;
     unsigned char *nblk = realloc(blk, head + ints * sizeof(int));
     if (!nblk) {
         free(blk);
@@ -379,12 +379,11 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
     pc->ps = (rs_pseg *)(blk + sizeof(rs_pcache));
     pc->pv = (rs_pvert *)(blk + sizeof(rs_pcache) + (size_t)n * sizeof(rs_pseg));
     pc->bstart = (int *)(blk + head);
-    pc->blist = pc->bstart + (size_t)pc->nlevel * (size_t)(pc->nbucket + 1);
-    pc->all = pc->blist + entries;
-    pc->boff = pc->all + n;
+    pc->boff = pc->bstart + (size_t)pc->nlevel * (size_t)(pc->nbucket + 1);
+    pc->all_at = (int)entries;
     pc->bchain = pc->boff + entries + n;
     for (int k = 0; k < n; k++) {
-        pc->all[k] = k;
+        pc->boff[entries + k] = k * (int)sizeof(rs_pseg);
         pc->ps[k].self = k;
     }
     long off = 0;
@@ -394,17 +393,15 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
             bs[0] = (int)off;
             bs[1] = (int)off + n;
             for (int k = 0; k < n; k++)
-                pc->blist[off + k] = k;
+                pc->boff[off + k] = k * (int)sizeof(rs_pseg);
             off += n;
             continue;
         }
-        long e = bucket_level(pc, pc->margin[l], bs, pc->blist + off);
+        long e = bucket_level(pc, pc->margin[l], bs, pc->boff + off);
         for (int b = 0; b <= pc->nbucket; b++)
             bs[b] += (int)off;
         off += e;
     }
-    for (long e = 0; e < entries + n; e++)
-        pc->boff[e] = pc->blist[e] * (int)sizeof(rs_pseg);
     /* A LINE chain: a list of consecutive LINE segments joined by SMOOTH vertices (so
      * collinear). Their slabs partition the chain's neighbourhood and no vertex inside
      * can own a point; the segments outside the list are beyond reach. A point in such
@@ -416,14 +413,14 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
             const int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
             int chain = bs[b + 1] > bs[b];
             for (int e = bs[b]; chain && e < bs[b + 1]; e++) {
-                const int k = pc->blist[e];
+                const int k = rs_pcache_seg(pc->boff[e]);
                 chain = pc->ps[k].type == RS_LINE &&
-                        (e == bs[b] ||
-                         (k == pc->blist[e - 1] + 1 && pc->pv[k].kind == RS_VTX_SMOOTH));
+                        (e == bs[b] || (k == rs_pcache_seg(pc->boff[e - 1]) + 1 &&
+                                        pc->pv[k].kind == RS_VTX_SMOOTH));
             }
             if (chain) {
                 const int own =
-                    chain_owner(pc, pc->margin[l], b, pc->blist + bs[b], bs[b + 1] - bs[b]);
+                    chain_owner(pc, pc->margin[l], b, pc->boff + bs[b], bs[b + 1] - bs[b]);
                 chain = own >= 0 ? 2 + own : 1;
             }
             pc->bchain[(size_t)l * (size_t)pc->nbucket + b] = chain;

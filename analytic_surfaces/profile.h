@@ -151,13 +151,19 @@ typedef struct rs_pcache {
     int nbucket, nlevel;
     double lo, inv_w;              ///< bucket of coordinate c: floor((c - lo) inv_w)
     double margin[RS_PC_MAXLEVEL]; ///< increasing
-    int *bstart;                   ///< level l, bucket b: [l (nbucket + 1) + b], into blist
+    int *bstart;                   ///< level l, bucket b: [l (nbucket + 1) + b], into boff
     int *bchain; ///< level l, bucket b: [l nbucket + b]: 0, 1 for a LINE chain, 2 + k
                  ///< for a chain whose points within the level's margin segment k owns
-    int *blist;  ///< segment indices
-    int *all;    ///< 0 .. nseg - 1 (reaches beyond the last level)
-    int *boff;   ///< blist then all as byte offsets into ps
+    int *boff;   ///< the levels' lists, then every segment (from all_at, for reaches
+                 ///< beyond the last level), as byte offsets into ps
+    int all_at;
 } rs_pcache;
+
+/// The segment index of a byte offset into ps.
+static inline int rs_pcache_seg(int off)
+{
+    return off / (int)sizeof(rs_pseg);
+}
 
 /// Builds the query data of an analytic surface's profile (one malloc'ed block).
 int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err);
