@@ -9,6 +9,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The larger of two finite numbers (the coordinates here are; fmax is a libm call). */
+static inline double max2(double a, double b)
+{
+    return a > b ? a : b;
+}
+
 static void normalize2(double v[2])
 {
     double l = hypot(v[0], v[1]);
@@ -137,7 +143,7 @@ static int chain_owner(const rs_pcache *pc, double margin, int b, const int *lis
             const double t = (cc - q->o[ax] - d * q->nl[ax]) / tax;
             P[c][0] = q->o[0] + t * q->t[0] + d * q->nl[0];
             P[c][1] = q->o[1] + t * q->t[1] + d * q->nl[1];
-            scale = fmax(scale, fmax(fabs(P[c][0]), fabs(P[c][1])));
+            scale = max2(scale, max2(fabs(P[c][0]), fabs(P[c][1])));
         }
         const double tol = 1e-9 * scale;
         /* piece e's own test first: most pieces fail it, so a bucket costs O(cnt) */
