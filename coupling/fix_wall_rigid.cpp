@@ -39,13 +39,14 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg), surf_ok_(false), ndir_(3), moving_(false), ivar_omega_(-1),
       rot_by_period_(false), period_(0.0), phi_at_build_(0.0), spin_invariant_(false),
       law_kind_(LAW_BUILTIN), law_(NULL), loaded_ok_(false), props_given_(false),
-      hertz_(false), nstatev_(0), statev_given_(false), wall_type_(1), capacity_(4),
-      tracking_(0.0), tracking_given_(false), area_mode_(AREA_NODE), area_const_(1.0),
-      temp_given_(false), temp_wall_(0.0), dtemp_wall_(0.0), capacity_wall_(0.0),
-      heat_wall_(0.0), heat_step_(0.0), fix_temp_(NULL), fix_heatflux_(NULL),
-      fix_heatcap_(NULL), vtk_every_(0), vtk_mesh_ok_(false), step_checked_(false),
-      row_(NULL), hist_(NULL), nmax_(0), rebuild_(true), lookahead_(0.0), bounds_ok_(false),
-      se_now_(0.0), ncontact_(0), out_step_(-1), out_valid_(false)
+      hertz_(false), hooke_(false), nstatev_(0), statev_given_(false), wall_type_(1),
+      capacity_(4), tracking_(0.0), tracking_given_(false), area_mode_(AREA_NODE),
+      area_const_(1.0), temp_given_(false), temp_wall_(0.0), dtemp_wall_(0.0),
+      capacity_wall_(0.0), heat_wall_(0.0), heat_step_(0.0), fix_temp_(NULL),
+      fix_heatflux_(NULL), fix_heatcap_(NULL), vtk_every_(0), vtk_mesh_ok_(false),
+      step_checked_(false), row_(NULL), hist_(NULL), nmax_(0), rebuild_(true),
+      lookahead_(0.0), bounds_ok_(false), se_now_(0.0), ncontact_(0), out_step_(-1),
+      out_valid_(false)
 {
     std::memset(&surf_, 0, sizeof surf_);
     std::memset(&loaded_, 0, sizeof loaded_);
@@ -187,8 +188,8 @@ void FixWallRigid::init()
         translates = translates || motion_.vel[d] != 0.0;
     bounds_ok_ = !moving_ || (spin_invariant_ && !translates);
     lookahead_ = bounds_ok_ ? neighbor->skin : 0.0;
-    if (hertz_ && !props_given_)
-        init_hertz_props();
+    if (material_props())
+        init_material_props();
     init_variables();
     init_heat();
     init_predef();
@@ -198,13 +199,14 @@ void FixWallRigid::init()
     rebuild_ = true;
 }
 
-/* law hertz without props: the LIGGGHTS material properties of the particle type and
- * the wall type, looked up as fix wall/gran looks them up (global_properties.cpp). */
-void FixWallRigid::init_hertz_props()
+/* law hertz or hooke without props: the LIGGGHTS material properties of the particle type
+ * and the wall type, looked up as fix wall/gran looks them up (global_properties.cpp):
+ * hertz's last property is the curvature flag, hooke's the characteristic velocity. */
+void FixWallRigid::init_material_props()
 {
     const double curv = props_.empty() ? 0.0 : props_[0];
     const int max_type = force->registry.max_type();
-    const char *cs = "fix wall/rigid (law hertz)";
+    const char *cs = hooke_ ? "fix wall/rigid (law hooke)" : "fix wall/rigid (law hertz)";
     FixPropertyGlobal *Y = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
         "youngsModulus", "property/global", "peratomtype", max_type, 0, cs));
     FixPropertyGlobal *nu = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
@@ -215,6 +217,13 @@ void FixWallRigid::init_hertz_props()
     FixPropertyGlobal *mu = static_cast<FixPropertyGlobal *>(
         modify->find_fix_property("coefficientFriction", "property/global",
                                   "peratomtypepair", max_type, max_type, cs));
+    /* hooke: the characteristic velocity of LIGGGHTS's hooke model, a global scalar */
+    double last = curv;
+    if (hooke_) {
+        FixPropertyGlobal *cv = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
+            "characteristicVelocity", "property/global", "scalar", 0, 0, cs));
+        last = cv->compute_scalar();
+    }
     const int w = wall_type_ - 1;
     type_props_.assign(atom->ntypes + 1, std::vector<double>());
     for (int t = 1; t <= max_type && t <= atom->ntypes; t++) {
@@ -225,7 +234,7 @@ void FixWallRigid::init_hertz_props()
                                  nu->compute_vector(w),
                                  e->compute_array(p, w),
                                  mu->compute_array(p, w),
-                                 curv};
+                                 last};
         rs_error err;
         rs_error_clear(&err);
         if (rs_law_check_props(law_, v.data(), (int)v.size(), &err) != RS_OK) {
@@ -331,7 +340,7 @@ void FixWallRigid::check_step()
                          : area_mode_ == AREA_PROJECTED ? RS_PI * R * R
                                                         : 1.0;
         const std::vector<double> *pv = &props_;
-        if (hertz_ && !props_given_ && type[i] < (int)type_props_.size())
+        if (material_props() && type[i] < (int)type_props_.size())
             pv = &type_props_[type[i]];
         const double t =
             law_->critical_step(law_, pv->data(), (int)pv->size(), R, rmass[i], A);
@@ -522,7 +531,7 @@ void FixWallRigid::build_candidates()
     }
     flush();
 
-    if (hertz_ && !props_given_) {
+    if (material_props()) {
         const int *type = atom->type;
         std::stable_sort(cand_.begin(), cand_.end(),
                          [type](int a, int b) { return type[a] < type[b]; });
@@ -622,7 +631,7 @@ void FixWallRigid::compute(bool setup_call)
 
     /* Blocks of at most RS_BLOCK particles; with per-type properties a block holds one
      * particle type (the candidates are sorted by type). */
-    const bool per_type = hertz_ && !props_given_;
+    const bool per_type = material_props();
     const int *type = atom->type;
     for (int b0 = 0; b0 < nc;) {
         int b1 = std::min(nc, b0 + RS_BLOCK);

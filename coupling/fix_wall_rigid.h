@@ -85,7 +85,7 @@ class FixWallRigid : public Fix
     [[noreturn]] void fail_one(const std::string &msg);
 
     /* setup of the run */
-    void init_hertz_props();
+    void init_material_props();
     void init_variables();
     void init_heat();
     void init_predef();
@@ -168,7 +168,13 @@ class FixWallRigid : public Fix
     std::string law_name_;
     std::vector<double> props_;
     bool props_given_;
-    bool hertz_;
+    bool hertz_, hooke_;
+    /// Properties per particle type from LIGGGHTS's material properties (hertz or hooke
+    /// without props).
+    bool material_props() const
+    {
+        return (hertz_ || hooke_) && !props_given_;
+    }
     std::vector<std::vector<double>> type_props_; // hertz: props per particle type
     int nstatev_;
     bool statev_given_;

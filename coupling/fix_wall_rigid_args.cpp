@@ -336,6 +336,8 @@ void FixWallRigid::parse(int narg, char **arg)
         } else {
             props_.assign(1, curvature ? 1.0 : 0.0); // remembered until init()
         }
+    } else if (hooke_ && !props_given_) {
+        props_.clear(); // the LIGGGHTS material properties, looked up in init()
     } else {
         rc = rs_law_check_props(law_, props_.data(), (int)props_.size(), &err);
         if (rc != RS_OK)
@@ -539,6 +541,7 @@ int FixWallRigid::parse_law(int narg, char **arg, int iarg)
         }
         law_kind_ = LAW_BUILTIN;
         hertz_ = std::strcmp(law_->name, "hertz") == 0;
+        hooke_ = std::strcmp(law_->name, "hooke") == 0;
         return iarg;
     }
     if (rc != RS_OK)

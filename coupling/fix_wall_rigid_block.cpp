@@ -118,11 +118,11 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     const double *Temp = fix_temp_ ? fix_temp_->vector_atom : NULL;
     const double *props = props_.data();
     int nprops = (int)props_.size();
-    if (hertz_ && !props_given_) {
+    if (material_props()) {
         const int t = type[idx[0]];
         if (t >= (int)type_props_.size() || type_props_[t].empty()) {
             std::ostringstream o;
-            o << "law hertz: no material properties for particle type " << t
+            o << "law " << law_->name << ": no material properties for particle type " << t
               << " (youngsModulus, poissonsRatio, coefficientRestitution, "
                  "coefficientFriction must cover it)";
             fail_one(o.str());

@@ -180,7 +180,10 @@ struct rs_law {
  *   linear_softening  k; 0
  *   hertz             Y_particle nu_particle Y_wall nu_wall restitution friction
  *                     curvature (0: R, 1: reff); 2. Needs radius, mass, vrel (reff).
- *   hooke             kn kt zeta_n zeta_t mu; 2. Needs mass, vrel.
+ *   hooke             kn kt zeta_n zeta_t mu, or the LIGGGHTS material form Y_particle
+ *                     nu_particle Y_wall nu_wall restitution friction
+ *                     characteristic_velocity (then also needs radius); 2. Needs mass,
+ *                     vrel.
  *   coulomb           mu k_stick kn; 2 (self-contained: p = kn h).
  * hertz and hooke give force (stress times areaSlv); the others stress. */
 

@@ -25,6 +25,10 @@ CASES = [
      ["law 'linear_softening' expects 1 properties", "got 2"]),
     ("bonded_interface prop count", "fix w all wall/rigid " + PLANE +
      " law bonded_interface props 1e-4 1e7 0.3", ["law 'bonded_interface' expects 7", "got 3"]),
+    ("hooke prop count", "fix w all wall/rigid " + PLANE + " law hooke props 1 2 3 4 5 6 "
+     "type 2", ["law 'hooke' expects 5 properties", "or 7 material properties", "got 6"]),
+    ("hooke restitution 0", "fix w all wall/rigid " + PLANE + " law hooke props 5e7 0.3 "
+     "2e8 0.25 0 0.5 1 type 2", ["property 'restitution' must be in (0, 1]"]),
     ("NaN prop", "fix w all wall/rigid " + PLANE + " law linear_softening props nan",
      ["props", "finite"]),
     ("non-numeric prop", "fix w all wall/rigid " + PLANE + " law linear_softening props stiff",

@@ -1,9 +1,10 @@
 #!/usr/bin/python3
-"""fix wall/rigid with law hertz reproduces LIGGGHTS's own primitive walls.
+"""fix wall/rigid with law hertz or hooke reproduces LIGGGHTS's own primitive walls.
 
 Pins: our CYLINDER plane (one LINE, n = +z) is the Hertz wall of `fix wall/gran model
 hertz tangential history primitive zplane 0`, and the inside of our REVOLUTION drum is
-`primitive zcylinder`. The answer is LIGGGHTS's wall in the same deck, same executable;
+`primitive zcylinder`; law hooke without props, from the same material properties and
+characteristicVelocity, is `fix wall/gran model hooke tangential history` on the plane. The answer is LIGGGHTS's wall in the same deck, same executable;
 positions, velocities and spins agree to 1e-9 relative at every output step, with the
 default tracking thickness and with `tracking 0`.
 """
@@ -22,8 +23,12 @@ SCALES = {"x": R, "y": R, "z": R, "vx": 1.0, "vy": 1.0, "vz": 1.0,
           "omegax": 1.0 / R, "omegay": 1.0 / R, "omegaz": 1.0 / R}
 
 
+# LIGGGHTS's hooke model takes its stiffness from this velocity (m/s); hertz ignores it.
+CHARVEL = "fix m5 all property/global characteristicVelocity scalar 0.8\n"
+
+
 def deck(wall, atoms, steps, gravity, integrator, box, tag):
-    d = L.header(box, DT)
+    d = L.header(box, DT, extra_props=CHARVEL)
     d += atoms
     if gravity:
         d += "fix grav all gravity 9.81 vector 0 0 -1\n"
@@ -114,6 +119,23 @@ def body(s):
         return all(a["vx"] * a["x"] + a["vy"] * a["y"] < 0 for a in last.values())
     compare(s, "drum_normal_impacts", ours, ref, atoms, 500, False, "nve/sphere",
             (-0.06, 0.06, -0.06, 0.06, -0.06, 0.06), all_back)
+
+    # 6. law hooke without props: LIGGGHTS's hooke from the material properties and
+    #    characteristicVelocity, normal and oblique impacts and a slide to roll. The slide
+    #    starts 0.1 um above the plane, not on it: at exactly zero overlap LIGGGHTS's
+    #    primitive wall counts a contact and applies hooke's tangential damping
+    #    (0.8 N here), where rigidsurf's laws act on overlaps > 0 only; hertz's damping
+    #    vanishes there, so the hertz slides above start on the plane.
+    ours = "fix w all wall/rigid surface plane.inp law hooke type 2"
+    ref = "fix w all wall/gran model hooke tangential history primitive type 2 zplane 0"
+    compare(s, "hooke_normal_impact", ours, ref,
+            L.sphere(1, (0, 0, R + GAP), R, RHO, v=(0, 0, -1.0)),
+            400, False, "nve/sphere", box, vz_flips)
+    compare(s, "hooke_oblique_spin", ours, ref, oblique, 600, True, "nve/sphere", box,
+            vz_flips)
+    compare(s, "hooke_slide_to_roll", ours, ref,
+            L.sphere(1, (0, 0, R + 1e-7), R, RHO, v=(0.5, 0, 0)),
+            6000, True, "nve/sphere", box, lambda f: f[-1][1][1]["omegay"] > 0)
 
 
 if __name__ == "__main__":
