@@ -434,8 +434,10 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
                           out->curv[1]);
     }
 done:
-    rs_contacts_free(&tmp);
-    rs_contacts_free(&extra);
+    if (tmp.cap)
+        rs_contacts_free(&tmp);
+    if (extra.cap)
+        rs_contacts_free(&extra);
     rs_pscratch_free(&sc);
     free(own);
     return rc;
