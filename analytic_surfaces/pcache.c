@@ -146,8 +146,11 @@ static int chain_owner(const rs_pcache *pc, double margin, int b, const int *lis
             scale = max2(scale, max2(fabs(P[c][0]), fabs(P[c][1])));
         }
         const double tol = 1e-9 * scale;
-        /* piece e's own test first: most pieces fail it, so a bucket costs O(cnt) */
-        int ok = 1;
+        /* piece e's own test first: most pieces fail it, so a bucket costs O(cnt). The
+         * first piece that passes it decides: if another piece does not fail strictly,
+         * the bucket gets no owner (a later piece could only pass on a parallelogram
+         * that overlaps this one's slab, so it would fail its own check). */
+        int ok = 1, own_in = 0;
         for (int i = -1; i < cnt && ok; i++) {
             const int f = i < 0 ? e : i;
             if (i == e)
@@ -162,9 +165,12 @@ static int chain_owner(const rs_pcache *pc, double margin, int b, const int *lis
                 after &= dA >= tol;
             }
             ok = f == e ? in : (before || after);
+            own_in = own_in || (f == e && in);
         }
         if (ok)
             return rs_pcache_seg(list[e]);
+        if (own_in)
+            return -1;
     }
     return -1;
 }
