@@ -225,6 +225,7 @@ class FixWallRigid : public Fix
     std::vector<double> xref_, gapref_;
     std::vector<int> active_;
     double lookahead_;
+    double rglob_; ///< the largest radius of the candidates (their depth limit with bounds)
     bool bounds_ok_;
     std::vector<double> bgap_; // per particle of a block: its smallest gap
     void update_bounds(const int *idx, int n, const double *gmin);

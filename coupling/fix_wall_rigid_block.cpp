@@ -67,7 +67,10 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     q.slave.radius = brad_.data();
     q.pose = &motion_.pose;
     q.gap_max = tracking_ + lookahead_;
-    q.dist_min = bounds_ok_ ? -INFINITY : -rmax;
+    /* With bounds, the depth limit is that of the largest candidate plus the look-ahead:
+     * a particle deeper than that could not become a contact in any block before it
+     * moves by the look-ahead. */
+    q.dist_min = bounds_ok_ ? -(std::max(rmax, rglob_) + lookahead_) : -rmax;
     contacts_.n = 0;
     if (rs_surface_query(&surf_, &q, &contacts_, &err) != RS_OK)
         fail_one(std::string("surface query: ") + err.msg);
@@ -170,11 +173,11 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     rs_track_commit(&tracker_, &tout_, cb_.stress, ns ? cb_.statev : NULL);
 }
 
-/* The query looked ahead beyond the tracking thickness, and behind the surface without
- * limit: each particle's smallest gap over every feature within reach (any depth)
- * becomes its distance bound. The contacts beyond the thickness or deeper than dist_min
- * leave the list (kept in order), so the tracker sees what a query to the thickness
- * gives. */
+/* The query looked ahead beyond the tracking thickness, and behind the surface to the
+ * largest candidate's radius plus the look-ahead: each particle's smallest gap over the
+ * features it found becomes its distance bound. The contacts beyond the thickness or deeper
+ * than dist_min leave the list (kept in order), so the tracker sees what a query to the
+ * thickness gives. */
 void FixWallRigid::keep_tracked(const int *idx, int n, double dist_min)
 {
     double *__restrict gmin = bgap_.data();
