@@ -129,6 +129,10 @@ class FixWallRigid : public Fix
     {
         return pred_offset() + (int)predef_names_.size();
     }
+    /// The most doubles one atom may carry through LIGGGHTS's exchange: LIGGGHTS 3.8
+    /// packs a leaving atom into the slack of its send buffer (comm.cpp and
+    /// irregular.cpp: BUFEXTRA, 1000 doubles, shared by the atom style and every fix).
+    static const int kExchangeMax = 600;
     /// Doubles one atom carries in exchange and restart: its row, then its slots.
     int atom_size() const
     {

@@ -67,6 +67,10 @@ def cases():
     add("statev", "beyond the limit", SOFT + " statev 100000000", "100000000")
     add("statev", "largest int", SOFT + " statev 2147483647", "2147483647")
     add("contacts", "beyond the limit", HERTZ + " contacts 100000", "100000")
+    # history beyond what LIGGGHTS's atom exchange can carry for a fix (600 doubles)
+    add("contacts", "with its state variables beyond the exchange buffer",
+        "fix w all wall/rigid " + SURF + " law bonded_interface props 1e-4 1e7 0.3 1e9 0 "
+        "1e-3 10 contacts 40 type 2", "40 contacts")
     add("type", "beyond the material types", "fix w all wall/rigid " + SURF +
         " law hertz type 9", "9")
     # words
