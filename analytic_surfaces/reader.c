@@ -9,6 +9,8 @@
  *   LINE, x1, y1
  *   CIRCL, x1, y1, xc, yc
  *   PARAB, xm, ym, x1, y1
+ *   *SURFACE, TYPE=MESH, NAME=name, FILE=part.stl [, SCALE=s] [, SIDES=2]
+ *   ax, ay, az, bx, by, bz, cx, cy, cz                  (MESH, optional placement)
  *
  * Keywords, parameters and profile words are case-insensitive and blanks inside them are
  * ignored (Abaqus rules); values are comma-separated; numbers may use a Fortran D
@@ -17,6 +19,7 @@
 #define _POSIX_C_SOURCE 200809L /* fileno, fstat */
 
 #include "profile.h"
+#include "mesh.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -54,6 +57,10 @@ typedef struct draft {
     int started;
     double cur[2];
     int start_line;
+    char file[4096]; /* MESH: FILE= as written */
+    double scale;    /* MESH: SCALE= */
+    int placed;      /* MESH: the placement line was read */
+    double abc[9];
     rs_segment *seg;
     int *segline;
     int nseg, cap;
@@ -183,14 +190,16 @@ static int keyword_line(const parser *ps, const tok *t, int nt, draft *d)
     d->active = 1;
     d->kline = ps->line;
     d->sides = 1;
+    d->scale = 1.0;
     int have_type = 0, have_name = 0, have_fillet = 0, have_sides = 0, have_extent = 0;
+    int have_file = 0, have_scale = 0;
     for (int i = 1; i < nt; i++) {
         const char *eq = memchr(t[i].p, '=', (size_t)t[i].len);
         if (!eq) {
             showtok(&t[i], show, sizeof show);
             return perr(ps, RS_ERR_PARSE,
                         "unknown parameter '%s' (expected TYPE=, NAME=, FILLET RADIUS=, "
-                        "SIDES= or EXTENT=)%s",
+                        "SIDES=, EXTENT=, FILE= or SCALE=)%s",
                         show, NULL);
         }
         tok k = {t[i].p, (int)(eq - t[i].p)};
@@ -212,11 +221,13 @@ static int keyword_line(const parser *ps, const tok *t, int nt, draft *d)
                     d->kind = RS_SURF_CYLINDER;
                 else if (strcmp(val, "REVOLUTION") == 0)
                     d->kind = RS_SURF_REVOLUTION;
+                else if (strcmp(val, "MESH") == 0)
+                    d->kind = RS_SURF_FACETED;
                 else {
                     showtok(&v, show, sizeof show);
                     return perr(ps, RS_ERR_PARSE,
-                                "unknown TYPE=%s (expected SEGMENTS, CYLINDER or "
-                                "REVOLUTION)%s",
+                                "unknown TYPE=%s (expected SEGMENTS, CYLINDER, REVOLUTION "
+                                "or MESH)%s",
                                 show, NULL);
                 }
             }
@@ -272,11 +283,35 @@ static int keyword_line(const parser *ps, const tok *t, int nt, draft *d)
                                 NULL, NULL);
                 d->bounded = 1;
             }
+        } else if (strcmp(key, "FILE") == 0) {
+            dup = have_file++;
+            if (!dup) {
+                int len = v.len;
+                while (len > 0 && isspace((unsigned char)v.p[len - 1]))
+                    len--;
+                if (len <= 0 || (size_t)len >= sizeof d->file)
+                    return perr(ps, RS_ERR_PARSE,
+                                "expected FILE= with a file name of 1 to 4095 "
+                                "characters%s%s",
+                                NULL, NULL);
+                memcpy(d->file, v.p, (size_t)len);
+                d->file[len] = '\0';
+            }
+        } else if (strcmp(key, "SCALE") == 0) {
+            dup = have_scale++;
+            if (!dup) {
+                int rc = parse_number(ps, &v, &d->scale);
+                if (rc)
+                    return rc;
+                if (!(d->scale > 0.0) || !(d->scale <= RS_COORD_MAX))
+                    return perr(ps, RS_ERR_PARSE, "expected SCALE > 0 (a finite number)%s%s",
+                                NULL, NULL);
+            }
         } else {
             showtok(&k, show, sizeof show);
             return perr(ps, RS_ERR_PARSE,
-                        "unknown parameter '%s' (expected TYPE, NAME, FILLET RADIUS, SIDES "
-                        "or EXTENT)%s",
+                        "unknown parameter '%s' (expected TYPE, NAME, FILLET RADIUS, SIDES, "
+                        "EXTENT, FILE or SCALE)%s",
                         show, NULL);
         }
         if (dup) {
@@ -286,10 +321,21 @@ static int keyword_line(const parser *ps, const tok *t, int nt, draft *d)
     }
     if (!have_type)
         return perr(ps, RS_ERR_PARSE,
-                    "expected TYPE=SEGMENTS, CYLINDER or REVOLUTION on *SURFACE%s%s", NULL,
-                    NULL);
+                    "expected TYPE=SEGMENTS, CYLINDER, REVOLUTION or MESH on *SURFACE%s%s",
+                    NULL, NULL);
     if (have_extent && d->kind != RS_SURF_CYLINDER)
         return perr(ps, RS_ERR_PARSE, "EXTENT is only for TYPE=CYLINDER%s%s", NULL, NULL);
+    if (d->kind == RS_SURF_FACETED) {
+        if (!have_file)
+            return perr(ps, RS_ERR_PARSE, "expected FILE= on *SURFACE, TYPE=MESH%s%s", NULL,
+                        NULL);
+        if (have_fillet)
+            return perr(ps, RS_ERR_PARSE, "FILLET RADIUS is not for TYPE=MESH%s%s", NULL,
+                        NULL);
+    } else if (have_file || have_scale) {
+        return perr(ps, RS_ERR_PARSE, "FILE= and SCALE= are only for TYPE=MESH%s%s", NULL,
+                    NULL);
+    }
     return RS_OK;
 }
 
@@ -320,6 +366,26 @@ static int data_line(const parser *ps, tok *t, int nt, draft *d)
     if (!d->active)
         return perr(ps, RS_ERR_PARSE, "expected *SURFACE before data lines%s%s", NULL,
                     NULL);
+    if (d->kind == RS_SURF_FACETED) {
+        if (d->placed)
+            return perr(ps, RS_ERR_PARSE,
+                        "a MESH takes one data line, its placement a, b, c (found a "
+                        "second)%s%s",
+                        NULL, NULL);
+        if (nt != 9) {
+            char cnt[16];
+            snprintf(cnt, sizeof cnt, "%d", nt);
+            return perr(ps, RS_ERR_PARSE,
+                        "expected the placement a, b, c (9 numbers: ax, ay, az, bx, by, bz, "
+                        "cx, cy, cz), found %s values%s",
+                        cnt, NULL);
+        }
+        int rc = parse_numbers(ps, t, nt, d->abc);
+        if (rc)
+            return rc;
+        d->placed = 1;
+        return RS_OK;
+    }
     int ncoord_needed = d->kind == RS_SURF_CYLINDER     ? 2
                         : d->kind == RS_SURF_REVOLUTION ? 1
                                                         : 0;
@@ -394,7 +460,10 @@ static int data_line(const parser *ps, tok *t, int nt, draft *d)
 /* Frees a surface this reader made and zeroes it. */
 static void surface_free(rs_surface *s)
 {
-    rs_analytic_free(s);
+    if (s->ops && s->ops->free)
+        s->ops->free(s);
+    else
+        rs_analytic_free(s);
     memset(s, 0, sizeof *s);
 }
 
@@ -487,11 +556,35 @@ static double seg_rmin(const rs_segment *g)
     return r;
 }
 
+/* A MESH: its FILE is relative to the folder of the surface file. */
+static int finish_mesh(parser *ps, draft *d, rs_surface *s)
+{
+    char path[8192], where[400];
+    const char *slash = strrchr(ps->origin, '/');
+    if (d->file[0] != '/' && slash && ps->origin[0] != '<')
+        snprintf(path, sizeof path, "%.*s/%s", (int)(slash - ps->origin), ps->origin,
+                 d->file);
+    else
+        snprintf(path, sizeof path, "%s", d->file);
+    snprintf(where, sizeof where, "%s:%d", ps->origin, d->kline);
+    memcpy(s->name, d->name, sizeof s->name);
+    s->sides = d->sides;
+    int rc = rs_mesh_surface_load(s, path, d->scale, d->placed, d->abc, where, ps->err);
+    if (rc) {
+        if (s->ops && s->ops->free)
+            s->ops->free(s);
+        memset(s, 0, sizeof *s);
+    }
+    return rc;
+}
+
 /* Turns a complete draft into a surface. */
 static int finish_draft(parser *ps, draft *d, rs_surface *s)
 {
     int rc;
     memset(s, 0, sizeof *s);
+    if (d->kind == RS_SURF_FACETED)
+        return finish_mesh(ps, d, s);
     int need = d->kind == RS_SURF_CYLINDER ? 2 : d->kind == RS_SURF_REVOLUTION ? 1 : 0;
     if (d->ncoord < need)
         return rs_error_set(ps->err, RS_ERR_PARSE,

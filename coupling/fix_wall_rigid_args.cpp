@@ -293,6 +293,8 @@ void FixWallRigid::parse(int narg, char **arg)
     if (rc != RS_OK)
         fail(std::string("keyword 'surface': ") + err.msg);
     surf_ok_ = true;
+    if (surf_.warning[0] && comm->me == 0)
+        error->warning(FLERR, (std::string("fix wall/rigid: surface: ") + surf_.warning).c_str());
 
     /* State variables. */
     const int law_nsv = law_->nstatev;
@@ -350,7 +352,7 @@ void FixWallRigid::parse(int narg, char **arg)
 int FixWallRigid::parse_surface(int narg, char **arg, int iarg)
 {
     if (iarg >= narg)
-        fail("'surface inline' expects 'revolution', 'cylinder' or 'segments'");
+        fail("'surface inline' expects 'revolution', 'cylinder', 'segments' or 'mesh'");
     std::string kind = arg[iarg++];
     std::ostringstream head, data;
     std::string sides, fillet, extent;
@@ -370,6 +372,44 @@ int FixWallRigid::parse_surface(int narg, char **arg, int iarg)
             p[d] = std::strtod(num(what).c_str(), NULL);
         return fmt(p[0]) + ", " + fmt(p[1]) + ", " + fmt(p[2]);
     };
+    if (kind == "mesh") {
+        /* surface inline mesh FILE [scale s] [place ax ay az bx by bz cx cy cz] [sides n] */
+        if (iarg >= narg || is_keyword(arg[iarg]))
+            fail("'surface inline mesh' expects a mesh FILE (.stl, .obj, .off or .ply)");
+        std::string file = arg[iarg++];
+        if (file.find_first_of(",\n") != std::string::npos)
+            fail("'surface inline mesh': the file name '" + file +
+                 "' holds a comma or a line break (expected a plain path)");
+        std::string scale, place, msides;
+        while (iarg < narg) {
+            std::string k = arg[iarg];
+            if (k == "scale") {
+                iarg++;
+                scale = num("scale s");
+            } else if (k == "sides") {
+                iarg++;
+                msides = num("sides 1 or 2");
+            } else if (k == "place") {
+                iarg++;
+                double p[3];
+                place = point("place ax ay az bx by bz cx cy cz", p);
+                place += ", " + point("place ax ay az bx by bz cx cy cz", p);
+                place += ", " + point("place ax ay az bx by bz cx cy cz", p);
+            } else {
+                break;
+            }
+        }
+        head << "*SURFACE, TYPE=MESH, NAME=" << id << ", FILE=" << file;
+        if (!scale.empty())
+            head << ", SCALE=" << scale;
+        if (!msides.empty())
+            head << ", SIDES=" << msides;
+        head << "\n";
+        if (!place.empty())
+            head << place << "\n";
+        inline_text_ = head.str();
+        return iarg;
+    }
     std::string a, b, c;
     double pa[3], pb[3], pc[3];
     if (kind == "revolution") {
@@ -426,7 +466,7 @@ int FixWallRigid::parse_surface(int narg, char **arg, int iarg)
                      k + "'");
         }
     } else {
-        fail("'surface inline' expects 'revolution', 'cylinder' or 'segments', got '" +
+        fail("'surface inline' expects 'revolution', 'cylinder', 'segments' or 'mesh', got '" +
              kind + "'");
     }
     if (iarg >= narg)

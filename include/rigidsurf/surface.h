@@ -68,7 +68,7 @@ typedef enum rs_surface_kind {
     RS_SURF_SEGMENTS = 1,   ///< 2D profile in the global x-y plane, nDir = 2
     RS_SURF_CYLINDER = 2,   ///< profile extruded along the generator
     RS_SURF_REVOLUTION = 3, ///< profile in (r, z) revolved about the axis
-    RS_SURF_FACETED = 4     ///< triangle mesh
+    RS_SURF_FACETED = 4     ///< triangle mesh (TYPE=MESH)
 } rs_surface_kind;
 
 /// How a kind orients its tangents (docs/conventions.md, "Profiles and surfaces"). A kind's
@@ -132,6 +132,8 @@ typedef struct rs_surface {
     int bounded;       ///< CYLINDER: EXTENT given
     double zmin, zmax; ///< CYLINDER: extent along the generator, local z
     void *impl;        ///< the kind's query data
+    char warning[512]; ///< what reading repaired or found doubtful (MESH: dropped facets,
+                       ///< open or non-manifold edges), empty when nothing
 } rs_surface;
 
 /// Number of local directions: 2 for SEGMENTS, 3 otherwise.

@@ -300,6 +300,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "rigidsurf-frames: %s\n", err.msg);
         return 1;
     }
+    if (s.warning[0])
+        fprintf(stderr, "rigidsurf-frames: warning: %s\n", s.warning);
     int ndir = rs_surface_ndir(&s);
 
     point_list pts = {0};

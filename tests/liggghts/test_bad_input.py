@@ -47,7 +47,27 @@ CASES = [
      ["not closed by 'end'"]),
     ("inline unknown kind", "fix w all wall/rigid surface inline sphere origin 0 0 0 "
      "profile START 0 0 LINE 1 0 end law hertz type 2",
-     ["'revolution', 'cylinder' or 'segments'", "sphere"]),
+     ["'revolution', 'cylinder', 'segments' or 'mesh'", "sphere"]),
+    ("inline mesh without file", "fix w all wall/rigid law hertz type 2 surface inline mesh",
+     ["'surface inline mesh' expects a mesh FILE"]),
+    ("mesh file missing", "fix w all wall/rigid surface inline mesh nothere.stl law hertz type 2",
+     ["nothere.stl", "No such file"]),
+    ("mesh file empty", "fix w all wall/rigid surface inline mesh empty.stl law hertz type 2",
+     ["empty.stl is empty"]),
+    ("mesh file a directory", "fix w all wall/rigid surface inline mesh sub.stl law hertz type 2",
+     ["sub.stl is a directory"]),
+    ("mesh file truncated", "fix w all wall/rigid surface inline mesh trunc.stl law hertz type 2",
+     ["trunc.stl", "broken or truncated"]),
+    ("mesh NaN coordinate (text)", "fix w all wall/rigid surface inline mesh nan.off law "
+     "hertz type 2", ["nan.off", "not a readable OFF file"]),
+    ("mesh NaN coordinate (binary STL)", "fix w all wall/rigid surface inline mesh nan.stl "
+     "law hertz type 2", ["nan.stl", "facet 1 has coordinate nan", "finite"]),
+    ("mesh scale negative", "fix w all wall/rigid surface inline mesh tri.off scale -2 "
+     "law hertz type 2", ["SCALE > 0"]),
+    ("mesh scale not a number", "fix w all wall/rigid surface inline mesh tri.off scale big "
+     "law hertz type 2", ["surface inline", "big"]),
+    ("mesh unknown format", "fix w all wall/rigid surface inline mesh part.step law hertz type 2",
+     ["unknown mesh format '.step'"]),
     ("missing law", "fix w all wall/rigid surface plane.inp type 2", ["missing 'law LAW'"]),
     ("missing surface", "fix w all wall/rigid law hertz type 2", ["missing 'surface FILE'"]),
     ("wall type out of range", BASE.replace("type 2", "type 7"),
@@ -81,6 +101,17 @@ def body(s):
             "0, -1, 0\nSTART, -1, zero\nLINE, 1, 0\n")
     s.write("badpts.inp", "*SURFACE, TYPE=REVOLUTION, NAME=drum\n0, 0, 0, 0, 0\n"
             "START, 0.05, -1\nLINE, 0.05, 1\n")
+    s.write("empty.stl", "")
+    s.write("part.step", "ISO-10303-21;\n")
+    s.write("trunc.stl", "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n")
+    s.write("nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n")
+    import struct
+    with open(s.path("nan.stl"), "wb") as f:
+        f.write(b"binary".ljust(80, b" ") + struct.pack("<I", 1))
+        f.write(struct.pack("<12fH", 0, 0, 1, 0, 0, 0, float("nan"), 0, 0, 0, 1, 0, 0))
+    s.write("tri.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+    import os
+    os.makedirs(s.path("sub.stl"), exist_ok=True)
     rc, out = s.run("valid", L.one_sphere_deck(BASE), expect_ok=False)
     if not s.ck.check("the valid line runs", rc == 0, "exit %s" % rc,
                       why="\n".join(out.splitlines()[-5:])):

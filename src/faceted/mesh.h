@@ -1,0 +1,72 @@
+/* The faceted surface kind MESH (docs/conventions.md, "Faceted surfaces"): a triangle
+ * mesh in the reference configuration, its topology and the ownership data of its
+ * faces, edges and vertices. Private to the geometry layer. */
+#ifndef RS_FACETED_MESH_H
+#define RS_FACETED_MESH_H
+
+#include "rigidsurf/surface.h"
+
+/// Dihedral angle below which two faces are coplanar (rad).
+#define RS_MESH_FLAT_ANGLE 1e-9
+/// Vertices closer than this fraction of the mesh's size are welded.
+#define RS_MESH_WELD_REL 1e-9
+/// Most triangles a mesh may have (feature ids stay ints).
+#define RS_MESH_MAX_TRI (1 << 27)
+
+enum rs_edge_kind {
+    RS_EDGE_FLAT = 0,      ///< coplanar faces: the faces tile it
+    RS_EDGE_CONVEX = 1,    ///< bulges toward the particles: owns its wedge in front
+    RS_EDGE_CONCAVE = 2,   ///< a groove: owns its wedge behind a one-sided mesh
+    RS_EDGE_BOUNDARY = 3,  ///< one face: owns the quarter space beyond it in front
+    RS_EDGE_NONMANIFOLD = 4 ///< three faces or more: owns its wedge on either side
+};
+
+/// A mesh as the query uses it. Triangles of one element (a planar quad) are
+/// consecutive; a face feature's index is its element.
+typedef struct rs_mesh {
+    int nv, nt, ne, nel;
+    double *xyz;        ///< 3 nv, reference configuration
+    int *tri;           ///< 3 nt, node order gives the outward normal
+    int *tel;           ///< nt: element of each triangle
+    int *el_t0;         ///< nel + 1: triangles of element k are el_t0[k] .. el_t0[k+1]-1
+    int *el_nodes;      ///< 4 nel: the element's nodes (a triangle repeats its first)
+    int *el_nnode;      ///< nel: 3 or 4
+    double *tn;         ///< 3 nt unit normals
+    double *tm;         ///< 9 nt: for edge slot j of triangle t (nodes j, j+1), the unit
+                        ///< in-plane normal pointing into t; across a flat edge the second
+                        ///< face holds exactly the negated vector of the first
+    int *tedge;         ///< 3 nt: edge of each slot
+    int *edge_v;        ///< 2 ne: its nodes, lower index first
+    int *edge_f0;       ///< ne + 1: faces of edge e are edge_f[edge_f0[e] ..]
+    int *edge_f;
+    unsigned char *edge_kind; ///< rs_edge_kind
+    int *vert_e0;       ///< nv + 1: edges at vertex v are vert_e[vert_e0[v] ..]
+    int *vert_e;
+    double *vpn;        ///< 3 nv: angle-weighted pseudo-normal (unit)
+    unsigned char *vopen; ///< nv: 1 on an open boundary or non-manifold edge
+    double lo[3], hi[3]; ///< bounds
+    double size;         ///< the bounds' diagonal
+    void *tree;          ///< the AABB tree (cgal_mesh.h)
+} rs_mesh;
+
+/// Builds the mesh of a polygon soup: scale and placement (rot row-major columns ex, ey,
+/// ez and origin a: x = a + s (X ex + Y ey + Z ez)), welding, elements, edges, a
+/// consistent orientation per connected component, edge kinds and the tree. Warnings
+/// (dropped degenerate triangles, non-manifold and open edges, no consistent orientation)
+/// go to warn; *two_sided is set where no consistent orientation exists. origin names the
+/// file in messages.
+struct rs_soup;
+int rs_mesh_build(const struct rs_soup *soup, double scale, const double a[3],
+                  const double ex[3], const double ey[3], const double ez[3],
+                  const char *origin, rs_mesh **out, int *two_sided, char *warn,
+                  size_t warncap, rs_error *err);
+void rs_mesh_free(rs_mesh *m);
+
+/// Reads a mesh file into surface s (kind MESH, its table of operations set).
+int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int placed,
+                         const double abc[9], const char *where, rs_error *err);
+
+/// The MESH kind's table.
+extern const rs_surface_ops rs_mesh_ops;
+
+#endif

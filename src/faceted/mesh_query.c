@@ -1,0 +1,601 @@
+/* The MESH kind's closest features, by Voronoi regions of faces, edges and vertices
+ * (docs/conventions.md, "Faceted surfaces"), and its table of operations.
+ *
+ * Every test that two features share is one expression of the shared data, evaluated the
+ * same way whichever triangle asks: the side of an edge's plane (p - a).m with a the
+ * edge's lower node, and the position along an edge (p - a).(b - a). Across a flat edge
+ * the two faces hold opposite normals of one plane. So the regions of a point tile space
+ * without overlap and without gaps: a point exactly above a shared edge or vertex of a
+ * flat region gets one contact, never two. */
+#define _POSIX_C_SOURCE 200809L /* stat */
+
+#include "cgal_mesh.h"
+#include "mesh.h"
+#include "rigidsurf/vec.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+/* (p - a).m for slot j of triangle t, with a the lower node of the slot's edge. */
+static double side_of(const rs_mesh *m, int t, int j, const double p[3])
+{
+    const int e = m->tedge[3 * t + j];
+    const double *a = m->xyz + 3 * m->edge_v[2 * e];
+    const double *mm = m->tm + 9 * t + 3 * j;
+    return (p[0] - a[0]) * mm[0] + (p[1] - a[1]) * mm[1] + (p[2] - a[2]) * mm[2];
+}
+
+/* (p - v).(w - v) for edge e seen from its node v (the other node w). */
+static double along_from(const rs_mesh *m, int e, int v, const double p[3])
+{
+    const int a = m->edge_v[2 * e], b = m->edge_v[2 * e + 1];
+    const double *pv = m->xyz + 3 * v, *pw = m->xyz + 3 * (v == a ? b : a);
+    return (p[0] - pv[0]) * (pw[0] - pv[0]) + (p[1] - pv[1]) * (pw[1] - pv[1]) +
+           (p[2] - pv[2]) * (pw[2] - pv[2]);
+}
+
+/* Does face t hold p's projection (strictly inside each of its edges' planes)? */
+static int face_holds(const rs_mesh *m, int t, const double p[3])
+{
+    return side_of(m, t, 0, p) > 0.0 && side_of(m, t, 1, p) > 0.0 &&
+           side_of(m, t, 2, p) > 0.0;
+}
+
+/* Does edge e own p: strictly between its nodes, and outside each of its faces? */
+static int edge_owns(const rs_mesh *m, int e, const double p[3])
+{
+    const int a = m->edge_v[2 * e], b = m->edge_v[2 * e + 1];
+    if (!(along_from(m, e, a, p) > 0.0 && along_from(m, e, b, p) > 0.0))
+        return 0;
+    for (int k = m->edge_f0[e]; k < m->edge_f0[e + 1]; k++) {
+        const int t = m->edge_f[k];
+        int j = 0;
+        while (m->tedge[3 * t + j] != e)
+            j++;
+        if (side_of(m, t, j, p) > 0.0)
+            return 0;
+    }
+    return 1;
+}
+
+/* Does vertex v own p: at or beyond v along each of its edges? */
+static int vertex_owns(const rs_mesh *m, int v, const double p[3])
+{
+    for (int k = m->vert_e0[v]; k < m->vert_e0[v + 1]; k++)
+        if (along_from(m, m->vert_e[k], v, p) > 0.0)
+            return 0;
+    return 1;
+}
+
+/* A unit tangent normal to unit n. */
+static void any_tangent(const double n[3], double t[3])
+{
+    const double ax = fabs(n[0]), ay = fabs(n[1]), az = fabs(n[2]);
+    double g[3] = {0.0, 0.0, 0.0};
+    g[ax <= ay && ax <= az ? 0 : ay <= az ? 1 : 2] = 1.0;
+    rs_cross3(n, g, t);
+    const double l = rs_norm3(t);
+    for (int d = 0; d < 3; d++)
+        t[d] /= l;
+}
+
+/* One contact of the point being queried, in the reference configuration. */
+typedef struct hit {
+    int feature;
+    int tri;     /* a face contact's triangle, -1 otherwise */
+    double x[3]; /* closest point */
+    double n[3]; /* unit normal toward the point's side */
+    double dist;
+} hit;
+
+typedef struct scratch {
+    int *ids;
+    int cap;
+    hit *hits;
+    int nhit, hcap;
+    int *seen; /* edges and vertices already tested for this point */
+    int nseen, scap;
+} scratch;
+
+static int push_hit(scratch *s, const hit *h)
+{
+    if (s->nhit == s->hcap) {
+        int cap = s->hcap ? 2 * s->hcap : 16;
+        hit *nh = realloc(s->hits, (size_t)cap * sizeof *nh);
+        if (!nh)
+            return -1;
+        s->hits = nh;
+        s->hcap = cap;
+    }
+    s->hits[s->nhit++] = *h;
+    return 0;
+}
+
+/* First sight of feature f for this point: 1, else 0 (-1 out of memory). */
+static int first_sight(scratch *s, int f)
+{
+    for (int k = 0; k < s->nseen; k++)
+        if (s->seen[k] == f)
+            return 0;
+    if (s->nseen == s->scap) {
+        int cap = s->scap ? 2 * s->scap : 32;
+        int *ns = realloc(s->seen, (size_t)cap * sizeof *ns);
+        if (!ns)
+            return -1;
+        s->seen = ns;
+        s->scap = cap;
+    }
+    s->seen[s->nseen++] = f;
+    return 1;
+}
+
+/* The contacts of point p (reference configuration) within reach, into s->hits. */
+static int point_hits(const rs_mesh *m, int sides, const double p[3], double reach,
+                      double gap_lim, double dist_min, scratch *s)
+{
+    s->nhit = 0;
+    s->nseen = 0;
+    const double pad = reach + 1e-9 * m->size;
+    const double lo[3] = {p[0] - pad, p[1] - pad, p[2] - pad};
+    const double hi[3] = {p[0] + pad, p[1] + pad, p[2] + pad};
+    int n = rs_cgal_tree_box(m->tree, lo, hi, s->ids, s->cap);
+    if (n < 0)
+        return -1;
+    if (n > s->cap) {
+        int *ni = realloc(s->ids, (size_t)n * 2 * sizeof *ni);
+        if (!ni)
+            return -1;
+        s->ids = ni;
+        s->cap = 2 * n;
+        n = rs_cgal_tree_box(m->tree, lo, hi, s->ids, s->cap);
+        if (n < 0)
+            return -1;
+    }
+    const int one_sided = sides != 2;
+    for (int k = 0; k < n; k++) {
+        const int t = s->ids[k];
+        const int *tv = m->tri + 3 * t;
+        if (face_holds(m, t, p)) {
+            const double *nt = m->tn + 3 * t, *a = m->xyz + 3 * tv[0];
+            const double h = (p[0] - a[0]) * nt[0] + (p[1] - a[1]) * nt[1] +
+                             (p[2] - a[2]) * nt[2];
+            hit c;
+            c.feature = RS_FEATURE(RS_FEAT_FACE, m->tel[t]);
+            c.tri = t;
+            const double sg = (!one_sided && h < 0.0) ? -1.0 : 1.0;
+            c.dist = sg * h;
+            for (int d = 0; d < 3; d++) {
+                c.x[d] = p[d] - h * nt[d];
+                c.n[d] = sg * nt[d];
+            }
+            if (c.dist <= gap_lim && c.dist >= dist_min && push_hit(s, &c))
+                return -1;
+            continue;
+        }
+        for (int j = 0; j < 3; j++) {
+            const int e = m->tedge[3 * t + j];
+            const int fe = first_sight(s, RS_FEATURE(RS_FEAT_EDGE, e));
+            if (fe < 0)
+                return -1;
+            if (fe && edge_owns(m, e, p)) {
+                const int ia = m->edge_v[2 * e], ib = m->edge_v[2 * e + 1];
+                const double *a = m->xyz + 3 * ia, *b = m->xyz + 3 * ib;
+                const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+                const double f = along_from(m, e, ia, p) / rs_dot3(u, u);
+                hit c;
+                c.feature = RS_FEATURE(RS_FEAT_EDGE, e);
+                c.tri = -1;
+                double dv[3];
+                for (int d = 0; d < 3; d++) {
+                    c.x[d] = a[d] + f * u[d];
+                    dv[d] = p[d] - c.x[d];
+                }
+                const double L = rs_norm3(dv);
+                const int f0 = m->edge_f0[e], nf = m->edge_f0[e + 1] - f0;
+                double pn[3] = {0.0, 0.0, 0.0}; /* the faces' mean normal */
+                for (int q = 0; q < nf && q < 2; q++)
+                    for (int d = 0; d < 3; d++)
+                        pn[d] += m->tn[3 * m->edge_f[f0 + q] + d];
+                double sg = 1.0;
+                if (one_sided && nf <= 2) {
+                    if (rs_dot3(dv, pn) < 0.0) {
+                        if (nf == 1)
+                            continue; /* behind an open edge: nothing */
+                        sg = -1.0;    /* behind a groove: a penetration */
+                    }
+                }
+                const double lp = rs_norm3(pn);
+                for (int d = 0; d < 3; d++)
+                    c.n[d] = L > 0.0 ? sg * dv[d] / L : (lp > 0.0 ? pn[d] / lp : 0.0);
+                if (!(L > 0.0) && !(lp > 0.0))
+                    any_tangent(u, c.n);
+                c.dist = sg * L;
+                if (c.dist <= gap_lim && c.dist >= dist_min && push_hit(s, &c))
+                    return -1;
+            }
+        }
+        for (int j = 0; j < 3; j++) {
+            const int v = tv[j];
+            const int fv = first_sight(s, RS_FEATURE(RS_FEAT_VERTEX, v));
+            if (fv < 0)
+                return -1;
+            if (fv && vertex_owns(m, v, p)) {
+                const double *x = m->xyz + 3 * v, *pn = m->vpn + 3 * v;
+                double dv[3] = {p[0] - x[0], p[1] - x[1], p[2] - x[2]};
+                const double L = rs_norm3(dv);
+                double sg = 1.0;
+                if (one_sided && rs_dot3(dv, pn) < 0.0) {
+                    if (m->vopen[v])
+                        continue; /* behind an open boundary: nothing */
+                    sg = -1.0;    /* behind a pocket: a penetration */
+                }
+                hit c;
+                c.feature = RS_FEATURE(RS_FEAT_VERTEX, v);
+                c.tri = -1;
+                for (int d = 0; d < 3; d++) {
+                    c.x[d] = x[d];
+                    c.n[d] = L > 0.0 ? sg * dv[d] / L : pn[d];
+                }
+                c.dist = sg * L;
+                if (c.dist <= gap_lim && c.dist >= dist_min && push_hit(s, &c))
+                    return -1;
+            }
+        }
+    }
+    /* Behind a one-sided mesh, where a point projects into faces around a convex edge
+     * or vertex, only the face with the smallest penetration gives a contact. */
+    if (one_sided && s->nhit > 1) {
+        int w = 0;
+        for (int k = 0; k < s->nhit; k++) {
+            const hit *c = &s->hits[k];
+            int drop = 0;
+            for (int q = 0; q < s->nhit && !drop && c->tri >= 0 && c->dist < 0.0; q++) {
+                const hit *o = &s->hits[q];
+                if (q == k || o->tri < 0 || !(o->dist < 0.0))
+                    continue;
+                if (!(o->dist > c->dist || (o->dist == c->dist && o->feature < c->feature)))
+                    continue;
+                const int *tc = m->tri + 3 * c->tri, *to = m->tri + 3 * o->tri;
+                for (int i = 0; i < 3 && !drop; i++)
+                    for (int j = 0; j < 3; j++)
+                        if (tc[i] == to[j])
+                            drop = 1;
+            }
+            if (!drop)
+                s->hits[w++] = *c;
+        }
+        s->nhit = w;
+    }
+    return 0;
+}
+
+static int mesh_closest(const rs_surface *s, const rs_query *q, rs_contacts *out,
+                        rs_error *err)
+{
+    const rs_mesh *m = s->impl;
+    if (!m)
+        return rs_error_set(err, RS_ERR_ARG, "rs_surface_query: mesh '%s' has no data",
+                            s->name);
+    if (!q->slave.x || !q->slave.y || !q->slave.z)
+        return rs_error_set(err, RS_ERR_ARG, "rs_surface_query: missing coordinates");
+    const rs_pose *pose = q->pose;
+    scratch sc;
+    memset(&sc, 0, sizeof sc);
+    int rc = RS_OK;
+    sc.ids = malloc(256 * sizeof *sc.ids);
+    if (!sc.ids)
+        return rs_error_set(err, RS_ERR_NOMEM, "out of memory for the mesh query");
+    sc.cap = 256;
+    for (int i = 0; i < q->n; i++) {
+        const double r = q->slave.radius ? q->slave.radius[i] : 0.0;
+        const double gap_lim = q->gap_max + r;
+        if (!(gap_lim >= 0.0))
+            continue;
+        const double x[3] = {q->slave.x[i], q->slave.y[i], q->slave.z[i]};
+        double p[3];
+        if (pose) { /* X = R^T (x - T) */
+            const double w[3] = {x[0] - pose->T[0], x[1] - pose->T[1], x[2] - pose->T[2]};
+            for (int d = 0; d < 3; d++)
+                p[d] = pose->R[d] * w[0] + pose->R[3 + d] * w[1] + pose->R[6 + d] * w[2];
+        } else
+            memcpy(p, x, sizeof p);
+        /* The box reaches the gap limit and, behind a one-sided mesh, the penetrations
+         * down to dist_min; without that bound, down to the nearest triangle. */
+        double reach = gap_lim;
+        if (-q->dist_min > reach) {
+            if (isfinite(q->dist_min))
+                reach = -q->dist_min;
+            else
+                reach = fmax(reach, rs_cgal_tree_nearest(m->tree, p));
+        }
+        if (point_hits(m, s->sides, p, reach, gap_lim, q->dist_min, &sc)) {
+            rc = rs_error_set(err, RS_ERR_NOMEM, "out of memory in the mesh query");
+            break;
+        }
+        if (out->n + sc.nhit > out->cap &&
+            (rc = rs_contacts_reserve(out, 2 * (out->n + sc.nhit) + 64, err)) != RS_OK)
+            break;
+        for (int k = 0; k < sc.nhit; k++) {
+            const hit *c = &sc.hits[k];
+            const int o = out->n++;
+            double xm[3], n[3], t1[3], t2[3];
+            if (pose) { /* x = R X + T */
+                rs_matvec3(pose->R, c->x, xm);
+                rs_matvec3(pose->R, c->n, n);
+                for (int d = 0; d < 3; d++)
+                    xm[d] += pose->T[d];
+            } else {
+                memcpy(xm, c->x, sizeof xm);
+                memcpy(n, c->n, sizeof n);
+            }
+            any_tangent(n, t1);
+            rs_cross3(n, t1, t2);
+            out->point[o] = i;
+            out->feature[o] = c->feature;
+            out->dist[o] = c->dist;
+            out->curv[0][o] = out->curv[1][o] = 0.0;
+            for (int d = 0; d < 3; d++) {
+                out->xm[d][o] = xm[d];
+                out->nrm[d][o] = n[d];
+                out->t1[d][o] = t1[d];
+                out->t2[d][o] = t2[d];
+            }
+        }
+    }
+    free(sc.ids);
+    free(sc.hits);
+    free(sc.seen);
+    return rc;
+}
+
+/* The triangles of element k contain node v. */
+static int element_has_node(const rs_mesh *m, int k, int v)
+{
+    for (int t = m->el_t0[k]; t < m->el_t0[k + 1]; t++)
+        for (int j = 0; j < 3; j++)
+            if (m->tri[3 * t + j] == v)
+                return 1;
+    return 0;
+}
+
+static int element_has_edge(const rs_mesh *m, int k, int e)
+{
+    for (int t = m->el_t0[k]; t < m->el_t0[k + 1]; t++)
+        for (int j = 0; j < 3; j++)
+            if (m->tedge[3 * t + j] == e)
+                return 1;
+    return 0;
+}
+
+/* History passes where the contact normal is continuous: between faces across a flat
+ * edge, between a face and its own edges and vertices, and between an edge and its
+ * nodes. */
+static int mesh_adjacent(const rs_surface *s, int fa, int fb)
+{
+    if (fa == fb)
+        return 1;
+    const rs_mesh *m = s->impl;
+    if (!m || fa < 0 || fb < 0)
+        return 0;
+    int ta = RS_FEATURE_TYPE(fa), tb = RS_FEATURE_TYPE(fb);
+    int ia = RS_FEATURE_INDEX(fa), ib = RS_FEATURE_INDEX(fb);
+    if (ta > tb) {
+        int t = ta;
+        ta = tb;
+        tb = t;
+        t = ia;
+        ia = ib;
+        ib = t;
+    }
+    if (ta == RS_FEAT_FACE && ia >= m->nel)
+        return 0;
+    if (ta == RS_FEAT_FACE && tb == RS_FEAT_FACE) {
+        if (ib >= m->nel)
+            return 0;
+        for (int t = m->el_t0[ia]; t < m->el_t0[ia + 1]; t++)
+            for (int j = 0; j < 3; j++) {
+                const int e = m->tedge[3 * t + j];
+                if (m->edge_kind[e] == RS_EDGE_FLAT && element_has_edge(m, ib, e))
+                    return 1;
+            }
+        return 0;
+    }
+    if (ta == RS_FEAT_FACE && tb == RS_FEAT_EDGE)
+        return ib < m->ne && element_has_edge(m, ia, ib);
+    if (ta == RS_FEAT_FACE && tb == RS_FEAT_VERTEX)
+        return ib < m->nv && element_has_node(m, ia, ib);
+    if (ta == RS_FEAT_EDGE && tb == RS_FEAT_VERTEX)
+        return ia < m->ne && ib < m->nv && (m->edge_v[2 * ia] == ib || m->edge_v[2 * ia + 1] == ib);
+    return 0;
+}
+
+static void mesh_bounds(const rs_surface *s, double lo[3], double hi[3])
+{
+    const rs_mesh *m = s->impl;
+    for (int d = 0; d < 3; d++) {
+        lo[d] = m ? m->lo[d] : 0.0;
+        hi[d] = m ? m->hi[d] : 0.0;
+    }
+}
+
+static int mesh_spin_axis(const rs_surface *s, double origin[3], double axis[3])
+{
+    (void)s;
+    (void)origin;
+    (void)axis;
+    return 0;
+}
+
+static int mesh_triangulate(const rs_surface *s, double span, int nhoop, rs_trimesh *tm,
+                            rs_error *err)
+{
+    (void)span;
+    (void)nhoop;
+    const rs_mesh *m = s->impl;
+    memset(tm, 0, sizeof *tm);
+    tm->xyz = malloc(3 * (size_t)m->nv * sizeof(double));
+    tm->tri = malloc(3 * (size_t)m->nt * sizeof(int));
+    if (!tm->xyz || !tm->tri) {
+        free(tm->xyz);
+        free(tm->tri);
+        memset(tm, 0, sizeof *tm);
+        return rs_error_set(err, RS_ERR_NOMEM, "out of memory for the mesh's display");
+    }
+    memcpy(tm->xyz, m->xyz, 3 * (size_t)m->nv * sizeof(double));
+    memcpy(tm->tri, m->tri, 3 * (size_t)m->nt * sizeof(int));
+    tm->nvert = m->nv;
+    tm->ntri = m->nt;
+    return RS_OK;
+}
+
+static void mesh_free(rs_surface *s)
+{
+    rs_mesh_free(s->impl);
+    s->impl = NULL;
+}
+
+const rs_surface_ops rs_mesh_ops = {"MESH",           3,
+                                    RS_FRAME_GLOBAL_X, mesh_closest,
+                                    mesh_adjacent,    mesh_bounds,
+                                    mesh_spin_axis,   mesh_triangulate,
+                                    mesh_free};
+
+/* STL checks the reader leaves out: an ASCII STL (it starts with "solid" and reads as
+ * text) ends with "endsolid", so a file cut short is an error and not a smaller mesh; a
+ * binary STL is exactly 84 + 50 n bytes for its n facets, and its coordinates are finite
+ * (the reader merges equal points, and a NaN would merge with anything). */
+static int stl_check(const char *file, const char *where, rs_error *err)
+{
+    const char *dot = strrchr(file, '.');
+    if (!dot || strlen(dot) != 4 || tolower((unsigned char)dot[1]) != 's' ||
+        tolower((unsigned char)dot[2]) != 't' || tolower((unsigned char)dot[3]) != 'l')
+        return RS_OK;
+    FILE *f = fopen(file, "rb");
+    if (!f)
+        return RS_OK; /* reported by the reader */
+    unsigned char head[84];
+    const size_t nh = fread(head, 1, sizeof head, f);
+    long size = -1;
+    if (fseek(f, 0, SEEK_END) == 0)
+        size = ftell(f);
+    int text = nh >= 5 && memcmp(head, "solid", 5) == 0;
+    for (size_t k = 0; k < nh && text; k++)
+        text = head[k] != 0;
+    int rc = RS_OK;
+    if (text) {
+        char tail[256];
+        size_t nt = 0;
+        const long from = size > (long)sizeof tail - 1 ? size - (long)sizeof tail + 1 : 0;
+        if (size > 0 && fseek(f, from, SEEK_SET) == 0)
+            nt = fread(tail, 1, sizeof tail - 1, f);
+        tail[nt] = '\0';
+        if (!memchr(tail, '\0', nt) && !strstr(tail, "endsolid"))
+            rc = rs_error_set(err, RS_ERR_PARSE,
+                              "%s: %s: ASCII STL ends without 'endsolid' (broken or "
+                              "truncated)",
+                              where, file);
+    } else if (nh == sizeof head) {
+        const unsigned long n = (unsigned long)head[80] | (unsigned long)head[81] << 8 |
+                                (unsigned long)head[82] << 16 | (unsigned long)head[83] << 24;
+        if (size < 0 || (unsigned long)size != 84ul + 50ul * n)
+            rc = rs_error_set(err, RS_ERR_PARSE,
+                              "%s: %s: binary STL of %ld bytes announces %lu facets (expected "
+                              "84 + 50 x %lu = %lu bytes: broken or truncated)",
+                              where, file, size, n, n, 84ul + 50ul * n);
+        unsigned char rec[50];
+        if (!rc && fseek(f, 84, SEEK_SET) == 0)
+            for (unsigned long k = 0; k < n && !rc && fread(rec, 1, 50, f) == 50; k++)
+                for (int j = 3; j < 12 && !rc; j++) { /* the three vertices */
+                    float v;
+                    memcpy(&v, rec + 4 * j, 4);
+                    if (!isfinite(v))
+                        rc = rs_error_set(err, RS_ERR_GEOMETRY,
+                                          "%s: %s: facet %lu has coordinate %g (expected "
+                                          "finite coordinates)",
+                                          where, file, k + 1, (double)v);
+                }
+    }
+    fclose(f);
+    return rc;
+}
+
+int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int placed,
+                         const double abc[9], const char *where, rs_error *err)
+{
+    double a[3] = {0, 0, 0}, ex[3] = {1, 0, 0}, ey[3] = {0, 1, 0}, ez[3] = {0, 0, 1};
+    if (placed) {
+        const double *pa = abc, *pb = abc + 3, *pc = abc + 6;
+        double u[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+        double w[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
+        double scl = 0.0;
+        for (int i = 0; i < 9; i++)
+            scl = fmax(scl, fabs(abc[i]));
+        const double lu = rs_norm3(u), lw = rs_norm3(w);
+        if (!(lu > 1e-12 * scl) || !isfinite(lu) || !isfinite(lw))
+            return rs_error_set(err, RS_ERR_GEOMETRY,
+                                "%s: points a and b coincide (expected distinct points a, b "
+                                "placing the mesh)",
+                                where);
+        for (int d = 0; d < 3; d++)
+            ex[d] = u[d] / lu;
+        const double along = rs_dot3(w, ex);
+        double y[3] = {w[0] - along * ex[0], w[1] - along * ex[1], w[2] - along * ex[2]};
+        const double ly = rs_norm3(y);
+        if (!(lw > 1e-12 * scl) || !(ly > 1e-9 * lw))
+            return rs_error_set(err, RS_ERR_GEOMETRY,
+                                "%s: point c coincides with a or lies on the line a-b "
+                                "(expected c off the mesh's local x axis)",
+                                where);
+        for (int d = 0; d < 3; d++)
+            ey[d] = y[d] / ly;
+        rs_cross3(ex, ey, ez);
+        memcpy(a, pa, sizeof a);
+    }
+    struct stat st;
+    if (stat(file, &st) != 0)
+        return rs_error_set(err, RS_ERR_IO, "%s: cannot open mesh file %s: %s", where, file,
+                            strerror(errno));
+    if (!S_ISREG(st.st_mode))
+        return rs_error_set(err, RS_ERR_IO, "%s: %s is %s (expected a mesh file)", where,
+                            file, S_ISDIR(st.st_mode) ? "a directory" : "not a regular file");
+    FILE *f = fopen(file, "rb");
+    if (!f)
+        return rs_error_set(err, RS_ERR_IO, "%s: cannot open mesh file %s: %s", where, file,
+                            strerror(errno));
+    const int empty = fgetc(f) == EOF;
+    fclose(f);
+    if (empty)
+        return rs_error_set(err, RS_ERR_PARSE, "%s: %s is empty (expected a mesh)", where,
+                            file);
+    int rc = stl_check(file, where, err);
+    if (rc)
+        return rc;
+    rs_soup soup;
+    char msg[300];
+    if (rs_cgal_read_soup(file, &soup, msg, sizeof msg))
+        return rs_error_set(err, RS_ERR_PARSE, "%s: %s: %s", where, file, msg);
+    rs_mesh *m = NULL;
+    int two = 0;
+    rc = rs_mesh_build(&soup, scale, a, ex, ey, ez, file, &m, &two, s->warning,
+                           sizeof s->warning, err);
+    rs_soup_free(&soup);
+    if (rc)
+        return rc;
+    s->impl = m;
+    s->ops = &rs_mesh_ops;
+    s->kind = RS_SURF_FACETED;
+    if (two)
+        s->sides = 2;
+    /* the placement is in the nodes: the reference configuration is global */
+    const double I[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    memset(s->a, 0, sizeof s->a);
+    memcpy(s->ex, I[0], sizeof s->ex);
+    memcpy(s->ey, I[1], sizeof s->ey);
+    memcpy(s->ez, I[2], sizeof s->ez);
+    return RS_OK;
+}

@@ -1,0 +1,834 @@
+/* MESH surfaces (src/faceted/): the query against a brute-force scan of every triangle
+ * (closest point by projection and edge clamping, written here independently), on a UV
+ * sphere, a torus of planar quads, a box with rounded edges and a bumpy open height
+ * field; frames by the FACETED convention from their definition; one contact on flat
+ * regions, exactly above shared vertices and edges; a contact per face in a concave
+ * apex; edge and vertex contacts of a box; placement and scale; and the errors for bad
+ * files. */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+#include "rigidsurf/surface.h"
+#include "rigidsurf/vec.h"
+#include "rs_test.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static char tmpdir[64];
+
+/* ---- meshes written as OFF (polygons with outward winding) ------------------------ */
+
+typedef struct poly_mesh {
+    int np, nf;
+    double *xyz;
+    int *nc;    /* corners of each polygon */
+    int *corner; /* 4 per polygon */
+} poly_mesh;
+
+static void pm_init(poly_mesh *m, int np, int nf)
+{
+    m->np = np;
+    m->nf = 0;
+    m->xyz = calloc(3 * (size_t)np, sizeof(double));
+    m->nc = calloc((size_t)nf, sizeof(int));
+    m->corner = calloc(4 * (size_t)nf, sizeof(int));
+}
+
+static void pm_add(poly_mesh *m, int n, int a, int b, int c, int d)
+{
+    m->nc[m->nf] = n;
+    int *k = m->corner + 4 * m->nf++;
+    k[0] = a;
+    k[1] = b;
+    k[2] = c;
+    k[3] = d;
+}
+
+static void pm_free(poly_mesh *m)
+{
+    free(m->xyz);
+    free(m->nc);
+    free(m->corner);
+}
+
+static void write_off(const poly_mesh *m, const char *path)
+{
+    FILE *f = fopen(path, "w");
+    fprintf(f, "OFF\n%d %d 0\n", m->np, m->nf);
+    for (int i = 0; i < m->np; i++)
+        fprintf(f, "%.17g %.17g %.17g\n", m->xyz[3 * i], m->xyz[3 * i + 1],
+                m->xyz[3 * i + 2]);
+    for (int k = 0; k < m->nf; k++) {
+        fprintf(f, "%d", m->nc[k]);
+        for (int j = 0; j < m->nc[k]; j++)
+            fprintf(f, " %d", m->corner[4 * k + j]);
+        fprintf(f, "\n");
+    }
+    fclose(f);
+}
+
+/* The triangles of the polygons (fans), as the brute force sees them. */
+static int pm_triangles(const poly_mesh *m, double (*tri)[9])
+{
+    int nt = 0;
+    for (int k = 0; k < m->nf; k++)
+        for (int j = 1; j + 1 < m->nc[k]; j++) {
+            const int v[3] = {m->corner[4 * k], m->corner[4 * k + j], m->corner[4 * k + j + 1]};
+            for (int a = 0; a < 3; a++)
+                for (int d = 0; d < 3; d++)
+                    tri[nt][3 * a + d] = m->xyz[3 * v[a] + d];
+            nt++;
+        }
+    return nt;
+}
+
+static void uv_sphere(poly_mesh *m, int nlat, int nlon)
+{
+    pm_init(m, 2 + (nlat - 1) * nlon, 2 * nlat * nlon);
+    double *x = m->xyz;
+    x[2] = 1.0;
+    x[3 * 1 + 2] = -1.0;
+    for (int i = 1; i < nlat; i++)
+        for (int j = 0; j < nlon; j++) {
+            const double th = RS_PI * i / nlat, ph = 2 * RS_PI * j / nlon;
+            double *p = x + 3 * (2 + (i - 1) * nlon + j);
+            p[0] = sin(th) * cos(ph);
+            p[1] = sin(th) * sin(ph);
+            p[2] = cos(th);
+        }
+#define V(i, j) (2 + ((i)-1) * nlon + ((j) % nlon))
+    for (int j = 0; j < nlon; j++) {
+        pm_add(m, 3, 0, V(1, j), V(1, j + 1), 0);
+        pm_add(m, 3, 1, V(nlat - 1, j + 1), V(nlat - 1, j), 0);
+        for (int i = 1; i + 1 < nlat; i++) {
+            pm_add(m, 3, V(i, j), V(i + 1, j), V(i + 1, j + 1), 0);
+            pm_add(m, 3, V(i, j), V(i + 1, j + 1), V(i, j + 1), 0);
+        }
+    }
+#undef V
+}
+
+static void torus(poly_mesh *m, int nu, int nv, double R, double r)
+{
+    pm_init(m, nu * nv, nu * nv);
+    for (int i = 0; i < nu; i++)
+        for (int j = 0; j < nv; j++) {
+            const double u = 2 * RS_PI * i / nu, v = 2 * RS_PI * j / nv;
+            double *p = m->xyz + 3 * (i * nv + j);
+            p[0] = (R + r * cos(v)) * cos(u);
+            p[1] = (R + r * cos(v)) * sin(u);
+            p[2] = r * sin(v);
+        }
+    for (int i = 0; i < nu; i++)
+        for (int j = 0; j < nv; j++) {
+            const int a = i * nv + j, b = ((i + 1) % nu) * nv + j,
+                      c = ((i + 1) % nu) * nv + (j + 1) % nv, d = i * nv + (j + 1) % nv;
+            pm_add(m, 4, a, b, c, d); /* planar trapezoids, outward */
+        }
+}
+
+/* A box [-1,1]^3 with edges rounded at radius rr, from a grid of n x n on each face. */
+static void rounded_box(poly_mesh *m, int n, double rr)
+{
+    pm_init(m, 6 * (n + 1) * (n + 1), 12 * n * n);
+    const double core = 1.0 - rr;
+    for (int f = 0; f < 6; f++) {
+        const int ax = f / 2, sg = f % 2 ? 1 : -1;
+        const int a1 = (ax + 1) % 3, a2 = (ax + 2) % 3;
+        for (int i = 0; i <= n; i++)
+            for (int j = 0; j <= n; j++) {
+                double q[3];
+                q[ax] = sg;
+                q[a1] = -1.0 + 2.0 * i / n;
+                q[a2] = -1.0 + 2.0 * j / n;
+                double c[3], v[3];
+                for (int d = 0; d < 3; d++) {
+                    c[d] = fmax(-core, fmin(core, q[d]));
+                    v[d] = q[d] - c[d];
+                }
+                const double l = rs_norm3(v);
+                double *p = m->xyz + 3 * ((f * (n + 1) + i) * (n + 1) + j);
+                for (int d = 0; d < 3; d++)
+                    p[d] = c[d] + rr * v[d] / l;
+            }
+        for (int i = 0; i < n; i++)
+            for (int j = 0; j < n; j++) {
+                const int b0 = f * (n + 1) * (n + 1);
+                const int a = b0 + i * (n + 1) + j, b = a + (n + 1), c = b + 1, d = a + 1;
+                if (sg > 0) {
+                    pm_add(m, 3, a, b, c, 0);
+                    pm_add(m, 3, a, c, d, 0);
+                } else {
+                    pm_add(m, 3, a, c, b, 0);
+                    pm_add(m, 3, a, d, c, 0);
+                }
+            }
+    }
+}
+
+static void height_field(poly_mesh *m, int n, unsigned long long seed)
+{
+    pm_init(m, (n + 1) * (n + 1), 2 * n * n);
+    for (int i = 0; i <= n; i++)
+        for (int j = 0; j <= n; j++) {
+            double *p = m->xyz + 3 * (i * (n + 1) + j);
+            p[0] = -1.0 + 2.0 * i / n;
+            p[1] = -1.0 + 2.0 * j / n;
+            p[2] = 0.1 * sin(3 * p[0]) * cos(2 * p[1]) +
+                   0.02 * ((double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0);
+        }
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++) {
+            const int a = i * (n + 1) + j, b = a + (n + 1), c = b + 1, d = a + 1;
+            pm_add(m, 3, a, b, c, 0);
+            pm_add(m, 3, a, c, d, 0);
+        }
+}
+
+/* ---- the independent answer ------------------------------------------------------- */
+
+static void closest_on_segment(const double *a, const double *b, const double p[3],
+                               double c[3])
+{
+    double u[3], w[3];
+    for (int d = 0; d < 3; d++) {
+        u[d] = b[d] - a[d];
+        w[d] = p[d] - a[d];
+    }
+    double t = rs_dot3(w, u) / rs_dot3(u, u);
+    t = fmax(0.0, fmin(1.0, t));
+    for (int d = 0; d < 3; d++)
+        c[d] = a[d] + t * u[d];
+}
+
+static double dist3(const double a[3], const double b[3])
+{
+    const double d[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    return rs_norm3(d);
+}
+
+/* Closest point of triangle T to p: the plane's projection when its barycentric
+ * coordinates are all >= 0, else the nearest of the three edges' closest points. */
+static double closest_on_triangle(const double T[9], const double p[3], double c[3])
+{
+    const double *a = T, *b = T + 3, *cc = T + 6;
+    double u[3], v[3], n[3];
+    for (int d = 0; d < 3; d++) {
+        u[d] = b[d] - a[d];
+        v[d] = cc[d] - a[d];
+    }
+    rs_cross3(u, v, n);
+    const double nn = rs_dot3(n, n);
+    double w[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+    const double h = rs_dot3(w, n) / nn;
+    double q[3];
+    for (int d = 0; d < 3; d++)
+        q[d] = w[d] - h * n[d];
+    double c1[3], c2[3];
+    rs_cross3(q, v, c1);
+    rs_cross3(u, q, c2);
+    const double beta = rs_dot3(c1, n) / nn, gamma = rs_dot3(c2, n) / nn;
+    if (beta >= 0 && gamma >= 0 && beta + gamma <= 1) {
+        for (int d = 0; d < 3; d++)
+            c[d] = a[d] + q[d];
+        return dist3(p, c);
+    }
+    double best = INFINITY, e[3];
+    const double *P[3] = {a, b, cc};
+    for (int k = 0; k < 3; k++) {
+        closest_on_segment(P[k], P[(k + 1) % 3], p, e);
+        const double dd = dist3(p, e);
+        if (dd < best) {
+            best = dd;
+            memcpy(c, e, sizeof e);
+        }
+    }
+    return best;
+}
+
+/* FACETED tangents from the definition: global x on the tangent plane, global z when x is
+ * within 0.1 degree of n. */
+static void faceted_t1(const double n[3], double t1[3])
+{
+    const double x[3] = {1, 0, 0}, z[3] = {0, 0, 1};
+    const double *g = fabs(rs_dot3(n, x)) > cos(0.1 * RS_PI / 180.0) ? z : x;
+    const double gn = rs_dot3(g, n);
+    for (int d = 0; d < 3; d++)
+        t1[d] = g[d] - gn * n[d];
+    const double l = rs_norm3(t1);
+    for (int d = 0; d < 3; d++)
+        t1[d] /= l;
+}
+
+static int load(const char *text, rs_surface *s, rs_error *e)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/s.inp", tmpdir);
+    FILE *f = fopen(path, "w");
+    fputs(text, f);
+    fclose(f);
+    return rs_surface_read(path, NULL, s, e);
+}
+
+static void query(const rs_surface *s, int n, const double *x, const double *y,
+                  const double *z, const double *r, double gap, rs_contacts *c)
+{
+    rs_query q;
+    memset(&q, 0, sizeof q);
+    q.n = n;
+    q.slave.x = x;
+    q.slave.y = y;
+    q.slave.z = z;
+    q.slave.radius = r;
+    q.gap_max = gap;
+    q.dist_min = -INFINITY;
+    c->n = 0;
+    rs_error e;
+    if (rs_surface_query(s, &q, c, &e) != RS_OK)
+        fprintf(stderr, "query: %s\n", e.msg);
+}
+
+/* Every point near mesh pm (file name, sides): the nearest contact is the brute-force
+ * closest point of all triangles to 1e-12, its normal points from it to the point, and
+ * its frame is the FACETED one; every contact is a local minimum (no triangle at its
+ * closest point comes nearer), and no feature is counted twice. */
+static int brute_force_case(const poly_mesh *pm, const char *name, int sides, double spread,
+                            int npts, unsigned long long seed)
+{
+    char path[128], text[256];
+    snprintf(path, sizeof path, "%s/%s.off", tmpdir, name);
+    write_off(pm, path);
+    snprintf(text, sizeof text, "*SURFACE, TYPE=MESH, NAME=%s, FILE=%s.off%s\n", name, name,
+             sides == 2 ? ", SIDES=2" : "");
+    rs_surface s;
+    rs_error e;
+    if (load(text, &s, &e) != RS_OK) {
+        fprintf(stderr, "%s\n", e.msg);
+        return 0;
+    }
+    double(*T)[9] = malloc((size_t)pm->nf * 2 * sizeof *T);
+    const int nt = pm_triangles(pm, T);
+    int ok = 1;
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    for (int k = 0; k < npts && ok; k++) {
+        /* a point near a random node */
+        const int v = (int)(rs_test_xorshift(&seed) % (unsigned long long)pm->np);
+        double p[3];
+        for (int d = 0; d < 3; d++)
+            p[d] = pm->xyz[3 * v + d] +
+                   spread * (2.0 * (double)(rs_test_xorshift(&seed) >> 11) /
+                                 9007199254740992.0 -
+                             1.0);
+        double best = INFINITY, cb[3];
+        for (int t = 0; t < nt; t++) {
+            double cp[3];
+            const double dd = closest_on_triangle(T[t], p, cp);
+            if (dd < best) {
+                best = dd;
+                memcpy(cb, cp, sizeof cp);
+            }
+        }
+        query(&s, 1, p, p + 1, p + 2, NULL, 1.0, &c);
+        int kbest = -1;
+        for (int i = 0; i < c.n; i++) {
+            if (kbest < 0 || fabs(c.dist[i]) < fabs(c.dist[kbest]))
+                kbest = i;
+            for (int j = 0; j < i; j++)
+                if (c.feature[i] == c.feature[j]) {
+                    fprintf(stderr, "%s: point %d: feature %d twice\n", name, k, c.feature[i]);
+                    ok = 0;
+                }
+            /* each contact: |dist| = |p - xm|, n along p - xm, a local minimum */
+            const double xm[3] = {c.xm[0][i], c.xm[1][i], c.xm[2][i]};
+            const double n[3] = {c.nrm[0][i], c.nrm[1][i], c.nrm[2][i]};
+            const double dd = dist3(p, xm);
+            if (!(fabs(dd - fabs(c.dist[i])) <= 1e-12)) {
+                fprintf(stderr, "%s: point %d: |p - xm| %.17g, dist %.17g\n", name, k, dd,
+                        c.dist[i]);
+                ok = 0;
+            }
+            for (int d = 0; d < 3 && dd > 1e-9; d++)
+                if (!(fabs(c.dist[i] * n[d] - (p[d] - xm[d])) <= 1e-12)) {
+                    fprintf(stderr, "%s: point %d: normal off p - xm\n", name, k);
+                    ok = 0;
+                    break;
+                }
+            for (int t = 0; t < nt; t++) {
+                double cp[3];
+                if (closest_on_triangle(T[t], xm, cp) > 1e-12)
+                    continue; /* triangles at the contact point */
+                if (closest_on_triangle(T[t], p, cp) < dd - 1e-12) {
+                    fprintf(stderr, "%s: point %d: contact %d at %.17g is no local minimum "
+                                    "(triangle %d at %.17g)\n",
+                            name, k, c.feature[i], dd, t, dist3(p, cp));
+                    ok = 0;
+                    break;
+                }
+            }
+        }
+        if (best > 1.0)
+            continue; /* beyond the query's reach */
+        if (kbest < 0) {
+            fprintf(stderr, "%s: point %d at %.17g from the mesh: no contact\n", name, k,
+                    best);
+            ok = 0;
+            break;
+        }
+        if (!(fabs(fabs(c.dist[kbest]) - best) <= 1e-12)) {
+            fprintf(stderr, "%s: point %d: nearest contact %.17g, brute force %.17g\n", name,
+                    k, c.dist[kbest], best);
+            ok = 0;
+        }
+        const double n[3] = {c.nrm[0][kbest], c.nrm[1][kbest], c.nrm[2][kbest]};
+        double t1[3], t2[3];
+        faceted_t1(n, t1);
+        rs_cross3(n, t1, t2);
+        for (int d = 0; d < 3; d++)
+            if (!(fabs(c.t1[d][kbest] - t1[d]) <= 1e-12 &&
+                  fabs(c.t2[d][kbest] - t2[d]) <= 1e-12)) {
+                fprintf(stderr, "%s: point %d: frame differs from FACETED\n", name, k);
+                ok = 0;
+                break;
+            }
+    }
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+    free(T);
+    return ok;
+}
+
+static void brute_force_uv_sphere(void)
+{
+    poly_mesh m;
+    uv_sphere(&m, 16, 32);
+    const int ok = brute_force_case(&m, "sphere", 2, 0.3, 600, 11);
+    pm_free(&m);
+    ENSURE(ok);
+}
+
+static void brute_force_torus_quads(void)
+{
+    poly_mesh m;
+    torus(&m, 32, 16, 1.0, 0.3);
+    const int ok = brute_force_case(&m, "torus", 2, 0.25, 600, 12) &&
+                   brute_force_case(&m, "torus1", 1, 0.25, 600, 16);
+    pm_free(&m);
+    ENSURE(ok);
+}
+
+static void brute_force_rounded_box(void)
+{
+    poly_mesh m;
+    rounded_box(&m, 8, 0.3);
+    const int ok = brute_force_case(&m, "rbox", 2, 0.3, 600, 13) &&
+                   brute_force_case(&m, "rbox1", 1, 0.3, 600, 17);
+    pm_free(&m);
+    ENSURE(ok);
+}
+
+static void brute_force_height_field(void)
+{
+    poly_mesh m;
+    height_field(&m, 20, 14);
+    const int ok = brute_force_case(&m, "hfield", 2, 0.3, 600, 15);
+    pm_free(&m);
+    ENSURE(ok);
+}
+
+/* One-sided, from outside a closed convex mesh: exactly one contact at every point, the
+ * brute-force closest point. */
+static void one_contact_outside_convex(void)
+{
+    poly_mesh m;
+    uv_sphere(&m, 12, 24);
+    const int ok = brute_force_case(&m, "sphere1", 1, 0.0, 0, 1);
+    char path[128];
+    snprintf(path, sizeof path, "%s/sphere1.off", tmpdir);
+    rs_surface s;
+    rs_error e;
+    ENSURE(ok);
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=s, FILE=sphere1.off\n", &s, &e) == RS_OK);
+    unsigned long long seed = 5;
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    int bad = 0;
+    for (int k = 0; k < 2000; k++) {
+        double dir[3];
+        for (int d = 0; d < 3; d++)
+            dir[d] = 2.0 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 - 1.0;
+        const double l = rs_norm3(dir);
+        const double rad = 1.02 + 0.2 * k / 2000.0;
+        double p[3] = {rad * dir[0] / l, rad * dir[1] / l, rad * dir[2] / l};
+        query(&s, 1, p, p + 1, p + 2, NULL, 1.0, &c);
+        bad += c.n != 1 || !(c.dist[0] > 0.0);
+    }
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+    pm_free(&m);
+    ENSURE(bad == 0);
+}
+
+/* Six coplanar triangles around a vertex: a point exactly above the vertex, above each
+ * shared edge and anywhere above the fan has one contact, n = +z, dist = height,
+ * exactly as on the plane. */
+static void flat_fan_one_contact(void)
+{
+    poly_mesh m;
+    pm_init(&m, 7, 6);
+    for (int k = 0; k < 6; k++) {
+        m.xyz[3 * (k + 1)] = cos(RS_PI * k / 3.0);
+        m.xyz[3 * (k + 1) + 1] = sin(RS_PI * k / 3.0);
+    }
+    for (int k = 0; k < 6; k++)
+        pm_add(&m, 3, 0, 1 + k, 1 + (k + 1) % 6, 0);
+    char path[128];
+    snprintf(path, sizeof path, "%s/fan.off", tmpdir);
+    write_off(&m, path);
+    pm_free(&m);
+    rs_surface s;
+    rs_error e;
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=fan, FILE=fan.off\n", &s, &e) == RS_OK);
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    const double h = 0.0123;
+    double x = 0, y = 0, z = h;
+    query(&s, 1, &x, &y, &z, NULL, 0.1, &c);
+    ENSURE(c.n == 1);
+    ENSURE(c.dist[0] == h && c.nrm[2][0] == 1.0 && c.xm[2][0] == 0.0);
+    /* above each shared edge, at several places along it */
+    for (int k = 0; k < 6; k++)
+        for (int j = 1; j < 5; j++) {
+            x = 0.2 * j * cos(RS_PI * k / 3.0);
+            y = 0.2 * j * sin(RS_PI * k / 3.0);
+            query(&s, 1, &x, &y, &z, NULL, 0.1, &c);
+            ENSURE(c.n == 1);
+            ENSURE_NEAR(c.dist[0], h, 1e-15);
+            ENSURE_NEAR(c.nrm[2][0], 1.0, 1e-15);
+        }
+    unsigned long long seed = 3;
+    for (int k = 0; k < 5000; k++) {
+        x = 1.6 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 - 0.8;
+        y = 1.6 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 - 0.8;
+        if (hypot(x, y) > 0.85)
+            continue;
+        query(&s, 1, &x, &y, &z, NULL, 0.1, &c);
+        ENSURE(c.n == 1);
+        ENSURE_NEAR(c.dist[0], h, 1e-15);
+    }
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+}
+
+/* Inside the apex of a 12-facet cone (half angle 30 deg), a point on the axis has one
+ * contact per facet, each at its closed-form distance z sin(30 deg) (apex at the
+ * origin, the point at height z). */
+static void cone_apex_contact_per_face(void)
+{
+    poly_mesh m;
+    pm_init(&m, 13, 12);
+    const double H = 1.0, R = H * tan(RS_PI / 6.0);
+    for (int k = 0; k < 12; k++) {
+        m.xyz[3 * (k + 1)] = R * cos(2 * RS_PI * k / 12);
+        m.xyz[3 * (k + 1) + 1] = R * sin(2 * RS_PI * k / 12);
+        m.xyz[3 * (k + 1) + 2] = H;
+    }
+    for (int k = 0; k < 12; k++) /* normals toward the inside (the axis) */
+        pm_add(&m, 3, 0, 1 + k, 1 + (k + 1) % 12, 0);
+    char path[128];
+    snprintf(path, sizeof path, "%s/cone.off", tmpdir);
+    write_off(&m, path);
+    pm_free(&m);
+    rs_surface s;
+    rs_error e;
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=cone, FILE=cone.off\n", &s, &e) == RS_OK);
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    double x = 0, y = 0, z = 0.3, r = 0.2;
+    query(&s, 1, &x, &y, &z, &r, 0.0, &c);
+    ENSURE(c.n == 12);
+    /* a facet's plane is at angle 30 deg to the axis only at its middle; its distance
+     * from the axis point is z sin(a) with tan(a) = tan(30 deg) cos(15 deg) */
+    const double a = atan(tan(RS_PI / 6.0) * cos(RS_PI / 12.0));
+    for (int k = 0; k < 12; k++) {
+        ENSURE(RS_FEATURE_TYPE(c.feature[k]) == RS_FEAT_FACE);
+        ENSURE_NEAR(c.dist[k], z * sin(a), 1e-14);
+    }
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+}
+
+/* A unit cube of quads: at a convex edge one edge contact, beyond a corner one vertex
+ * contact, above a face one face contact; inside near an edge only the shallower face
+ * (a penetration). */
+static void cube_edges_and_corners(void)
+{
+    const char *cube =
+        "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+        "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n";
+    char path[128];
+    snprintf(path, sizeof path, "%s/cube.off", tmpdir);
+    FILE *f = fopen(path, "w");
+    fputs(cube, f);
+    fclose(f);
+    rs_surface s;
+    rs_error e;
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=cube, FILE=cube.off\n", &s, &e) == RS_OK);
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    double x = 1.1, y = 0.4, z = 1.2; /* beyond the edge x = 1, z = 1 */
+    query(&s, 1, &x, &y, &z, NULL, 1.0, &c);
+    ENSURE(c.n == 1 && RS_FEATURE_TYPE(c.feature[0]) == RS_FEAT_EDGE);
+    ENSURE_NEAR(c.dist[0], hypot(0.1, 0.2), 1e-15);
+    x = 1.1, y = 1.2, z = 1.3; /* beyond the corner (1, 1, 1) */
+    query(&s, 1, &x, &y, &z, NULL, 1.0, &c);
+    ENSURE(c.n == 1 && RS_FEATURE_TYPE(c.feature[0]) == RS_FEAT_VERTEX);
+    ENSURE_NEAR(c.dist[0], sqrt(0.01 + 0.04 + 0.09), 1e-15);
+    x = 0.3, y = 0.6, z = 1.05; /* above the top face, off its diagonal */
+    query(&s, 1, &x, &y, &z, NULL, 1.0, &c);
+    ENSURE(c.n == 1 && RS_FEATURE_TYPE(c.feature[0]) == RS_FEAT_FACE);
+    ENSURE_NEAR(c.dist[0], 0.05, 1e-15);
+    x = 0.98, y = 0.5, z = 0.95; /* inside, nearer the side x = 1 */
+    query(&s, 1, &x, &y, &z, NULL, 0.0, &c);
+
+    ENSURE(c.n == 1 && RS_FEATURE_TYPE(c.feature[0]) == RS_FEAT_FACE);
+    ENSURE_NEAR(c.dist[0], -0.02, 1e-15);
+    ENSURE_NEAR(c.nrm[0][0], 1.0, 1e-15);
+    {   /* the same with every face within reach: the deeper faces give no contact */
+        rs_query q;
+        memset(&q, 0, sizeof q);
+        q.n = 1;
+        q.slave.x = &x;
+        q.slave.y = &y;
+        q.slave.z = &z;
+        q.gap_max = 0.0;
+        q.dist_min = -1.5;
+        c.n = 0;
+        ENSURE(rs_surface_query(&s, &q, &c, &e) == RS_OK);
+        ENSURE(c.n == 1);
+        ENSURE_NEAR(c.dist[0], -0.02, 1e-15);
+    }
+    /* history passes from a face to its own edge, not to a far one */
+    const int f0 = c.feature[0];
+    x = 1.1, y = 0.4, z = 1.2;
+    query(&s, 1, &x, &y, &z, NULL, 1.0, &c);
+    ENSURE(rs_surface_adjacent(&s, f0, c.feature[0]) == 1);
+    x = -0.1, y = 0.4, z = -0.2;
+    query(&s, 1, &x, &y, &z, NULL, 1.0, &c);
+    ENSURE(c.n == 1 && rs_surface_adjacent(&s, f0, c.feature[0]) == 0);
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+}
+
+/* SCALE and the placement line: a unit quad scaled by 2 and placed with its x axis along
+ * global y at (1, 2, 3) gives the plane x = 1 with normal +x... from its winding. */
+static void scale_and_placement(void)
+{
+    const char *quad = "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
+    char path[128];
+    snprintf(path, sizeof path, "%s/quad.off", tmpdir);
+    FILE *f = fopen(path, "w");
+    fputs(quad, f);
+    fclose(f);
+    rs_surface s;
+    rs_error e;
+    /* a = (1,2,3); local x along global y; local y along global z: local z = global x */
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=q, FILE=quad.off, SCALE=2\n"
+                "1, 2, 3, 1, 3, 3, 1, 2, 4\n",
+                &s, &e) == RS_OK);
+    double lo[3], hi[3];
+    rs_surface_bounds(&s, lo, hi);
+    ENSURE(lo[0] == 1.0 && hi[0] == 1.0 && lo[1] == 2.0 && hi[1] == 4.0 && lo[2] == 3.0 &&
+           hi[2] == 5.0);
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    double x = 1.5, y = 3.0, z = 4.0;
+    query(&s, 1, &x, &y, &z, NULL, 1.0, &c);
+    ENSURE(c.n == 1);
+    ENSURE_NEAR(c.dist[0], 0.5, 1e-15);
+    ENSURE_NEAR(c.nrm[0][0], 1.0, 1e-15);
+    /* the FACETED frame: x is the normal, so t1 = global z projected, t2 = n x t1 */
+    ENSURE_NEAR(c.t1[2][0], 1.0, 1e-15);
+    ENSURE_NEAR(c.t2[1][0], -1.0, 1e-15);
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+}
+
+/* A pose moves the mesh rigidly: the query of a moved point against the moved mesh is
+ * the reference query moved. */
+static void pose_moves_the_mesh(void)
+{
+    poly_mesh m;
+    torus(&m, 16, 8, 1.0, 0.3);
+    char path[128];
+    snprintf(path, sizeof path, "%s/tp.off", tmpdir);
+    write_off(&m, path);
+    pm_free(&m);
+    rs_surface s;
+    rs_error e;
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=t, FILE=tp.off\n", &s, &e) == RS_OK);
+    rs_pose pose;
+    const double ax[3] = {0.3, -0.5, 0.8};
+    const double l = rs_norm3(ax);
+    const double u[3] = {ax[0] / l, ax[1] / l, ax[2] / l};
+    rs_rotation_matrix(u, 0.7, pose.R);
+    pose.T[0] = 0.4;
+    pose.T[1] = -1.0;
+    pose.T[2] = 2.0;
+    const double X[3] = {1.25, 0.1, 0.2};
+    double x[3];
+    rs_pose_to_global(&pose, X, x);
+    rs_contacts c0, c1;
+    memset(&c0, 0, sizeof c0);
+    memset(&c1, 0, sizeof c1);
+    query(&s, 1, X, X + 1, X + 2, NULL, 1.0, &c0);
+    rs_query q;
+    memset(&q, 0, sizeof q);
+    q.n = 1;
+    q.slave.x = x;
+    q.slave.y = x + 1;
+    q.slave.z = x + 2;
+    q.pose = &pose;
+    q.gap_max = 1.0;
+    q.dist_min = -INFINITY;
+    ENSURE(rs_surface_query(&s, &q, &c1, &e) == RS_OK);
+    ENSURE(c0.n >= 1 && c0.n == c1.n);
+    for (int k = 0; k < c0.n; k++) {
+        ENSURE(c0.feature[k] == c1.feature[k]);
+        ENSURE_NEAR(c0.dist[k], c1.dist[k], 1e-14);
+        const double xm0[3] = {c0.xm[0][k], c0.xm[1][k], c0.xm[2][k]};
+        const double n0[3] = {c0.nrm[0][k], c0.nrm[1][k], c0.nrm[2][k]};
+        double xm[3], n[3];
+        rs_pose_to_global(&pose, xm0, xm);
+        rs_pose_rotate(&pose, n0, n);
+        for (int d = 0; d < 3; d++) {
+            ENSURE_NEAR(c1.xm[d][k], xm[d], 1e-14);
+            ENSURE_NEAR(c1.nrm[d][k], n[d], 1e-14);
+        }
+    }
+    rs_contacts_free(&c0);
+    rs_contacts_free(&c1);
+    rs_surface_free(&s);
+}
+
+/* Bad files: each error names the file and what is wrong. */
+static void expect_error(const char *file, const char *content, size_t len, const char *inp,
+                         const char *want)
+{
+    char path[160];
+    if (file) {
+        snprintf(path, sizeof path, "%s/%s", tmpdir, file);
+        FILE *f = fopen(path, "wb");
+        if (len)
+            fwrite(content, 1, len, f);
+        fclose(f);
+    }
+    rs_surface s;
+    rs_error e;
+    const int rc = load(inp, &s, &e);
+    if (rc == RS_OK || !strstr(e.msg, want)) {
+        fprintf(stderr, "expected an error with '%s', got %d: %s\n", want, rc, e.msg);
+        rs_test_current_failed = 1;
+        if (rc == RS_OK)
+            rs_surface_free(&s);
+    }
+}
+
+static void bad_mesh_files(void)
+{
+    expect_error("empty.stl", "", 0, "*SURFACE, TYPE=MESH, NAME=a, FILE=empty.stl\n",
+                 "empty.stl is empty");
+    const char *broken = "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n"
+                         "   vertex 1 0\n";
+    expect_error("broken.stl", broken, strlen(broken),
+                 "*SURFACE, TYPE=MESH, NAME=a, FILE=broken.stl\n", "broken.stl");
+    /* a binary STL announcing 10 facets that holds 1 */
+    char bin[84 + 50];
+    memset(bin, 0, sizeof bin);
+    bin[80] = 10;
+    expect_error("trunc.stl", bin, sizeof bin, "*SURFACE, TYPE=MESH, NAME=a, FILE=trunc.stl\n",
+                 "trunc.stl");
+    const char *nanoff = "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n";
+    expect_error("nan.off", nanoff, strlen(nanoff), "*SURFACE, TYPE=MESH, NAME=a, FILE=nan.off\n",
+                 "nan.off");
+    expect_error(NULL, NULL, 0, "*SURFACE, TYPE=MESH, NAME=a, FILE=missing.stl\n",
+                 "missing.stl");
+    expect_error(NULL, NULL, 0, "*SURFACE, TYPE=MESH, NAME=a, FILE=.\n", "directory");
+    const char *tri = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    expect_error("tri.off", tri, strlen(tri),
+                 "*SURFACE, TYPE=MESH, NAME=a, FILE=tri.off, SCALE=-1\n", "SCALE > 0");
+    expect_error(NULL, NULL, 0, "*SURFACE, TYPE=MESH, NAME=a, FILE=tri.off, SCALE=nan\n",
+                 "s.inp:1");
+    expect_error(NULL, NULL, 0, "*SURFACE, TYPE=MESH, NAME=a\n", "expected FILE=");
+    expect_error("tri.xyz", tri, strlen(tri), "*SURFACE, TYPE=MESH, NAME=a, FILE=tri.xyz\n",
+                 "unknown mesh format");
+    const char *flat = "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n";
+    expect_error("flat.off", flat, strlen(flat), "*SURFACE, TYPE=MESH, NAME=a, FILE=flat.off\n",
+                 "every facet is degenerate");
+    expect_error(NULL, NULL, 0, "*SURFACE, TYPE=MESH, NAME=a, FILE=tri.off\n1, 2, 3\n",
+                 "placement");
+}
+
+/* Repairs are reported: a degenerate facet is dropped by its number, open edges are
+ * counted, and a surface without a consistent orientation acts on both sides. */
+static void repairs_are_reported(void)
+{
+    const char *txt = "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n2 0 0\n1 1 0\n"
+                      "3 0 1 2\n3 0 1 3\n3 1 4 2\n";
+    char path[128];
+    snprintf(path, sizeof path, "%s/rep.off", tmpdir);
+    FILE *f = fopen(path, "w");
+    fputs(txt, f);
+    fclose(f);
+    rs_surface s;
+    rs_error e;
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=r, FILE=rep.off\n", &s, &e) == RS_OK);
+    ENSURE(strstr(s.warning, "dropped 1 degenerate facet (facet 2)") != NULL);
+    ENSURE(strstr(s.warning, "4 open boundary edges") != NULL);
+    rs_surface_free(&s);
+    /* a Moebius band: eight quads around a circle, the last joined with a half twist */
+    snprintf(path, sizeof path, "%s/mob.off", tmpdir);
+    f = fopen(path, "w");
+    fprintf(f, "OFF\n16 16 0\n");
+    for (int i = 0; i < 8; i++)
+        for (int k = 0; k < 2; k++) {
+            const double u = 2 * RS_PI * i / 8, w = k ? 0.3 : -0.3;
+            fprintf(f, "%.17g %.17g %.17g\n", (1 + w * cos(u / 2)) * cos(u),
+                    (1 + w * cos(u / 2)) * sin(u), w * sin(u / 2));
+        }
+    for (int i = 0; i < 8; i++) {
+        const int a = 2 * i, b = 2 * i + 1;
+        const int c = i < 7 ? 2 * (i + 1) : 1, d = i < 7 ? 2 * (i + 1) + 1 : 0;
+        fprintf(f, "3 %d %d %d\n3 %d %d %d\n", a, c, d, a, d, b);
+    }
+    fclose(f);
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=m, FILE=mob.off\n", &s, &e) == RS_OK);
+    ENSURE(s.sides == 2 && strstr(s.warning, "no consistent orientation") != NULL);
+    rs_surface_free(&s);
+}
+
+int main(void)
+{
+    snprintf(tmpdir, sizeof tmpdir, "/tmp/rs_test_mesh_XXXXXX");
+    if (!mkdtemp(tmpdir))
+        return 1;
+    RS_RUN(brute_force_uv_sphere);
+    RS_RUN(brute_force_torus_quads);
+    RS_RUN(brute_force_rounded_box);
+    RS_RUN(brute_force_height_field);
+    RS_RUN(one_contact_outside_convex);
+    RS_RUN(flat_fan_one_contact);
+    RS_RUN(cone_apex_contact_per_face);
+    RS_RUN(cube_edges_and_corners);
+    RS_RUN(scale_and_placement);
+    RS_RUN(pose_moves_the_mesh);
+    RS_RUN(bad_mesh_files);
+    RS_RUN(repairs_are_reported);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);
+    if (system(cmd) != 0)
+        return 1;
+    return rs_test_summary();
+}
