@@ -353,21 +353,13 @@ static int mesh_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
     return rc;
 }
 
-/* The triangles of element k contain node v. */
-static int element_has_node(const rs_mesh *m, int k, int v)
+/* Does an entry of element k's triangles in per-triangle table tab (3 entries a
+ * triangle: m->tri for nodes, m->tedge for edges) equal x? */
+static int element_has(const rs_mesh *m, int k, const int *tab, int x)
 {
     for (int t = m->el_t0[k]; t < m->el_t0[k + 1]; t++)
         for (int j = 0; j < 3; j++)
-            if (m->tri[3 * t + j] == v)
-                return 1;
-    return 0;
-}
-
-static int element_has_edge(const rs_mesh *m, int k, int e)
-{
-    for (int t = m->el_t0[k]; t < m->el_t0[k + 1]; t++)
-        for (int j = 0; j < 3; j++)
-            if (m->tedge[3 * t + j] == e)
+            if (tab[3 * t + j] == x)
                 return 1;
     return 0;
 }
@@ -400,15 +392,15 @@ static int mesh_adjacent(const rs_surface *s, int fa, int fb)
         for (int t = m->el_t0[ia]; t < m->el_t0[ia + 1]; t++)
             for (int j = 0; j < 3; j++) {
                 const int e = m->tedge[3 * t + j];
-                if (m->edge_kind[e] == RS_EDGE_FLAT && element_has_edge(m, ib, e))
+                if (m->edge_kind[e] == RS_EDGE_FLAT && element_has(m, ib, m->tedge, e))
                     return 1;
             }
         return 0;
     }
     if (ta == RS_FEAT_FACE && tb == RS_FEAT_EDGE)
-        return ib < m->ne && element_has_edge(m, ia, ib);
+        return ib < m->ne && element_has(m, ia, m->tedge, ib);
     if (ta == RS_FEAT_FACE && tb == RS_FEAT_VERTEX)
-        return ib < m->nv && element_has_node(m, ia, ib);
+        return ib < m->nv && element_has(m, ia, m->tri, ib);
     if (ta == RS_FEAT_EDGE && tb == RS_FEAT_VERTEX)
         return ia < m->ne && ib < m->nv && (m->edge_v[2 * ia] == ib || m->edge_v[2 * ia + 1] == ib);
     return 0;

@@ -232,6 +232,41 @@ def compare_frames(fa, fb, fields_scales):
     return worst
 
 
+def sphere_wall_deck(wall, atoms, steps, gravity, integrator, box, tag, dt,
+                     extra_props=""):
+    """One deck of a wall test: the header, the atoms, gravity -z if asked, the wall
+    line(s), the integrator and a dump every 5 steps to TAG.dump."""
+    d = header(box, dt, extra_props=extra_props)
+    d += atoms
+    if gravity:
+        d += "fix grav all gravity 9.81 vector 0 0 -1\n"
+    d += wall + "\n"
+    d += "fix integr all %s\n" % integrator
+    d += dump_lines("d", 5, tag + ".dump")
+    d += "run %d\n" % steps
+    return d
+
+
+def compare_walls(s, name, ours, ref, atoms, steps, gravity, integrator, box, touched,
+                  dt, scales, tol, extra_props="", ref_tag="ref"):
+    """Runs the same deck with our wall and with LIGGGHTS's and checks that the reference
+    touched (touched(frames)) and that every dumped field agrees to tol relative."""
+    for wall, tag in ((ours, name + "_rigid"), (ref, name + "_" + ref_tag)):
+        s.run(tag, sphere_wall_deck(wall, atoms, steps, gravity, integrator, box, tag, dt,
+                                    extra_props))
+    fa = read_dump(s.path(name + "_rigid.dump"))
+    fb = read_dump(s.path(name + "_" + ref_tag + ".dump"))
+    s.ck.check(name + ": the reference run made contact", touched(fb),
+               why="LIGGGHTS's wall never touched the sphere: the deck tests nothing")
+    worst = compare_frames(fa, fb, scales)
+    if not s.ck.check(name + ": same frames and atoms", worst is not None,
+                      "%d vs %d frames" % (len(fa), len(fb))):
+        return
+    fld, (d, step, i) = max(worst.items(), key=lambda kv: kv[1][0])
+    s.ck.check(name + ": trajectory equals LIGGGHTS's to %g" % tol, d <= tol,
+               "worst %s rel %.3g at step %d atom %d" % (fld, d, step, i))
+
+
 def error_lines(out):
     return [l for l in out.splitlines() if l.startswith("ERROR")]
 

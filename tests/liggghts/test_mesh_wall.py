@@ -51,32 +51,9 @@ def fan(radius):
     return [(o, p[k], p[(k + 1) % 6]) for k in range(6)]
 
 
-def deck(wall, atoms, steps, gravity, integrator, box, tag):
-    d = L.header(box, DT)
-    d += atoms
-    if gravity:
-        d += "fix grav all gravity 9.81 vector 0 0 -1\n"
-    d += wall + "\n"
-    d += "fix integr all %s\n" % integrator
-    d += L.dump_lines("d", 5, tag + ".dump")
-    d += "run %d\n" % steps
-    return d
-
-
 def compare(s, name, ours, ref, atoms, steps, gravity, integrator, box, touched):
-    s.run(name + "_rigid", deck(ours, atoms, steps, gravity, integrator, box, name + "_rigid"))
-    s.run(name + "_ref", deck(ref, atoms, steps, gravity, integrator, box, name + "_ref"))
-    fa = L.read_dump(s.path(name + "_rigid.dump"))
-    fb = L.read_dump(s.path(name + "_ref.dump"))
-    s.ck.check(name + ": the reference run made contact", touched(fb),
-               why="LIGGGHTS's wall never touched the sphere: the deck tests nothing")
-    worst = L.compare_frames(fa, fb, SCALES)
-    if not s.ck.check(name + ": same frames and atoms", worst is not None,
-                      "%d vs %d frames" % (len(fa), len(fb))):
-        return
-    fld, (d, step, i) = max(worst.items(), key=lambda kv: kv[1][0])
-    s.ck.check(name + ": trajectory equals LIGGGHTS's to %g" % TOL, d <= TOL,
-               "worst %s rel %.3g at step %d atom %d" % (fld, d, step, i))
+    L.compare_walls(s, name, ours, ref, atoms, steps, gravity, integrator, box, touched,
+                    DT, SCALES, TOL)
 
 
 def body(s):

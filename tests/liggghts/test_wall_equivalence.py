@@ -27,32 +27,9 @@ SCALES = {"x": R, "y": R, "z": R, "vx": 1.0, "vy": 1.0, "vz": 1.0,
 CHARVEL = "fix m5 all property/global characteristicVelocity scalar 0.8\n"
 
 
-def deck(wall, atoms, steps, gravity, integrator, box, tag):
-    d = L.header(box, DT, extra_props=CHARVEL)
-    d += atoms
-    if gravity:
-        d += "fix grav all gravity 9.81 vector 0 0 -1\n"
-    d += wall + "\n"
-    d += "fix integr all %s\n" % integrator
-    d += L.dump_lines("d", 5, tag + ".dump")
-    d += "run %d\n" % steps
-    return d
-
-
 def compare(s, name, ours, ref, atoms, steps, gravity, integrator, box, bounced):
-    s.run(name + "_rigid", deck(ours, atoms, steps, gravity, integrator, box, name + "_rigid"))
-    s.run(name + "_gran", deck(ref, atoms, steps, gravity, integrator, box, name + "_gran"))
-    fa = L.read_dump(s.path(name + "_rigid.dump"))
-    fb = L.read_dump(s.path(name + "_gran.dump"))
-    s.ck.check(name + ": the reference run made contact", bounced(fb),
-               why="LIGGGHTS's wall never touched the sphere: the deck tests nothing")
-    worst = L.compare_frames(fa, fb, SCALES)
-    if not s.ck.check(name + ": same frames and atoms", worst is not None,
-                      "%d vs %d frames" % (len(fa), len(fb))):
-        return
-    fld, (d, step, i) = max(worst.items(), key=lambda kv: kv[1][0])
-    s.ck.check(name + ": trajectory equals wall/gran to %g" % TOL, d <= TOL,
-               "worst %s rel %.3g at step %d atom %d" % (fld, d, step, i))
+    L.compare_walls(s, name, ours, ref, atoms, steps, gravity, integrator, box, bounced,
+                    DT, SCALES, TOL, extra_props=CHARVEL, ref_tag="gran")
 
 
 def body(s):

@@ -187,6 +187,20 @@ static void height_field(poly_mesh *m, int n, unsigned long long seed)
         }
 }
 
+/* n triangles from the origin to a ring of n nodes of radius r at height h (h = 0: a
+ * flat fan), normals by the right-hand rule from the ring's counter-clockwise order. */
+static void apex_fan(poly_mesh *m, int n, double r, double h)
+{
+    pm_init(m, n + 1, n);
+    for (int k = 0; k < n; k++) {
+        m->xyz[3 * (k + 1)] = r * cos(2 * RS_PI * k / n);
+        m->xyz[3 * (k + 1) + 1] = r * sin(2 * RS_PI * k / n);
+        m->xyz[3 * (k + 1) + 2] = h;
+    }
+    for (int k = 0; k < n; k++)
+        pm_add(m, 3, 0, 1 + k, 1 + (k + 1) % n, 0);
+}
+
 /* ---- the independent answer ------------------------------------------------------- */
 
 static void closest_on_segment(const double *a, const double *b, const double p[3],
@@ -262,14 +276,37 @@ static void faceted_t1(const double n[3], double t1[3])
         t1[d] /= l;
 }
 
-static int load(const char *text, rs_surface *s, rs_error *e)
+/* Writes text to file name in the scratch folder. */
+static void write_text(const char *name, const char *text)
 {
-    char path[128];
-    snprintf(path, sizeof path, "%s/s.inp", tmpdir);
+    char path[160];
+    snprintf(path, sizeof path, "%s/%s", tmpdir, name);
     FILE *f = fopen(path, "w");
     fputs(text, f);
     fclose(f);
+}
+
+static int load(const char *text, rs_surface *s, rs_error *e)
+{
+    char path[128];
+    write_text("s.inp", text);
+    snprintf(path, sizeof path, "%s/s.inp", tmpdir);
     return rs_surface_read(path, NULL, s, e);
+}
+
+/* Writes m as NAME.off, frees it and reads it as surface NAME. */
+static int load_pm(poly_mesh *m, const char *name, rs_surface *s)
+{
+    char path[128], text[160];
+    snprintf(path, sizeof path, "%s/%s.off", tmpdir, name);
+    write_off(m, path);
+    pm_free(m);
+    snprintf(text, sizeof text, "*SURFACE, TYPE=MESH, NAME=%s, FILE=%s.off\n", name, name);
+    rs_error e;
+    const int rc = load(text, s, &e);
+    if (rc)
+        fprintf(stderr, "%s\n", e.msg);
+    return rc;
 }
 
 static void query(const rs_surface *s, int n, const double *x, const double *y,
@@ -400,42 +437,32 @@ static int brute_force_case(const poly_mesh *pm, const char *name, int sides, do
     return ok;
 }
 
-static void brute_force_uv_sphere(void)
+/* The four meshes, each queried two-sided and, where closed, one-sided as well. */
+static void brute_force_meshes(void)
 {
-    poly_mesh m;
-    uv_sphere(&m, 16, 32);
-    const int ok = brute_force_case(&m, "sphere", 2, 0.3, 600, 11);
-    pm_free(&m);
-    ENSURE(ok);
-}
-
-static void brute_force_torus_quads(void)
-{
-    poly_mesh m;
-    torus(&m, 32, 16, 1.0, 0.3);
-    const int ok = brute_force_case(&m, "torus", 2, 0.25, 600, 12) &&
-                   brute_force_case(&m, "torus1", 1, 0.25, 600, 16);
-    pm_free(&m);
-    ENSURE(ok);
-}
-
-static void brute_force_rounded_box(void)
-{
-    poly_mesh m;
-    rounded_box(&m, 8, 0.3);
-    const int ok = brute_force_case(&m, "rbox", 2, 0.3, 600, 13) &&
-                   brute_force_case(&m, "rbox1", 1, 0.3, 600, 17);
-    pm_free(&m);
-    ENSURE(ok);
-}
-
-static void brute_force_height_field(void)
-{
-    poly_mesh m;
-    height_field(&m, 20, 14);
-    const int ok = brute_force_case(&m, "hfield", 2, 0.3, 600, 15);
-    pm_free(&m);
-    ENSURE(ok);
+    static const struct {
+        const char *name;
+        int sides;
+        double spread;
+        unsigned long long seed;
+    } cases[] = {{"sphere", 2, 0.3, 11}, {"torus", 2, 0.25, 12}, {"torus1", 1, 0.25, 16},
+                 {"rbox", 2, 0.3, 13},   {"rbox1", 1, 0.3, 17},  {"hfield", 2, 0.3, 15}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        poly_mesh m;
+        const char c = cases[k].name[1];
+        if (c == 'p')
+            uv_sphere(&m, 16, 32);
+        else if (c == 'o')
+            torus(&m, 32, 16, 1.0, 0.3);
+        else if (c == 'b')
+            rounded_box(&m, 8, 0.3);
+        else
+            height_field(&m, 20, 14);
+        const int ok = brute_force_case(&m, cases[k].name, cases[k].sides, cases[k].spread,
+                                        600, cases[k].seed);
+        pm_free(&m);
+        ENSURE(ok);
+    }
 }
 
 /* One-sided, from outside a closed convex mesh: exactly one contact at every point, the
@@ -445,8 +472,6 @@ static void one_contact_outside_convex(void)
     poly_mesh m;
     uv_sphere(&m, 12, 24);
     const int ok = brute_force_case(&m, "sphere1", 1, 0.0, 0, 1);
-    char path[128];
-    snprintf(path, sizeof path, "%s/sphere1.off", tmpdir);
     rs_surface s;
     rs_error e;
     ENSURE(ok);
@@ -477,20 +502,9 @@ static void one_contact_outside_convex(void)
 static void flat_fan_one_contact(void)
 {
     poly_mesh m;
-    pm_init(&m, 7, 6);
-    for (int k = 0; k < 6; k++) {
-        m.xyz[3 * (k + 1)] = cos(RS_PI * k / 3.0);
-        m.xyz[3 * (k + 1) + 1] = sin(RS_PI * k / 3.0);
-    }
-    for (int k = 0; k < 6; k++)
-        pm_add(&m, 3, 0, 1 + k, 1 + (k + 1) % 6, 0);
-    char path[128];
-    snprintf(path, sizeof path, "%s/fan.off", tmpdir);
-    write_off(&m, path);
-    pm_free(&m);
+    apex_fan(&m, 6, 1.0, 0.0);
     rs_surface s;
-    rs_error e;
-    ENSURE(load("*SURFACE, TYPE=MESH, NAME=fan, FILE=fan.off\n", &s, &e) == RS_OK);
+    ENSURE(load_pm(&m, "fan", &s) == RS_OK);
     rs_contacts c;
     memset(&c, 0, sizeof c);
     const double h = 0.0123;
@@ -528,22 +542,9 @@ static void flat_fan_one_contact(void)
 static void cone_apex_contact_per_face(void)
 {
     poly_mesh m;
-    pm_init(&m, 13, 12);
-    const double H = 1.0, R = H * tan(RS_PI / 6.0);
-    for (int k = 0; k < 12; k++) {
-        m.xyz[3 * (k + 1)] = R * cos(2 * RS_PI * k / 12);
-        m.xyz[3 * (k + 1) + 1] = R * sin(2 * RS_PI * k / 12);
-        m.xyz[3 * (k + 1) + 2] = H;
-    }
-    for (int k = 0; k < 12; k++) /* normals toward the inside (the axis) */
-        pm_add(&m, 3, 0, 1 + k, 1 + (k + 1) % 12, 0);
-    char path[128];
-    snprintf(path, sizeof path, "%s/cone.off", tmpdir);
-    write_off(&m, path);
-    pm_free(&m);
+    apex_fan(&m, 12, tan(RS_PI / 6.0), 1.0); /* normals toward the inside (the axis) */
     rs_surface s;
-    rs_error e;
-    ENSURE(load("*SURFACE, TYPE=MESH, NAME=cone, FILE=cone.off\n", &s, &e) == RS_OK);
+    ENSURE(load_pm(&m, "cone", &s) == RS_OK);
     rs_contacts c;
     memset(&c, 0, sizeof c);
     double x = 0, y = 0, z = 0.3, r = 0.2;
@@ -568,11 +569,7 @@ static void cube_edges_and_corners(void)
     const char *cube =
         "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
         "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n";
-    char path[128];
-    snprintf(path, sizeof path, "%s/cube.off", tmpdir);
-    FILE *f = fopen(path, "w");
-    fputs(cube, f);
-    fclose(f);
+    write_text("cube.off", cube);
     rs_surface s;
     rs_error e;
     ENSURE(load("*SURFACE, TYPE=MESH, NAME=cube, FILE=cube.off\n", &s, &e) == RS_OK);
@@ -627,11 +624,7 @@ static void cube_edges_and_corners(void)
 static void scale_and_placement(void)
 {
     const char *quad = "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
-    char path[128];
-    snprintf(path, sizeof path, "%s/quad.off", tmpdir);
-    FILE *f = fopen(path, "w");
-    fputs(quad, f);
-    fclose(f);
+    write_text("quad.off", quad);
     rs_surface s;
     rs_error e;
     /* a = (1,2,3); local x along global y; local y along global z: local z = global x */
@@ -777,11 +770,7 @@ static void repairs_are_reported(void)
 {
     const char *txt = "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n2 0 0\n1 1 0\n"
                       "3 0 1 2\n3 0 1 3\n3 1 4 2\n";
-    char path[128];
-    snprintf(path, sizeof path, "%s/rep.off", tmpdir);
-    FILE *f = fopen(path, "w");
-    fputs(txt, f);
-    fclose(f);
+    write_text("rep.off", txt);
     rs_surface s;
     rs_error e;
     ENSURE(load("*SURFACE, TYPE=MESH, NAME=r, FILE=rep.off\n", &s, &e) == RS_OK);
@@ -789,8 +778,9 @@ static void repairs_are_reported(void)
     ENSURE(strstr(s.warning, "4 open boundary edges") != NULL);
     rs_surface_free(&s);
     /* a Moebius band: eight quads around a circle, the last joined with a half twist */
+    char path[128];
     snprintf(path, sizeof path, "%s/mob.off", tmpdir);
-    f = fopen(path, "w");
+    FILE *f = fopen(path, "w");
     fprintf(f, "OFF\n16 16 0\n");
     for (int i = 0; i < 8; i++)
         for (int k = 0; k < 2; k++) {
@@ -814,10 +804,7 @@ int main(void)
     snprintf(tmpdir, sizeof tmpdir, "/tmp/rs_test_mesh_XXXXXX");
     if (!mkdtemp(tmpdir))
         return 1;
-    RS_RUN(brute_force_uv_sphere);
-    RS_RUN(brute_force_torus_quads);
-    RS_RUN(brute_force_rounded_box);
-    RS_RUN(brute_force_height_field);
+    RS_RUN(brute_force_meshes);
     RS_RUN(one_contact_outside_convex);
     RS_RUN(flat_fan_one_contact);
     RS_RUN(cone_apex_contact_per_face);
