@@ -109,6 +109,29 @@ code, out, err = run([drum, "--vtk", vtk], "0.5 0 0\n")
 text = open(vtk).read() if os.path.exists(vtk) else ""
 check("vtk_written", code == 0 and "DATASET POLYDATA" in text and "VECTORS t2 double" in text, err)
 
+# MESH: a unit cube of quads in an OFF file next to the surface file. Above a face, the
+# face's normal and the FACETED frame (n = +z: t1 = x, t2 = y); beyond an edge, the
+# normal toward the point; the VTK holds the cube's 12 triangles; an open boundary is a
+# warning on stderr.
+write("cube.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+      "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n")
+cube = write("cube.inp", "*SURFACE, TYPE=MESH, NAME=cube, FILE=cube.off\n")
+code, out, err = run([cube, "--tracking", "1"], "0.3 0.6 1.25\n1.3 0.5 1.4\n")
+r = rows(out)
+check("mesh_face_frame", code == 0 and len(r) == 2 and
+      close(r[0], [-0.25, 0.3, 0.6, 1, 0, 0, 1, 1, 0, 0, 0, 1, 0]), str(r) + err)
+check("mesh_edge_normal", code == 0 and len(r) == 2 and
+      close(r[1][:7], [-0.5, 1, 0.5, 1, 0.6, 0, 0.8]), str(r) + err)
+vtk = os.path.join(TMP, "cube.vtk")
+code, out, err = run([cube, "--vtk", vtk], "0.5 0.5 2\n")
+text = open(vtk).read() if os.path.exists(vtk) else ""
+check("mesh_vtk_written", code == 0 and "POLYGONS 12 48" in text, err)
+write("open.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+opn = write("open.inp", "*SURFACE, TYPE=MESH, NAME=tri, FILE=open.off\n")
+code, out, err = run([opn], "0.2 0.2 0.5\n")
+check("mesh_open_edges_warned", code == 0 and "warning" in err and "3 open boundary edges" in err,
+      err)
+
 # Errors: one line, naming the file and the line, non-zero exit.
 bad = write("bad.inp", "*SURFACE, TYPE=SEGMENTS, NAME=x\nSTART, 0, 0\nLINE, 1, zero\n")
 code, out, err = run([bad], "0 0\n")
