@@ -5,7 +5,8 @@ of uninitialised values, no leak in rigidsurf code.
 Decks: a turning drum with capped ends (mantle + caps: corner contacts with two
 features), spheres that spin and slide, per-atom output dumped, write_restart; a second
 process that reads the restart and runs on; a bonded heat case with a lumped wall; a
-malformed fix line (the error path).
+malformed fix line (the error path); spheres in an open STL box (MESH: face, edge and
+corner contacts) that turns, and an empty mesh file (its error path).
 
 What counts: every memcheck error (invalid read/write/free, uninitialised value,
 mismatched free), and every definitely or indirectly lost block whose allocation stack
@@ -27,7 +28,8 @@ OURS = re.compile(r"\b(rs_\w+|rigidsurf_\w+|LAMMPS_NS::FixWallRigid::\w+)\s*\(|"
                   r"\((fix_wall_rigid\w*|rigidsurf_styles)\.cpp:\d+\)|"
                   r"\((analytic|closest|contacts|pcache|profile|query|reader|triangulate|"
                   r"contact_block|driver|frame|law\w*|motion|surface|track\w*|error|"
-                  r"bonded_interface|coulomb|hertz|hooke|linear_softening)\.c:\d+\)")
+                  r"bonded_interface|coulomb|hertz|hooke|linear_softening|mesh_build|"
+                  r"mesh_query)\.c:\d+\)|\(cgal_mesh\.cpp:\d+\)")
 VALGRIND = ["valgrind", "--tool=memcheck", "--leak-check=full", "--num-callers=30",
             "--track-origins=no"]
 
@@ -116,6 +118,30 @@ def body(s):
     bad += L.sphere(1, (0, 0, 0.02), 0.005, RHO)
     bad += "fix w all wall/rigid surface plane.inp law hertz type 2 contacts 0\nrun 10\n"
     runs.append(("bad_input", bad, 1))
+    # an open box of side 0.1 m, inward normals, two triangles a face (MESH)
+    c = [(x, y, z) for x in (-0.05, 0.05) for y in (-0.05, 0.05) for z in (0.0, 0.05)]
+    quads = [(0, 4, 6, 2), (0, 1, 5, 4), (2, 6, 7, 3), (0, 2, 3, 1), (4, 5, 7, 6)]
+    tris = []
+    for a, b, cc, d in quads:  # bottom (z = 0) and the four sides, wound to the inside
+        tris += [(c[a], c[b], c[cc]), (c[a], c[cc], c[d])]
+    stl = "solid box\n" + "".join(
+        " facet normal 0 0 0\n  outer loop\n" +
+        "".join("   vertex %r %r %r\n" % p for p in t) + "  endloop\n endfacet\n"
+        for t in tris) + "endsolid box\n"
+    s.write("box.stl", stl)
+    s.write("empty.stl", "")
+    mesh = L.header((-0.06, 0.06, -0.06, 0.06, -0.01, 0.06), 2e-5)
+    for k, (x, y) in enumerate(((0.0, 0.0), (0.05 - R, 0.0), (0.05 - R, 0.05 - R),
+                                (-0.02, -0.05 + R))):
+        mesh += L.sphere(k + 1, (x, y, R + 1e-5), R, RHO, v=(0.05, -0.05, 0), omega=(0, 0, 5))
+    mesh += "fix grav all gravity 9.81 vector 0 0 -1\n"
+    mesh += ("fix w all wall/rigid surface inline mesh box.stl law hertz type 2 "
+             "rotate origin 0 0 0 axis 0 0 1 omega 2\nfix integr all nve/sphere\nrun 300\n")
+    runs.append(("mesh", mesh, 0))
+    badm = L.header((-0.1, 0.1, -0.1, 0.1, -0.05, 0.1), 1e-5)
+    badm += L.sphere(1, (0, 0, 0.02), 0.005, RHO)
+    badm += "fix w all wall/rigid surface inline mesh empty.stl law hertz type 2\nrun 10\n"
+    runs.append(("bad_mesh", badm, 1))
     for tag, deck, want_rc in runs:
         rc, out = s.run(tag, deck, expect_ok=False, prefix=VALGRIND, timeout=600)
         s.ck.check(tag + ": exit status %d" % want_rc, rc == want_rc, "%s" % rc,
