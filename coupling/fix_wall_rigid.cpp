@@ -195,11 +195,11 @@ void FixWallRigid::init()
     init_predef();
     if (vtk_every_ > 0 && !vtk_mesh_ok_)
         init_vtk_mesh();
-    if (atom_size() > kExchangeMax) {
+    if (1 + atom_size() > kExchangeMax) {
         std::ostringstream o;
-        o << "each atom would carry " << atom_size() << " doubles of contact history ("
+        o << "each atom would carry " << 1 + atom_size() << " doubles of contact history ("
           << capacity_ << " contacts x (" << slot_size() - nstatev_ << " + " << nstatev_
-          << " state variables) and " << row_size()
+          << " state variables) and " << 1 + row_size()
           << " more) through LIGGGHTS's atom exchange, whose buffer leaves room for "
           << kExchangeMax << "; lower 'contacts' or the state variables";
         fail(o.str());

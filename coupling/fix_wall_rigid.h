@@ -133,11 +133,18 @@ class FixWallRigid : public Fix
     /// packs a leaving atom into the slack of its send buffer (comm.cpp and
     /// irregular.cpp: BUFEXTRA, 1000 doubles, shared by the atom style and every fix).
     static const int kExchangeMax = 600;
-    /// Doubles one atom carries in exchange and restart: its row, then its slots.
+    /// Doubles one atom's history takes: its row, then its slots. Exchange and restart
+    /// carry one more, the capacity it was packed with, first.
     int atom_size() const
     {
         return row_size() + capacity_ * slot_size();
     }
+    /// The largest capacity whose atoms still fit the exchange (kExchangeMax doubles
+    /// with the leading capacity) and the tracker (RS_TRACK_MAX_CAPACITY).
+    int max_capacity() const;
+    /// Grows every atom's history to at least need slots (doubling), keeping what it
+    /// holds; false when need exceeds max_capacity().
+    bool grow_capacity(int need);
     ptrdiff_t slot_stride() const
     {
         return (ptrdiff_t)nmax_ * slot_size();
@@ -149,6 +156,7 @@ class FixWallRigid : public Fix
     void clear_row(int i);
     void pack_atom(int i, double *buf) const;
     void unpack_atom(int i, const double *buf);
+    int unpack_sized(int i, const double *buf); // capacity first; returns doubles read
 
     /* surface and motion */
     rs_surface surf_;

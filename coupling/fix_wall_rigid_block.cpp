@@ -98,8 +98,22 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         mp = &still;
     }
     if (rs_track_update(&tracker_, &surf_, mp, setup_call ? 0.0 : dt, &p, &contacts_,
-                        &tout_, &err) != RS_OK)
+                        &tout_, &err) != RS_OK) {
+        /* More contacts than slots: the tracker changed nothing, so the slots grow and
+         * the block runs again (a sphere in a mesh's pocket holds one per face). */
+        if (err.code == RS_ERR_CAPACITY && grow_capacity(capacity_ + 1)) {
+            process_block(idx, n, setup_call);
+            return;
+        }
+        if (err.code == RS_ERR_CAPACITY) {
+            std::ostringstream o;
+            o << err.msg << "; the slots cannot grow past " << max_capacity()
+              << ", the most LIGGGHTS's atom exchange carries with " << nstatev_
+              << " state variables";
+            fail_one(o.str());
+        }
         fail_one(err.msg);
+    }
 
     const int ne = tout_.n;
     if (ne > cb_.cap) // not reached: at most capacity contacts per particle

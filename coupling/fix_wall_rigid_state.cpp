@@ -8,7 +8,9 @@
 #include "error.h"
 #include "memory.h"
 
+#include <algorithm>
 #include <cstring>
+#include <vector>
 #include <sstream>
 
 using namespace LAMMPS_NS;
@@ -17,7 +19,9 @@ namespace
 {
 
 /* Restart layout version (global record). */
-const double kRestartVersion = 2.0; // 2: directory in the row, slots after it
+/* 3: each atom's record starts with the capacity it was written with (the capacity
+ * grows during a run); 2: directory in the row, slots after it */
+const double kRestartVersion = 3.0;
 
 } // namespace
 
@@ -67,7 +71,9 @@ void FixWallRigid::write_restart(FILE *fp)
     MPI_Allreduce(loc, all, 5, MPI_DOUBLE, MPI_SUM, world);
     double list[RST_COUNT];
     list[RST_VERSION] = kRestartVersion;
-    list[RST_CAPACITY] = capacity_;
+    int cap = capacity_; /* ranks may have grown apart: the largest */
+    MPI_Allreduce(&capacity_, &cap, 1, MPI_INT, MPI_MAX, world);
+    list[RST_CAPACITY] = cap;
     list[RST_NSTATEV] = nstatev_;
     list[RST_NPRED] = (double)predef_names_.size();
     list[RST_T] = motion_.t;
@@ -97,13 +103,20 @@ void FixWallRigid::restart(char *buf)
     const double *list = reinterpret_cast<const double *>(buf);
     if (list[RST_VERSION] != kRestartVersion)
         fail("the restart file holds wall/rigid data of another layout version");
-    if ((int)list[RST_CAPACITY] != capacity_ || (int)list[RST_NSTATEV] != nstatev_ ||
+    if ((int)list[RST_NSTATEV] != nstatev_ ||
         (int)list[RST_NPRED] != (int)predef_names_.size()) {
         std::ostringstream o;
-        o << "restart file has contacts " << (int)list[RST_CAPACITY] << ", "
-          << (int)list[RST_NSTATEV] << " state variables and " << (int)list[RST_NPRED]
-          << " predef fields; this fix has " << capacity_ << ", " << nstatev_ << " and "
-          << predef_names_.size() << " (keep contacts, law, statev and predef unchanged)";
+        o << "restart file has " << (int)list[RST_NSTATEV] << " state variables and "
+          << (int)list[RST_NPRED] << " predef fields; this fix has " << nstatev_ << " and "
+          << predef_names_.size() << " (keep the law, statev and predef unchanged)";
+        fail(o.str());
+    }
+    /* the contact capacity the run had grown to */
+    const int cap = (int)list[RST_CAPACITY];
+    if (cap > capacity_ && !grow_capacity(cap)) {
+        std::ostringstream o;
+        o << "restart file has " << cap << " contact slots per atom; this fix can hold at "
+          << "most " << max_capacity();
         fail(o.str());
     }
     motion_.t = list[RST_T];
@@ -160,6 +173,49 @@ void FixWallRigid::grow_arrays(int nmax)
     }
 }
 
+int FixWallRigid::max_capacity() const
+{
+    /* 1 (capacity) + capacity (directory) + the rest of the row + capacity slots */
+    const int fixed = 1 + row_size() - capacity_;
+    const int cap = (kExchangeMax - fixed) / (slot_size() + 1);
+    return std::min(cap, (int)RS_TRACK_MAX_CAPACITY);
+}
+
+bool FixWallRigid::grow_capacity(int need)
+{
+    if (need <= capacity_)
+        return true;
+    const int maxcap = max_capacity();
+    if (need > maxcap)
+        return false;
+    int cap = capacity_;
+    while (cap < need)
+        cap *= 2;
+    cap = std::min(cap, maxcap);
+    /* every atom's history through the new layout: packed at the old capacity, then
+     * unpacked into rows and slots made for the new one */
+    const int old_as = 1 + atom_size();
+    std::vector<double> keep((size_t)nmax_ * old_as);
+    for (int i = 0; i < nmax_; i++) {
+        keep[(size_t)i * old_as] = capacity_;
+        pack_atom(i, &keep[(size_t)i * old_as + 1]);
+    }
+    capacity_ = cap;
+    tracker_.capacity = cap;
+    memory->destroy(row_);
+    memory->sfree(hist_);
+    row_ = NULL;
+    hist_ = NULL;
+    memory->create(row_, std::max(nmax_, 1), row_size(), "wall/rigid:history");
+    hist_ = (double *)memory->smalloc(
+        (bigint)((size_t)capacity_ * std::max(nmax_, 1) * slot_size() * sizeof(double)),
+        "wall/rigid:slots");
+    for (int i = 0; i < nmax_; i++)
+        unpack_sized(i, &keep[(size_t)i * old_as]);
+    init_scratch();
+    return true;
+}
+
 /* One atom's history as plain doubles: its row, then its slots in slot order. */
 void FixWallRigid::pack_atom(int i, double *buf) const
 {
@@ -181,6 +237,23 @@ void FixWallRigid::unpack_atom(int i, const double *buf)
         std::memcpy(h + j * stride, buf + rs + j * hs, sizeof(double) * hs);
 }
 
+/* An atom's history packed with capacity buf[0] (at most capacity_) into atom i: the
+ * directory and slots it has, the rest free. */
+int FixWallRigid::unpack_sized(int i, const double *buf)
+{
+    const int cin = (int)buf[0];
+    const int hs = slot_size(), rest = row_size() - capacity_;
+    const ptrdiff_t stride = slot_stride();
+    const double *row = buf + 1, *slots = row + cin + rest;
+    clear_row(i);
+    std::memcpy(row_[i], row, sizeof(double) * cin);                     /* directory */
+    std::memcpy(row_[i] + capacity_, row + cin, sizeof(double) * rest); /* T, fields */
+    double *h = slot0(i);
+    for (int j = 0; j < cin; j++)
+        std::memcpy(h + j * stride, slots + j * hs, sizeof(double) * hs);
+    return 1 + cin + rest + cin * hs;
+}
+
 void FixWallRigid::copy_arrays(int i, int j, int delflag)
 {
     (void)delflag;
@@ -200,25 +273,32 @@ void FixWallRigid::set_arrays(int i)
         array_atom[i][c] = 0.0;
 }
 
+/* Exchange and restart records: the capacity, then the atom's history. An atom from a
+ * rank whose capacity grew further grows this rank's first. */
 int FixWallRigid::pack_exchange(int i, double *buf)
 {
-    pack_atom(i, buf);
-    return atom_size();
+    buf[0] = capacity_;
+    pack_atom(i, buf + 1);
+    return 1 + atom_size();
 }
 
 int FixWallRigid::unpack_exchange(int nlocal, double *buf)
 {
-    unpack_atom(nlocal, buf);
+    const int cin = (int)buf[0];
+    if (cin > capacity_ && !grow_capacity(cin))
+        fail_one("an atom arrived with more contact slots than this rank can hold");
+    const int n = unpack_sized(nlocal, buf);
     for (int c = 0; c < 6; c++)
         array_atom[nlocal][c] = 0.0;
-    return atom_size();
+    return n;
 }
 
 int FixWallRigid::pack_restart(int i, double *buf)
 {
-    const int n = atom_size();
+    const int n = 1 + atom_size();
     buf[0] = n + 1;
-    pack_atom(i, buf + 1);
+    buf[1] = capacity_;
+    pack_atom(i, buf + 2);
     return n + 1;
 }
 
@@ -229,24 +309,30 @@ void FixWallRigid::unpack_restart(int nlocal, int nth)
     for (int k = 0; k < nth; k++)
         m += static_cast<int>(extra[nlocal][m]);
     const int n = static_cast<int>(extra[nlocal][m]) - 1;
-    if (n != atom_size()) {
+    const double *rec = &extra[nlocal][m + 1];
+    const int cin = (int)rec[0];
+    const int want = 1 + row_size() - capacity_ + cin * (1 + slot_size());
+    if (cin < 1 || n != want) {
         std::ostringstream o;
-        o << "restart file has " << n << " history values per atom, this fix needs "
-          << atom_size() << " (keep contacts, law, statev and predef unchanged)";
+        o << "restart file has " << n << " history values per atom for " << cin
+          << " contact slots; this fix needs " << want
+          << " (keep the law, statev and predef unchanged)";
         fail_one(o.str());
     }
-    unpack_atom(nlocal, &extra[nlocal][m + 1]);
+    if (cin > capacity_ && !grow_capacity(cin))
+        fail_one("the restart file has more contact slots per atom than this fix can hold");
+    unpack_sized(nlocal, rec);
 }
 
 int FixWallRigid::size_restart(int nlocal)
 {
     (void)nlocal;
-    return atom_size() + 1;
+    return atom_size() + 2;
 }
 
 int FixWallRigid::maxsize_restart()
 {
-    return atom_size() + 1;
+    return atom_size() + 2;
 }
 
 double FixWallRigid::memory_usage()

@@ -16,6 +16,10 @@ Second case, for the history slots beyond the first: one sphere pressed into the
 concave corner between the turning mantle and the bottom cap of a closed drum holds two
 contacts (mantle and cap, so two history slots) at the restart point; the restarted run
 is again identical to the continuous one.
+
+Third case, for slots that grew during the run: a sphere settling into the apex of a
+12-facet STL cone (MESH) holds 12 contacts at the restart point, so its fix grew from 4
+slots; the restarted fix starts with 4 again and takes 12 from the file.
 """
 import math
 
@@ -88,6 +92,44 @@ def body(s):
                    ang > 5.0 and slip > 0, "%.2f deg from the bottom, |rdisp2:3| %.3g" % (ang, slip))
         check_identical(s, tag)
     corner_case(s)
+    pocket_case(s)
+
+
+def pocket_case(s):
+    """The apex of a 12-facet cone: the slots grow past the 4 of the fix line."""
+    ring = [(0.05 * math.tan(math.radians(30)) * math.cos(2 * math.pi * k / 12),
+             0.05 * math.tan(math.radians(30)) * math.sin(2 * math.pi * k / 12), 0.05)
+            for k in range(12)]
+    stl = "solid cone\n" + "".join(
+        " facet normal 0 0 0\n  outer loop\n" +
+        "".join("   vertex %r %r %r\n" % p for p in ((0.0, 0.0, 0.0), ring[k], ring[(k + 1) % 12]))
+        + "  endloop\n endfacet\n" for k in range(12)) + "endsolid cone\n"
+    s.write("cone.stl", stl)
+
+    def atoms():
+        d = L.header((-0.06, 0.06, -0.06, 0.06, -0.01, 0.06), DT, mu=0.4)
+        # on the axis, touching all 12 facets (each plane is at angle a to the axis), and
+        # spinning about it so that every contact carries a tangential history
+        a = math.atan(math.tan(math.radians(30)) * math.cos(math.pi / 12))
+        d += L.sphere(1, (0.0, 0.0, R / math.sin(a) - 2e-5), R, RHO, omega=(0.0, 0.0, 20.0))
+        return d
+
+    lines = ("fix grav all gravity 9.81 vector 0 0 -1\n"
+             "fix w all wall/rigid surface inline mesh cone.stl law hertz type 2\n"
+             "fix i all nve/sphere\nvariable nc equal f_w[7]\n")
+    full = atoms() + lines
+    full += 'fix pr all print %d "NC ${nc}" screen yes\n' % N
+    full += "run %d\nunfix pr\n" % N
+    full += L.dump_lines("d", N, "pocket_full.dump") + "run %d\n" % N
+    _, out = s.run("pocket_full", full)
+    s.run("pocket_first", atoms() + lines + "run %d\nwrite_restart pocket.restart\n" % N)
+    second = restarted_deck("pocket.restart", lines)
+    second += L.dump_lines("d", N, "pocket_restarted.dump") + "run %d\n" % N
+    s.run("pocket_restarted", second)
+    nc = [float(l.split()[1]) for l in out.splitlines() if l.startswith("NC ")]
+    s.ck.check("pocket: at the restart point the sphere holds 12 contacts (grown slots)",
+               len(nc) > 0 and nc[-1] == 12.0, "active contacts %s" % nc)
+    check_identical(s, "pocket")
 
 
 def corner_case(s):
