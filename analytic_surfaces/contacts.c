@@ -60,3 +60,10 @@ void rs_contacts_free(rs_contacts *c)
     free(c->curv[1]);
     memset(c, 0, sizeof *c);
 }
+
+void rs_cands_free(rs_cands *c)
+{
+    free(c->off);
+    free(c->ids);
+    memset(c, 0, sizeof *c);
+}

@@ -51,6 +51,7 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
     std::memset(&surf_, 0, sizeof surf_);
     std::memset(&loaded_, 0, sizeof loaded_);
     std::memset(&contacts_, 0, sizeof contacts_);
+    std::memset(&cands_, 0, sizeof cands_);
     std::memset(&tout_, 0, sizeof tout_);
     std::memset(&cb_, 0, sizeof cb_);
     std::memset(&vtk_mesh_, 0, sizeof vtk_mesh_);
@@ -116,6 +117,7 @@ FixWallRigid::~FixWallRigid()
     delete[] extlist;
     extlist = NULL;
     rs_contacts_free(&contacts_);
+    rs_cands_free(&cands_);
     rs_track_out_free(&tout_);
     rs_cblock_free(&cb_);
     rs_trimesh_free(&vtk_mesh_);
@@ -558,6 +560,53 @@ void FixWallRigid::build_candidates()
         xref_.resize(4 * (size_t)nlocal);
     }
     std::fill(gapref_.begin(), gapref_.begin() + nlocal, -INFINITY);
+    if (rs_surface_has_candidates(&surf_))
+        build_candidate_lists();
+}
+
+/* Each candidate's list of surface candidates within the step's reach (the tracking
+ * thickness and look-ahead, down to the deepest penetration a step asks for) grown by
+ * the skin: the lists stay complete until the next refresh, which comes before a
+ * particle or the wall has moved half a skin. */
+void FixWallRigid::build_candidate_lists()
+{
+    const int nlocal = atom->nlocal;
+    double **x = atom->x;
+    const double *radius = atom->radius;
+    cfirst_.resize(nlocal);
+    cnum_.resize(nlocal);
+    cids_.clear();
+    rs_error err;
+    rs_error_clear(&err);
+    const int nc = (int)cand_.size();
+    for (int b0 = 0; b0 < nc; b0 += RS_BLOCK) {
+        const int n = std::min(nc - b0, (int)RS_BLOCK);
+        for (int k = 0; k < n; k++) {
+            const int i = cand_[b0 + k];
+            bx_[k] = x[i][0];
+            by_[k] = x[i][1];
+            bz_[k] = x[i][2];
+            brad_[k] = radius[i];
+        }
+        rs_query q;
+        q.n = n;
+        q.slave.x = bx_.data();
+        q.slave.y = by_.data();
+        q.slave.z = bz_.data();
+        q.slave.radius = brad_.data();
+        q.pose = &motion_.pose;
+        q.gap_max = tracking_ + lookahead_;
+        q.dist_min = -(rglob_ + lookahead_);
+        if (rs_surface_candidates(&surf_, &q, neighbor->skin, &cands_, &err) != RS_OK)
+            fail_one(std::string("surface candidates: ") + err.msg);
+        const size_t base = cids_.size();
+        cids_.insert(cids_.end(), cands_.ids, cands_.ids + cands_.off[n]);
+        for (int k = 0; k < n; k++) {
+            const int i = cand_[b0 + k];
+            cfirst_[i] = (int)base + cands_.off[k];
+            cnum_[i] = cands_.off[k + 1] - cands_.off[k];
+        }
+    }
 }
 
 /* After a block's query: the bound of each particle without a contact within the

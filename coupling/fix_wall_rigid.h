@@ -243,6 +243,14 @@ class FixWallRigid : public Fix
     void update_bounds(const int *idx, int n, const double *gmin);
     void keep_tracked(const int *idx, int n, double dist_min);
 
+    /* candidate lists of surfaces that give them (MESH: triangles), made with the
+     * candidates for every candidate atom i: cids_[cfirst_[i] .. + cnum_[i]) */
+    rs_cands cands_;
+    std::vector<int> cfirst_, cnum_, cids_;
+    std::vector<const int *> bcand_;
+    std::vector<int> bncand_;
+    void build_candidate_lists();
+
     /* scratch of one block, sized once in init() (init_scratch) */
     rs_contacts contacts_;
     rs_track_out tout_;

@@ -72,7 +72,19 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
      * moves by the look-ahead. */
     q.dist_min = bounds_ok_ ? -(std::max(rmax, rglob_) + lookahead_) : -rmax;
     contacts_.n = 0;
-    if (rs_surface_query(&surf_, &q, &contacts_, &err) != RS_OK)
+    const int *const *cand = NULL;
+    const int *ncand = NULL;
+    if (rs_surface_has_candidates(&surf_)) { /* the lists of the last refresh */
+        bcand_.resize(n);
+        bncand_.resize(n);
+        for (int k = 0; k < n; k++) {
+            bcand_[k] = cids_.data() + cfirst_[idx[k]];
+            bncand_[k] = cnum_[idx[k]];
+        }
+        cand = bcand_.data();
+        ncand = bncand_.data();
+    }
+    if (rs_surface_query_among(&surf_, &q, cand, ncand, &contacts_, &err) != RS_OK)
         fail_one(std::string("surface query: ") + err.msg);
     if (bounds_ok_)
         keep_tracked(idx, n, -rmax);

@@ -24,6 +24,33 @@ int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
     return rc;
 }
 
+int rs_surface_has_candidates(const rs_surface *s)
+{
+    return s && s->ops && s->ops->candidates && s->ops->closest_among;
+}
+
+int rs_surface_candidates(const rs_surface *s, const rs_query *q, double extra,
+                          rs_cands *c, rs_error *err)
+{
+    if (!rs_surface_has_candidates(s) || !q || !c)
+        return rs_error_set(err, RS_ERR_ARG, "rs_surface_candidates: no candidate lists");
+    return s->ops->candidates(s, q, extra, c, err);
+}
+
+int rs_surface_query_among(const rs_surface *s, const rs_query *q, const int *const *cand,
+                           const int *ncand, rs_contacts *out, rs_error *err)
+{
+    if (!cand || !ncand || !rs_surface_has_candidates(s))
+        return rs_surface_query(s, q, out, err);
+    if (!q || !out)
+        return rs_error_set(err, RS_ERR_ARG, "rs_surface_query_among: NULL argument");
+    const int k0 = out->n;
+    int rc = s->ops->closest_among(s, q, cand, ncand, out, err);
+    if (rc == RS_OK)
+        rs_frame_orient(s->ops->frame, out, k0, out->n);
+    return rc;
+}
+
 int rs_surface_adjacent(const rs_surface *s, int fa, int fb)
 {
     return s->ops->adjacent(s, fa, fb);

@@ -90,6 +90,7 @@ struct rs_surface;
 struct rs_query;
 struct rs_contacts;
 struct rs_trimesh;
+struct rs_cands;
 
 /// The operations of one surface kind: the seam through which every kind joins. The
 /// table is chosen once, when the surface is made (rs_surface_read, rs_surface_parse),
@@ -115,6 +116,17 @@ typedef struct rs_surface_ops {
                        struct rs_trimesh *m, rs_error *err);
     /// Frees what the kind owns (not the surface struct itself).
     void (*free)(struct rs_surface *s);
+    /// Optional (NULL: the kind searches its whole surface at every query): the
+    /// candidates of each slave of q within its reach grown by extra, in kind-defined
+    /// ids (MESH: triangles), so that an engine can keep them while its slaves and the
+    /// master move less than extra in all.
+    int (*candidates)(const struct rs_surface *s, const struct rs_query *q, double extra,
+                      struct rs_cands *c, rs_error *err);
+    /// With candidates: as closest, testing slave i against its ncand[i] candidates
+    /// cand[i] only.
+    int (*closest_among)(const struct rs_surface *s, const struct rs_query *q,
+                         const int *const *cand, const int *ncand, struct rs_contacts *out,
+                         rs_error *err);
 } rs_surface_ops;
 
 typedef struct rs_surface {
@@ -184,6 +196,28 @@ void rs_contacts_free(rs_contacts *c);
 /// point are consecutive.
 int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
                      rs_error *err);
+
+/// Candidate lists of a block of slaves: slave i's are ids[off[i] .. off[i + 1]).
+/// Arrays grow as needed.
+typedef struct rs_cands {
+    int n;      ///< slaves
+    int *off;   ///< n + 1
+    int *ids;   ///< off[n]
+    int offcap, idcap;
+} rs_cands;
+
+/// 1 when the surface's kind gives candidate lists (rs_surface_candidates), else 0.
+int rs_surface_has_candidates(const rs_surface *s);
+/// The candidates of every slave of q within its reach (radius + gap_max, and down to
+/// dist_min) grown by extra: valid while slaves and master move less than extra in all.
+int rs_surface_candidates(const rs_surface *s, const rs_query *q, double extra,
+                          rs_cands *c, rs_error *err);
+/// rs_surface_query testing slave i against its candidates cand[i][0 .. ncand[i]) only;
+/// kinds without candidate lists answer as rs_surface_query.
+int rs_surface_query_among(const rs_surface *s, const rs_query *q, const int *const *cand,
+                           const int *ncand, rs_contacts *out, rs_error *err);
+/// Frees the lists' arrays and zeroes c.
+void rs_cands_free(rs_cands *c);
 
 /// 1 when history may pass from feature fa to feature fb (see rs_surface_ops).
 int rs_surface_adjacent(const rs_surface *s, int fa, int fb);

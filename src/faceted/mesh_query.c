@@ -39,13 +39,6 @@ static double along_from(const rs_mesh *m, int e, int v, const double p[3])
            (p[2] - pv[2]) * (pw[2] - pv[2]);
 }
 
-/* Does face t hold p's projection (strictly inside each of its edges' planes)? */
-static int face_holds(const rs_mesh *m, int t, const double p[3])
-{
-    return side_of(m, t, 0, p) > 0.0 && side_of(m, t, 1, p) > 0.0 &&
-           side_of(m, t, 2, p) > 0.0;
-}
-
 /* Does edge e own p: strictly between its nodes, and outside each of its faces? */
 static int edge_owns(const rs_mesh *m, int e, const double p[3])
 {
@@ -134,18 +127,14 @@ static int first_sight(scratch *s, int f)
     return 1;
 }
 
-/* The contacts of point p (reference configuration) within reach, into s->hits. */
-static int point_hits(const rs_mesh *m, int sides, const double p[3], double reach,
-                      double gap_lim, double dist_min, scratch *s)
+/* The triangles whose boxes meet the cube of half-width reach about p, into s->ids;
+ * returns their number, -1 when out of memory. */
+static int box_triangles(const rs_mesh *m, const double p[3], double reach, scratch *s)
 {
-    s->nhit = 0;
-    s->nseen = 0;
     const double pad = reach + 1e-9 * m->size;
     const double lo[3] = {p[0] - pad, p[1] - pad, p[2] - pad};
     const double hi[3] = {p[0] + pad, p[1] + pad, p[2] + pad};
     int n = rs_cgal_tree_box(m->tree, lo, hi, s->ids, s->cap);
-    if (n < 0)
-        return -1;
     if (n > s->cap) {
         int *ni = realloc(s->ids, (size_t)n * 2 * sizeof *ni);
         if (!ni)
@@ -153,17 +142,34 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rea
         s->ids = ni;
         s->cap = 2 * n;
         n = rs_cgal_tree_box(m->tree, lo, hi, s->ids, s->cap);
-        if (n < 0)
-            return -1;
     }
+    return n;
+}
+
+/* The contacts of point p (reference configuration) among triangles ids[0 .. n), into
+ * s->hits: those with dist <= gap_lim and dist >= dist_min. */
+static int point_hits(const rs_mesh *m, int sides, const double p[3], const int *ids, int n,
+                      double gap_lim, double dist_min, scratch *s)
+{
+    s->nhit = 0;
+    s->nseen = 0;
+    /* no feature of a triangle is nearer than its plane */
+    const double lim = fmax(gap_lim, -dist_min);
     const int one_sided = sides != 2;
     for (int k = 0; k < n; k++) {
-        const int t = s->ids[k];
+        const int t = ids[k];
         const int *tv = m->tri + 3 * t;
-        if (face_holds(m, t, p)) {
-            const double *nt = m->tn + 3 * t, *a = m->xyz + 3 * tv[0];
-            const double h = (p[0] - a[0]) * nt[0] + (p[1] - a[1]) * nt[1] +
-                             (p[2] - a[2]) * nt[2];
+        const double *nt = m->tn + 3 * t, *a0 = m->xyz + 3 * tv[0];
+        const double h =
+            (p[0] - a0[0]) * nt[0] + (p[1] - a0[1]) * nt[1] + (p[2] - a0[2]) * nt[2];
+        if (!(fabs(h) <= lim))
+            continue;
+        /* An edge can own p only where its triangle leaves p outside across it, and a
+         * vertex only where its triangle leaves p outside across both its edges there
+         * (the vertex's region lies outside both): the sides found here decide which
+         * edges and vertices are tested. */
+        const double sd[3] = {side_of(m, t, 0, p), side_of(m, t, 1, p), side_of(m, t, 2, p)};
+        if (sd[0] > 0.0 && sd[1] > 0.0 && sd[2] > 0.0) {
             hit c;
             c.feature = RS_FEATURE(RS_FEAT_FACE, m->tel[t]);
             c.tri = t;
@@ -178,6 +184,8 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rea
             continue;
         }
         for (int j = 0; j < 3; j++) {
+            if (sd[j] > 0.0)
+                continue;
             const int e = m->tedge[3 * t + j];
             const int fe = first_sight(s, RS_FEATURE(RS_FEAT_EDGE, e));
             if (fe < 0)
@@ -220,6 +228,8 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rea
             }
         }
         for (int j = 0; j < 3; j++) {
+            if (sd[j] > 0.0 || sd[(j + 2) % 3] > 0.0)
+                continue; /* vertex j lies between slots j - 1 and j */
             const int v = tv[j];
             const int fv = first_sight(s, RS_FEATURE(RS_FEAT_VERTEX, v));
             if (fv < 0)
@@ -274,8 +284,83 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rea
     return 0;
 }
 
-static int mesh_closest(const rs_surface *s, const rs_query *q, rs_contacts *out,
-                        rs_error *err)
+/* p, slave i of q, in the reference configuration. */
+static void slave_local(const rs_query *q, int i, double p[3])
+{
+    const double x[3] = {q->slave.x[i], q->slave.y[i], q->slave.z[i]};
+    const rs_pose *pose = q->pose;
+    if (pose) { /* X = R^T (x - T) */
+        const double w[3] = {x[0] - pose->T[0], x[1] - pose->T[1], x[2] - pose->T[2]};
+        for (int d = 0; d < 3; d++)
+            p[d] = pose->R[d] * w[0] + pose->R[3 + d] * w[1] + pose->R[6 + d] * w[2];
+    } else {
+        memcpy(p, x, 3 * sizeof(double));
+    }
+}
+
+/* The triangles within reach + extra of each slave: the tree's boxes, less those whose
+ * plane is beyond (no feature of a triangle is nearer than its plane). */
+static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra, rs_cands *c,
+                           rs_error *err)
+{
+    const rs_mesh *m = s->impl;
+    if (!m || !q->slave.x || !q->slave.y || !q->slave.z)
+        return rs_error_set(err, RS_ERR_ARG, "rs_surface_candidates: missing data");
+    if (c->offcap < q->n + 1) {
+        int *no = realloc(c->off, (size_t)(q->n + 1) * sizeof *no);
+        if (!no)
+            return rs_error_set(err, RS_ERR_NOMEM, "out of memory for candidate lists");
+        c->off = no;
+        c->offcap = q->n + 1;
+    }
+    scratch sc;
+    memset(&sc, 0, sizeof sc);
+    int rc = RS_OK, nid = 0;
+    c->n = q->n;
+    for (int i = 0; i < q->n && rc == RS_OK; i++) {
+        c->off[i] = nid;
+        const double r = q->slave.radius ? q->slave.radius[i] : 0.0;
+        double p[3];
+        slave_local(q, i, p);
+        /* as the query's reach (mesh_closest_among), from anywhere within extra */
+        double lim = q->gap_max + r;
+        if (-q->dist_min > lim)
+            lim = isfinite(q->dist_min) ? -q->dist_min
+                                        : fmax(lim, rs_cgal_tree_nearest(m->tree, p) + extra);
+        lim += extra;
+        if (!(lim >= 0.0) || !isfinite(lim))
+            continue;
+        const int n = box_triangles(m, p, lim, &sc);
+        if (n < 0) {
+            rc = rs_error_set(err, RS_ERR_NOMEM, "out of memory for candidate lists");
+            break;
+        }
+        if (nid + n > c->idcap) {
+            const int cap = 2 * (nid + n) + 64;
+            int *ni = realloc(c->ids, (size_t)cap * sizeof *ni);
+            if (!ni) {
+                rc = rs_error_set(err, RS_ERR_NOMEM, "out of memory for candidate lists");
+                break;
+            }
+            c->ids = ni;
+            c->idcap = cap;
+        }
+        for (int k = 0; k < n; k++) {
+            const int t = sc.ids[k];
+            const double *nt = m->tn + 3 * t, *a = m->xyz + 3 * m->tri[3 * t];
+            const double h =
+                (p[0] - a[0]) * nt[0] + (p[1] - a[1]) * nt[1] + (p[2] - a[2]) * nt[2];
+            if (fabs(h) <= lim)
+                c->ids[nid++] = t;
+        }
+    }
+    c->off[q->n] = nid;
+    free(sc.ids);
+    return rc;
+}
+
+static int mesh_closest_among(const rs_surface *s, const rs_query *q, const int *const *cand,
+                              const int *ncand, rs_contacts *out, rs_error *err)
 {
     const rs_mesh *m = s->impl;
     if (!m)
@@ -296,14 +381,8 @@ static int mesh_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
         const double gap_lim = q->gap_max + r;
         if (!(gap_lim >= 0.0))
             continue;
-        const double x[3] = {q->slave.x[i], q->slave.y[i], q->slave.z[i]};
         double p[3];
-        if (pose) { /* X = R^T (x - T) */
-            const double w[3] = {x[0] - pose->T[0], x[1] - pose->T[1], x[2] - pose->T[2]};
-            for (int d = 0; d < 3; d++)
-                p[d] = pose->R[d] * w[0] + pose->R[3 + d] * w[1] + pose->R[6 + d] * w[2];
-        } else
-            memcpy(p, x, sizeof p);
+        slave_local(q, i, p);
         /* The box reaches the gap limit and, behind a one-sided mesh, the penetrations
          * down to dist_min; without that bound, down to the nearest triangle. */
         double reach = gap_lim;
@@ -313,7 +392,19 @@ static int mesh_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
             else
                 reach = fmax(reach, rs_cgal_tree_nearest(m->tree, p));
         }
-        if (point_hits(m, s->sides, p, reach, gap_lim, q->dist_min, &sc)) {
+        const int *ids = sc.ids;
+        int nt;
+        if (cand) { /* the slave's candidate triangles (mesh_candidates) */
+            ids = cand[i];
+            nt = ncand[i];
+        } else {
+            nt = box_triangles(m, p, reach, &sc);
+            ids = sc.ids;
+        }
+        /* without a depth limit, penetrations reach down to the nearest triangle: the
+         * same contacts with and without candidate lists */
+        const double depth = isfinite(q->dist_min) ? q->dist_min : -reach;
+        if (nt < 0 || point_hits(m, s->sides, p, ids, nt, gap_lim, depth, &sc)) {
             rc = rs_error_set(err, RS_ERR_NOMEM, "out of memory in the mesh query");
             break;
         }
@@ -406,6 +497,12 @@ static int mesh_adjacent(const rs_surface *s, int fa, int fb)
     return 0;
 }
 
+static int mesh_closest(const rs_surface *s, const rs_query *q, rs_contacts *out,
+                        rs_error *err)
+{
+    return mesh_closest_among(s, q, NULL, NULL, out, err);
+}
+
 static void mesh_bounds(const rs_surface *s, double lo[3], double hi[3])
 {
     const rs_mesh *m = s->impl;
@@ -455,7 +552,8 @@ const rs_surface_ops rs_mesh_ops = {"MESH",           3,
                                     RS_FRAME_GLOBAL_X, mesh_closest,
                                     mesh_adjacent,    mesh_bounds,
                                     mesh_spin_axis,   mesh_triangulate,
-                                    mesh_free};
+                                    mesh_free,        mesh_candidates,
+                                    mesh_closest_among};
 
 /* STL checks the reader leaves out: an ASCII STL (it starts with "solid" and reads as
  * text) ends with "endsolid", so a file cut short is an error and not a smaller mesh; a

@@ -369,6 +369,34 @@ static int brute_force_case(const poly_mesh *pm, const char *name, int sides, do
             }
         }
         query(&s, 1, p, p + 1, p + 2, NULL, 1.0, &c);
+        {   /* candidate lists, taken 0.05 away and queried here, give the same contacts */
+            rs_query q;
+            memset(&q, 0, sizeof q);
+            const double p0[3] = {p[0] + 0.03, p[1] - 0.03, p[2] + 0.02};
+            q.n = 1;
+            q.slave.x = p0;
+            q.slave.y = p0 + 1;
+            q.slave.z = p0 + 2;
+            q.gap_max = 1.0;
+            q.dist_min = -INFINITY;
+            rs_cands cd;
+            memset(&cd, 0, sizeof cd);
+            rs_contacts c2;
+            memset(&c2, 0, sizeof c2);
+            int same = rs_surface_candidates(&s, &q, 0.05, &cd, &e) == RS_OK;
+            q.slave.x = p, q.slave.y = p + 1, q.slave.z = p + 2;
+            const int *lst = cd.ids, nl = same ? cd.off[1] : 0;
+            same = same && rs_surface_query_among(&s, &q, &lst, &nl, &c2, &e) == RS_OK;
+            same = same && c2.n == c.n;
+            for (int i = 0; same && i < c.n; i++)
+                same = c2.feature[i] == c.feature[i] && c2.dist[i] == c.dist[i];
+            rs_contacts_free(&c2);
+            rs_cands_free(&cd);
+            if (!same) {
+                fprintf(stderr, "%s: point %d: candidate lists change the contacts\n", name, k);
+                ok = 0;
+            }
+        }
         int kbest = -1;
         for (int i = 0; i < c.n; i++) {
             if (kbest < 0 || fabs(c.dist[i]) < fabs(c.dist[kbest]))
