@@ -10,6 +10,8 @@
 #define RS_MESH_FLAT_ANGLE 1e-9
 /// Vertices closer than this fraction of the mesh's size are welded.
 #define RS_MESH_WELD_REL 1e-9
+/// Doubles of a triangle's record (rs_mesh.trec): n, a0, then (m_j, c_j) for j = 0..2.
+#define RS_MESH_TREC 18
 /// Most triangles a mesh may have (feature ids stay ints).
 #define RS_MESH_MAX_TRI (1 << 27)
 
@@ -42,6 +44,12 @@ typedef struct rs_mesh {
     unsigned char *edge_kind; ///< rs_edge_kind
     int *vert_e0;       ///< nv + 1: edges at vertex v are vert_e[vert_e0[v] ..]
     int *vert_e;
+    double *trec;       ///< RS_MESH_TREC nt: per triangle its normal n, first node a0,
+                        ///< and for each edge slot j the unit in-plane normal m_j into
+                        ///< the triangle with c_j = m_j . (the edge's lower node):
+                        ///< p's side of edge j is p . m_j - c_j (across a flat edge the
+                        ///< second face holds exactly -m_j, -c_j of the first)
+    int *vfirst;        ///< nv: the lowest-numbered triangle at each vertex
     double *vpn;        ///< 3 nv: angle-weighted pseudo-normal (unit)
     unsigned char *vopen; ///< nv: 1 on an open boundary or non-manifold edge
     double lo[3], hi[3]; ///< bounds

@@ -48,6 +48,8 @@ void rs_mesh_free(rs_mesh *m)
     free(m->edge_kind);
     free(m->vert_e0);
     free(m->vert_e);
+    free(m->trec);
+    free(m->vfirst);
     free(m->vpn);
     free(m->vopen);
     if (m->tree)
@@ -398,6 +400,31 @@ static int finish_topology(rs_mesh *m, int two_sided)
         const double l = rs_norm3(m->vpn + 3 * v);
         for (int d = 0; d < 3; d++)
             m->vpn[3 * v + d] = l > 0.0 ? m->vpn[3 * v + d] / l : 0.0;
+    }
+    /* the query's per-triangle records and each vertex's first triangle */
+    m->trec = xmalloc(RS_MESH_TREC * (size_t)m->nt, sizeof(double));
+    m->vfirst = xmalloc((size_t)m->nv, sizeof(int));
+    if (!m->trec || !m->vfirst)
+        return -1;
+    for (int v = 0; v < m->nv; v++)
+        m->vfirst[v] = -1;
+    for (int t = m->nt - 1; t >= 0; t--)
+        for (int j = 0; j < 3; j++)
+            m->vfirst[m->tri[3 * t + j]] = t;
+    for (int t = 0; t < m->nt; t++) {
+        double *r = m->trec + RS_MESH_TREC * (size_t)t;
+        for (int d = 0; d < 3; d++) {
+            r[d] = m->tn[3 * t + d];
+            r[3 + d] = m->xyz[3 * m->tri[3 * t] + d];
+        }
+        for (int j = 0; j < 3; j++) {
+            const double *mm = m->tm + 9 * t + 3 * j;
+            const double *a = m->xyz + 3 * m->edge_v[2 * m->tedge[3 * t + j]];
+            double *rj = r + 6 + 4 * j;
+            for (int d = 0; d < 3; d++)
+                rj[d] = mm[d];
+            rj[3] = a[0] * mm[0] + a[1] * mm[1] + a[2] * mm[2];
+        }
     }
     return 0;
 }

@@ -21,13 +21,11 @@
 #include <string.h>
 #include <sys/stat.h>
 
-/* (p - a).m for slot j of triangle t, with a the lower node of the slot's edge. */
-static double side_of(const rs_mesh *m, int t, int j, const double p[3])
+/* p's side of edge slot j of triangle t: p . m_j - c_j (rs_mesh.trec), > 0 inside. */
+static inline double side_of(const rs_mesh *m, int t, int j, const double p[3])
 {
-    const int e = m->tedge[3 * t + j];
-    const double *a = m->xyz + 3 * m->edge_v[2 * e];
-    const double *mm = m->tm + 9 * t + 3 * j;
-    return (p[0] - a[0]) * mm[0] + (p[1] - a[1]) * mm[1] + (p[2] - a[2]) * mm[2];
+    const double *r = m->trec + RS_MESH_TREC * (size_t)t + 6 + 4 * j;
+    return p[0] * r[0] + p[1] * r[1] + p[2] * r[2] - r[3];
 }
 
 /* (p - v).(w - v) for edge e seen from its node v (the other node w). */
@@ -42,9 +40,6 @@ static double along_from(const rs_mesh *m, int e, int v, const double p[3])
 /* Does edge e own p: strictly between its nodes, and outside each of its faces? */
 static int edge_owns(const rs_mesh *m, int e, const double p[3])
 {
-    const int a = m->edge_v[2 * e], b = m->edge_v[2 * e + 1];
-    if (!(along_from(m, e, a, p) > 0.0 && along_from(m, e, b, p) > 0.0))
-        return 0;
     for (int k = m->edge_f0[e]; k < m->edge_f0[e + 1]; k++) {
         const int t = m->edge_f[k];
         int j = 0;
@@ -53,7 +48,8 @@ static int edge_owns(const rs_mesh *m, int e, const double p[3])
         if (side_of(m, t, j, p) > 0.0)
             return 0;
     }
-    return 1;
+    const int a = m->edge_v[2 * e], b = m->edge_v[2 * e + 1];
+    return along_from(m, e, a, p) > 0.0 && along_from(m, e, b, p) > 0.0;
 }
 
 /* Does vertex v own p: at or beyond v along each of its edges? */
@@ -77,6 +73,21 @@ static void any_tangent(const double n[3], double t[3])
         t[d] /= l;
 }
 
+/* An orthonormal basis (t1, t2, n) for unit n, without a square root (Duff et al.,
+ * "Building an orthonormal basis, revisited", 2017): the principal frame of a flat
+ * feature, whose curvatures are 0 along any tangent. */
+static void tangent_basis(const double n[3], double t1[3], double t2[3])
+{
+    const double sg = copysign(1.0, n[2]);
+    const double a = -1.0 / (sg + n[2]), b = n[0] * n[1] * a;
+    t1[0] = 1.0 + sg * n[0] * n[0] * a;
+    t1[1] = sg * b;
+    t1[2] = -sg * n[0];
+    t2[0] = b;
+    t2[1] = sg + n[1] * n[1] * a;
+    t2[2] = -n[1];
+}
+
 /* One contact of the point being queried, in the reference configuration. */
 typedef struct hit {
     int feature;
@@ -91,8 +102,6 @@ typedef struct scratch {
     int cap;
     hit *hits;
     int nhit, hcap;
-    int *seen; /* edges and vertices already tested for this point */
-    int nseen, scap;
 } scratch;
 
 static int push_hit(scratch *s, const hit *h)
@@ -109,22 +118,43 @@ static int push_hit(scratch *s, const hit *h)
     return 0;
 }
 
-/* First sight of feature f for this point: 1, else 0 (-1 out of memory). */
-static int first_sight(scratch *s, int f)
+/* A lower bound of the squared distance from p to triangle t, from its plane's distance
+ * h and its edges' sides sd (side_of, unit normals: outside an edge by -sd at least). */
+static inline double tri_bound(const rs_mesh *m, int t, const double p[3], double *h,
+                               double sd[3])
 {
-    for (int k = 0; k < s->nseen; k++)
-        if (s->seen[k] == f)
-            return 0;
-    if (s->nseen == s->scap) {
-        int cap = s->scap ? 2 * s->scap : 32;
-        int *ns = realloc(s->seen, (size_t)cap * sizeof *ns);
-        if (!ns)
-            return -1;
-        s->seen = ns;
-        s->scap = cap;
+    const double *r = m->trec + RS_MESH_TREC * (size_t)t;
+    *h = (p[0] - r[3]) * r[0] + (p[1] - r[4]) * r[1] + (p[2] - r[5]) * r[2];
+    double out = 0.0;
+    for (int j = 0; j < 3; j++) {
+        const double *rj = r + 6 + 4 * j;
+        sd[j] = p[0] * rj[0] + p[1] * rj[1] + p[2] * rj[2] - rj[3];
+        out = -sd[j] > out ? -sd[j] : out;
     }
-    s->seen[s->nseen++] = f;
-    return 1;
+    return *h * *h + out * out;
+}
+
+/* The squared distance from p to triangle t: to its plane where p projects inside it,
+ * else to the nearest of the edges it lies outside of. */
+static double tri_distance2(const rs_mesh *m, int t, const double p[3])
+{
+    double h, sd[3];
+    const double lb = tri_bound(m, t, p, &h, sd);
+    if (sd[0] >= 0.0 && sd[1] >= 0.0 && sd[2] >= 0.0)
+        return lb;
+    double best = INFINITY;
+    for (int j = 0; j < 3; j++) {
+        if (sd[j] >= 0.0)
+            continue;
+        const double *a = m->xyz + 3 * m->tri[3 * t + j],
+                     *b = m->xyz + 3 * m->tri[3 * t + (j + 1) % 3];
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const double w[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+        const double f = fmin(1.0, fmax(0.0, rs_dot3(w, u) / rs_dot3(u, u)));
+        const double d[3] = {w[0] - f * u[0], w[1] - f * u[1], w[2] - f * u[2]};
+        best = fmin(best, rs_dot3(d, d));
+    }
+    return best;
 }
 
 /* The triangles whose boxes meet the cube of half-width reach about p, into s->ids;
@@ -152,23 +182,21 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], const int 
                       double gap_lim, double dist_min, scratch *s)
 {
     s->nhit = 0;
-    s->nseen = 0;
-    /* no feature of a triangle is nearer than its plane */
+    /* no feature of a triangle is nearer than tri_bound */
     const double lim = fmax(gap_lim, -dist_min);
     const int one_sided = sides != 2;
     for (int k = 0; k < n; k++) {
         const int t = ids[k];
         const int *tv = m->tri + 3 * t;
-        const double *nt = m->tn + 3 * t, *a0 = m->xyz + 3 * tv[0];
-        const double h =
-            (p[0] - a0[0]) * nt[0] + (p[1] - a0[1]) * nt[1] + (p[2] - a0[2]) * nt[2];
-        if (!(fabs(h) <= lim))
+        const double *nt = m->tn + 3 * t;
+        double h, sd[3];
+        if (!(tri_bound(m, t, p, &h, sd) <= lim * lim))
             continue;
         /* An edge can own p only where its triangle leaves p outside across it, and a
-         * vertex only where its triangle leaves p outside across both its edges there
-         * (the vertex's region lies outside both): the sides found here decide which
-         * edges and vertices are tested. */
-        const double sd[3] = {side_of(m, t, 0, p), side_of(m, t, 1, p), side_of(m, t, 2, p)};
+         * vertex only where its triangle leaves p outside across one of its two edges
+         * there (inside both, p's projection lies in the angle at the vertex, or is the
+         * vertex itself, with both sides 0): the sides found here decide which edges and
+         * vertices are tested. */
         if (sd[0] > 0.0 && sd[1] > 0.0 && sd[2] > 0.0) {
             hit c;
             c.feature = RS_FEATURE(RS_FEAT_FACE, m->tel[t]);
@@ -186,11 +214,9 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], const int 
         for (int j = 0; j < 3; j++) {
             if (sd[j] > 0.0)
                 continue;
+            /* an edge is tested from its lowest-numbered face: within reach, so is it */
             const int e = m->tedge[3 * t + j];
-            const int fe = first_sight(s, RS_FEATURE(RS_FEAT_EDGE, e));
-            if (fe < 0)
-                return -1;
-            if (fe && edge_owns(m, e, p)) {
+            if (m->edge_f[m->edge_f0[e]] == t && edge_owns(m, e, p)) {
                 const int ia = m->edge_v[2 * e], ib = m->edge_v[2 * e + 1];
                 const double *a = m->xyz + 3 * ia, *b = m->xyz + 3 * ib;
                 const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
@@ -228,13 +254,10 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], const int 
             }
         }
         for (int j = 0; j < 3; j++) {
-            if (sd[j] > 0.0 || sd[(j + 2) % 3] > 0.0)
+            if (sd[j] > 0.0 && sd[(j + 2) % 3] > 0.0)
                 continue; /* vertex j lies between slots j - 1 and j */
-            const int v = tv[j];
-            const int fv = first_sight(s, RS_FEATURE(RS_FEAT_VERTEX, v));
-            if (fv < 0)
-                return -1;
-            if (fv && vertex_owns(m, v, p)) {
+            const int v = tv[j]; /* tested from its lowest-numbered triangle */
+            if (m->vfirst[v] == t && vertex_owns(m, v, p)) {
                 const double *x = m->xyz + 3 * v, *pn = m->vpn + 3 * v;
                 double dv[3] = {p[0] - x[0], p[1] - x[1], p[2] - x[2]};
                 const double L = rs_norm3(dv);
@@ -298,8 +321,8 @@ static void slave_local(const rs_query *q, int i, double p[3])
     }
 }
 
-/* The triangles within reach + extra of each slave: the tree's boxes, less those whose
- * plane is beyond (no feature of a triangle is nearer than its plane). */
+/* The triangles within reach + extra of each slave: the tree's boxes, less those
+ * farther (tri_distance2). */
 static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra, rs_cands *c,
                            rs_error *err)
 {
@@ -345,14 +368,9 @@ static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
             c->ids = ni;
             c->idcap = cap;
         }
-        for (int k = 0; k < n; k++) {
-            const int t = sc.ids[k];
-            const double *nt = m->tn + 3 * t, *a = m->xyz + 3 * m->tri[3 * t];
-            const double h =
-                (p[0] - a[0]) * nt[0] + (p[1] - a[1]) * nt[1] + (p[2] - a[2]) * nt[2];
-            if (fabs(h) <= lim)
-                c->ids[nid++] = t;
-        }
+        for (int k = 0; k < n; k++)
+            if (tri_distance2(m, sc.ids[k], p) <= lim * lim)
+                c->ids[nid++] = sc.ids[k];
     }
     c->off[q->n] = nid;
     free(sc.ids);
@@ -424,8 +442,7 @@ static int mesh_closest_among(const rs_surface *s, const rs_query *q, const int 
                 memcpy(xm, c->x, sizeof xm);
                 memcpy(n, c->n, sizeof n);
             }
-            any_tangent(n, t1);
-            rs_cross3(n, t1, t2);
+            tangent_basis(n, t1, t2);
             out->point[o] = i;
             out->feature[o] = c->feature;
             out->dist[o] = c->dist;
@@ -440,7 +457,6 @@ static int mesh_closest_among(const rs_surface *s, const rs_query *q, const int 
     }
     free(sc.ids);
     free(sc.hits);
-    free(sc.seen);
     return rc;
 }
 
