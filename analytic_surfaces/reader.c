@@ -9,8 +9,10 @@
  *   LINE, x1, y1
  *   CIRCL, x1, y1, xc, yc
  *   PARAB, xm, ym, x1, y1
- *   *SURFACE, TYPE=MESH, NAME=name, FILE=part.stl [, SCALE=s] [, SIDES=2]
+ *   *SURFACE, TYPE=MESH, NAME=name [, FILE=part.stl] [, SCALE=s] [, SIDES=2]
  *   ax, ay, az, bx, by, bz, cx, cy, cz                  (MESH, optional placement)
+ *   *NODE, *ELEMENT, TYPE=R3D3|R3D4, *INCLUDE           (a MESH without FILE= is the
+ *                                                        rigid part of this file)
  *
  * Keywords, parameters and profile words are case-insensitive and blanks inside them are
  * ignored (Abaqus rules); values are comma-separated; numbers may use a Fortran D
@@ -40,6 +42,7 @@ typedef struct parser {
     const char *origin;
     int line;
     rs_error *err;
+    int from_file; /* origin is the path of the file being read */
 } parser;
 
 /* A surface being read. */
@@ -60,6 +63,7 @@ typedef struct draft {
     char file[4096]; /* MESH: FILE= as written */
     double scale;    /* MESH: SCALE= */
     int placed;      /* MESH: the placement line was read */
+    int self;        /* MESH: its elements are in this file (no FILE=) */
     double abc[9];
     rs_segment *seg;
     int *segline;
@@ -326,9 +330,10 @@ static int keyword_line(const parser *ps, const tok *t, int nt, draft *d)
     if (have_extent && d->kind != RS_SURF_CYLINDER)
         return perr(ps, RS_ERR_PARSE, "EXTENT is only for TYPE=CYLINDER%s%s", NULL, NULL);
     if (d->kind == RS_SURF_FACETED) {
-        if (!have_file)
+        if (!have_file && !ps->from_file)
             return perr(ps, RS_ERR_PARSE, "expected FILE= on *SURFACE, TYPE=MESH%s%s", NULL,
                         NULL);
+        d->self = !have_file; /* the *NODE and *ELEMENT lines of this file */
         if (have_fillet)
             return perr(ps, RS_ERR_PARSE, "FILLET RADIUS is not for TYPE=MESH%s%s", NULL,
                         NULL);
@@ -561,7 +566,9 @@ static int finish_mesh(parser *ps, draft *d, rs_surface *s)
 {
     char path[8192], where[400];
     const char *slash = strrchr(ps->origin, '/');
-    if (d->file[0] != '/' && slash && ps->origin[0] != '<')
+    if (d->self)
+        snprintf(path, sizeof path, "%s", ps->origin);
+    else if (d->file[0] != '/' && slash && ps->from_file)
         snprintf(path, sizeof path, "%.*s/%s", (int)(slash - ps->origin), ps->origin,
                  d->file);
     else
@@ -683,10 +690,19 @@ static void names_add(char *buf, size_t size, int *full, const char *name)
     }
 }
 
-int rs_surface_parse(const char *text, const char *origin, const char *name, rs_surface *s,
-                     rs_error *err)
+/* Abaqus keywords of a rigid part that a surface file may hold for its MESH surfaces
+ * (src/faceted/abaqus_part.c reads them): skipped here with their data lines. */
+static int part_keyword(const char *key)
 {
-    parser ps = {origin ? origin : "<text>", 0, err};
+    return !strcmp(key, "NODE") || !strcmp(key, "ELEMENT") || !strcmp(key, "INCLUDE") ||
+           !strcmp(key, "HEADING");
+}
+
+static int parse_text(const char *text, const char *origin, const char *name, rs_surface *s,
+                      rs_error *err, int from_file)
+{
+    parser ps = {origin ? origin : "<text>", 0, err, from_file};
+    int skipping = 0; /* in the data lines of a part keyword */
     draft d;
     rs_surface cur;
     int found = 0, nsurf = 0, rc = RS_OK;
@@ -729,10 +745,11 @@ int rs_surface_parse(const char *text, const char *origin, const char *name, rs_
             tok bare = {ln + 1, kw.len - 1};
             char key[16];
             normkey(&bare, key, sizeof key);
-            if (strcmp(key, "SURFACE") != 0) {
+            if (strcmp(key, "SURFACE") != 0 && !part_keyword(key)) {
                 rc = keyword_line(&ps, &kw, 1, &d);
                 goto out;
             }
+            skipping = part_keyword(key);
         }
         if ((at_end || is_kw) && d.active) {
             /* a surface ends here: check it whole */
@@ -754,7 +771,7 @@ int rs_surface_parse(const char *text, const char *origin, const char *name, rs_
         }
         if (at_end)
             break;
-        if (len > 0 && !(len > 1 && ln[0] == '*' && ln[1] == '*')) {
+        if (len > 0 && !(len > 1 && ln[0] == '*' && ln[1] == '*') && !skipping) {
             tok t[MAXTOK];
             int nt = split(ln, len, t);
             if (nt < 0) {
@@ -819,6 +836,12 @@ out:
     return rc;
 }
 
+int rs_surface_parse(const char *text, const char *origin, const char *name, rs_surface *s,
+                     rs_error *err)
+{
+    return parse_text(text, origin, name, s, err, 0);
+}
+
 int rs_surface_read(const char *path, const char *name, rs_surface *s, rs_error *err)
 {
     if (!s || !path)
@@ -871,7 +894,7 @@ int rs_surface_read(const char *path, const char *name, rs_surface *s, rs_error 
         return rs_error_set(err, RS_ERR_PARSE, "%s:%d: unexpected NUL byte (expected text)",
                             path, line);
     }
-    rc = rs_surface_parse(buf, path, name, s, err);
+    rc = parse_text(buf, path, name, s, err, 1);
     free(buf);
     return rc;
 }

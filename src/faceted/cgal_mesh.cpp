@@ -72,7 +72,8 @@ extern "C" int rs_cgal_read_soup(const char *path, rs_soup *soup, char *msg, siz
     const std::string ext = lower_extension(path);
     if (ext != "stl" && ext != "obj" && ext != "off" && ext != "ply") {
         std::snprintf(msg, cap,
-                      "unknown mesh format '.%s' (expected .stl, .obj, .off or .ply)",
+                      "unknown mesh format '.%s' (expected .stl, .obj, .off, .ply or an "
+                      "Abaqus .inp)",
                       ext.c_str());
         return -1;
     }

@@ -9,6 +9,7 @@
  * flat region gets one contact, never two. */
 #define _POSIX_C_SOURCE 200809L /* stat */
 
+#include "abaqus_part.h"
 #include "cgal_mesh.h"
 #include "mesh.h"
 #include "rigidsurf/vec.h"
@@ -683,8 +684,15 @@ int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int plac
         return rc;
     rs_soup soup;
     char msg[300];
-    if (rs_cgal_read_soup(file, &soup, msg, sizeof msg))
+    const char *ext = strrchr(file, '.');
+    const int inp = ext && strlen(ext) == 4 && tolower((unsigned char)ext[1]) == 'i' &&
+                    tolower((unsigned char)ext[2]) == 'n' && tolower((unsigned char)ext[3]) == 'p';
+    if (inp) { /* an Abaqus rigid part: its messages name file and line */
+        if (rs_abaqus_read_soup(file, &soup, msg, sizeof msg))
+            return rs_error_set(err, RS_ERR_PARSE, "%s: %s", where, msg);
+    } else if (rs_cgal_read_soup(file, &soup, msg, sizeof msg)) {
         return rs_error_set(err, RS_ERR_PARSE, "%s: %s: %s", where, file, msg);
+    }
     rs_mesh *m = NULL;
     int two = 0;
     rc = rs_mesh_build(&soup, scale, a, ex, ey, ez, file, &m, &two, s->warning,

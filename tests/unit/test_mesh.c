@@ -782,7 +782,15 @@ static void bad_mesh_files(void)
                  "*SURFACE, TYPE=MESH, NAME=a, FILE=tri.off, SCALE=-1\n", "SCALE > 0");
     expect_error(NULL, NULL, 0, "*SURFACE, TYPE=MESH, NAME=a, FILE=tri.off, SCALE=nan\n",
                  "s.inp:1");
-    expect_error(NULL, NULL, 0, "*SURFACE, TYPE=MESH, NAME=a\n", "expected FILE=");
+    /* without FILE=, the surface file's own rigid part, here none */
+    expect_error(NULL, NULL, 0, "*SURFACE, TYPE=MESH, NAME=a\n", "expected a rigid part");
+    {   /* text that is no file has no rigid part: FILE= is needed */
+        rs_surface s;
+        rs_error e;
+        ENSURE(rs_surface_parse("*SURFACE, TYPE=MESH, NAME=a\n", "text", NULL, &s, &e) ==
+               RS_ERR_PARSE);
+        ENSURE(strstr(e.msg, "expected FILE=") != NULL);
+    }
     expect_error("tri.xyz", tri, strlen(tri), "*SURFACE, TYPE=MESH, NAME=a, FILE=tri.xyz\n",
                  "unknown mesh format");
     const char *flat = "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n";
@@ -790,6 +798,61 @@ static void bad_mesh_files(void)
                  "every facet is degenerate");
     expect_error(NULL, NULL, 0, "*SURFACE, TYPE=MESH, NAME=a, FILE=tri.off\n1, 2, 3\n",
                  "placement");
+}
+
+/* An Abaqus rigid part: a unit cube of R3D4 elements whose nodes (numbered from 101)
+ * come from an included file answers as the same cube read from OFF; an element naming
+ * a missing node, another element type and a node defined twice are errors that name
+ * file and line. */
+static void abaqus_rigid_part(void)
+{
+    write_text("cube_nodes.inp", "** the nodes\n*NODE, NSET=all\n101, 0, 0, 0\n102, 1, 0, 0\n"
+                                 "103, 1, 1, 0\n104, 0, 1, 0\n105, 0, 0, 1\n106, 1, 0, 1\n"
+                                 "107, 1, 1, 1\n108, 0, 1, 1\n");
+    write_text("cube.inp", "*HEADING\nrigid cube\n*INCLUDE, INPUT=cube_nodes.inp\n"
+                           "*element, type=r3d4, elset=box\n1, 101, 104, 103, 102\n"
+                           "2, 105, 106, 107, 108\n3, 101, 102, 106, 105\n"
+                           "4, 103, 104, 108, 107\n5, 102, 103, 107, 106\n"
+                           "6, 101, 105, 108, 104\n");
+    rs_surface s;
+    rs_error e;
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=cube, FILE=cube.inp\n", &s, &e) == RS_OK);
+    ENSURE(s.warning[0] == '\0'); /* closed and consistently wound */
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    double x = 1.1, y = 0.4, z = 1.2;
+    query(&s, 1, &x, &y, &z, NULL, 1.0, &c);
+    ENSURE(c.n == 1 && RS_FEATURE_TYPE(c.feature[0]) == RS_FEAT_EDGE);
+    ENSURE_NEAR(c.dist[0], hypot(0.1, 0.2), 1e-15);
+    x = 0.3, y = 0.6, z = 1.05;
+    query(&s, 1, &x, &y, &z, NULL, 1.0, &c);
+    ENSURE(c.n == 1 && c.feature[0] == RS_FEATURE(RS_FEAT_FACE, 1)); /* element 2 */
+    ENSURE_NEAR(c.dist[0], 0.05, 1e-15);
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+    /* the rigid part in the surface file itself, after its *SURFACE */
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=plate, SIDES=2\n*NODE\n1, 0, 0, 0\n2, 2, 0, 0\n"
+                "3, 2, 2, 0\n4, 0, 2, 0\n*ELEMENT, TYPE=R3D4, ELSET=plate\n1, 1, 2, 3, 4\n",
+                &s, &e) == RS_OK);
+    memset(&c, 0, sizeof c);
+    x = 1.5, y = 0.5, z = -0.25;
+    query(&s, 1, &x, &y, &z, NULL, 1.0, &c);
+    ENSURE(c.n == 1 && c.feature[0] == RS_FEATURE(RS_FEAT_FACE, 0));
+    ENSURE_NEAR(c.dist[0], 0.25, 1e-15);
+    ENSURE_NEAR(c.nrm[2][0], -1.0, 1e-15);
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+    write_text("miss.inp", "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 1, 1, 0\n"
+                           "*ELEMENT, TYPE=R3D4\n7, 1, 2, 3, 999\n");
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=m, FILE=miss.inp\n", &s, &e) != RS_OK);
+    ENSURE(strstr(e.msg, "miss.inp:6: element 7 names node 999") != NULL);
+    write_text("solid.inp", "*NODE\n1, 0, 0, 0\n*ELEMENT, TYPE=C3D8\n");
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=m, FILE=solid.inp\n", &s, &e) != RS_OK);
+    ENSURE(strstr(e.msg, "solid.inp:3:") && strstr(e.msg, "TYPE=C3D8"));
+    write_text("twice.inp", "*NODE\n1, 0, 0, 0\n1, 1, 0, 0\n2, 0, 1, 0\n"
+                            "*ELEMENT, TYPE=R3D3\n1, 1, 2, 1\n");
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=m, FILE=twice.inp\n", &s, &e) != RS_OK);
+    ENSURE(strstr(e.msg, "node 1 defined twice") != NULL);
 }
 
 /* Repairs are reported: a degenerate facet is dropped by its number, open edges are
@@ -841,6 +904,7 @@ int main(void)
     RS_RUN(pose_moves_the_mesh);
     RS_RUN(bad_mesh_files);
     RS_RUN(repairs_are_reported);
+    RS_RUN(abaqus_rigid_part);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);
     if (system(cmd) != 0)

@@ -59,7 +59,7 @@ static const bad_case BAD[] = {
      RS_ERR_PARSE, 3, "expected a number"},
     {"nan is not a number", "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, 0, 0\nLINE, nan, 1\n",
      RS_ERR_PARSE, 3, "number"},
-    {"unknown keyword", "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, 0, 0\n*NODE\n",
+    {"unknown keyword", "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, 0, 0\n*STEP\n",
      RS_ERR_PARSE, 3, "unknown keyword"},
     {"unknown parameter", "*SURFACE, TYPE=SEGMENTS, NAME=a, COLOR=red\nSTART, 0, 0\n",
      RS_ERR_PARSE, 1, "unknown parameter"},
