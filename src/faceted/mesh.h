@@ -50,6 +50,8 @@ typedef struct rs_mesh {
                         ///< p's side of edge j is p . m_j - c_j (across a flat edge the
                         ///< second face holds exactly -m_j, -c_j of the first)
     int *vfirst;        ///< nv: the lowest-numbered triangle at each vertex
+    int *tnbr;          ///< 3 nt: across slot j of triangle t, 3 t' + j' of the other face
+                        ///< of a two-face edge, -1 at open and non-manifold edges
     double *vpn;        ///< 3 nv: angle-weighted pseudo-normal (unit)
     unsigned char *vopen; ///< nv: 1 on an open boundary or non-manifold edge
     double lo[3], hi[3]; ///< bounds

@@ -50,6 +50,7 @@ void rs_mesh_free(rs_mesh *m)
     free(m->vert_e);
     free(m->trec);
     free(m->vfirst);
+    free(m->tnbr);
     free(m->vpn);
     free(m->vopen);
     if (m->tree)
@@ -406,6 +407,21 @@ static int finish_topology(rs_mesh *m, int two_sided)
     m->vfirst = xmalloc((size_t)m->nv, sizeof(int));
     if (!m->trec || !m->vfirst)
         return -1;
+    m->tnbr = xmalloc(3 * (size_t)m->nt, sizeof(int));
+    if (!m->tnbr)
+        return -1;
+    for (int t = 0; t < m->nt; t++)
+        for (int j = 0; j < 3; j++) {
+            const int e = m->tedge[3 * t + j];
+            m->tnbr[3 * t + j] = -1;
+            if (m->edge_f0[e + 1] - m->edge_f0[e] != 2)
+                continue;
+            const int o = m->edge_f[m->edge_f0[e]] == t ? m->edge_f[m->edge_f0[e] + 1]
+                                                       : m->edge_f[m->edge_f0[e]];
+            for (int jo = 0; jo < 3; jo++)
+                if (m->tedge[3 * o + jo] == e)
+                    m->tnbr[3 * t + j] = 3 * o + jo;
+        }
     for (int v = 0; v < m->nv; v++)
         m->vfirst[v] = -1;
     for (int t = m->nt - 1; t >= 0; t--)

@@ -217,7 +217,15 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], const int 
                 continue;
             /* an edge is tested from its lowest-numbered face: within reach, so is it */
             const int e = m->tedge[3 * t + j];
-            if (m->edge_f[m->edge_f0[e]] == t && edge_owns(m, e, p)) {
+            if (m->edge_f[m->edge_f0[e]] != t)
+                continue;
+            /* a two-face edge: this face leaves p outside (sd[j] <= 0), the other too? */
+            const int nb = m->tnbr[3 * t + j];
+            const int owns = nb >= 0 ? !(side_of(m, nb / 3, nb % 3, p) > 0.0) &&
+                                           along_from(m, e, m->edge_v[2 * e], p) > 0.0 &&
+                                           along_from(m, e, m->edge_v[2 * e + 1], p) > 0.0
+                                     : edge_owns(m, e, p);
+            if (owns) {
                 const int ia = m->edge_v[2 * e], ib = m->edge_v[2 * e + 1];
                 const double *a = m->xyz + 3 * ia, *b = m->xyz + 3 * ib;
                 const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
@@ -258,7 +266,19 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], const int 
             if (sd[j] > 0.0 && sd[(j + 2) % 3] > 0.0)
                 continue; /* vertex j lies between slots j - 1 and j */
             const int v = tv[j]; /* tested from its lowest-numbered triangle */
-            if (m->vfirst[v] == t && vertex_owns(m, v, p)) {
+            if (m->vfirst[v] != t)
+                continue;
+            /* its two edges in this triangle first (the same products as vertex_owns) */
+            const double *pv = m->xyz + 3 * v;
+            const double w0[3] = {p[0] - pv[0], p[1] - pv[1], p[2] - pv[2]};
+            int beyond = 0;
+            for (int o = 1; o < 3 && !beyond; o++) {
+                const double *pw = m->xyz + 3 * tv[(j + o) % 3];
+                beyond = w0[0] * (pw[0] - pv[0]) + w0[1] * (pw[1] - pv[1]) +
+                             w0[2] * (pw[2] - pv[2]) >
+                         0.0;
+            }
+            if (!beyond && vertex_owns(m, v, p)) {
                 const double *x = m->xyz + 3 * v, *pn = m->vpn + 3 * v;
                 double dv[3] = {p[0] - x[0], p[1] - x[1], p[2] - x[2]};
                 const double L = rs_norm3(dv);
