@@ -13,7 +13,8 @@ E* of the particle and wall materials, radius R) carry m g through their vertica
 parts F sin(a), so the centre rests at z = (R - d) / sin(a).
 The same holds with 'contacts 1' (the slots grow from one).
 
-Then the cone, placed with its apex at x = -0.01, moves (move linear 0.2 0 0) and drags the sphere with its 12 contacts
+Then the cone, placed with its apex at x = -0.01, moves (move linear 0.2 0 0) while
+turning about its axis (5 rad/s), and drags the sphere with its 12 contacts
 across the boundary between two ranks (processors 2 1 1): the atom arrives at a rank
 whose fix still has 4 slots, which grows to take them. Its path with -np 2 equals the
 -np 1 path to 1e-6.
@@ -84,7 +85,8 @@ def body(s):
         deck += L.sphere(1, (-0.01, 0.0, z_rest), R, RHO)
         deck += "fix grav all gravity %r vector 0 0 -1\n" % g
         deck += ("fix w all wall/rigid surface inline mesh cone.stl place -0.01 0 0 "
-                 "0.99 0 0 -0.01 1 0 law hertz type 2 move linear 0.2 0 0\n"
+                 "0.99 0 0 -0.01 1 0 law hertz type 2 move linear 0.2 0 0 "
+                 "rotate origin -0.01 0 0 axis 0 0 1 omega 5\n"
                  "fix integr all nve/sphere\n")
         deck += ("variable nc equal f_w[7]\nvariable x equal x[1]\nvariable y equal y[1]\n"
                  "variable z equal z[1]\nrun 10000\n"

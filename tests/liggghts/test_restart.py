@@ -17,9 +17,10 @@ concave corner between the turning mantle and the bottom cap of a closed drum ho
 contacts (mantle and cap, so two history slots) at the restart point; the restarted run
 is again identical to the continuous one.
 
-Third case, for slots that grew during the run: a sphere settling into the apex of a
-12-facet STL cone (MESH) holds 12 contacts at the restart point, so its fix grew from 4
-slots; the restarted fix starts with 4 again and takes 12 from the file.
+Third case, for slots that grew during the run and a turning mesh: a sphere settling
+into the apex of a 12-facet STL cone (MESH) that turns about its axis holds 12 contacts
+at the restart point, so its fix grew from 4 slots; the restarted fix starts with 4
+again and takes 12 from the file.
 """
 import math
 
@@ -115,7 +116,8 @@ def pocket_case(s):
         return d
 
     lines = ("fix grav all gravity 9.81 vector 0 0 -1\n"
-             "fix w all wall/rigid surface inline mesh cone.stl law hertz type 2\n"
+             "fix w all wall/rigid surface inline mesh cone.stl law hertz type 2 "
+             "rotate origin 0 0 0 axis 0 0 1 omega 3\n"
              "fix i all nve/sphere\nvariable nc equal f_w[7]\n")
     full = atoms() + lines
     full += 'fix pr all print %d "NC ${nc}" screen yes\n' % N
