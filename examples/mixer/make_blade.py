@@ -5,13 +5,15 @@ radial axis, so that turning they lift the bed), each face tessellated in cells 
 about 1.5 mm, so the blade has more than 20000 triangles. Facet normals point out of
 the solid parts, where the spheres are.
 
-    make_blade.py OUT.stl
+    make_blade.py OUT.stl [CELL]
+
+CELL (m, default 0.0015) sets the facets' size: 0.0005 gives about 230000 triangles.
 """
 import math
 import struct
 import sys
 
-CELL = 0.0015
+CELL = float(sys.argv[2]) if len(sys.argv) > 2 else 0.0015
 
 
 def box(c, ax, ay, az, hx, hy, hz):
@@ -56,7 +58,8 @@ def shaft(r, z0, z1, nth, nz):
 
 
 def main():
-    tris = shaft(0.008, 0.004, 0.13, 96, 84)
+    scale = 0.0015 / CELL
+    tris = shaft(0.008, 0.004, 0.13, int(96 * scale), int(84 * scale))
     for k in range(2):
         phi = math.pi * k
         er = (math.cos(phi), math.sin(phi), 0.0)
