@@ -485,6 +485,31 @@ void FixWallRigid::init_scratch()
     blk_.wall_type = wall_type_;
 }
 
+/* A query of atoms idx[0 .. n) as spheres, gathered into the block scratch, against the
+ * wall in its current pose; the caller sets gap_max and dist_min. */
+rs_query FixWallRigid::sphere_query(const int *idx, int n)
+{
+    double **x = atom->x;
+    const double *radius = atom->radius;
+    for (int k = 0; k < n; k++) {
+        const int i = idx[k];
+        bx_[k] = x[i][0];
+        by_[k] = x[i][1];
+        bz_[k] = x[i][2];
+        brad_[k] = radius[i];
+    }
+    rs_query q;
+    q.n = n;
+    q.slave.x = bx_.data();
+    q.slave.y = by_.data();
+    q.slave.z = bz_.data();
+    q.slave.radius = brad_.data();
+    q.pose = &motion_.pose;
+    q.gap_max = 0.0;
+    q.dist_min = 0.0;
+    return q;
+}
+
 /* Candidates: group atoms whose gap to the surface is within tracking + skin, and every
  * atom that still holds a contact (it must see its contact leave). */
 void FixWallRigid::build_candidates()
@@ -492,7 +517,6 @@ void FixWallRigid::build_candidates()
     cand_.clear();
     const int nlocal = atom->nlocal;
     const int *mask = atom->mask;
-    double **x = atom->x;
     const double *radius = atom->radius;
     rs_error err;
     rs_error_clear(&err);
@@ -504,23 +528,13 @@ void FixWallRigid::build_candidates()
         double rmax = 0.0;
         for (int k = 0; k < n; k++) {
             const int i = bidx_[k];
-            bx_[k] = x[i][0];
-            by_[k] = x[i][1];
-            bz_[k] = x[i][2];
-            brad_[k] = radius[i];
             rmax = std::max(rmax, radius[i]);
             char held = 0;
             for (int j = 0; j < capacity_; j++)
                 held |= row_[i][j] != RS_DIR_EMPTY;
             take_[k] = held;
         }
-        rs_query q;
-        q.n = n;
-        q.slave.x = bx_.data();
-        q.slave.y = by_.data();
-        q.slave.z = bz_.data();
-        q.slave.radius = brad_.data();
-        q.pose = &motion_.pose;
+        rs_query q = sphere_query(bidx_.data(), n);
         q.gap_max = tracking_ + neighbor->skin;
         q.dist_min = -rmax;
         contacts_.n = 0;
@@ -571,8 +585,6 @@ void FixWallRigid::build_candidates()
 void FixWallRigid::build_candidate_lists()
 {
     const int nlocal = atom->nlocal;
-    double **x = atom->x;
-    const double *radius = atom->radius;
     cfirst_.resize(nlocal);
     cnum_.resize(nlocal);
     cids_.clear();
@@ -581,20 +593,7 @@ void FixWallRigid::build_candidate_lists()
     const int nc = (int)cand_.size();
     for (int b0 = 0; b0 < nc; b0 += RS_BLOCK) {
         const int n = std::min(nc - b0, (int)RS_BLOCK);
-        for (int k = 0; k < n; k++) {
-            const int i = cand_[b0 + k];
-            bx_[k] = x[i][0];
-            by_[k] = x[i][1];
-            bz_[k] = x[i][2];
-            brad_[k] = radius[i];
-        }
-        rs_query q;
-        q.n = n;
-        q.slave.x = bx_.data();
-        q.slave.y = by_.data();
-        q.slave.z = bz_.data();
-        q.slave.radius = brad_.data();
-        q.pose = &motion_.pose;
+        rs_query q = sphere_query(cand_.data() + b0, n);
         q.gap_max = tracking_ + lookahead_;
         q.dist_min = -(rglob_ + lookahead_);
         if (rs_surface_candidates(&surf_, &q, neighbor->skin, &cands_, &err) != RS_OK)

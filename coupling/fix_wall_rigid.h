@@ -250,6 +250,7 @@ class FixWallRigid : public Fix
     std::vector<const int *> bcand_;
     std::vector<int> bncand_;
     void build_candidate_lists();
+    rs_query sphere_query(const int *idx, int n);
 
     /* scratch of one block, sized once in init() (init_scratch) */
     rs_contacts contacts_;
