@@ -2,9 +2,9 @@
  * (docs/conventions.md, "Faceted surfaces"), and its table of operations.
  *
  * Every test that two features share is one expression of the shared data, evaluated the
- * same way whichever triangle asks: the side of an edge's plane (p - a).m with a the
- * edge's lower node, and the position along an edge (p - a).(b - a). Across a flat edge
- * the two faces hold opposite normals of one plane. So the regions of a point tile space
+ * same way whichever triangle asks: the side of an edge's plane p.m - c (c = m.a, a the
+ * edge's lower node), and the position along an edge (p - v).(w - v) from either node.
+ * Across a flat edge the two faces hold exactly -m and -c of one plane. So the regions of a point tile space
  * without overlap and without gaps: a point exactly above a shared edge or vertex of a
  * flat region gets one contact, never two. */
 #define _POSIX_C_SOURCE 200809L /* stat */
