@@ -184,11 +184,14 @@ void FixWallRigid::init()
         spin_invariant_ = rs_norm3(ax) < 1e-12 && rs_norm3(rx) < 1e-12 * scale;
     }
     /* Distance bounds hold while the surface stays where it is in space: at rest, or
-     * spun about its own axis without translation. */
+     * spun about its own axis without translation. A kind with candidate lists (MESH)
+     * goes without them: its lists already bound a step's work, and the bounds'
+     * look-ahead would widen every list by a skin. */
     bool translates = !var_vel_[0].empty() || !var_vel_[1].empty() || !var_vel_[2].empty();
     for (int d = 0; d < 3; d++)
         translates = translates || motion_.vel[d] != 0.0;
-    bounds_ok_ = !moving_ || (spin_invariant_ && !translates);
+    bounds_ok_ = (!moving_ || (spin_invariant_ && !translates)) &&
+                 !rs_surface_has_candidates(&surf_);
     lookahead_ = bounds_ok_ ? neighbor->skin : 0.0;
     if (material_props())
         init_material_props();
