@@ -345,12 +345,12 @@ def main():
     if "1d" in want:
         log("## 1d. spheres near the wall, not touching it (gap %g mm, inside the tracking "
             "thickness = skin %g mm; no push)" % (1e3 * GAP_NEAR, 1e3 * SKIN))
-        r = wall_costs(exe, work, n1, ["prim", "ours", "ours_t0", "mesh"], reps, log,
-                       gap=GAP_NEAR)
+        r = wall_costs(exe, work, n1, ["prim", "ours", "ours_t0", "mesh", "ours_mesh"], reps,
+                       log, gap=GAP_NEAR)
         c = r["cost"]
         log("ours (open contacts passed to the law) = %.3g us, ours with tracking 0 = %.3g us,"
-            " prim = %.3g us, mesh = %.3g us"
-            % tuple(1e6 * c[v] for v in ("ours", "ours_t0", "prim", "mesh")))
+            " prim = %.3g us, mesh = %.3g us, ours_mesh = %.3g us"
+            % tuple(1e6 * c[v] for v in ("ours", "ours_t0", "prim", "mesh", "ours_mesh")))
 
     if "1e" in want:
         nb = 2000 if args.quick else N_BOUNCE
