@@ -65,5 +65,6 @@ void rs_cands_free(rs_cands *c)
 {
     free(c->off);
     free(c->ids);
+    free(c->near);
     memset(c, 0, sizeof *c);
 }

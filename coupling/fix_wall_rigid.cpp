@@ -45,7 +45,7 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       capacity_wall_(0.0), heat_wall_(0.0), heat_step_(0.0), fix_temp_(NULL),
       fix_heatflux_(NULL), fix_heatcap_(NULL), vtk_every_(0), vtk_mesh_ok_(false),
       step_checked_(false), row_(NULL), hist_(NULL), nmax_(0), rebuild_(true),
-      lookahead_(0.0), rglob_(0.0), bounds_ok_(false), se_now_(0.0), ncontact_(0),
+      lookahead_(0.0), rglob_(0.0), bounds_ok_(false), list_bounds_(false), se_now_(0.0), ncontact_(0),
       out_step_(-1), out_valid_(false)
 {
     std::memset(&surf_, 0, sizeof surf_);
@@ -185,13 +185,14 @@ void FixWallRigid::init()
     }
     /* Distance bounds hold while the surface stays where it is in space: at rest, or
      * spun about its own axis without translation. A kind with candidate lists (MESH)
-     * goes without them: its lists already bound a step's work, and the bounds'
-     * look-ahead would widen every list by a skin. */
+     * takes them from its lists instead (build_candidate_lists): the query's look-ahead
+     * would widen every list by a skin. */
     bool translates = !var_vel_[0].empty() || !var_vel_[1].empty() || !var_vel_[2].empty();
     for (int d = 0; d < 3; d++)
         translates = translates || motion_.vel[d] != 0.0;
-    bounds_ok_ = (!moving_ || (spin_invariant_ && !translates)) &&
-                 !rs_surface_has_candidates(&surf_);
+    const bool still = !moving_ || (spin_invariant_ && !translates);
+    bounds_ok_ = still && !rs_surface_has_candidates(&surf_);
+    list_bounds_ = still && rs_surface_has_candidates(&surf_);
     lookahead_ = bounds_ok_ ? neighbor->skin : 0.0;
     if (material_props())
         init_material_props();
@@ -608,6 +609,12 @@ void FixWallRigid::build_candidate_lists()
             cfirst_[i] = (int)base + cands_.off[k];
             cnum_[i] = cands_.off[k + 1] - cands_.off[k];
         }
+        if (list_bounds_) { /* each one's smallest gap: the nearest candidate's */
+            double *g = bgap_.data();
+            for (int k = 0; k < n; k++)
+                g[k] = cands_.near[k] - brad_[k];
+            update_bounds(cand_.data() + b0, n, g);
+        }
     }
 }
 
@@ -666,7 +673,7 @@ void FixWallRigid::compute(bool setup_call)
      * primitive wall's). */
     const int *list = cand_.data();
     int nc = (int)cand_.size();
-    if (bounds_ok_ && !setup_call) {
+    if ((bounds_ok_ || list_bounds_) && !setup_call) {
         double **x = atom->x;
         const double *radius = atom->radius;
         active_.resize(cand_.size());

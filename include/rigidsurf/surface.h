@@ -200,9 +200,11 @@ int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
 /// Candidate lists of a block of slaves: slave i's are ids[off[i] .. off[i + 1]).
 /// Arrays grow as needed.
 typedef struct rs_cands {
-    int n;      ///< slaves
-    int *off;   ///< n + 1
-    int *ids;   ///< off[n]
+    int n;        ///< slaves
+    int *off;     ///< n + 1
+    int *ids;     ///< off[n]
+    double *near; ///< n: a lower bound of each slave's distance to the surface (its
+                  ///< nearest candidate's, or the lists' reach when it has none)
     int offcap, idcap;
 } rs_cands;
 

@@ -352,9 +352,13 @@ static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
         return rs_error_set(err, RS_ERR_ARG, "rs_surface_candidates: missing data");
     if (c->offcap < q->n + 1) {
         int *no = realloc(c->off, (size_t)(q->n + 1) * sizeof *no);
-        if (!no)
+        if (no)
+            c->off = no;
+        double *nn = realloc(c->near, (size_t)(q->n + 1) * sizeof *nn);
+        if (nn)
+            c->near = nn;
+        if (!no || !nn)
             return rs_error_set(err, RS_ERR_NOMEM, "out of memory for candidate lists");
-        c->off = no;
         c->offcap = q->n + 1;
     }
     scratch sc;
@@ -363,6 +367,7 @@ static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
     c->n = q->n;
     for (int i = 0; i < q->n && rc == RS_OK; i++) {
         c->off[i] = nid;
+        c->near[i] = 0.0;
         const double r = q->slave.radius ? q->slave.radius[i] : 0.0;
         double p[3];
         slave_local(q, i, p);
@@ -389,9 +394,15 @@ static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
             c->ids = ni;
             c->idcap = cap;
         }
-        for (int k = 0; k < n; k++)
-            if (tri_distance2(m, sc.ids[k], p) <= lim * lim)
+        double near2 = lim * lim;
+        for (int k = 0; k < n; k++) {
+            const double d2 = tri_distance2(m, sc.ids[k], p);
+            if (d2 <= lim * lim) {
                 c->ids[nid++] = sc.ids[k];
+                near2 = fmin(near2, d2);
+            }
+        }
+        c->near[i] = sqrt(near2);
     }
     c->off[q->n] = nid;
     free(sc.ids);

@@ -10,14 +10,40 @@ queried every step. 60 spheres with random velocities bounce in a closed drum un
 trajectories, forces and wall totals to the last bit, over 8000 steps that include many
 impacts, flights inside the skin (8 mm, so that spheres are skipped for long) and
 rebuilds of the neighbour lists; and one sphere dropped on the bottom from 5 mm, skipped
-while it falls and caught at the step it touches.
+while it falls and caught at the step it touches. Both for the REVOLUTION drum (bounds
+from the query's look-ahead) and for the same drum as a MESH (an STL of 96 x 8 quads and
+capped ends; bounds from the candidate lists' nearest triangles).
 """
+import math
 import random
 
 import liglib as L
 
 R, RHO, DT, RC, SKIN = 0.002, 2500.0, 1e-5, 0.03, 0.008
 COLS = "id x y z vx vy vz fx fy fz omegax omegay omegaz"
+SURF = ["surface drum.inp"]  # the wall's surface words of the case being run
+
+
+def drum_stl(n=96, nz=8, zlo=-0.02, zhi=0.02):
+    """The drum as facets, normals inward: a mantle of n x nz quads, nodes on the circle
+    of radius RC, and two fans of caps."""
+    ring = [(RC * math.cos(2 * math.pi * i / n), RC * math.sin(2 * math.pi * i / n))
+            for i in range(n)]
+    tris = []
+    for i in range(n):
+        (x0, y0), (x1, y1) = ring[i], ring[(i + 1) % n]
+        for k in range(nz):
+            za, zb = zlo + (zhi - zlo) * k / nz, zlo + (zhi - zlo) * (k + 1) / nz
+            a, b, c, d = (x0, y0, za), (x0, y0, zb), (x1, y1, zb), (x1, y1, za)
+            tris += [(a, b, c), (a, c, d)]
+        tris.append(((0.0, 0.0, zlo), (x0, y0, zlo), (x1, y1, zlo)))  # bottom, normal +z
+        tris.append(((0.0, 0.0, zhi), (x1, y1, zhi), (x0, y0, zhi)))  # top, normal -z
+    out = ["solid drum"]
+    for t in tris:
+        out.append(" facet normal 0 0 0\n  outer loop")
+        out += ["   vertex %.17g %.17g %.17g" % p for p in t]
+        out.append("  endloop\n endfacet")
+    return "\n".join(out + ["endsolid drum"]) + "\n"
 
 
 def deck(extra, drop=False):
@@ -40,7 +66,7 @@ def deck(extra, drop=False):
 
 def tail(extra, steps):
     d = "fix g all gravity 9.81 vector 0 %s\n" % ("-1 0" if steps == 8000 else "0 -1")
-    d += "fix w all wall/rigid surface drum.inp law hertz type 2%s\n" % extra
+    d += "fix w all wall/rigid %s law hertz type 2%s\n" % (SURF[0], extra)
     d += "fix integr all nve/sphere\n"
     d += L.dump_lines("d", 1000, "traj.dump", COLS)
     d += ('variable fw equal f_w[1]+f_w[2]+f_w[3]\n'
@@ -51,21 +77,26 @@ def tail(extra, steps):
 
 def body(s):
     s.write("drum.inp", L.drum(RC, -0.02, 0.02, caps=True))
-    for case, drop, nd in (("bed", False, 9), ("drop", True, 6)):
-        out = {}
-        for tag, extra in (("static", ""), ("moving", " rotate origin 0 0 0 axis 1 0 0 omega 0")):
-            s.run(case + "_" + tag, deck(extra, drop))
-            out[tag] = (open(s.path("traj.dump")).read(), open(s.path("wall.txt")).read())
-            s.ck.check("%s, %s: dump written" % (case, tag),
-                       out[tag][0].count("ITEM: TIMESTEP") == nd)
-        st, mv = out["static"], out["moving"]
-        s.ck.check(case + ": trajectories and forces identical to the last bit",
-                   st[0] == mv[0], why="the dumps differ")
-        s.ck.check(case + ": wall force totals identical to the last bit", st[1] == mv[1],
-                   why="the wall totals differ")
-        fw = [float(l) for l in st[1].splitlines() if l.strip() and not l.startswith("#")]
-        s.ck.check(case + ": the wall carried forces", any(abs(f) > 0 for f in fw),
-                   "%d samples" % len(fw))
+    s.write("drum.stl", drum_stl())
+    for kind, surf in (("revolution", "surface drum.inp"), ("mesh", "surface inline mesh drum.stl")):
+        SURF[0] = surf
+        for case, drop, nd in (("bed", False, 9), ("drop", True, 6)):
+            name = kind + " " + case
+            out = {}
+            for tag, extra in (("static", ""),
+                               ("moving", " rotate origin 0 0 0 axis 1 0 0 omega 0")):
+                s.run(kind + "_" + case + "_" + tag, deck(extra, drop))
+                out[tag] = (open(s.path("traj.dump")).read(), open(s.path("wall.txt")).read())
+                s.ck.check("%s, %s: dump written" % (name, tag),
+                           out[tag][0].count("ITEM: TIMESTEP") == nd)
+            st, mv = out["static"], out["moving"]
+            s.ck.check(name + ": trajectories and forces identical to the last bit",
+                       st[0] == mv[0], why="the dumps differ")
+            s.ck.check(name + ": wall force totals identical to the last bit", st[1] == mv[1],
+                       why="the wall totals differ")
+            fw = [float(l) for l in st[1].splitlines() if l.strip() and not l.startswith("#")]
+            s.ck.check(name + ": the wall carried forces", any(abs(f) > 0 for f in fw),
+                       "%d samples" % len(fw))
 
 
 if __name__ == "__main__":
