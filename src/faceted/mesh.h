@@ -33,10 +33,6 @@ typedef struct rs_mesh {
     int *el_t0;         ///< nel + 1: triangles of element k are el_t0[k] .. el_t0[k+1]-1
     int *el_nodes;      ///< 4 nel: the element's nodes (a triangle repeats its first)
     int *el_nnode;      ///< nel: 3 or 4
-    double *tn;         ///< 3 nt unit normals
-    double *tm;         ///< 9 nt: for edge slot j of triangle t (nodes j, j+1), the unit
-                        ///< in-plane normal pointing into t; across a flat edge the second
-                        ///< face holds exactly the negated vector of the first
     int *tedge;         ///< 3 nt: edge of each slot
     int *edge_v;        ///< 2 ne: its nodes, lower index first
     int *edge_f0;       ///< ne + 1: faces of edge e are edge_f[edge_f0[e] ..]

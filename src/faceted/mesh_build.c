@@ -39,8 +39,6 @@ void rs_mesh_free(rs_mesh *m)
     free(m->el_t0);
     free(m->el_nodes);
     free(m->el_nnode);
-    free(m->tn);
-    free(m->tm);
     free(m->tedge);
     free(m->edge_v);
     free(m->edge_f0);
@@ -309,25 +307,28 @@ static int degenerate(const double *xyz, const int *v, double size)
  * vertices' pseudo-normals and edge lists. */
 static int finish_topology(rs_mesh *m, int two_sided)
 {
-    m->tn = xmalloc(3 * (size_t)m->nt, sizeof(double));
-    m->tm = xmalloc(9 * (size_t)m->nt, sizeof(double));
+    /* the faces' unit normals and, for edge slot j of triangle t (nodes j, j + 1), its
+     * unit in-plane normal into t: the records' ingredients */
+    double *tn = xmalloc(3 * (size_t)m->nt, sizeof(double));
+    double *tm = xmalloc(9 * (size_t)m->nt, sizeof(double));
+    int rc = -1;
     m->edge_kind = xmalloc((size_t)m->ne, 1);
     m->vert_e0 = calloc((size_t)m->nv + 2, sizeof(int));
     m->vert_e = xmalloc(2 * (size_t)m->ne, sizeof(int));
     m->vpn = calloc(3 * (size_t)m->nv + 1, sizeof(double));
     m->vopen = calloc((size_t)m->nv + 1, 1);
-    if (!m->tn || !m->tm || !m->edge_kind || !m->vert_e0 || !m->vert_e || !m->vpn ||
+    if (!tn || !tm || !m->edge_kind || !m->vert_e0 || !m->vert_e || !m->vpn ||
         !m->vopen)
-        return -1;
+        goto done;
     for (int t = 0; t < m->nt; t++) {
         double a2;
-        tri_normal(m->xyz, m->tri + 3 * t, m->tn + 3 * t, &a2);
+        tri_normal(m->xyz, m->tri + 3 * t, tn + 3 * t, &a2);
         for (int j = 0; j < 3; j++) {
             const double *a = m->xyz + 3 * m->tri[3 * t + j],
                          *b = m->xyz + 3 * m->tri[3 * t + (j + 1) % 3];
             const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-            double *mm = m->tm + 9 * t + 3 * j;
-            rs_cross3(m->tn + 3 * t, u, mm);
+            double *mm = tm + 9 * t + 3 * j;
+            rs_cross3(tn + 3 * t, u, mm);
             const double l = rs_norm3(mm);
             for (int d = 0; d < 3; d++)
                 mm[d] /= l;
@@ -346,7 +347,7 @@ static int finish_topology(rs_mesh *m, int two_sided)
             continue;
         }
         const int A = m->edge_f[m->edge_f0[e]], B = m->edge_f[m->edge_f0[e] + 1];
-        const double *nA = m->tn + 3 * A, *nB = m->tn + 3 * B;
+        const double *nA = tn + 3 * A, *nB = tn + 3 * B;
         double c[3];
         rs_cross3(nA, nB, c);
         const double cosang = rs_dot3(nA, nB);
@@ -359,7 +360,7 @@ static int finish_topology(rs_mesh *m, int two_sided)
         if (ang <= RS_MESH_FLAT_ANGLE) {
             m->edge_kind[e] = RS_EDGE_FLAT;
             for (int d = 0; d < 3; d++) /* one plane between the two faces, exactly */
-                m->tm[9 * B + 3 * jB + d] = -m->tm[9 * A + 3 * jA + d];
+                tm[9 * B + 3 * jB + d] = -tm[9 * A + 3 * jA + d];
             continue;
         }
         const double *a = m->xyz + 3 * m->tri[3 * A + jA],
@@ -376,7 +377,7 @@ static int finish_topology(rs_mesh *m, int two_sided)
         m->vert_e0[v + 1] += m->vert_e0[v];
     int *fill = xmalloc((size_t)m->nv, sizeof(int));
     if (!fill)
-        return -1;
+        goto done;
     memcpy(fill, m->vert_e0, (size_t)m->nv * sizeof(int));
     for (int e = 0; e < m->ne; e++) {
         m->vert_e[fill[m->edge_v[2 * e]]++] = e;
@@ -395,7 +396,7 @@ static int finish_topology(rs_mesh *m, int two_sided)
             rs_cross3(u, w, c);
             const double ang = atan2(rs_norm3(c), rs_dot3(u, w));
             for (int d = 0; d < 3; d++)
-                m->vpn[3 * v + d] += ang * m->tn[3 * t + d];
+                m->vpn[3 * v + d] += ang * tn[3 * t + d];
         }
     for (int v = 0; v < m->nv; v++) {
         const double l = rs_norm3(m->vpn + 3 * v);
@@ -406,10 +407,10 @@ static int finish_topology(rs_mesh *m, int two_sided)
     m->trec = xmalloc(RS_MESH_TREC * (size_t)m->nt, sizeof(double));
     m->vfirst = xmalloc((size_t)m->nv, sizeof(int));
     if (!m->trec || !m->vfirst)
-        return -1;
+        goto done;
     m->tnbr = xmalloc(3 * (size_t)m->nt, sizeof(int));
     if (!m->tnbr)
-        return -1;
+        goto done;
     for (int t = 0; t < m->nt; t++)
         for (int j = 0; j < 3; j++) {
             const int e = m->tedge[3 * t + j];
@@ -430,11 +431,11 @@ static int finish_topology(rs_mesh *m, int two_sided)
     for (int t = 0; t < m->nt; t++) {
         double *r = m->trec + RS_MESH_TREC * (size_t)t;
         for (int d = 0; d < 3; d++) {
-            r[d] = m->tn[3 * t + d];
+            r[d] = tn[3 * t + d];
             r[3 + d] = m->xyz[3 * m->tri[3 * t] + d];
         }
         for (int j = 0; j < 3; j++) {
-            const double *mm = m->tm + 9 * t + 3 * j;
+            const double *mm = tm + 9 * t + 3 * j;
             const double *a = m->xyz + 3 * m->edge_v[2 * m->tedge[3 * t + j]];
             double *rj = r + 6 + 4 * j;
             for (int d = 0; d < 3; d++)
@@ -442,7 +443,11 @@ static int finish_topology(rs_mesh *m, int two_sided)
             rj[3] = a[0] * mm[0] + a[1] * mm[1] + a[2] * mm[2];
         }
     }
-    return 0;
+    rc = 0;
+done:
+    free(tn);
+    free(tm);
+    return rc;
 }
 
 int rs_mesh_build(const rs_soup *soup, double scale, const double a[3], const double ex[3],

@@ -189,7 +189,7 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], const int 
     for (int k = 0; k < n; k++) {
         const int t = ids[k];
         const int *tv = m->tri + 3 * t;
-        const double *nt = m->tn + 3 * t;
+        const double *nt = m->trec + RS_MESH_TREC * (size_t)t; /* its normal */
         double h, sd[3];
         if (!(tri_bound(m, t, p, &h, sd) <= lim * lim))
             continue;
@@ -243,7 +243,7 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], const int 
                 double pn[3] = {0.0, 0.0, 0.0}; /* the faces' mean normal */
                 for (int q = 0; q < nf && q < 2; q++)
                     for (int d = 0; d < 3; d++)
-                        pn[d] += m->tn[3 * m->edge_f[f0 + q] + d];
+                        pn[d] += m->trec[RS_MESH_TREC * (size_t)m->edge_f[f0 + q] + d];
                 double sg = 1.0;
                 if (one_sided && nf <= 2) {
                     if (rs_dot3(dv, pn) < 0.0) {
