@@ -113,11 +113,11 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
                         &tout_, &err) != RS_OK) {
         /* More contacts than slots: the tracker changed nothing, so the slots grow and
          * the block runs again (a sphere in a mesh's pocket holds one per face). */
-        if (err.code == RS_ERR_CAPACITY && grow_capacity(capacity_ + 1)) {
-            process_block(idx, n, setup_call);
-            return;
-        }
         if (err.code == RS_ERR_CAPACITY) {
+            if (grow_capacity(capacity_ + 1)) {
+                process_block(idx, n, setup_call);
+                return;
+            }
             std::ostringstream o;
             o << err.msg << "; the slots cannot grow past " << max_capacity()
               << ", the most LIGGGHTS's atom exchange carries with " << nstatev_

@@ -26,16 +26,11 @@ import subprocess
 import sys
 import tempfile
 
+from bench_walls import DECK_HEAD  # the decks' common start
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.join(HERE, "..", "..")
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-HEAD = """atom_style granular
-atom_modify map array
-boundary f f f
-newton off
-communicate single vel yes
-units si
-"""
 MATERIALS = """neighbor 0.002 bin
 neigh_modify delay 0
 fix m1 all property/global youngsModulus peratomtype 5.0e6 5.0e6
@@ -75,7 +70,7 @@ def main():
     with open(os.path.join(ROOT, "examples", "mixer", "bowl.inp")) as f, \
             open(os.path.join(wd, "bowl.inp"), "w") as g:
         g.write(f.read())
-    settle = HEAD + "region box block -0.095 0.095 -0.095 0.095 -0.005 0.16 units box\n"
+    settle = DECK_HEAD + "region box block -0.095 0.095 -0.095 0.095 -0.005 0.16 units box\n"
     settle += "create_box 2 box\n" + MATERIALS
     settle += "fix blade all wall/rigid surface inline mesh blade.stl law hertz type 2\n"
     settle += ("fix pts all particletemplate/sphere 15485863 atom_type 1 density constant 2500 "

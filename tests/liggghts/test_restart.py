@@ -96,6 +96,25 @@ def body(s):
     pocket_case(s)
 
 
+def restart_case(s, tag, atoms, lines, ncontacts, what):
+    """TAG_full: 2N steps in one run (f_w[7], the touching contacts, printed at step N);
+    TAG_first: N steps and write_restart; TAG_restarted: read_restart and N steps. At the
+    restart point the sphere holds ncontacts, and both runs end identical."""
+    full = atoms + lines
+    full += 'fix pr all print %d "NC ${nc}" screen yes\n' % N
+    full += "run %d\nunfix pr\n" % N
+    full += L.dump_lines("d", N, tag + "_full.dump") + "run %d\n" % N
+    _, out = s.run(tag + "_full", full)
+    s.run(tag + "_first", atoms + lines + "run %d\nwrite_restart %s.restart\n" % (N, tag))
+    second = restarted_deck(tag + ".restart", lines)
+    second += L.dump_lines("d", N, tag + "_restarted.dump") + "run %d\n" % N
+    s.run(tag + "_restarted", second)
+    nc = [float(l.split()[1]) for l in out.splitlines() if l.startswith("NC ")]
+    s.ck.check("%s: at the restart point the sphere holds %s" % (tag, what),
+               len(nc) > 0 and nc[-1] == float(ncontacts), "active contacts %s" % nc)
+    check_identical(s, tag)
+
+
 def pocket_case(s):
     """The apex of a 12-facet cone: the slots grow past the 4 of the fix line."""
     ring = [(0.05 * math.tan(math.radians(30)) * math.cos(2 * math.pi * k / 12),
@@ -119,19 +138,7 @@ def pocket_case(s):
              "fix w all wall/rigid surface inline mesh cone.stl law hertz type 2 "
              "rotate origin 0 0 0 axis 0 0 1 omega 3\n"
              "fix i all nve/sphere\nvariable nc equal f_w[7]\n")
-    full = atoms() + lines
-    full += 'fix pr all print %d "NC ${nc}" screen yes\n' % N
-    full += "run %d\nunfix pr\n" % N
-    full += L.dump_lines("d", N, "pocket_full.dump") + "run %d\n" % N
-    _, out = s.run("pocket_full", full)
-    s.run("pocket_first", atoms() + lines + "run %d\nwrite_restart pocket.restart\n" % N)
-    second = restarted_deck("pocket.restart", lines)
-    second += L.dump_lines("d", N, "pocket_restarted.dump") + "run %d\n" % N
-    s.run("pocket_restarted", second)
-    nc = [float(l.split()[1]) for l in out.splitlines() if l.startswith("NC ")]
-    s.ck.check("pocket: at the restart point the sphere holds 12 contacts (grown slots)",
-               len(nc) > 0 and nc[-1] == 12.0, "active contacts %s" % nc)
-    check_identical(s, "pocket")
+    restart_case(s, "pocket", atoms(), lines, 12, "12 contacts (grown slots)")
 
 
 def corner_case(s):
@@ -152,21 +159,7 @@ def corner_case(s):
                 "fix push all addforce 0 0 %r\n" % (-9.81 * mass) + wall + "\n"
                 "fix i all nve/sphere\nvariable nc equal f_w[7]\n")
 
-    full = atoms() + lines()
-    full += 'fix pr all print %d "NC ${nc}" screen yes\n' % N
-    full += "run %d\nunfix pr\n" % N
-    full += L.dump_lines("d", N, "corner_full.dump") + "run %d\n" % N
-    _, out = s.run("corner_full", full)
-    first = atoms() + lines() + "run %d\nwrite_restart corner.restart\n" % N
-    s.run("corner_first", first)
-    second = restarted_deck("corner.restart", lines())
-    second += L.dump_lines("d", N, "corner_restarted.dump") + "run %d\n" % N
-    s.run("corner_restarted", second)
-
-    nc = [float(l.split()[1]) for l in out.splitlines() if l.startswith("NC ")]
-    s.ck.check("corner: at the restart point the sphere holds two contacts (two slots)",
-               len(nc) > 0 and nc[-1] == 2.0, "active contacts %s" % nc)
-    check_identical(s, "corner")
+    restart_case(s, "corner", atoms(), lines(), 2, "two contacts (two slots)")
 
 
 if __name__ == "__main__":

@@ -749,6 +749,17 @@ static void resultant(const rs_surface *s, const double c[3], double r, double F
     rs_contacts_free(&k);
 }
 
+/* |F(b) - F(a)| / |F(a)| for the resultant at sphere centres a and b; infinite where
+ * the sphere at a has no force (the case then tests nothing). */
+static double jump_across(const rs_surface *s, double r, const double a[3], const double b[3])
+{
+    double Fa[3], Fb[3];
+    resultant(s, a, r, Fa);
+    resultant(s, b, r, Fb);
+    const double d[3] = {Fb[0] - Fa[0], Fb[1] - Fa[1], Fb[2] - Fa[2]};
+    return rs_norm3(Fa) > 0.0 ? rs_norm3(d) / rs_norm3(Fa) : INFINITY;
+}
+
 /* No force jumps at edges: a sphere pressed on a cylinder of 64 x 8 planar quads, from
  * outside (convex hoop edges: face, edge and face contacts) and from inside (concave:
  * one and two face contacts), at every hoop edge and across the flat edges along the
@@ -780,24 +791,17 @@ static void no_force_jump_at_edges(void)
         const double r = 0.2, rc = inside ? 1.0 - r + 0.01 : 1.0 + r - 0.01;
         double worst = 0.0;
         for (int i = 0; i < nh; i++) {
-            const double th = 2 * RS_PI * i / nh;
-            double Fa[3], Fb[3];
-            for (int side = 0; side < 2; side++) {
-                const double t = th + (side ? 1e-12 : -1e-12);
-                const double c[3] = {rc * cos(t), rc * sin(t), 0.1 + 0.01 * i / nh};
-                resultant(&s, c, r, side ? Fb : Fa);
-            }
-            const double d[3] = {Fb[0] - Fa[0], Fb[1] - Fa[1], Fb[2] - Fa[2]};
-            ENSURE(rs_norm3(Fa) > 0.0);
-            worst = fmax(worst, rs_norm3(d) / rs_norm3(Fa));
+            const double th = 2 * RS_PI * i / nh, e = 1e-12;
+            /* across the hoop edge at th */
+            const double z = 0.1 + 0.01 * i / nh;
+            const double ha[3] = {rc * cos(th - e), rc * sin(th - e), z};
+            const double hb[3] = {rc * cos(th + e), rc * sin(th + e), z};
+            worst = fmax(worst, jump_across(&s, r, ha, hb));
             /* across the flat edge z = 0.25 along the axis, mid-face in the hoop */
-            for (int side = 0; side < 2; side++) {
-                const double t = th + RS_PI / nh, z = 0.25 + (side ? 1e-12 : -1e-12);
-                const double c[3] = {rc * cos(t), rc * sin(t), z};
-                resultant(&s, c, r, side ? Fb : Fa);
-            }
-            const double dz[3] = {Fb[0] - Fa[0], Fb[1] - Fa[1], Fb[2] - Fa[2]};
-            worst = fmax(worst, rs_norm3(dz) / rs_norm3(Fa));
+            const double t = th + RS_PI / nh;
+            const double za[3] = {rc * cos(t), rc * sin(t), 0.25 - e};
+            const double zb[3] = {rc * cos(t), rc * sin(t), 0.25 + e};
+            worst = fmax(worst, jump_across(&s, r, za, zb));
         }
         rs_surface_free(&s);
         if (!(worst < 1e-9))
