@@ -126,24 +126,39 @@ void rs_analytic_free(rs_surface *s)
     s->profile.vkind = NULL;
 }
 
-static const rs_surface_ops segments_ops = {"SEGMENTS",         2,
-                                            RS_FRAME_TRAVEL,    rs_analytic_closest,
-                                            analytic_adjacent,  analytic_bounds,
-                                            analytic_spin_axis, rs_analytic_triangulate,
-                                            rs_analytic_free,   NULL,
+static const rs_surface_ops segments_ops = {"SEGMENTS",
+                                            2,
+                                            RS_FRAME_TRAVEL,
+                                            rs_analytic_closest,
+                                            analytic_adjacent,
+                                            analytic_bounds,
+                                            analytic_spin_axis,
+                                            rs_analytic_triangulate,
+                                            rs_analytic_free,
+                                            NULL,
                                             NULL};
-static const rs_surface_ops cylinder_ops = {"CYLINDER",         3,
-                                            RS_FRAME_GENERATOR, rs_analytic_closest,
-                                            analytic_adjacent,  analytic_bounds,
-                                            analytic_spin_axis, rs_analytic_triangulate,
-                                            rs_analytic_free,   NULL,
+static const rs_surface_ops cylinder_ops = {"CYLINDER",
+                                            3,
+                                            RS_FRAME_GENERATOR,
+                                            rs_analytic_closest,
+                                            analytic_adjacent,
+                                            analytic_bounds,
+                                            analytic_spin_axis,
+                                            rs_analytic_triangulate,
+                                            rs_analytic_free,
+                                            NULL,
                                             NULL};
-static const rs_surface_ops revolution_ops = {"REVOLUTION",       3,
-                                              RS_FRAME_TRAVEL,    rs_analytic_closest,
-                                              analytic_adjacent,  analytic_bounds,
-                                              analytic_spin_axis, rs_analytic_triangulate,
-                                              rs_analytic_free,   NULL,
-                                            NULL};
+static const rs_surface_ops revolution_ops = {"REVOLUTION",
+                                              3,
+                                              RS_FRAME_TRAVEL,
+                                              rs_analytic_closest,
+                                              analytic_adjacent,
+                                              analytic_bounds,
+                                              analytic_spin_axis,
+                                              rs_analytic_triangulate,
+                                              rs_analytic_free,
+                                              NULL,
+                                              NULL};
 
 const rs_surface_ops *rs_analytic_ops(rs_surface_kind kind)
 {

@@ -20,8 +20,8 @@
  * returned. Messages read "ORIGIN:LINE: what was expected". */
 #define _POSIX_C_SOURCE 200809L /* fileno, fstat */
 
-#include "profile.h"
 #include "mesh.h"
+#include "profile.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -308,15 +308,16 @@ static int keyword_line(const parser *ps, const tok *t, int nt, draft *d)
                 if (rc)
                     return rc;
                 if (!(d->scale > 0.0) || !(d->scale <= RS_COORD_MAX))
-                    return perr(ps, RS_ERR_PARSE, "expected SCALE > 0 (a finite number)%s%s",
-                                NULL, NULL);
+                    return perr(ps, RS_ERR_PARSE,
+                                "expected SCALE > 0 (a finite number)%s%s", NULL, NULL);
             }
         } else {
             showtok(&k, show, sizeof show);
-            return perr(ps, RS_ERR_PARSE,
-                        "unknown parameter '%s' (expected TYPE, NAME, FILLET RADIUS, SIDES, "
-                        "EXTENT, FILE or SCALE)%s",
-                        show, NULL);
+            return perr(
+                ps, RS_ERR_PARSE,
+                "unknown parameter '%s' (expected TYPE, NAME, FILLET RADIUS, SIDES, "
+                "EXTENT, FILE or SCALE)%s",
+                show, NULL);
         }
         if (dup) {
             showtok(&k, show, sizeof show);
@@ -380,10 +381,11 @@ static int data_line(const parser *ps, tok *t, int nt, draft *d)
         if (nt != 9) {
             char cnt[16];
             snprintf(cnt, sizeof cnt, "%d", nt);
-            return perr(ps, RS_ERR_PARSE,
-                        "expected the placement a, b, c (9 numbers: ax, ay, az, bx, by, bz, "
-                        "cx, cy, cz), found %s values%s",
-                        cnt, NULL);
+            return perr(
+                ps, RS_ERR_PARSE,
+                "expected the placement a, b, c (9 numbers: ax, ay, az, bx, by, bz, "
+                "cx, cy, cz), found %s values%s",
+                cnt, NULL);
         }
         int rc = parse_numbers(ps, t, nt, d->abc);
         if (rc)

@@ -88,8 +88,8 @@ int main(int argc, char **argv)
             seed ^= seed << 13, seed ^= seed >> 7, seed ^= seed << 17;
             dir[i][k] = (double)(seed >> 11) / 9007199254740992.0 * 2.0 - 1.0;
         }
-        const double l = sqrt(dir[i][0] * dir[i][0] + dir[i][1] * dir[i][1] +
-                              dir[i][2] * dir[i][2]);
+        const double l =
+            sqrt(dir[i][0] * dir[i][0] + dir[i][1] * dir[i][1] + dir[i][2] * dir[i][2]);
         for (int k = 0; k < 3; k++)
             dir[i][k] /= l;
     }

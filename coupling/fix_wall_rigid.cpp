@@ -45,8 +45,8 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       capacity_wall_(0.0), heat_wall_(0.0), heat_step_(0.0), fix_temp_(NULL),
       fix_heatflux_(NULL), fix_heatcap_(NULL), vtk_every_(0), vtk_mesh_ok_(false),
       step_checked_(false), row_(NULL), hist_(NULL), nmax_(0), rebuild_(true),
-      lookahead_(0.0), rglob_(0.0), bounds_ok_(false), list_bounds_(false), se_now_(0.0), ncontact_(0),
-      out_step_(-1), out_valid_(false)
+      lookahead_(0.0), rglob_(0.0), bounds_ok_(false), list_bounds_(false), se_now_(0.0),
+      ncontact_(0), out_step_(-1), out_valid_(false)
 {
     std::memset(&surf_, 0, sizeof surf_);
     std::memset(&loaded_, 0, sizeof loaded_);

@@ -239,7 +239,7 @@ class FixWallRigid : public Fix
     double lookahead_;
     double rglob_; ///< the largest radius of the candidates (their depth limit with bounds)
     bool bounds_ok_;
-    bool list_bounds_; // the candidate lists give the bounds (a static MESH)
+    bool list_bounds_;         // the candidate lists give the bounds (a static MESH)
     std::vector<double> bgap_; // per particle of a block: its smallest gap
     void update_bounds(const int *idx, int n, const double *gmin);
     void keep_tracked(const int *idx, int n, double dist_min);

@@ -294,7 +294,8 @@ void FixWallRigid::parse(int narg, char **arg)
         fail(std::string("keyword 'surface': ") + err.msg);
     surf_ok_ = true;
     if (surf_.warning[0] && comm->me == 0)
-        error->warning(FLERR, (std::string("fix wall/rigid: surface: ") + surf_.warning).c_str());
+        error->warning(FLERR,
+                       (std::string("fix wall/rigid: surface: ") + surf_.warning).c_str());
 
     /* State variables. */
     const int law_nsv = law_->nstatev;
@@ -373,7 +374,8 @@ int FixWallRigid::parse_surface(int narg, char **arg, int iarg)
         return fmt(p[0]) + ", " + fmt(p[1]) + ", " + fmt(p[2]);
     };
     if (kind == "mesh") {
-        /* surface inline mesh FILE [scale s] [place ax ay az bx by bz cx cy cz] [sides n] */
+        /* surface inline mesh FILE [scale s] [place ax ay az bx by bz cx cy cz] [sides n]
+         */
         if (iarg >= narg || is_keyword(arg[iarg]))
             fail("'surface inline mesh' expects a mesh FILE (.stl, .obj, .off or .ply)");
         std::string file = arg[iarg++];
@@ -466,7 +468,8 @@ int FixWallRigid::parse_surface(int narg, char **arg, int iarg)
                      k + "'");
         }
     } else {
-        fail("'surface inline' expects 'revolution', 'cylinder', 'segments' or 'mesh', got '" +
+        fail("'surface inline' expects 'revolution', 'cylinder', 'segments' or 'mesh', got "
+             "'" +
              kind + "'");
     }
     if (iarg >= narg)

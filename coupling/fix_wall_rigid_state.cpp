@@ -10,8 +10,8 @@
 
 #include <algorithm>
 #include <cstring>
-#include <vector>
 #include <sstream>
+#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -246,7 +246,7 @@ int FixWallRigid::unpack_sized(int i, const double *buf)
     const ptrdiff_t stride = slot_stride();
     const double *row = buf + 1, *slots = row + cin + rest;
     clear_row(i);
-    std::memcpy(row_[i], row, sizeof(double) * cin);                     /* directory */
+    std::memcpy(row_[i], row, sizeof(double) * cin);                    /* directory */
     std::memcpy(row_[i] + capacity_, row + cin, sizeof(double) * rest); /* T, fields */
     double *h = slot0(i);
     for (int j = 0; j < cin; j++)

@@ -29,8 +29,8 @@ int rs_surface_has_candidates(const rs_surface *s)
     return s && s->ops && s->ops->candidates && s->ops->closest_among;
 }
 
-int rs_surface_candidates(const rs_surface *s, const rs_query *q, double extra,
-                          rs_cands *c, rs_error *err)
+int rs_surface_candidates(const rs_surface *s, const rs_query *q, double extra, rs_cands *c,
+                          rs_error *err)
 {
     if (!rs_surface_has_candidates(s) || !q || !c)
         return rs_error_set(err, RS_ERR_ARG, "rs_surface_candidates: no candidate lists");

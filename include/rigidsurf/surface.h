@@ -212,8 +212,8 @@ typedef struct rs_cands {
 int rs_surface_has_candidates(const rs_surface *s);
 /// The candidates of every slave of q within its reach (radius + gap_max, and down to
 /// dist_min) grown by extra: valid while slaves and master move less than extra in all.
-int rs_surface_candidates(const rs_surface *s, const rs_query *q, double extra,
-                          rs_cands *c, rs_error *err);
+int rs_surface_candidates(const rs_surface *s, const rs_query *q, double extra, rs_cands *c,
+                          rs_error *err);
 /// rs_surface_query testing slave i against its candidates cand[i][0 .. ncand[i]) only;
 /// kinds without candidate lists answer as rs_surface_query.
 int rs_surface_query_among(const rs_surface *s, const rs_query *q, const int *const *cand,

@@ -126,7 +126,8 @@ static int fail(char *msg, size_t cap, const char *file, int line, const char *w
 static int read_file(part *pt, const char *path, int depth, char *msg, size_t cap)
 {
     if (depth > MAX_DEPTH)
-        return fail(msg, cap, path, 0, "*INCLUDE nested too deep (expected at most 8 levels)");
+        return fail(msg, cap, path, 0,
+                    "*INCLUDE nested too deep (expected at most 8 levels)");
     FILE *f = fopen(path, "r");
     if (!f) {
         snprintf(msg, cap, "%s: cannot open: %s", path, strerror(errno));
@@ -194,7 +195,8 @@ static int read_file(part *pt, const char *path, int depth, char *msg, size_t ca
                 }
                 const char *slash = strrchr(fname, '/');
                 if (inc[0] != '/' && slash)
-                    snprintf(full, sizeof full, "%.*s/%s", (int)(slash - fname), fname, inc);
+                    snprintf(full, sizeof full, "%.*s/%s", (int)(slash - fname), fname,
+                             inc);
                 else
                     snprintf(full, sizeof full, "%s", inc);
                 if ((rc = read_file(pt, full, depth + 1, msg, cap)) != 0)
@@ -216,8 +218,7 @@ static int read_file(part *pt, const char *path, int depth, char *msg, size_t ca
         }
         if (mode == NODES) {
             if (nf < 3 || nf > 4) {
-                rc = fail(msg, cap, fname, line,
-                          "expected a node line: number, x, y[, z]");
+                rc = fail(msg, cap, fname, line, "expected a node line: number, x, y[, z]");
                 break;
             }
             void **arr[2] = {(void **)&pt->xyz, (void **)&pt->nid};
@@ -245,8 +246,10 @@ static int read_file(part *pt, const char *path, int depth, char *msg, size_t ca
             pt->nid[pt->np++] = id;
         } else {
             if (nf != nn + 1) {
-                snprintf(buf, sizeof buf, "expected an R3D%d line: number and %d nodes, found "
-                                          "%d values", nn, nn, nf);
+                snprintf(buf, sizeof buf,
+                         "expected an R3D%d line: number and %d nodes, found "
+                         "%d values",
+                         nn, nn, nf);
                 rc = fail(msg, cap, fname, line, buf);
                 break;
             }
@@ -305,8 +308,9 @@ int rs_abaqus_read_soup(const char *path, rs_soup *soup, char *msg, size_t cap)
     int rc = read_file(&pt, path, 0, msg, cap);
     node_id *map = NULL;
     if (!rc && (pt.np == 0 || pt.ne == 0)) {
-        snprintf(msg, cap, "%s: %d nodes and %d R3D3/R3D4 elements (expected a rigid part: "
-                           "*NODE and *ELEMENT, TYPE=R3D3 or R3D4)",
+        snprintf(msg, cap,
+                 "%s: %d nodes and %d R3D3/R3D4 elements (expected a rigid part: "
+                 "*NODE and *ELEMENT, TYPE=R3D3 or R3D4)",
                  path, pt.np, pt.ne);
         rc = -1;
     }
@@ -328,8 +332,9 @@ int rs_abaqus_read_soup(const char *path, rs_soup *soup, char *msg, size_t cap)
         qsort(map, (size_t)pt.np, sizeof *map, cmp_node);
         for (int i = 1; i < pt.np; i++)
             if (map[i].id == map[i - 1].id) {
-                snprintf(msg, cap, "%s: node %ld defined twice (expected unique node numbers)",
-                         path, map[i].id);
+                snprintf(msg, cap,
+                         "%s: node %ld defined twice (expected unique node numbers)", path,
+                         map[i].id);
                 rc = -1;
                 break;
             }
@@ -342,10 +347,12 @@ int rs_abaqus_read_soup(const char *path, rs_soup *soup, char *msg, size_t cap)
             soup->off[e] = k;
             for (int c = 0; c < pt.enn[e] && !rc; c++) {
                 const node_id key = {pt.elem[4 * e + c], 0};
-                const node_id *hit = bsearch(&key, map, (size_t)pt.np, sizeof *map, cmp_node);
+                const node_id *hit =
+                    bsearch(&key, map, (size_t)pt.np, sizeof *map, cmp_node);
                 if (!hit) {
-                    snprintf(msg, cap, "%s:%d: element %ld names node %d, which no *NODE "
-                                       "defines (expected defined nodes)",
+                    snprintf(msg, cap,
+                             "%s:%d: element %ld names node %d, which no *NODE "
+                             "defines (expected defined nodes)",
                              pt.efile[e], pt.eline[e], pt.eid[e], pt.elem[4 * e + c]);
                     rc = -1;
                     break;

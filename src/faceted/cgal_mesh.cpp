@@ -19,7 +19,8 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace
+{
 
 typedef CGAL::Simple_cartesian<double> K;
 typedef K::Point_3 Point;
@@ -40,9 +41,18 @@ struct BoxOut {
     int *ids;
     int cap;
     int *count;
-    BoxOut &operator*() { return *this; }
-    BoxOut &operator++() { return *this; }
-    BoxOut operator++(int) { return *this; }
+    BoxOut &operator*()
+    {
+        return *this;
+    }
+    BoxOut &operator++()
+    {
+        return *this;
+    }
+    BoxOut operator++(int)
+    {
+        return *this;
+    }
     BoxOut &operator=(const TriIt &it)
     {
         if (*count < cap)
@@ -91,7 +101,8 @@ extern "C" int rs_cgal_read_soup(const char *path, rs_soup *soup, char *msg, siz
             return -1;
         }
         if (pts.size() > (std::size_t)(1 << 28) || polys.size() > (std::size_t)(1 << 27)) {
-            std::snprintf(msg, cap, "%zu points and %zu polygons (expected at most %d and %d)",
+            std::snprintf(msg, cap,
+                          "%zu points and %zu polygons (expected at most %d and %d)",
                           pts.size(), polys.size(), 1 << 28, 1 << 27);
             return -1;
         }
@@ -176,7 +187,10 @@ extern "C" void *rs_cgal_tree_new(int nt, const double *xyz, const int *tri)
     }
 }
 
-extern "C" void rs_cgal_tree_free(void *tree) { delete static_cast<MeshTree *>(tree); }
+extern "C" void rs_cgal_tree_free(void *tree)
+{
+    delete static_cast<MeshTree *>(tree);
+}
 
 extern "C" int rs_cgal_tree_box(const void *tree, const double lo[3], const double hi[3],
                                 int *ids, int cap)

@@ -16,10 +16,10 @@
 #define RS_MESH_MAX_TRI (1 << 27)
 
 enum rs_edge_kind {
-    RS_EDGE_FLAT = 0,      ///< coplanar faces: the faces tile it
-    RS_EDGE_CONVEX = 1,    ///< bulges toward the particles: owns its wedge in front
-    RS_EDGE_CONCAVE = 2,   ///< a groove: owns its wedge behind a one-sided mesh
-    RS_EDGE_BOUNDARY = 3,  ///< one face: owns the quarter space beyond it in front
+    RS_EDGE_FLAT = 0,       ///< coplanar faces: the faces tile it
+    RS_EDGE_CONVEX = 1,     ///< bulges toward the particles: owns its wedge in front
+    RS_EDGE_CONCAVE = 2,    ///< a groove: owns its wedge behind a one-sided mesh
+    RS_EDGE_BOUNDARY = 3,   ///< one face: owns the quarter space beyond it in front
     RS_EDGE_NONMANIFOLD = 4 ///< three faces or more: owns its wedge on either side
 };
 
@@ -27,32 +27,32 @@ enum rs_edge_kind {
 /// consecutive; a face feature's index is its element.
 typedef struct rs_mesh {
     int nv, nt, ne, nel;
-    double *xyz;        ///< 3 nv, reference configuration
-    int *tri;           ///< 3 nt, node order gives the outward normal
-    int *tel;           ///< nt: element of each triangle
-    int *el_t0;         ///< nel + 1: triangles of element k are el_t0[k] .. el_t0[k+1]-1
-    int *el_nodes;      ///< 4 nel: the element's nodes (a triangle repeats its first)
-    int *el_nnode;      ///< nel: 3 or 4
-    int *tedge;         ///< 3 nt: edge of each slot
-    int *edge_v;        ///< 2 ne: its nodes, lower index first
-    int *edge_f0;       ///< ne + 1: faces of edge e are edge_f[edge_f0[e] ..]
+    double *xyz;   ///< 3 nv, reference configuration
+    int *tri;      ///< 3 nt, node order gives the outward normal
+    int *tel;      ///< nt: element of each triangle
+    int *el_t0;    ///< nel + 1: triangles of element k are el_t0[k] .. el_t0[k+1]-1
+    int *el_nodes; ///< 4 nel: the element's nodes (a triangle repeats its first)
+    int *el_nnode; ///< nel: 3 or 4
+    int *tedge;    ///< 3 nt: edge of each slot
+    int *edge_v;   ///< 2 ne: its nodes, lower index first
+    int *edge_f0;  ///< ne + 1: faces of edge e are edge_f[edge_f0[e] ..]
     int *edge_f;
     unsigned char *edge_kind; ///< rs_edge_kind
-    int *vert_e0;       ///< nv + 1: edges at vertex v are vert_e[vert_e0[v] ..]
+    int *vert_e0;             ///< nv + 1: edges at vertex v are vert_e[vert_e0[v] ..]
     int *vert_e;
-    double *trec;       ///< RS_MESH_TREC nt: per triangle its normal n, first node a0,
-                        ///< and for each edge slot j the unit in-plane normal m_j into
-                        ///< the triangle with c_j = m_j . (the edge's lower node):
-                        ///< p's side of edge j is p . m_j - c_j (across a flat edge the
-                        ///< second face holds exactly -m_j, -c_j of the first)
-    int *vfirst;        ///< nv: the lowest-numbered triangle at each vertex
-    int *tnbr;          ///< 3 nt: across slot j of triangle t, 3 t' + j' of the other face
-                        ///< of a two-face edge, -1 at open and non-manifold edges
-    double *vpn;        ///< 3 nv: angle-weighted pseudo-normal (unit)
+    double *trec; ///< RS_MESH_TREC nt: per triangle its normal n, first node a0,
+                  ///< and for each edge slot j the unit in-plane normal m_j into
+                  ///< the triangle with c_j = m_j . (the edge's lower node):
+                  ///< p's side of edge j is p . m_j - c_j (across a flat edge the
+                  ///< second face holds exactly -m_j, -c_j of the first)
+    int *vfirst;  ///< nv: the lowest-numbered triangle at each vertex
+    int *tnbr;    ///< 3 nt: across slot j of triangle t, 3 t' + j' of the other face
+                  ///< of a two-face edge, -1 at open and non-manifold edges
+    double *vpn;  ///< 3 nv: angle-weighted pseudo-normal (unit)
     unsigned char *vopen; ///< nv: 1 on an open boundary or non-manifold edge
-    double lo[3], hi[3]; ///< bounds
-    double size;         ///< the bounds' diagonal
-    void *tree;          ///< the AABB tree (cgal_mesh.h)
+    double lo[3], hi[3];  ///< bounds
+    double size;          ///< the bounds' diagonal
+    void *tree;           ///< the AABB tree (cgal_mesh.h)
 } rs_mesh;
 
 /// Builds the mesh of a polygon soup: scale and placement (rot row-major columns ex, ey,

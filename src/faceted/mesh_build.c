@@ -176,7 +176,10 @@ static int build_edges(rs_mesh *m)
 }
 
 /* The node a triangle's slot j starts from under its current winding. */
-static int slot_from(const rs_mesh *m, int t, int j) { return m->tri[3 * t + j]; }
+static int slot_from(const rs_mesh *m, int t, int j)
+{
+    return m->tri[3 * t + j];
+}
 
 /* Orients every connected component consistently (across manifold edges), keeping the
  * winding of most of its faces; returns 1 when some component has no consistent
@@ -208,14 +211,15 @@ static int orient(rs_mesh *m)
                 if (m->edge_f0[e + 1] - m->edge_f0[e] != 2)
                     continue;
                 const int o = m->edge_f[m->edge_f0[e]] == t ? m->edge_f[m->edge_f0[e] + 1]
-                                                           : m->edge_f[m->edge_f0[e]];
+                                                            : m->edge_f[m->edge_f0[e]];
                 if (o == t)
                     continue;
                 int jo = 0;
                 while (jo < 3 && m->tedge[3 * o + jo] != e)
                     jo++;
                 /* consistent windings run along the shared edge in opposite senses */
-                const int from_t = flip[t] ? m->tri[3 * t + (j + 1) % 3] : slot_from(m, t, j);
+                const int from_t =
+                    flip[t] ? m->tri[3 * t + (j + 1) % 3] : slot_from(m, t, j);
                 const int from_o_raw = slot_from(m, o, jo);
                 const int same_raw = from_o_raw == from_t;
                 if (comp[o] < 0) {
@@ -317,8 +321,7 @@ static int finish_topology(rs_mesh *m, int two_sided)
     m->vert_e = xmalloc(2 * (size_t)m->ne, sizeof(int));
     m->vpn = calloc(3 * (size_t)m->nv + 1, sizeof(double));
     m->vopen = calloc((size_t)m->nv + 1, 1);
-    if (!tn || !tm || !m->edge_kind || !m->vert_e0 || !m->vert_e || !m->vpn ||
-        !m->vopen)
+    if (!tn || !tm || !m->edge_kind || !m->vert_e0 || !m->vert_e || !m->vpn || !m->vopen)
         goto done;
     for (int t = 0; t < m->nt; t++) {
         double a2;
@@ -418,7 +421,7 @@ static int finish_topology(rs_mesh *m, int two_sided)
             if (m->edge_f0[e + 1] - m->edge_f0[e] != 2)
                 continue;
             const int o = m->edge_f[m->edge_f0[e]] == t ? m->edge_f[m->edge_f0[e] + 1]
-                                                       : m->edge_f[m->edge_f0[e]];
+                                                        : m->edge_f[m->edge_f0[e]];
             for (int jo = 0; jo < 3; jo++)
                 if (m->tedge[3 * o + jo] == e)
                     m->tnbr[3 * t + j] = 3 * o + jo;
@@ -467,10 +470,11 @@ int rs_mesh_build(const rs_soup *soup, double scale, const double a[3], const do
                                 origin, i / 3 + 1, x, RS_COORD_MAX);
     }
     if (soup->np < 3 || soup->nf < 1)
-        return rs_error_set(err, RS_ERR_GEOMETRY,
-                            "%s: no triangle: %d points and %d facets (expected a mesh with "
-                            "at least one triangle)",
-                            origin, soup->np, soup->nf);
+        return rs_error_set(
+            err, RS_ERR_GEOMETRY,
+            "%s: no triangle: %d points and %d facets (expected a mesh with "
+            "at least one triangle)",
+            origin, soup->np, soup->nf);
     /* count the triangles of the fan-split polygons */
     size_t ntri = 0;
     for (int f = 0; f < soup->nf; f++) {
@@ -490,10 +494,10 @@ int rs_mesh_build(const rs_soup *soup, double scale, const double a[3], const do
     for (int i = 0; i < soup->np; i++) {
         const double *X = soup->xyz + 3 * i;
         for (int d = 0; d < 3; d++)
-            pts[3 * i + d] =
-                a[d] + scale * (X[0] * ex[d] + X[1] * ey[d] + X[2] * ez[d]);
+            pts[3 * i + d] = a[d] + scale * (X[0] * ex[d] + X[1] * ey[d] + X[2] * ez[d]);
     }
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    double lo[3] = {INFINITY, INFINITY, INFINITY},
+           hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int i = 0; i < soup->np; i++)
         for (int d = 0; d < 3; d++) {
             lo[d] = fmin(lo[d], pts[3 * i + d]);

@@ -4,9 +4,9 @@
  * Every test that two features share is one expression of the shared data, evaluated the
  * same way whichever triangle asks: the side of an edge's plane p.m - c (c = m.a, a the
  * edge's lower node), and the position along an edge (p - v).(w - v) from either node.
- * Across a flat edge the two faces hold exactly -m and -c of one plane. So the regions of a point tile space
- * without overlap and without gaps: a point exactly above a shared edge or vertex of a
- * flat region gets one contact, never two. */
+ * Across a flat edge the two faces hold exactly -m and -c of one plane. So the regions of a
+ * point tile space without overlap and without gaps: a point exactly above a shared edge or
+ * vertex of a flat region gets one contact, never two. */
 #define _POSIX_C_SOURCE 200809L /* stat */
 
 #include "abaqus_part.h"
@@ -264,7 +264,7 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], const int 
         }
         for (int j = 0; j < 3; j++) {
             if (sd[j] > 0.0 && sd[(j + 2) % 3] > 0.0)
-                continue; /* vertex j lies between slots j - 1 and j */
+                continue;        /* vertex j lies between slots j - 1 and j */
             const int v = tv[j]; /* tested from its lowest-numbered triangle */
             if (m->vfirst[v] != t)
                 continue;
@@ -344,8 +344,8 @@ static void slave_local(const rs_query *q, int i, double p[3])
 
 /* The triangles within reach + extra of each slave: the tree's boxes, less those
  * farther (tri_distance2). */
-static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra, rs_cands *c,
-                           rs_error *err)
+static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
+                           rs_cands *c, rs_error *err)
 {
     const rs_mesh *m = s->impl;
     if (!m || !q->slave.x || !q->slave.y || !q->slave.z)
@@ -374,8 +374,9 @@ static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
         /* as the query's reach (mesh_closest_among), from anywhere within extra */
         double lim = q->gap_max + r;
         if (-q->dist_min > lim)
-            lim = isfinite(q->dist_min) ? -q->dist_min
-                                        : fmax(lim, rs_cgal_tree_nearest(m->tree, p) + extra);
+            lim = isfinite(q->dist_min)
+                      ? -q->dist_min
+                      : fmax(lim, rs_cgal_tree_nearest(m->tree, p) + extra);
         lim += extra;
         if (!(lim >= 0.0) || !isfinite(lim))
             continue;
@@ -409,8 +410,9 @@ static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
     return rc;
 }
 
-static int mesh_closest_among(const rs_surface *s, const rs_query *q, const int *const *cand,
-                              const int *ncand, rs_contacts *out, rs_error *err)
+static int mesh_closest_among(const rs_surface *s, const rs_query *q,
+                              const int *const *cand, const int *ncand, rs_contacts *out,
+                              rs_error *err)
 {
     const rs_mesh *m = s->impl;
     if (!m)
@@ -541,7 +543,8 @@ static int mesh_adjacent(const rs_surface *s, int fa, int fb)
     if (ta == RS_FEAT_FACE && tb == RS_FEAT_VERTEX)
         return ib < m->nv && element_has(m, ia, m->tri, ib);
     if (ta == RS_FEAT_EDGE && tb == RS_FEAT_VERTEX)
-        return ia < m->ne && ib < m->nv && (m->edge_v[2 * ia] == ib || m->edge_v[2 * ia + 1] == ib);
+        return ia < m->ne && ib < m->nv &&
+               (m->edge_v[2 * ia] == ib || m->edge_v[2 * ia + 1] == ib);
     return 0;
 }
 
@@ -596,11 +599,16 @@ static void mesh_free(rs_surface *s)
     s->impl = NULL;
 }
 
-const rs_surface_ops rs_mesh_ops = {"MESH",           3,
-                                    RS_FRAME_GLOBAL_X, mesh_closest,
-                                    mesh_adjacent,    mesh_bounds,
-                                    mesh_spin_axis,   mesh_triangulate,
-                                    mesh_free,        mesh_candidates,
+const rs_surface_ops rs_mesh_ops = {"MESH",
+                                    3,
+                                    RS_FRAME_GLOBAL_X,
+                                    mesh_closest,
+                                    mesh_adjacent,
+                                    mesh_bounds,
+                                    mesh_spin_axis,
+                                    mesh_triangulate,
+                                    mesh_free,
+                                    mesh_candidates,
                                     mesh_closest_among};
 
 /* STL checks the reader leaves out: an ASCII STL (it starts with "solid" and reads as
@@ -639,12 +647,14 @@ static int stl_check(const char *file, const char *where, rs_error *err)
                               where, file);
     } else if (nh == sizeof head) {
         const unsigned long n = (unsigned long)head[80] | (unsigned long)head[81] << 8 |
-                                (unsigned long)head[82] << 16 | (unsigned long)head[83] << 24;
+                                (unsigned long)head[82] << 16 |
+                                (unsigned long)head[83] << 24;
         if (size < 0 || (unsigned long)size != 84ul + 50ul * n)
-            rc = rs_error_set(err, RS_ERR_PARSE,
-                              "%s: %s: binary STL of %ld bytes announces %lu facets (expected "
-                              "84 + 50 x %lu = %lu bytes: broken or truncated)",
-                              where, file, size, n, n, 84ul + 50ul * n);
+            rc = rs_error_set(
+                err, RS_ERR_PARSE,
+                "%s: %s: binary STL of %ld bytes announces %lu facets (expected "
+                "84 + 50 x %lu = %lu bytes: broken or truncated)",
+                where, file, size, n, n, 84ul + 50ul * n);
         unsigned char rec[50];
         if (!rc && fseek(f, 84, SEEK_SET) == 0)
             for (unsigned long k = 0; k < n && !rc && fread(rec, 1, 50, f) == 50; k++)
@@ -675,10 +685,11 @@ int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int plac
             scl = fmax(scl, fabs(abc[i]));
         const double lu = rs_norm3(u), lw = rs_norm3(w);
         if (!(lu > 1e-12 * scl) || !isfinite(lu) || !isfinite(lw))
-            return rs_error_set(err, RS_ERR_GEOMETRY,
-                                "%s: points a and b coincide (expected distinct points a, b "
-                                "placing the mesh)",
-                                where);
+            return rs_error_set(
+                err, RS_ERR_GEOMETRY,
+                "%s: points a and b coincide (expected distinct points a, b "
+                "placing the mesh)",
+                where);
         for (int d = 0; d < 3; d++)
             ex[d] = u[d] / lu;
         const double along = rs_dot3(w, ex);
@@ -700,7 +711,8 @@ int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int plac
                             strerror(errno));
     if (!S_ISREG(st.st_mode))
         return rs_error_set(err, RS_ERR_IO, "%s: %s is %s (expected a mesh file)", where,
-                            file, S_ISDIR(st.st_mode) ? "a directory" : "not a regular file");
+                            file,
+                            S_ISDIR(st.st_mode) ? "a directory" : "not a regular file");
     FILE *f = fopen(file, "rb");
     if (!f)
         return rs_error_set(err, RS_ERR_IO, "%s: cannot open mesh file %s: %s", where, file,
@@ -717,7 +729,8 @@ int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int plac
     char msg[300];
     const char *ext = strrchr(file, '.');
     const int inp = ext && strlen(ext) == 4 && tolower((unsigned char)ext[1]) == 'i' &&
-                    tolower((unsigned char)ext[2]) == 'n' && tolower((unsigned char)ext[3]) == 'p';
+                    tolower((unsigned char)ext[2]) == 'n' &&
+                    tolower((unsigned char)ext[3]) == 'p';
     if (inp) { /* an Abaqus rigid part: its messages name file and line */
         if (rs_abaqus_read_soup(file, &soup, msg, sizeof msg))
             return rs_error_set(err, RS_ERR_PARSE, "%s: %s", where, msg);
@@ -727,7 +740,7 @@ int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int plac
     rs_mesh *m = NULL;
     int two = 0;
     rc = rs_mesh_build(&soup, scale, a, ex, ey, ez, file, &m, &two, s->warning,
-                           sizeof s->warning, err);
+                       sizeof s->warning, err);
     rs_soup_free(&soup);
     if (rc)
         return rc;

@@ -23,7 +23,7 @@ static char tmpdir[64];
 typedef struct poly_mesh {
     int np, nf;
     double *xyz;
-    int *nc;    /* corners of each polygon */
+    int *nc;     /* corners of each polygon */
     int *corner; /* 4 per polygon */
 } poly_mesh;
 
@@ -75,7 +75,8 @@ static int pm_triangles(const poly_mesh *m, double (*tri)[9])
     int nt = 0;
     for (int k = 0; k < m->nf; k++)
         for (int j = 1; j + 1 < m->nc[k]; j++) {
-            const int v[3] = {m->corner[4 * k], m->corner[4 * k + j], m->corner[4 * k + j + 1]};
+            const int v[3] = {m->corner[4 * k], m->corner[4 * k + j],
+                              m->corner[4 * k + j + 1]};
             for (int a = 0; a < 3; a++)
                 for (int d = 0; d < 3; d++)
                     tri[nt][3 * a + d] = m->xyz[3 * v[a] + d];
@@ -356,9 +357,9 @@ static int brute_force_case(const poly_mesh *pm, const char *name, int sides, do
         double p[3];
         for (int d = 0; d < 3; d++)
             p[d] = pm->xyz[3 * v + d] +
-                   spread * (2.0 * (double)(rs_test_xorshift(&seed) >> 11) /
-                                 9007199254740992.0 -
-                             1.0);
+                   spread *
+                       (2.0 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 -
+                        1.0);
         double best = INFINITY, cb[3];
         for (int t = 0; t < nt; t++) {
             double cp[3];
@@ -369,7 +370,7 @@ static int brute_force_case(const poly_mesh *pm, const char *name, int sides, do
             }
         }
         query(&s, 1, p, p + 1, p + 2, NULL, 1.0, &c);
-        {   /* candidate lists, taken 0.05 away and queried here, give the same contacts */
+        { /* candidate lists, taken 0.05 away and queried here, give the same contacts */
             rs_query q;
             memset(&q, 0, sizeof q);
             const double p0[3] = {p[0] + 0.03, p[1] - 0.03, p[2] + 0.02};
@@ -393,7 +394,8 @@ static int brute_force_case(const poly_mesh *pm, const char *name, int sides, do
             rs_contacts_free(&c2);
             rs_cands_free(&cd);
             if (!same) {
-                fprintf(stderr, "%s: point %d: candidate lists change the contacts\n", name, k);
+                fprintf(stderr, "%s: point %d: candidate lists change the contacts\n", name,
+                        k);
                 ok = 0;
             }
         }
@@ -403,7 +405,8 @@ static int brute_force_case(const poly_mesh *pm, const char *name, int sides, do
                 kbest = i;
             for (int j = 0; j < i; j++)
                 if (c.feature[i] == c.feature[j]) {
-                    fprintf(stderr, "%s: point %d: feature %d twice\n", name, k, c.feature[i]);
+                    fprintf(stderr, "%s: point %d: feature %d twice\n", name, k,
+                            c.feature[i]);
                     ok = 0;
                 }
             /* each contact: |dist| = |p - xm|, n along p - xm, a local minimum */
@@ -426,8 +429,9 @@ static int brute_force_case(const poly_mesh *pm, const char *name, int sides, do
                 if (closest_on_triangle(T[t], xm, cp) > 1e-12)
                     continue; /* triangles at the contact point */
                 if (closest_on_triangle(T[t], p, cp) < dd - 1e-12) {
-                    fprintf(stderr, "%s: point %d: contact %d at %.17g is no local minimum "
-                                    "(triangle %d at %.17g)\n",
+                    fprintf(stderr,
+                            "%s: point %d: contact %d at %.17g is no local minimum "
+                            "(triangle %d at %.17g)\n",
                             name, k, c.feature[i], dd, t, dist3(p, cp));
                     ok = 0;
                     break;
@@ -443,8 +447,8 @@ static int brute_force_case(const poly_mesh *pm, const char *name, int sides, do
             break;
         }
         if (!(fabs(fabs(c.dist[kbest]) - best) <= 1e-12)) {
-            fprintf(stderr, "%s: point %d: nearest contact %.17g, brute force %.17g\n", name,
-                    k, c.dist[kbest], best);
+            fprintf(stderr, "%s: point %d: nearest contact %.17g, brute force %.17g\n",
+                    name, k, c.dist[kbest], best);
             ok = 0;
         }
         const double n[3] = {c.nrm[0][kbest], c.nrm[1][kbest], c.nrm[2][kbest]};
@@ -511,7 +515,8 @@ static void one_contact_outside_convex(void)
     for (int k = 0; k < 2000; k++) {
         double dir[3];
         for (int d = 0; d < 3; d++)
-            dir[d] = 2.0 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 - 1.0;
+            dir[d] =
+                2.0 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 - 1.0;
         const double l = rs_norm3(dir);
         const double rad = 1.02 + 0.2 * k / 2000.0;
         double p[3] = {rad * dir[0] / l, rad * dir[1] / l, rad * dir[2] / l};
@@ -621,7 +626,7 @@ static void cube_edges_and_corners(void)
     ENSURE(c.n == 1 && RS_FEATURE_TYPE(c.feature[0]) == RS_FEAT_FACE);
     ENSURE_NEAR(c.dist[0], -0.02, 1e-15);
     ENSURE_NEAR(c.nrm[0][0], 1.0, 1e-15);
-    {   /* the same with every face within reach: the deeper faces give no contact */
+    { /* the same with every face within reach: the deeper faces give no contact */
         rs_query q;
         memset(&q, 0, sizeof q);
         q.n = 1;
@@ -734,7 +739,8 @@ static void pose_moves_the_mesh(void)
     rs_surface_free(&s);
 }
 
-/* The Hertz-like resultant sum(delta^1.5 n) of a sphere's contacts, delta = radius - dist. */
+/* The Hertz-like resultant sum(delta^1.5 n) of a sphere's contacts, delta = radius - dist.
+ */
 static void resultant(const rs_surface *s, const double c[3], double r, double F[3])
 {
     rs_contacts k;
@@ -751,7 +757,8 @@ static void resultant(const rs_surface *s, const double c[3], double r, double F
 
 /* |F(b) - F(a)| / |F(a)| for the resultant at sphere centres a and b; infinite where
  * the sphere at a has no force (the case then tests nothing). */
-static double jump_across(const rs_surface *s, double r, const double a[3], const double b[3])
+static double jump_across(const rs_surface *s, double r, const double a[3],
+                          const double b[3])
 {
     double Fa[3], Fb[3];
     resultant(s, a, r, Fa);
@@ -805,8 +812,8 @@ static void no_force_jump_at_edges(void)
         }
         rs_surface_free(&s);
         if (!(worst < 1e-9))
-            fprintf(stderr, "%s: largest relative jump %.3g\n", inside ? "inside" : "outside",
-                    worst);
+            fprintf(stderr, "%s: largest relative jump %.3g\n",
+                    inside ? "inside" : "outside", worst);
         ENSURE(worst < 1e-9);
     }
 }
@@ -846,11 +853,11 @@ static void bad_mesh_files(void)
     char bin[84 + 50];
     memset(bin, 0, sizeof bin);
     bin[80] = 10;
-    expect_error("trunc.stl", bin, sizeof bin, "*SURFACE, TYPE=MESH, NAME=a, FILE=trunc.stl\n",
-                 "trunc.stl");
+    expect_error("trunc.stl", bin, sizeof bin,
+                 "*SURFACE, TYPE=MESH, NAME=a, FILE=trunc.stl\n", "trunc.stl");
     const char *nanoff = "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n";
-    expect_error("nan.off", nanoff, strlen(nanoff), "*SURFACE, TYPE=MESH, NAME=a, FILE=nan.off\n",
-                 "nan.off");
+    expect_error("nan.off", nanoff, strlen(nanoff),
+                 "*SURFACE, TYPE=MESH, NAME=a, FILE=nan.off\n", "nan.off");
     expect_error(NULL, NULL, 0, "*SURFACE, TYPE=MESH, NAME=a, FILE=missing.stl\n",
                  "missing.stl");
     expect_error(NULL, NULL, 0, "*SURFACE, TYPE=MESH, NAME=a, FILE=.\n", "directory");
@@ -861,7 +868,7 @@ static void bad_mesh_files(void)
                  "s.inp:1");
     /* without FILE=, the surface file's own rigid part, here none */
     expect_error(NULL, NULL, 0, "*SURFACE, TYPE=MESH, NAME=a\n", "expected a rigid part");
-    {   /* text that is no file has no rigid part: FILE= is needed */
+    { /* text that is no file has no rigid part: FILE= is needed */
         rs_surface s;
         rs_error e;
         ENSURE(rs_surface_parse("*SURFACE, TYPE=MESH, NAME=a\n", "text", NULL, &s, &e) ==
@@ -871,7 +878,8 @@ static void bad_mesh_files(void)
     expect_error("tri.xyz", tri, strlen(tri), "*SURFACE, TYPE=MESH, NAME=a, FILE=tri.xyz\n",
                  "unknown mesh format");
     const char *flat = "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n";
-    expect_error("flat.off", flat, strlen(flat), "*SURFACE, TYPE=MESH, NAME=a, FILE=flat.off\n",
+    expect_error("flat.off", flat, strlen(flat),
+                 "*SURFACE, TYPE=MESH, NAME=a, FILE=flat.off\n",
                  "every facet is degenerate");
     expect_error(NULL, NULL, 0, "*SURFACE, TYPE=MESH, NAME=a, FILE=tri.off\n1, 2, 3\n",
                  "placement");
@@ -883,9 +891,10 @@ static void bad_mesh_files(void)
  * file and line. */
 static void abaqus_rigid_part(void)
 {
-    write_text("cube_nodes.inp", "** the nodes\n*NODE, NSET=all\n101, 0, 0, 0\n102, 1, 0, 0\n"
-                                 "103, 1, 1, 0\n104, 0, 1, 0\n105, 0, 0, 1\n106, 1, 0, 1\n"
-                                 "107, 1, 1, 1\n108, 0, 1, 1\n");
+    write_text("cube_nodes.inp",
+               "** the nodes\n*NODE, NSET=all\n101, 0, 0, 0\n102, 1, 0, 0\n"
+               "103, 1, 1, 0\n104, 0, 1, 0\n105, 0, 0, 1\n106, 1, 0, 1\n"
+               "107, 1, 1, 1\n108, 0, 1, 1\n");
     write_text("cube.inp", "*HEADING\nrigid cube\n*INCLUDE, INPUT=cube_nodes.inp\n"
                            "*element, type=r3d4, elset=box\n1, 101, 104, 103, 102\n"
                            "2, 105, 106, 107, 108\n3, 101, 102, 106, 105\n"
