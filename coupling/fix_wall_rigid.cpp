@@ -46,7 +46,8 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       fix_heatflux_(NULL), fix_heatcap_(NULL), vtk_every_(0), vtk_mesh_ok_(false),
       step_checked_(false), row_(NULL), hist_(NULL), nmax_(0), rebuild_(true),
       lookahead_(0.0), rglob_(0.0), bounds_ok_(false), list_bounds_(false), se_now_(0.0),
-      ncontact_(0), out_step_(-1), out_valid_(false)
+      ncontact_(0), out_step_(-1), out_valid_(false), kstep_(0), run_time0_(0.0),
+      pnewdt_stop_(false), routine_step_warned_(false)
 {
     std::memset(&surf_, 0, sizeof surf_);
     std::memset(&loaded_, 0, sizeof loaded_);
@@ -57,6 +58,7 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
     std::memset(&vtk_mesh_, 0, sizeof vtk_mesh_);
     std::memset(&tracker_, 0, sizeof tracker_);
     rs_law_block_init(&blk_);
+    rs_law_requests_clear(&requests_);
     rs_motion_init(&motion_);
     for (int d = 0; d < 3; d++) {
         ivar_vel_[d] = -1;
@@ -381,10 +383,17 @@ void FixWallRigid::check_step()
 
 /* Forces without history: LIGGGHTS walls compute setup forces with the shear history
  * frozen. Here the history rows of each block are saved, the tracker is run with a zero
- * increment and no master rotation, the law with b->setup = 1, and the rows restored. */
+ * increment and no master rotation, the law with b->setup = 1, and the rows restored.
+ * Each run is an Abaqus step: the setup starts step kstep_ and its step time. The law
+ * sees the setup call as increment 1 of the step (a user routine never gets KINC = 0);
+ * what it asks of the step there (PNEWDT) is not counted, as the call is not an
+ * increment. */
 void FixWallRigid::setup(int vflag)
 {
     (void)vflag;
+    kstep_++;
+    run_time0_ = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+    rs_law_requests_clear(&requests_);
     if (!step_checked_)
         check_step();
     compute(true);
@@ -415,6 +424,60 @@ void FixWallRigid::post_force(int vflag)
 void FixWallRigid::end_of_step()
 {
     write_vtk();
+}
+
+void FixWallRigid::post_run()
+{
+    report_requests();
+}
+
+/* At the end of a run, over all ranks: one warning with the smallest PNEWDT < 1 the
+ * law's user routine returned, the step it suggests (dt PNEWDT) and how many calls
+ * asked; and once per fix, as check_step, a warning when the time step exceeds
+ * RS_STEP_FRACTION of the critical step 2 sqrt(m / (k A)) of the stiffness the routine
+ * returned (DDSDDR, DDTDDG). */
+void FixWallRigid::report_requests()
+{
+    const rs_law_requests &r = requests_;
+    struct {
+        double value;
+        int rank;
+    } mine = {r.pnewdt_calls > 0 ? r.pnewdt_min : INFINITY, comm->me}, least;
+    MPI_Allreduce(&mine, &least, 1, MPI_DOUBLE_INT, MPI_MINLOC, world);
+    double calls = (double)r.pnewdt_calls, all_calls = 0.0;
+    MPI_Allreduce(&calls, &all_calls, 1, MPI_DOUBLE, MPI_SUM, world);
+    int where[2] = {r.pnewdt_particle, r.pnewdt_feature};
+    if (all_calls > 0.0)
+        MPI_Bcast(where, 2, MPI_INT, least.rank, world);
+    double step = r.step_min, step_all = INFINITY;
+    MPI_Allreduce(&step, &step_all, 1, MPI_DOUBLE, MPI_MIN, world);
+    const double dt = update->dt;
+    if (comm->me == 0 && all_calls > 0.0) {
+        std::ostringstream o;
+        o.precision(6);
+        o << "Fix wall/rigid " << id << ": law '" << law_->name << "': " << all_calls
+          << " call(s) of the user routine asked for a smaller increment this run "
+          << "(PNEWDT < 1), the smallest PNEWDT = " << least.value << " at particle "
+          << where[0] << ", feature " << where[1] << ", which suggests a time step of "
+          << dt * least.value << "; an explicit step cannot repeat an increment "
+          << "(keyword 'pnewdt stop' makes this an error)";
+        error->warning(FLERR, o.str().c_str());
+    }
+    if (!routine_step_warned_ && std::isfinite(step_all) &&
+        dt > RS_STEP_FRACTION * step_all) {
+        routine_step_warned_ = true;
+        if (comm->me == 0) {
+            std::ostringstream o;
+            o.precision(6);
+            o << "Fix wall/rigid " << id << ": time step " << dt << " is " << dt / step_all
+              << " of the critical step " << step_all << " of law '" << law_->name
+              << "' (2 sqrt(m/(k A)) of the stiffness its routine returned"
+              << (r.step_what ? std::string(", ") + r.step_what : std::string())
+              << "); contacts with the wall may be unstable above " << RS_STEP_FRACTION;
+            error->warning(FLERR, o.str().c_str());
+        }
+    }
+    rs_law_requests_clear(&requests_);
 }
 
 bool FixWallRigid::wall_moved_beyond_skin() const
@@ -487,6 +550,7 @@ void FixWallRigid::init_scratch()
     blk_.tempMst = temp_mst_;
     blk_.dtempMst = dtemp_mst_;
     blk_.wall_type = wall_type_;
+    blk_.analytic_master = surf_.kind != RS_SURF_FACETED;
 }
 
 /* A query of atoms idx[0 .. n) as spheres, gathered into the block scratch, against the

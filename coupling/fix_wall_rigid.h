@@ -44,6 +44,7 @@ class FixWallRigid : public Fix
     void pre_neighbor();
     void post_force(int);
     void end_of_step();
+    void post_run();
 
     double compute_vector(int);
     int min_type();
@@ -108,14 +109,16 @@ class FixWallRigid : public Fix
      * (1), previous predefined fields (npred). The slots are in hist_, slot-major: atom
      * i's slot j at hist_ + (j * nmax_ + i) * slot_size(), so an atom with one contact
      * touches its row and the dense slot-0 array only. A slot is the tracker's
-     * (RS_HIST_SIZE(nstatev)) followed by the contact's sed. */
+     * (RS_HIST_SIZE(nstatev)) followed by the contact's sed, fluxSlv and fluxMst of its
+     * last increment (kSlotExtra), which the law gets on entry. */
+    static const int kSlotExtra = 3;
     int hist_size() const
     {
         return RS_HIST_SIZE(nstatev_);
     }
     int slot_size() const
     {
-        return hist_size() + 1;
+        return hist_size() + kSlotExtra;
     }
     int tprev_offset() const
     {
@@ -262,7 +265,7 @@ class FixWallRigid : public Fix
     std::vector<double> saved_rows_; // setup call: each particle's row, then its slots
     std::vector<char> leaving_, take_;
     std::vector<int> deepest_;
-    std::vector<double *> c_sedp_; // each contact's sed in its particle's row
+    std::vector<double *> c_sedp_; // each contact's sed, fluxSlv, fluxMst in its slot
     int nleave_;                   // leaving contacts of the block
     bool ident_;                   // contact e is particle e's only contact, for all e
     rs_law_block blk_;             // the law block's fields that stay for the run
@@ -280,6 +283,18 @@ class FixWallRigid : public Fix
     bigint out_step_;
     bool out_valid_;
     double temp_mst_[1], dtemp_mst_[1];
+
+    /* Abaqus step and increment: kstep_ counts the runs (setup calls) from 1; KINC is
+     * the step's increment from 1 (update->ntimestep - update->firststep); step time
+     * restarts at run_time0_, the total time at the start of the run. */
+    int kstep_;
+    double run_time0_;
+    /* What the law's user routines asked this run (PNEWDT < 1, the stiffness they
+     * returned), this rank; reported in post_run. pnewdt_stop_: keyword 'pnewdt stop'. */
+    rs_law_requests requests_;
+    bool pnewdt_stop_;
+    bool routine_step_warned_; ///< the routine-stiffness step warning was printed
+    void report_requests();
 };
 
 } // namespace LAMMPS_NS

@@ -103,9 +103,10 @@ int FixWallRigid::integer(const char *keyword, const char *what, const char *s)
 
 bool FixWallRigid::is_keyword(const char *s) const
 {
-    static const char *const kw[] = {
-        "surface",  "name", "law",    "props",       "type",   "statev", "tracking", "area",
-        "contacts", "move", "rotate", "temperature", "predef", "vtk",    "curvature"};
+    static const char *const kw[] = {"surface",  "name",   "law",       "props",
+                                     "type",     "statev", "tracking",  "area",
+                                     "contacts", "move",   "rotate",    "temperature",
+                                     "predef",   "vtk",    "curvature", "pnewdt"};
     for (const char *k : kw)
         if (std::strcmp(s, k) == 0)
             return true;
@@ -266,10 +267,20 @@ void FixWallRigid::parse(int narg, char **arg)
                      arg[iarg + 1] + "'");
             curvature_given = true;
             iarg += 2;
+        } else if (std::strcmp(kw, "pnewdt") == 0) {
+            need(1, "'warn' or 'stop'");
+            if (std::strcmp(arg[iarg + 1], "warn") == 0)
+                pnewdt_stop_ = false;
+            else if (std::strcmp(arg[iarg + 1], "stop") == 0)
+                pnewdt_stop_ = true;
+            else
+                fail(std::string("keyword 'pnewdt' expects 'warn' or 'stop', got '") +
+                     arg[iarg + 1] + "'");
+            iarg += 2;
         } else {
             fail(std::string("unknown keyword '") + kw +
                  "'; expected surface, name, law, props, type, statev, tracking, area, "
-                 "contacts, move, rotate, temperature, predef, vtk or curvature");
+                 "contacts, move, rotate, temperature, predef, vtk, curvature or pnewdt");
         }
     }
 
@@ -525,7 +536,7 @@ int FixWallRigid::parse_surface(int narg, char **arg, int iarg)
 }
 
 /* law NAME | user LIB SYMBOL | vuinter LIB | uinter LIB [normal LAW] | fric LIB normal LAW
- */
+ * A Fortran LIB (FILE.f, .f90, ...) is built first (rs_law_build_cached). */
 int FixWallRigid::parse_law(int narg, char **arg, int iarg)
 {
     law_name_ = arg[iarg++];
@@ -560,16 +571,20 @@ int FixWallRigid::parse_law(int narg, char **arg, int iarg)
         rc = rs_law_load_c(lib, sym, &loaded_, &err);
         law_kind_ = LAW_LOADED;
     } else if (law_name_ == "vuinter") {
-        const char *lib = lib_arg("a shared library holding vuinter: vuinter LIB.so");
+        const char *lib = lib_arg(
+            "a shared library or Fortran file holding vuinter: vuinter LIB.so|FILE.f");
         rc = rs_law_load_vuinter(lib, &loaded_, &err);
         law_kind_ = LAW_LOADED;
     } else if (law_name_ == "uinter") {
-        const char *lib = lib_arg("a shared library holding uinter: uinter LIB.so");
+        const char *lib = lib_arg(
+            "a shared library or Fortran file holding uinter: uinter LIB.so|FILE.f");
         const rs_law *normal = normal_arg(false);
         rc = rs_law_load_uinter(lib, normal, &loaded_, &err);
         law_kind_ = LAW_LOADED;
     } else if (law_name_ == "fric") {
-        const char *lib = lib_arg("a shared library holding fric: fric LIB.so normal LAW");
+        const char *lib = lib_arg(
+            "a shared library or Fortran file holding fric: fric LIB.so|FILE.f normal "
+            "LAW");
         const rs_law *normal = normal_arg(true);
         rc = rs_law_load_fric(lib, normal, &loaded_, &err);
         law_kind_ = LAW_LOADED;

@@ -159,17 +159,40 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         props = type_props_[t].data();
         nprops = (int)type_props_[t].size();
     }
+    /* The Abaqus step is the run (kstep_), the increment counts from 1 within it; the
+     * setup call is increment 1 with no motion. Times are at the start of the increment:
+     * the step time since the run began, the total time since step 0. */
     const double time_end = update->atime + (update->ntimestep - update->atimestep) * dt;
+    const double t_start = setup_call ? time_end : time_end - dt;
     rs_law_block b = blk_;
-    b.kInc = (int)update->ntimestep;
+    b.kStep = kstep_ > 0 ? kstep_ : 1;
+    b.kInc = setup_call ? 1 : (int)(update->ntimestep - update->firststep);
     b.nProps = nprops;
     b.nTemp = (Temp || temp_given_) ? 1 : 0;
-    b.timStep = b.timGlb = setup_call ? time_end : time_end - dt;
+    b.timStep = t_start - run_time0_;
+    b.timGlb = t_start;
     b.dTimCur = dt;
     b.props = nprops ? props : NULL;
     b.setup = setup_call ? 1 : 0;
+    rs_law_requests req;
+    rs_law_requests_clear(&req);
+    b.requests = &req;
     if (rs_cblock_call(&cb_, law_, &b, &tout_, &err) != RS_OK)
         fail_one(err.msg);
+    if (!setup_call && req.pnewdt_calls > 0) {
+        if (pnewdt_stop_) {
+            std::ostringstream o;
+            o << "law '" << law_->name << "': the user routine asked for a smaller "
+              << "increment (PNEWDT = " << req.pnewdt_min << ") at particle "
+              << req.pnewdt_particle << ", feature " << req.pnewdt_feature << " on step "
+              << update->ntimestep << ", which suggests a time step of "
+              << dt * req.pnewdt_min
+              << "; an explicit step cannot repeat an increment (keyword 'pnewdt stop')";
+            fail_one(o.str());
+        }
+    }
+    if (!setup_call)
+        rs_law_requests_merge(&requests_, &req);
 
     /* The scatter also stores each live contact's sed in its slot (leaving: 0). A unit
      * area (the default) drops the products with A, which are exact. */
@@ -286,19 +309,23 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call)
     }
     rs_cblock_inputs(&cb_, &tout_, &p, update->dt);
 
-    const int sed0 = hist_size(); /* the sed follows the tracker's slot */
+    /* sed, fluxSlv and fluxMst of the last increment follow the tracker's slot */
+    const int sed0 = hist_size();
     const int *__restrict pt = tout_.point;
     double *const *__restrict dir = tout_.dir;
     double *const *__restrict slot = tout_.slot;
     double **__restrict sedp = c_sedp_.data();
     double *__restrict sed = cb_.sed;
+    double *__restrict fslv = cb_.flux_slv, *__restrict fmst = cb_.flux_mst;
     char *__restrict leaving = leaving_.data();
     int nleave = 0;
     bool ident = true;
     for (int e = 0; e < ne; e++) {
         double *sp = slot[e] + sed0;
         sedp[e] = sp;
-        sed[e] = *sp;
+        sed[e] = sp[0];
+        fslv[e] = sp[1];
+        fmst[e] = sp[2];
         const char lv = RS_DIR_IS_LEAVING(*dir[e]);
         leaving[e] = lv;
         nleave += lv;
@@ -396,9 +423,10 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
         double *const *__restrict sedp = c_sedp_.data();
         double d0 = diss_[0], d1 = diss_[1], d2 = diss_[2], d3 = diss_[3];
         double heat = heat_step_;
+        const double *__restrict fslv_e = cb_.flux_slv;
         for (int e = 0; e < ne; e++) {
             if (LEAVE && leaving[e]) {
-                *sedp[e] = 0.0;
+                sedp[e][0] = sedp[e][1] = sedp[e][2] = 0.0;
                 continue;
             }
             const double A = UNITA ? 1.0 : area[e];
@@ -408,7 +436,9 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
             d2 += svd[e] * A;
             d3 += scd[e] * A;
             heat += fmst[e] * A;
-            *sedp[e] = sed[e];
+            sedp[e][0] = sed[e];
+            sedp[e][1] = fslv_e[e];
+            sedp[e][2] = fmst[e];
         }
         diss_[0] = d0, diss_[1] = d1, diss_[2] = d2, diss_[3] = d3;
         heat_step_ = heat;

@@ -19,9 +19,10 @@ namespace
 {
 
 /* Restart layout version (global record). */
-/* 3: each atom's record starts with the capacity it was written with (the capacity
- * grows during a run); 2: directory in the row, slots after it */
-const double kRestartVersion = 3.0;
+/* 4: a slot ends with the contact's sed, fluxSlv and fluxMst; 3: each atom's record
+ * starts with the capacity it was written with (the capacity grows during a run); 2:
+ * directory in the row, slots after it */
+const double kRestartVersion = 4.0;
 
 } // namespace
 
@@ -32,7 +33,8 @@ void FixWallRigid::clear_row(int i)
     const ptrdiff_t stride = slot_stride();
     rs_track_clear(&tracker_, r, h, stride);
     for (int j = 0; j < capacity_; j++)
-        h[j * stride + hist_size()] = 0.0; /* sed */
+        for (int x = 0; x < kSlotExtra; x++)
+            h[j * stride + hist_size() + x] = 0.0; /* sed, fluxSlv, fluxMst */
     r[tprev_offset()] = NAN;
     for (size_t p = 0; p < predef_names_.size(); p++)
         r[pred_offset() + (int)p] = NAN;

@@ -89,21 +89,32 @@ int rs_driver_set_law(rs_driver *d, const rs_law *law, const double *props, int 
     return RS_OK;
 }
 
-/* History storage, allocated on the first increment (capacity and nstatev are known). */
+/* Doubles after the tracker's slot: the contact's sed, fluxSlv and fluxMst of its last
+ * increment, which the law gets on entry. */
+#define SLOT_EXTRA 3
+
+static ptrdiff_t slot_stride(const rs_driver *d)
+{
+    return RS_HIST_SIZE(d->nstatev) + SLOT_EXTRA;
+}
+
+/* History storage, allocated on the first increment (capacity and nstatev are known):
+ * per node its directory (capacity), then its slots, each the tracker's and SLOT_EXTRA. */
 static int alloc_history(rs_driver *d, rs_error *err)
 {
     d->tracker.capacity = d->capacity;
     d->tracker.nstatev = d->nstatev;
     d->tracker.ndir = rs_surface_ndir(d->surface);
     d->tracker.tracking = d->tracking;
-    size_t per = (size_t)d->capacity * (size_t)(1 + RS_HIST_SIZE(d->nstatev));
-    d->hist = (double *)malloc((size_t)d->n * per * sizeof(double));
+    const ptrdiff_t stride = slot_stride(d);
+    size_t per = (size_t)d->capacity * (size_t)(1 + stride);
+    d->hist = (double *)calloc((size_t)d->n * per, sizeof(double));
     if (!d->hist)
         return rs_error_set(err, RS_ERR_NOMEM, "driver: out of memory for contact history");
     for (int i = 0; i < d->n; ++i) {
         d->dir_ptr[i] = d->hist + (size_t)i * per;
         d->hist_ptr[i] = d->dir_ptr[i] + d->capacity;
-        rs_track_clear(&d->tracker, d->dir_ptr[i], d->hist_ptr[i], 0);
+        rs_track_clear(&d->tracker, d->dir_ptr[i], d->hist_ptr[i], stride);
         d->temp_prev[i] = d->temp[i];
     }
     d->tmaster_prev = d->tmaster;
@@ -141,12 +152,22 @@ static int call_law(rs_driver *d, int nd, rs_error *err)
                                   .temp = d->temp,
                                   .dtemp = d->dtemp};
     rs_cblock_inputs(&d->cb, &d->trk, &p, d->dt);
+    const int hs = RS_HIST_SIZE(ns);
+    for (int e = 0; e < d->trk.n; ++e) {
+        const double *x = d->trk.slot[e] + hs;
+        d->cb.sed[e] = x[0];
+        d->cb.flux_slv[e] = x[1];
+        d->cb.flux_mst[e] = x[2];
+    }
 
+    /* One Abaqus step per driver; its increments count from 1, the call at t_k being
+     * increment k + 1 from t_k to t_k + dt. */
     const double dtm = d->tmaster - d->tmaster_prev;
     rs_law_block b;
     rs_law_block_init(&b);
     b.kStep = 1;
     b.kInc = d->inc + 1;
+    b.analytic_master = d->surface->kind != RS_SURF_FACETED;
     b.nDir = nd;
     b.nSurfDir = nd - 1;
     b.nStateVar = ns;
@@ -215,6 +236,7 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     p.id = d->id;
     p.dir = d->dir_ptr;
     p.hist = d->hist_ptr;
+    p.slot_stride = slot_stride(d);
     /* The first call sees the initial state: no increment of motion lies behind it. */
     rc = rs_track_update(&d->tracker, d->surface, d->moving ? &d->motion : NULL,
                          d->inc == 0 ? 0.0 : d->dt, &p, &d->contacts, &d->trk, err);
@@ -227,6 +249,14 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     if (rc)
         return rc;
     const rs_contact_block *cb = &d->cb;
+    const int hs = RS_HIST_SIZE(d->nstatev);
+    for (int e = 0; e < d->trk.n; ++e) {
+        double *x = d->trk.slot[e] + hs;
+        const int gone = RS_DIR_IS_LEAVING(*d->trk.dir[e]);
+        x[0] = gone ? 0.0 : cb->sed[e];
+        x[1] = gone ? 0.0 : cb->flux_slv[e];
+        x[2] = gone ? 0.0 : cb->flux_mst[e];
+    }
     rs_track_commit(&d->tracker, &d->trk, cb->stress, d->nstatev ? cb->statev : NULL);
 
     /* contact forces, heat and energies */

@@ -273,7 +273,7 @@ void rs_law_block_init(rs_law_block *b)
 {
     memset(b, 0, sizeof *b);
     b->kStep = 1;
-    b->kInc = 0;
+    b->kInc = 1;
     b->nFacNod = 1;
     b->nMstNod = 1;
     b->nTemp = 1;
@@ -293,4 +293,26 @@ void rs_law_block_init(rs_law_block *b)
     b->dtempMst = rs_law_zeros;
     b->preDefMst = rs_law_zeros;
     b->dpreDefMst = rs_law_zeros;
+}
+
+void rs_law_requests_clear(rs_law_requests *r)
+{
+    memset(r, 0, sizeof *r);
+    r->pnewdt_min = 1.0;
+    r->pnewdt_particle = r->pnewdt_feature = -1;
+    r->step_min = INFINITY;
+}
+
+void rs_law_requests_merge(rs_law_requests *dst, const rs_law_requests *src)
+{
+    if (src->pnewdt_calls > 0 && src->pnewdt_min < dst->pnewdt_min) {
+        dst->pnewdt_min = src->pnewdt_min;
+        dst->pnewdt_particle = src->pnewdt_particle;
+        dst->pnewdt_feature = src->pnewdt_feature;
+    }
+    dst->pnewdt_calls += src->pnewdt_calls;
+    if (src->step_min < dst->step_min) {
+        dst->step_min = src->step_min;
+        dst->step_what = src->step_what;
+    }
 }

@@ -1,12 +1,19 @@
 /* Fortran laws as block laws: the VUINTER shim and the point-wise UINTER and FRIC
- * adapters (Abaqus argument lists; see law_fortran.h for the ABI).
+ * adapters (Abaqus argument lists; see law_fortran.h for the ABI, docs/abaqus.md for
+ * every argument and where it differs from Abaqus).
  *
- * DEM extension as predefined fields. When the engine passes no field variables
- * (nPred = 0), every Fortran routine gets nPred = RS_DEM_NPRED fields per slave node,
- * named in vaba_param.inc / aba_param.inc:
- *   1 radius, 2 mass, 3 effective radius, 4-6 relative velocity of the contact point in
- *   (n, t1, t2) (vrel(1) > 0 separates; t2 = 0 in 2D), 7-8 wall curvatures along t1, t2.
- * Missing extension arrays read as 0. Their increments and the master's fields are 0.
+ * Every call of a user routine is bracketed by rs_abq_call_begin / rs_abq_call_end
+ * (abaqus_util.h): the utility routines (GETPARTINFO, RS_GETDEM, XPLB_ABQERR, ...) then
+ * know the block and contact asked about, and an error a routine raised (severity -2)
+ * ends the law call with RS_ERR_ARG after the state of a setup call is restored.
+ *
+ * Predefined fields: nPred is the engine's count (the `predef` fields), 0 without. The
+ * DEM extension (radius, mass, effective radius, relative velocity, curvatures) reaches
+ * a routine through the utility routine RS_GETDEM.
+ *
+ * Steps and times: KSTEP and KINC (kStep, kInc) are the engine's, KINC from 1 in each
+ * step; the block's timStep and timGlb are at the start of the increment, and UINTER
+ * and FRIC get TIME(1:2) at its end (plus dTimCur), as Abaqus/Standard passes them.
  *
  * State variables of the adapters, per contact: the routine's own NSTATV first (so
  * SDV1.. are the routine's), then the normal law's, then the adapter's slots. The
@@ -15,8 +22,12 @@
  *
  * A setup call (b->setup) runs the routine but restores every state variable after it,
  * so history does not advance. A contact that left the tracking thickness (rdisp =
- * r_MaxVal) is not handed to UINTER or FRIC: its stress, fluxes and energies are 0. */
+ * r_MaxVal) is not handed to UINTER or FRIC: its stress, fluxes and energies are 0.
+ *
+ * PNEWDT < 1 and the stiffness a routine returns go to b->requests when the engine
+ * gathers them (one report per run), otherwise to b->warn contact by contact. */
 #include "law_fortran.h"
+#include "rigidsurf/abaqus_util.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -24,12 +35,16 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define RS_DEM_NPRED 8
 #define RS_FNAME_LEN ((size_t)RS_LAW_NAMELEN)
 /// Largest nPred handed through the point-wise adapters.
 #define RS_ADAPTER_MAX_NPRED 64
 /// PNEWDT on entry (a large value, as Abaqus passes it): < 1 on return asks for a cut.
 #define RS_PNEWDT_IN 1.0e36
+/// Moment of inertia of the solid sphere the FRIC stick constraint assumes: I = 2/5 m R^2
+/// (LIGGGHTS's sphere).
+#define RS_SPHERE_INERTIA 0.4
+/// Relative step of the finite difference that gives FRIC's DDPDDH.
+#define RS_DDPDDH_STEP 1e-7
 
 static const double rs_fzeros[RS_ADAPTER_MAX_NPRED * RS_BLOCK];
 
@@ -66,45 +81,6 @@ static int is_leaving(const rs_law_block *b, int k)
     return RS_A2(b->rdisp, b->nDir, 0, k) >= 0.5 * RS_MAXVAL;
 }
 
-/* The DEM extension of contact k as the RS_DEM_NPRED predefined fields. */
-static void dem_fields(const rs_law_block *b, int k, double f[RS_DEM_NPRED])
-{
-    int nd = b->nDir;
-    f[0] = b->radius ? b->radius[k] : 0.0;
-    f[1] = b->mass ? b->mass[k] : 0.0;
-    f[2] = b->reff ? b->reff[k] : 0.0;
-    for (int i = 0; i < 3; ++i)
-        f[3 + i] = (b->vrel && i < nd) ? RS_A2(b->vrel, nd, i, k) : 0.0;
-    f[6] = b->curv ? b->curv[(size_t)k * 2u] : 0.0;
-    f[7] = b->curv ? b->curv[(size_t)k * 2u + 1u] : 0.0;
-}
-
-/* The same for the whole block: predef(RS_DEM_NPRED, n), one contact's fields at a
- * time, missing arrays read from zeros so the loop has no branches. */
-static void dem_block(const rs_law_block *b, double *restrict predef)
-{
-    const int n = b->nSlvNod, nd = b->nDir;
-    const double *restrict rad = b->radius ? b->radius : rs_fzeros;
-    const double *restrict mass = b->mass ? b->mass : rs_fzeros;
-    const double *restrict reff = b->reff ? b->reff : rs_fzeros;
-    const double *restrict vrel = b->vrel ? b->vrel : rs_fzeros;
-    const double *restrict curv = b->curv ? b->curv : rs_fzeros;
-    const double t2 = nd == 3 ? 1.0 : 0.0; /* 2D: no t2 component */
-    const int i2 = nd == 3 ? 2 : 1;
-    for (int k = 0; k < n; ++k) {
-        double *restrict p = predef + (size_t)k * RS_DEM_NPRED;
-        const double *restrict v = vrel + (size_t)k * (size_t)nd;
-        p[0] = rad[k];
-        p[1] = mass[k];
-        p[2] = reff[k];
-        p[3] = v[0];
-        p[4] = v[1];
-        p[5] = t2 * v[i2];
-        p[6] = curv[2 * k];
-        p[7] = curv[2 * k + 1];
-    }
-}
-
 /* Largest eigenvalue bound (Gershgorin: largest absolute row sum) of an m x m
  * column-major matrix. */
 static double stiffness_bound(const double *a, int m)
@@ -120,32 +96,52 @@ static double stiffness_bound(const double *a, int m)
 }
 
 /* Central differences are stable for a point mass m on a spring k A when
- * dt < 2 sqrt(m / (k A)). Warns when the returned stiffness breaks that. */
+ * dt < 2 sqrt(m / (k A)). The critical step of the stiffness a routine returned goes to
+ * b->requests (the engine compares it with its step), or a warning when dt exceeds it. */
 static void check_stable(rs_law_block *b, const rs_law *law, int k, double kstiff,
                          const char *what)
 {
-    if (!b->mass || !(b->mass[k] > 0.0) || !(kstiff > 0.0))
+    if (b->setup || !b->mass || !(b->mass[k] > 0.0) || !(kstiff > 0.0))
         return;
     double area = b->areaSlv ? b->areaSlv[k] : 1.0;
     if (!(area > 0.0))
         return;
     double dtmax = 2.0 * sqrt(b->mass[k] / (kstiff * area));
-    if (b->dTimCur > dtmax)
+    if (b->requests) {
+        if (dtmax < b->requests->step_min) {
+            b->requests->step_min = dtmax;
+            b->requests->step_what = what;
+        }
+    } else if (b->dTimCur > dtmax) {
         warnf(b, law, k,
               "law '%s': %s stiffness %g with area %g and mass %g at particle %d, "
               "feature %d is stable only for dt < 2 sqrt(m/(k A)) = %g; dt = %g",
               law->name, what, kstiff, area, b->mass[k], particle_id(b, k),
               feature_id(b, k), dtmax, b->dTimCur);
+    }
 }
 
+/* PNEWDT < 1: an explicit increment cannot be repeated with a smaller step. Gathered in
+ * b->requests (the engine reports once per run), or a warning naming the contact. */
 static void check_pnewdt(rs_law_block *b, const rs_law *law, int k, double pnewdt,
                          const char *routine)
 {
-    if (pnewdt < 1.0)
-        warnf(b, law, k,
-              "law '%s': %s asked for a smaller increment (PNEWDT = %g) at particle %d, "
-              "feature %d; an explicit step cannot repeat the increment",
-              law->name, routine, pnewdt, particle_id(b, k), feature_id(b, k));
+    if (b->setup || !(pnewdt < 1.0))
+        return;
+    rs_law_requests *r = b->requests;
+    if (r) {
+        if (r->pnewdt_calls == 0 || pnewdt < r->pnewdt_min) {
+            r->pnewdt_min = pnewdt;
+            r->pnewdt_particle = particle_id(b, k);
+            r->pnewdt_feature = feature_id(b, k);
+        }
+        r->pnewdt_calls++;
+        return;
+    }
+    warnf(b, law, k,
+          "law '%s': %s asked for a smaller increment (PNEWDT = %g) at particle %d, "
+          "feature %d; an explicit step cannot repeat the increment",
+          law->name, routine, pnewdt, particle_id(b, k), feature_id(b, k));
 }
 
 /* Saves every state variable of the block before a setup call. */
@@ -174,7 +170,9 @@ static void setup_restore(const rs_law_block *b, double *saved)
 /* ---------------------------------------------------------------- VUINTER */
 
 /* The block is already the VUINTER argument list in Fortran layout: the pointers go
- * straight through, plus the three hidden CHARACTER*80 lengths. */
+ * straight through, plus the three hidden CHARACTER*80 lengths. An analytic master has
+ * no nodes: nFacNod = nMstNod = 0 (the block keeps the feature id in jConMstid for the
+ * engine's own messages). nPred is the engine's; numDefTfv = 1 (one wall temperature). */
 int rs_law_vuinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
 {
     const rs_loaded_law *ld = (const rs_loaded_law *)law->ctx;
@@ -182,16 +180,12 @@ int rs_law_vuinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
     if (n <= 0)
         return RS_OK;
     /* sfd, scd, spd, svd start at zero: rs_law_call clears them */
-    int npred = b->nPred;
-    const double *pred = b->preDefSlv, *dpred = b->dpreDefSlv;
-    const double *predm = b->preDefMst, *dpredm = b->dpreDefMst;
-    double dem[RS_DEM_NPRED * RS_BLOCK];
-    if (npred == 0 && b->numDefTfv <= RS_BLOCK) {
-        npred = RS_DEM_NPRED;
-        dem_block(b, dem);
-        pred = dem;
-        dpred = predm = dpredm = rs_fzeros;
-    }
+    const int nfac = b->analytic_master ? 0 : b->nFacNod;
+    const int nmst = b->analytic_master ? 0 : b->nMstNod;
+    const double *pred = b->nPred > 0 ? b->preDefSlv : rs_fzeros;
+    const double *dpred = b->nPred > 0 ? b->dpreDefSlv : rs_fzeros;
+    const double *predm = b->nPred > 0 ? b->preDefMst : rs_fzeros;
+    const double *dpredm = b->nPred > 0 ? b->dpreDefMst : rs_fzeros;
     double sv_dummy[1] = {0.0};
     double *statev = b->statev ? b->statev : sv_dummy;
     const double *props = b->props ? b->props : rs_fzeros;
@@ -200,17 +194,18 @@ int rs_law_vuinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
     int rc = setup_save(law, b, &saved, err);
     if (rc)
         return rc;
+    rs_abq_call_begin(b, -1, "VUINTER");
     ld->vuinter(b->sfd, b->scd, b->spd, b->svd, b->stress, b->fluxSlv, b->fluxMst, b->sed,
-                statev, &b->kStep, &b->kInc, &b->nFacNod, &b->nSlvNod, &b->nMstNod,
-                &b->nSurfDir, &b->nDir, &b->nStateVar, &b->nProps, &b->nTemp, &npred,
-                &b->numDefTfv, b->jSlvUid, b->jMstUid, b->jConMstid, &b->timStep,
-                &b->timGlb, &b->dTimCur, b->surfInt, b->surfSlv, b->surfMst, b->rdisp,
-                b->drdisp, b->drot, b->stiffDflt, b->condDflt, b->shape, b->coordSlv,
-                b->coordMst, b->alocaldir, props, b->areaSlv, b->tempSlv, b->dtempSlv, pred,
-                dpred, b->tempMst, b->dtempMst, predm, dpredm, RS_FNAME_LEN, RS_FNAME_LEN,
-                RS_FNAME_LEN);
+                statev, &b->kStep, &b->kInc, &nfac, &b->nSlvNod, &nmst, &b->nSurfDir,
+                &b->nDir, &b->nStateVar, &b->nProps, &b->nTemp, &b->nPred, &b->numDefTfv,
+                b->jSlvUid, b->jMstUid, b->jConMstid, &b->timStep, &b->timGlb, &b->dTimCur,
+                b->surfInt, b->surfSlv, b->surfMst, b->rdisp, b->drdisp, b->drot,
+                b->stiffDflt, b->condDflt, b->shape, b->coordSlv, b->coordMst, b->alocaldir,
+                props, b->areaSlv, b->tempSlv, b->dtempSlv, pred, dpred, b->tempMst,
+                b->dtempMst, predm, dpredm, RS_FNAME_LEN, RS_FNAME_LEN, RS_FNAME_LEN);
+    rc = rs_abq_call_end(err);
     setup_restore(b, saved);
-    return RS_OK;
+    return rc;
 }
 
 /* ---------------------------------------------------- shared adapter parts */
@@ -275,20 +270,12 @@ int rs_law_adapter_init(const rs_law *law, const double *props, int nprops, rs_e
     return rs_law_check_props(ld->normal, props, ld->normal->nprops, err);
 }
 
-/* PREDEF(2, NPRED) of contact k: row 1 the slave, row 2 the master. */
+/* PREDEF(2, NPRED) of contact k: row 1 the slave, row 2 the master; nPred is the
+ * engine's (0 without fields: the arrays hold one zero column). */
 static int point_predef(const rs_law_block *b, int k, double *predef, double *dpred)
 {
-    if (b->nPred == 0) {
-        double f[RS_DEM_NPRED];
-        dem_fields(b, k, f);
-        for (int i = 0; i < RS_DEM_NPRED; ++i) {
-            predef[2 * i] = f[i];
-            predef[2 * i + 1] = 0.0;
-            dpred[2 * i] = dpred[2 * i + 1] = 0.0;
-        }
-        return RS_DEM_NPRED;
-    }
     int np = b->nPred;
+    predef[0] = predef[1] = dpred[0] = dpred[1] = 0.0;
     for (int i = 0; i < np; ++i) {
         predef[2 * i] = RS_A2(b->preDefSlv, np, i, k);
         predef[2 * i + 1] = b->preDefMst[i];
@@ -309,23 +296,27 @@ static double point_chrlngth(const rs_law_block *b, int k)
 /* ------------------------------------------------------------------ UINTER */
 
 /* UINTER point by point. Inputs of contact k:
- *   STRESS, FLUX, SED: the values at the start of the increment (with a normal law: its
- *   results for this increment); RDISP, DRDISP, DROT, COORDS: the block's; TEMP: slave
- *   and wall temperatures at the start of the increment, DTEMP their increments;
- *   TIME = (step time, total time) at the start; ALOCALDIR(3,3) holds the block's local
- *   directions in its leading nDir x nDir part (zeros elsewhere); MCRD = NDIR;
- *   AREA = areaSlv; CHRLNGTH = the particle radius (sqrt(areaSlv) for a point);
- *   NODE = particle id; KIT = 1; LINPER = 0; LPRINT = 0; FREQR = 0.
+ *   STRESS: the values of the last increment (shear rotated by drot); with a normal law,
+ *   STRESS(1) is the normal law's result for this increment and STRESS(2:NDIR) stay the
+ *   last increment's (the routine's shear persists). FLUX(1:2): the values the routine
+ *   returned last increment (0 on a contact's first call), kept in the adapter's slots.
+ *   SED: the normal law's, else the last increment's. RDISP, DRDISP, DROT, COORDS: the
+ *   block's; TEMP: slave and wall temperatures at the start of the increment, DTEMP
+ *   their increments; TIME = (step time, total time) at the end of the increment;
+ *   KSTEP, KINC: the block's; ALOCALDIR(3,3) holds the block's local directions in its
+ *   leading nDir x nDir part (zeros elsewhere); MCRD = NDIR; AREA = areaSlv; CHRLNGTH =
+ *   the particle radius (sqrt(areaSlv) for a point); NODE = particle id; KIT = 1;
+ *   LINPER = 0; LPRINT = 0; FREQR = 0; PREDEF(2, NPRED): the engine's fields.
  * Flags, as far as an explicit step can honour them:
  *   LOPENCLOSE: in, the value the routine returned for this contact last increment (-1
  *     on its first call); kept per contact, it does not change the solution.
  *   LSTATE: in, the value returned last increment (0 at first); kept per contact.
  *   LSDI: in 0. A returned 1 (a severe-discontinuity iteration) cannot be granted: an
  *     explicit increment is never repeated; the new state acts from the next increment.
- *   PNEWDT: in 1e36; a returned value < 1 is reported through b->warn.
- * DDSDDR is used only to check the explicit step: its largest row sum k against the
- * particle mass m gives the limit dt < 2 sqrt(m / (k A)); a larger dt is reported.
- * DVISCOUS, DSTRUCTURAL, DDFDDT, DDSDDT and DDFDDR are not used (implicit Jacobians and
+ *   PNEWDT: in 1e36; a returned value < 1 is reported (check_pnewdt).
+ * DDSDDR is used only for the explicit step: its largest row sum k against the particle
+ * mass m gives the critical step 2 sqrt(m / (k A)) (check_stable). DVISCOUS,
+ * DSTRUCTURAL, DDFDDT, DDSDDT and DDFDDR are not used (implicit Jacobians and
  * frequency-domain damping). */
 int rs_law_uinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
 {
@@ -346,11 +337,19 @@ int rs_law_uinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
     if (rc)
         return rc;
     if (ld->normal) {
+        /* the normal law gives STRESS(1); the shear stays the routine's */
+        double shear[2 * RS_BLOCK];
+        for (int k = 0; k < n; ++k)
+            for (int a = 1; a < nd; ++a)
+                shear[2 * k + a - 1] = RS_A2(b->stress, nd, a, k);
         rc = run_normal(ld->normal, b, nuser, err);
         if (rc) {
             setup_restore(b, saved);
             return rc;
         }
+        for (int k = 0; k < n; ++k)
+            for (int a = 1; a < nd; ++a)
+                RS_A2(b->stress, nd, a, k) = shear[2 * k + a - 1];
     } else {
         for (int k = 0; k < n; ++k)
             b->sfd[k] = b->scd[k] = b->spd[k] = b->svd[k] = 0.0;
@@ -360,13 +359,14 @@ int rs_law_uinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
     double sv_dummy[1] = {0.0};
 
     for (int k = 0; k < n; ++k) {
+        double *sv = nsv > 0 ? b->statev + (size_t)k * (size_t)nsv : sv_dummy;
         if (is_leaving(b, k)) {
             for (int i = 0; i < nd; ++i)
                 RS_A2(b->stress, nd, i, k) = 0.0;
             b->fluxSlv[k] = b->fluxMst[k] = b->sed[k] = 0.0;
+            sv[own + 2] = sv[own + 3] = 0.0;
             continue;
         }
-        double *sv = nsv > 0 ? b->statev + (size_t)k * (size_t)nsv : sv_dummy;
         double stress[3], rdisp[3], drdisp[3], coords[3];
         for (int i = 0; i < nd; ++i) {
             stress[i] = RS_A2(b->stress, nd, i, k);
@@ -376,7 +376,7 @@ int rs_law_uinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
         }
         double ddsddr[9] = {0}, dvisc[9] = {0}, dstruc[9] = {0};
         double ddfddt[4] = {0}, ddsddt[6] = {0}, ddfddr[6] = {0};
-        double flux[2] = {b->fluxSlv[k], b->fluxMst[k]};
+        double flux[2] = {sv[own + 2], sv[own + 3]};
         double sed = b->sed[k], sfd = 0.0, spd = 0.0, svd = 0.0, scd = 0.0;
         double pnewdt = RS_PNEWDT_IN;
         double temp[2] = {0.0, 0.0}, dtemp[2] = {0.0, 0.0};
@@ -386,9 +386,9 @@ int rs_law_uinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
             temp[0] = b->tempSlv[k] - dtemp[0];
             temp[1] = b->tempMst[0] - dtemp[1];
         }
-        double predef[2 * RS_ADAPTER_MAX_NPRED], dpred[2 * RS_ADAPTER_MAX_NPRED];
+        double predef[2 * RS_ADAPTER_MAX_NPRED + 2], dpred[2 * RS_ADAPTER_MAX_NPRED + 2];
         int npred = point_predef(b, k, predef, dpred);
-        double time[2] = {b->timStep, b->timGlb};
+        double time[2] = {b->timStep + b->dTimCur, b->timGlb + b->dTimCur};
         double dtime = b->dTimCur, freqr = 0.0;
         double aloc[9] = {0};
         for (int j = 0; j < nd; ++j)
@@ -403,6 +403,7 @@ int rs_law_uinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
         if (lopen < -1)
             lopen = -1;
 
+        rs_abq_call_begin(b, k, "UINTER");
         if (ld->kind == RS_LOADED_UINTER)
             ld->uinter(stress, ddsddr, dvisc, dstruc, flux, ddfddt, ddsddt, ddfddr, sv,
                        &sed, &sfd, &spd, &svd, &scd, &pnewdt, rdisp, drdisp, temp, dtemp,
@@ -419,6 +420,11 @@ int rs_law_uinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
                           &npuser, &mcrd, &b->kStep, &b->kInc, &kit, &linper, &lopen,
                           &lstate, &lsdi, &lprint, RS_FNAME_LEN, RS_FNAME_LEN,
                           RS_FNAME_LEN);
+        rc = rs_abq_call_end(err);
+        if (rc) {
+            setup_restore(b, saved);
+            return rc;
+        }
 
         for (int i = 0; i < nd; ++i)
             RS_A2(b->stress, nd, i, k) = stress[i];
@@ -431,6 +437,8 @@ int rs_law_uinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
         b->scd[k] += scd;
         sv[own] = (double)(lopen + 2);
         sv[own + 1] = (double)lstate;
+        sv[own + 2] = flux[0];
+        sv[own + 3] = flux[1];
         check_pnewdt(b, law, k, pnewdt, "UINTER");
         check_stable(b, law, k, stiffness_bound(ddsddr, nd), "DDSDDR");
     }
@@ -440,31 +448,110 @@ int rs_law_uinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
 
 /* -------------------------------------------------------------------- FRIC */
 
+/* DDPDDH of the block: the normal law's current stiffness d stress(1) / d rdisp(1), a
+ * forward difference. The normal law runs once more on a copy of the block with rdisp(1)
+ * and drdisp(1) moved by delta = RS_DDPDDH_STEP max(|h|, 1e-3 R) from the state it had
+ * before this increment (stress0, statev0); that call's results are dropped. Viscous
+ * terms (vrel) are the same in both calls, so this is the elastic tangent. */
+static int normal_stiffness(const rs_law *normal, const rs_law_block *b, int off,
+                            const double *stress0, const double *statev0, double *ddpddh,
+                            rs_error *err)
+{
+    const int n = b->nSlvNod, nd = b->nDir;
+    const size_t nsv = (size_t)b->nStateVar;
+    double rd[3 * RS_BLOCK], drd[3 * RS_BLOCK], st[3 * RS_BLOCK], delta[RS_BLOCK];
+    double fs[RS_BLOCK], fm[RS_BLOCK], se[RS_BLOCK], e1[RS_BLOCK], e2[RS_BLOCK],
+        e3[RS_BLOCK], e4[RS_BLOCK];
+    memcpy(rd, b->rdisp, (size_t)(nd * n) * sizeof(double));
+    memcpy(drd, b->drdisp, (size_t)(nd * n) * sizeof(double));
+    memcpy(st, stress0, (size_t)(nd * n) * sizeof(double));
+    for (int k = 0; k < n; ++k) {
+        const double h = RS_A2(b->rdisp, nd, 0, k);
+        const double R = b->radius ? b->radius[k] : 0.0;
+        delta[k] = 0.0;
+        if (is_leaving(b, k))
+            continue;
+        double d = RS_DDPDDH_STEP * fmax(fabs(h), 1e-3 * R);
+        if (!(d > 0.0))
+            d = RS_DDPDDH_STEP * 1e-9;
+        delta[k] = d;
+        RS_A2(rd, nd, 0, k) = h + d;
+        RS_A2(drd, nd, 0, k) += d;
+        fs[k] = b->fluxSlv[k];
+        fm[k] = b->fluxMst[k];
+        se[k] = b->sed[k];
+    }
+    double *sv = NULL;
+    if (nsv > 0) {
+        sv = (double *)malloc(nsv * (size_t)n * sizeof(double));
+        if (!sv)
+            return rs_error_set(err, RS_ERR_NOMEM, "law '%s': out of memory", normal->name);
+        memcpy(sv, statev0, nsv * (size_t)n * sizeof(double));
+    }
+    rs_law_block nb = *b;
+    nb.rdisp = rd;
+    nb.drdisp = drd;
+    nb.stress = st;
+    nb.statev = sv;
+    nb.fluxSlv = fs;
+    nb.fluxMst = fm;
+    nb.sed = se;
+    nb.sfd = e1;
+    nb.scd = e2;
+    nb.spd = e3;
+    nb.svd = e4;
+    nb.requests = NULL;
+    nb.warn = NULL;
+    int rc = run_normal(normal, &nb, off, err);
+    free(sv);
+    if (rc)
+        return rc;
+    for (int k = 0; k < n; ++k)
+        ddpddh[k] = delta[k] > 0.0
+                        ? (RS_A2(st, nd, 0, k) - RS_A2(b->stress, nd, 0, k)) / delta[k]
+                        : 0.0;
+    return RS_OK;
+}
+
 /* FRIC point by point after the normal law has set stress(1) for the block.
  * FRIC is called only for a closed contact: PRESS = stress(1) > 0 or rdisp(1) > 0.
- * An open contact carries no shear, keeps its slip and gets LM = 2.
+ * An open contact carries no shear, keeps its slip and enters its next call with LM = 2.
  * Inputs of contact k:
- *   LM: the value returned last increment; 2 (open) for a contact's first call.
+ *   LM: the contact's state in the previous increment: 2 when it was open (and on its
+ *     first call), 1 when the routine returned 1, 0 otherwise (a closed contact whose
+ *     routine returned 0 or 2 was sliding).
  *   TAU: the shear stress(2:nDir) at the start of the increment (already rotated by
- *     drot). DGAM = drdisp(2:nDir). SLIP: the accumulated slip (sum of DSLIP, rotated
- *     by drot like any vector state). PRESS = stress(1) of this increment,
- *     DPRESS = its change, DDPDDH = the secant d stress(1) / d rdisp(1) over the
- *     increment (stress(1)/rdisp(1) when rdisp(1) did not change; 0 when open).
- *   TAULM: the stick stress TAU + k_s DGAM with k_s = stiffDflt (see LM = 1).
- *   TEMP(2), PREDEF(2,*): slave and wall values at the end of the increment.
+ *     drot). DGAM = drdisp(2:nDir) when LM = 0 on entry, else 0 (no slip was possible).
+ *     SLIP: the accumulated slip (sum of DSLIP, rotated by drot like any vector state).
+ *     PRESS = stress(1) of this increment, DPRESS = its change over the increment,
+ *     DDPDDH = the normal law's current stiffness d stress(1) / d rdisp(1)
+ *     (normal_stiffness).
+ *   TAULM: the stick stress of this increment (see LM = 1).
+ *   TIME = (step time, total time) at the end of the increment; KSTEP, KINC: the block's.
+ *   TEMP(2), PREDEF(2,*): slave and wall values at the end of the increment (the
+ *     engine's fields; NPRED = nPred).
  *   NOEL = 0, NPT = 0 (no contact elements); NODE = particle id; NPATCH = feature id;
  *   COORDS = the contact point; RCOORD = the closest wall point (current
  *   configuration); CHRLNGTH as for UINTER; SED = FRIC's elastic energy density of
  *   the last increment.
  * Returned LM:
- *   0: slip or elastic stick: shear = TAU, SLIP += DSLIP, sfd += SFD, SED kept.
- *   1: rigid stick. There are no Lagrange multipliers in an explicit step; the stick is
- *      a penalty spring of stiffness k_s = stiffDflt: shear = TAULM, no slip, no
- *      dissipation, elastic energy |shear|^2 / (2 k_s).
- *   2: frictionless: shear = 0 and SLIP += DGAM.
+ *   0: slip or elastic stick: shear = TAU, SLIP += DSLIP.
+ *   1: no relative tangential motion at the contact point, an explicit kinematic
+ *      constraint: the tangential force on the particle cancels its contact point's
+ *      tangential velocity vt = vrel(2:nDir) in one increment, F_t = -m_eff vt / dt, so
+ *      shear = TAULM = m_eff vt / (areaSlv dt). m_eff is the particle's effective mass
+ *      at the contact, translation and rotation: 1/m_eff = 1/m + Rc^2 / I, Rc = R -
+ *      rdisp(1)/2 the lever arm of the contact point and I = 2/5 m R^2, a solid sphere
+ *      (1/m_eff = 3.5/m at zero overlap; m_eff = m for a point, R = 0). Needs the DEM
+ *      extension (mass, radius, vrel). No slip, no elastic energy.
+ *   2: frictionless: shear = 0 and SLIP += drdisp(2:nDir).
  *   Anything else is an error naming the contact.
- * The block's sed is the normal law's plus FRIC's; PNEWDT < 1 and a DDTDDG above the
- * stable limit for dt (LM = 0) are reported through b->warn. */
+ * Dissipation and heat: sfd += SFD when the routine sets it (nonzero), else DSLIP.TAU.
+ * With temperatures (nTemp = 1) that energy per area over dt is heat, half into the
+ * particle (fluxSlv) and half into the wall (fluxMst), on top of the normal law's (which
+ * starts each increment from zero fluxes).
+ * The block's sed is the normal law's plus FRIC's; PNEWDT < 1 and the DDTDDG of LM = 0
+ * go to check_pnewdt and check_stable. */
 int rs_law_fric_update(const rs_law *law, rs_law_block *b, rs_error *err)
 {
     const rs_loaded_law *ld = (const rs_loaded_law *)law->ctx;
@@ -479,19 +566,32 @@ int rs_law_fric_update(const rs_law *law, rs_law_block *b, rs_error *err)
     int nN = ld->normal->nstatev;
     int own = nuser + nN;
 
-    double tau_old[2 * RS_BLOCK], p_old[RS_BLOCK];
+    double stress0[3 * RS_BLOCK];
     for (int k = 0; k < n; ++k) {
-        p_old[k] = RS_A2(b->stress, nd, 0, k);
-        for (int a = 0; a < nf; ++a)
-            tau_old[2 * k + a] = RS_A2(b->stress, nd, 1 + a, k);
-        /* the normal law sees its own elastic energy */
+        for (int i = 0; i < nd; ++i)
+            stress0[k * nd + i] = RS_A2(b->stress, nd, i, k);
+        /* the normal law sees its own elastic energy, and computes its fluxes afresh
+         * (the last increment's hold FRIC's frictional heat) */
         b->sed[k] -= b->statev[(size_t)k * (size_t)nsv + (size_t)own + 3u];
+        b->fluxSlv[k] = b->fluxMst[k] = 0.0;
     }
     double *saved;
     rc = setup_save(law, b, &saved, err);
     if (rc)
         return rc;
+    double *statev0 = saved;
+    if (!statev0 && nsv > 0) { /* not a setup call: the state before the normal law */
+        statev0 = (double *)malloc((size_t)nsv * (size_t)n * sizeof(double));
+        if (!statev0)
+            return rs_error_set(err, RS_ERR_NOMEM, "law '%s': out of memory", law->name);
+        memcpy(statev0, b->statev, (size_t)nsv * (size_t)n * sizeof(double));
+    }
+    double ddpddh[RS_BLOCK];
     rc = run_normal(ld->normal, b, nuser, err);
+    if (!rc)
+        rc = normal_stiffness(ld->normal, b, nuser, stress0, statev0, ddpddh, err);
+    if (statev0 != saved)
+        free(statev0);
     if (rc) {
         setup_restore(b, saved);
         return rc;
@@ -519,25 +619,36 @@ int rs_law_fric_update(const rs_law *law, rs_law_block *b, rs_error *err)
         if (!(press > 0.0 || h > 0.0)) {
             for (int a = 0; a < nf; ++a)
                 RS_A2(b->stress, nd, 1 + a, k) = 0.0;
-            sv[own + 2] = 3.0; /* LM = 2, stored + 1 */
+            sv[own + 2] = 3.0; /* LM = 2 on entry next time, stored + 1 */
             sv[own + 3] = 0.0;
             continue;
         }
-        int lm = sv[own + 2] > 0.0 ? (int)sv[own + 2] - 1 : 2;
+        /* stored LM + 1; 0: the contact's first call */
+        int lm_in = sv[own + 2] > 0.0 ? (int)sv[own + 2] - 1 : 2;
+        int lm = lm_in;
         double tau[2] = {0.0, 0.0}, dgam[2] = {0.0, 0.0}, taulm[2] = {0.0, 0.0};
-        double ks = b->stiffDflt ? b->stiffDflt[k] : 0.0;
+        double area = b->areaSlv[k], dt = b->dTimCur;
+        int have_dem =
+            b->mass && b->radius && b->vrel && b->mass[k] > 0.0 && area > 0.0 && dt > 0.0;
+        if (have_dem) {
+            const double m = b->mass[k], R = b->radius[k];
+            const double rc_arm = R > 0.0 ? fmax(R - 0.5 * h, 0.0) : 0.0;
+            const double inv =
+                1.0 / m +
+                (R > 0.0 ? rc_arm * rc_arm / (RS_SPHERE_INERTIA * m * R * R) : 0.0);
+            for (int a = 0; a < nf; ++a)
+                taulm[a] = RS_A2(b->vrel, nd, 1 + a, k) / (inv * area * dt);
+        }
         for (int a = 0; a < nf; ++a) {
-            tau[a] = tau_old[2 * k + a];
-            dgam[a] = RS_A2(b->drdisp, nd, 1 + a, k);
-            taulm[a] = tau[a] + ks * dgam[a];
+            tau[a] = stress0[k * nd + 1 + a];
+            dgam[a] = lm_in == 0 ? RS_A2(b->drdisp, nd, 1 + a, k) : 0.0;
         }
         double ddtddg[4] = {0}, ddtddp[2] = {0}, dslip[2] = {0}, ddtddt[4] = {0};
         double sedf = sv[own + 3], sfd = 0.0, pnewdt = RS_PNEWDT_IN;
-        double dpress = press - p_old[k];
-        double dh = RS_A2(b->drdisp, nd, 0, k);
-        double ddpddh = fabs(dh) > 0.0 ? dpress / dh : (h > 0.0 ? press / h : 0.0);
+        double dpress = press - stress0[k * nd];
         double slip_in[2] = {slip[0], slip[1]};
-        double time[2] = {b->timStep, b->timGlb}, dtime = b->dTimCur;
+        double time[2] = {b->timStep + b->dTimCur, b->timGlb + b->dTimCur};
+        double dtime = b->dTimCur;
         int noel = 0, npt = 0, node = particle_id(b, k), npatch = feature_id(b, k);
         double coords[3], rcoord[3];
         for (int i = 0; i < nd; ++i) {
@@ -549,36 +660,53 @@ int rs_law_fric_update(const rs_law *law, rs_law_block *b, rs_error *err)
             temp[0] = b->tempSlv[k];
             temp[1] = b->tempMst[0];
         }
-        double predef[2 * RS_ADAPTER_MAX_NPRED], dpred[2 * RS_ADAPTER_MAX_NPRED];
+        double predef[2 * RS_ADAPTER_MAX_NPRED + 2], dpred[2 * RS_ADAPTER_MAX_NPRED + 2];
         int npred = point_predef(b, k, predef, dpred);
         int mcrd = nd;
         double chr = point_chrlngth(b, k);
         double *usv = nuser > 0 ? sv : sv_dummy;
 
+        rs_abq_call_begin(b, k, "FRIC");
         ld->fric(&lm, tau, ddtddg, ddtddp, dslip, &sedf, &sfd, ddtddt, &pnewdt, usv, dgam,
-                 taulm, &press, &dpress, &ddpddh, slip_in, &b->kStep, &b->kInc, time,
+                 taulm, &press, &dpress, &ddpddh[k], slip_in, &b->kStep, &b->kInc, time,
                  &dtime, &noel, b->surfInt, b->surfSlv, b->surfMst, &npt, &node, &npatch,
                  coords, rcoord, b->drot + (size_t)k * 4u, temp, predef, &nf, &mcrd, &npred,
                  &nuser, &chr, fprops, &npuser, RS_FNAME_LEN, RS_FNAME_LEN, RS_FNAME_LEN);
+        rc = rs_abq_call_end(err);
+        if (rc) {
+            setup_restore(b, saved);
+            return rc;
+        }
 
+        double diss = sfd;
         if (lm == 0) {
+            double work = 0.0;
             for (int a = 0; a < nf; ++a) {
                 RS_A2(b->stress, nd, 1 + a, k) = tau[a];
                 slip[a] += dslip[a];
+                work += dslip[a] * tau[a];
             }
-            b->sfd[k] += sfd;
+            if (sfd == 0.0)
+                diss = work;
             check_stable(b, law, k, stiffness_bound(ddtddg, nf), "DDTDDG");
         } else if (lm == 1) {
-            double e = 0.0;
-            for (int a = 0; a < nf; ++a) {
-                RS_A2(b->stress, nd, 1 + a, k) = taulm[a];
-                e += taulm[a] * taulm[a];
+            if (!have_dem) {
+                setup_restore(b, saved);
+                return rs_error_set(
+                    err, RS_ERR_ARG,
+                    "law '%s': FRIC returned LM = 1 (stick) at particle %d, "
+                    "feature %d; the stick constraint needs the particle's "
+                    "mass, radius and relative velocity (the DEM extension), "
+                    "a positive area and dt",
+                    law->name, node, npatch);
             }
-            sedf = ks > 0.0 ? 0.5 * e / ks : 0.0;
+            for (int a = 0; a < nf; ++a)
+                RS_A2(b->stress, nd, 1 + a, k) = taulm[a];
+            sedf = 0.0;
         } else if (lm == 2) {
             for (int a = 0; a < nf; ++a) {
                 RS_A2(b->stress, nd, 1 + a, k) = 0.0;
-                slip[a] += dgam[a];
+                slip[a] += RS_A2(b->drdisp, nd, 1 + a, k);
             }
             sedf = 0.0;
         } else {
@@ -588,7 +716,12 @@ int rs_law_fric_update(const rs_law *law, rs_law_block *b, rs_error *err)
                                 "%d; expected 0 (slip), 1 (stick) or 2 (frictionless)",
                                 law->name, lm, node, npatch);
         }
-        sv[own + 2] = (double)(lm + 1);
+        b->sfd[k] += diss;
+        if (b->nTemp > 0 && dt > 0.0) {
+            b->fluxSlv[k] += 0.5 * diss / dt;
+            b->fluxMst[k] += 0.5 * diss / dt;
+        }
+        sv[own + 2] = lm == 1 ? 2.0 : 1.0; /* LM on entry next time (1 or 0), + 1 */
         sv[own + 3] = sedf;
         b->sed[k] += sedf;
         check_pnewdt(b, law, k, pnewdt, "FRIC");

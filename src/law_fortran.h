@@ -82,8 +82,8 @@ typedef enum rs_loaded_kind {
 #define RS_ADAPTER_MAX_NORMAL_NSV 32
 
 /// Adapter slots kept after the normal law's state variables (see law_fortran.c).
-#define RS_UINTER_OWN_NSV 2 ///< LOPENCLOSE, LSTATE
-#define RS_FRIC_OWN_NSV 4   ///< SLIP(1:2), LM, elastic energy density of FRIC
+#define RS_UINTER_OWN_NSV 4 ///< LOPENCLOSE, LSTATE, FLUX(1:2) of the last increment
+#define RS_FRIC_OWN_NSV 4   ///< SLIP(1:2), LM on entry of the next call, FRIC's SED
 
 /// ctx of a loaded law.
 typedef struct rs_loaded_law {

@@ -1,10 +1,12 @@
 /* Run-time loading of user laws with dlopen: C block laws, Fortran VUINTER, and the
- * point-wise Fortran UINTER and FRIC routines wrapped as block laws. Failures name the
- * library and the missing symbol with the dynamic loader's own message. */
+ * point-wise Fortran UINTER and FRIC routines wrapped as block laws. A Fortran source
+ * (rs_law_is_source) is built first, through the cache of law_build.c. Failures name
+ * the library and the missing symbol with the dynamic loader's own message. */
 #define _POSIX_C_SOURCE 200809L
 
 #include "law_fortran.h"
 #include "rigidsurf/law.h"
+#include "rigidsurf/law_build.h"
 
 #include <dlfcn.h>
 #include <stdio.h>
@@ -27,11 +29,19 @@ static int open_library(const char *lib, rs_loaded_law **out, rs_error *err)
     *out = NULL;
     if (!lib || !lib[0])
         return rs_error_set(err, RS_ERR_ARG, "law library: no path given");
+    char built[4096];
+    const char *path = lib;
+    if (rs_law_is_source(lib)) {
+        int rc = rs_law_build_cached(lib, built, sizeof built, err);
+        if (rc)
+            return rc;
+        path = built;
+    }
     rs_loaded_law *ld = (rs_loaded_law *)calloc(1, sizeof *ld);
     if (!ld)
         return rs_error_set(err, RS_ERR_NOMEM, "law library %s: out of memory", lib);
     dlerror();
-    ld->handle = dlopen(lib, RTLD_NOW | RTLD_LOCAL);
+    ld->handle = dlopen(path, RTLD_NOW | RTLD_LOCAL);
     if (!ld->handle) {
         const char *msg = dlerror();
         free(ld);

@@ -1,4 +1,4 @@
-C     A user VUINTER in Abaqus calling form, for `law vuinter ./libmyvuinter.so`:
+C     A user VUINTER in Abaqus calling form, for `law vuinter myvuinter.f`:
 C     Coulomb friction with a linear penalty in the normal direction, the same
 C     model as the built-in law `coulomb` (and as mylaw.c), same operations in
 C     the same order.
@@ -9,8 +9,8 @@ C       tau = k_stick s_e; if |tau| > mu p: tau <- mu p tau/|tau|,
 C             s_e = tau / k_stick
 C     stress(1) = p, stress(2:3) = tau (traction on the master).
 C     props: mu, k_stick, kn.  NSTATEV = 2.
-C     Build: gfortran -O2 -shared -fPIC -I<rigidsurf>/src myvuinter.f
-C                     -o libmyvuinter.so
+C     Build: the fix builds it when given the source; by hand:
+C            rigidsurf-build-law myvuinter.f -o libmyvuinter.so
       subroutine vuinter(
 C Write only
      1 sfd, scd, spd, svd,
@@ -26,7 +26,7 @@ C Read only
      9 areaSlv, tempSlv, dtempSlv, preDefSlv, dpreDefSlv,
      1 tempMst, dtempMst, preDefMst, dpreDefMst)
 C
-      include 'vaba_param.inc'
+      INCLUDE 'VABA_PARAM.INC'
 C
       character*80 surfInt, surfSlv, surfMst
 C

@@ -36,13 +36,34 @@ extern "C" {
 
 struct rs_law;
 
+/// What user routines asked of the step that an explicit engine cannot grant, gathered
+/// over the calls of a law (rs_law_block.requests). Clear with rs_law_requests_clear.
+typedef struct rs_law_requests {
+    long pnewdt_calls;   ///< calls that returned PNEWDT < 1
+    double pnewdt_min;   ///< the smallest PNEWDT returned (1 when none was below 1)
+    int pnewdt_particle; ///< particle id (jSlvUid) of the call with the smallest PNEWDT
+    int pnewdt_feature;  ///< its feature id (jConMstid)
+    /// The smallest critical step 2 sqrt(m / (k A)) of the stiffness k a routine returned
+    /// (UINTER DDSDDR, FRIC DDTDDG, largest row sum) for a particle of mass m and contact
+    /// area A; INFINITY when no routine returned a positive stiffness.
+    double step_min;
+    const char *step_what; ///< "DDSDDR" or "DDTDDG": the array that gave step_min
+} rs_law_requests;
+
+/// Empties r: no calls, pnewdt_min = 1, step_min = INFINITY.
+void rs_law_requests_clear(rs_law_requests *r);
+
+/// Adds the requests of src to dst (the smallest values, the sums of the counts).
+void rs_law_requests_merge(rs_law_requests *dst, const rs_law_requests *src);
+
 /// Arguments of one law call. Arrays are Fortran layout; n means nSlvNod.
 /// Fortran INTEGER is int (gfortran integer*4), REAL*8 is double.
 typedef struct rs_law_block {
     /* VUINTER integers. */
     int kStep;     ///< step number (Abaqus: from 1)
     int kInc;      ///< increment number
-    int nFacNod;   ///< master nodes per facet (1 here: jConMstid holds the feature id)
+    int nFacNod;   ///< master nodes per facet (1 here: jConMstid holds the feature id;
+                   ///< a VUINTER on an analytic master sees 0, see analytic_master)
     int nSlvNod;   ///< contacts in this block, 0 <= n <= RS_BLOCK
     int nMstNod;   ///< entries of jMstUid
     int nSurfDir;  ///< tangent directions: nDir - 1
@@ -50,7 +71,7 @@ typedef struct rs_law_block {
     int nStateVar; ///< state variables per contact
     int nProps;    ///< entries of props
     int nTemp;     ///< 1 if temperatures are passed, else 0
-    int nPred;     ///< predefined field variables per node
+    int nPred;     ///< predefined field variables per node (the engine's fields, 0 without)
     int numDefTfv; ///< master nodes with temperature / field values (1: the wall)
 
     const int *jSlvUid;   ///< (n) particle id of each contact
@@ -112,12 +133,19 @@ typedef struct rs_law_block {
     int wall_type;        ///< wall material type
     int setup;            ///< nonzero on a setup call (LIGGGHTS setup, before step 1):
                           ///< compute forces but do not advance history (statev)
+    int analytic_master;  ///< nonzero: the master is an analytic surface (SEGMENTS,
+                          ///< CYLINDER, REVOLUTION), which has no nodes: a Fortran
+                          ///< VUINTER then sees nFacNod = nMstNod = 0
+
+    /// Requests of user routines (PNEWDT < 1, the stiffness they return) are added here
+    /// when it is set; the adapters then send no per-contact warning for them.
+    rs_law_requests *requests;
 
     /* Warning channel (rs_law_block_init leaves it NULL: warnings are dropped). */
     /// Called by adapters for a condition an explicit step cannot honour (a UINTER or
     /// FRIC asking for a smaller increment with PNEWDT < 1, a returned stiffness above
-    /// the stable limit for dt). k is the contact in the block; msg names the particle
-    /// id and feature id. The law call itself still succeeds.
+    /// the stable limit for dt) when requests is NULL. k is the contact in the block; msg
+    /// names the particle id and feature id. The law call itself still succeeds.
     void (*warn)(void *warn_ctx, const struct rs_law *law, int k, const char *msg);
     void *warn_ctx; ///< passed to warn
 } rs_law_block;
@@ -226,10 +254,10 @@ double rs_law_default_stiffness(double mass, double area, double dt);
 double rs_law_default_conductance(double heat_capacity, double area, double dt);
 
 /// Zero-fills b and sets the Abaqus defaults: nFacNod = 1, nTemp = 1, numDefTfv = 1,
-/// nMstNod = 1, nPred = 0, kStep = 1, blank surface names, and points the optional
-/// read-only arrays (shape, areaSlv, tempSlv, dtempSlv, preDefSlv, dpreDefSlv, tempMst,
-/// dtempMst, preDefMst, dpreDefMst, jMstUid) at library constants (ones for shape and
-/// areaSlv, zeros for the rest), valid for up to RS_BLOCK contacts. The engine still
+/// nMstNod = 1, nPred = 0, kStep = 1, kInc = 1, blank surface names, and points the
+/// optional read-only arrays (shape, areaSlv, tempSlv, dtempSlv, preDefSlv, dpreDefSlv,
+/// tempMst, dtempMst, preDefMst, dpreDefMst, jMstUid) at library constants (ones for shape
+/// and areaSlv, zeros for the rest), valid for up to RS_BLOCK contacts. The engine still
 /// sets nSlvNod, nDir, nSurfDir, the counts, jSlvUid, jConMstid, rdisp, drdisp, drot,
 /// stiffDflt, condDflt, props and every writable array.
 void rs_law_block_init(rs_law_block *b);

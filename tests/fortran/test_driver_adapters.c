@@ -3,7 +3,8 @@
  *   trajectory as with linear_softening (round-off) and rebounds with its impact speed
  *   (a linear spring, to O((omega dt)^2));
  * - a node pressed onto the flat and dragged along it with FRIC Coulomb over
- *   linear_softening follows the built-in coulomb, and while slipping |tau| = mu p. */
+ *   linear_softening (kn = 1e6, from its equilibrium overlap) follows the built-in
+ *   coulomb, and while slipping |tau| = mu p. */
 #include "rigidsurf/driver.h"
 #include "rs_test.h"
 
@@ -60,7 +61,10 @@ static int run(const rs_law *law, const double *props, int nprops, int nstatev, 
         d.y[0] = 2e-5;
         d.vy[0] = -0.1;
     } else {
-        d.fext[1] = -5.0; /* pressed with 5 N */
+        d.fext[1] = -5.0; /* pressed with 5 N, from its equilibrium overlap 5 N / kn:
+                           * closed from the first call on, so FRIC's LM enters as 0
+                           * (sliding) from the second, as coulomb's slip advances */
+        d.y[0] = -5e-6;
         d.fixed[0] = 1;
         d.vpres[0] = 0.05;
     }

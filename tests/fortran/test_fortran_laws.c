@@ -143,7 +143,7 @@ static void uinter_vs_linear(const char *lib, int v6)
     int rc = v6 ? rs_law_load_uinter_v6(lib, NULL, &fl, &err)
                 : rs_law_load_uinter(lib, NULL, &fl, &err);
     ENSURE(rc == RS_OK);
-    ENSURE(fl.nstatev == 2);
+    ENSURE(fl.nstatev == 4); /* LOPENCLOSE, LSTATE, FLUX(1:2) */
     double k = 3e5;
     double lp[1] = {k}, up[3] = {k, 0.0, 0.0};
     int n = 16, nd = 3;
@@ -252,6 +252,11 @@ static void fric_vs_coulomb(int nd)
             random_increment(nd, 3e-7, 4e-7, 0.0, dr, drot);
             double h = 2e-6 * sin(0.11 * inc + 0.7 * k) + 1e-6;
             dr[0] = h - RS_A2(fb.rdisp, nd, 0, k);
+            /* FRIC gets DGAM = 0 when the contact was open the increment before (LM = 2
+             * on entry); coulomb has no such state, so those increments do not slide */
+            if (inc == 0 || !(RS_A2(fb.rdisp, nd, 0, k) > 0.0))
+                for (int i = 1; i < nd; ++i)
+                    dr[i] = 0.0;
             advance(&fa, k, dr, drot);
             advance(&fb, k, dr, drot);
             saw_open |= h <= 0.0;
@@ -289,23 +294,19 @@ static void test_fric_coulomb_matches_builtin_3d(void)
     fric_vs_coulomb(3);
 }
 
-/* LM = 1: rigid stick through the stiffDflt penalty, tau = ks sum(dgam), no slip, no
- * dissipation. LM = 2: no shear, the slip slot accumulates every dgam. */
-static void fric_mode(int mode)
+/* LM = 2: no shear, the slip slot accumulates every slip increment. */
+static void test_fric_lm2_is_frictionless_and_slips(void)
 {
     const rs_law *lin = rs_law_find("linear_softening");
     rs_law fl;
     rs_error err;
     ENSURE(rs_law_load_fric(RS_FRIC_COULOMB_LIB, lin, &fl, &err) == RS_OK);
-    double fp[5] = {1e5, 0.3, 1e6, (double)mode, 0.0};
+    double fp[5] = {1e5, 0.3, 1e6, 2.0, 0.0};
     int n = 3, nd = 3;
     law_fix_init(&fb, NULL, fp, 5, n, nd);
     fb.b.nStateVar = fl.nstatev; /* the routine keeps no statev */
-    double ks = 4e6, sum[2] = {0.0, 0.0};
+    double sum[2] = {0.0, 0.0};
     double ident[4] = {1.0, 0.0, 0.0, 1.0};
-    for (int k = 0; k < n; ++k) {
-        fb.stiff[k] = ks;
-    }
     for (int inc = 0; inc < 20; ++inc) {
         double dr[3] = {inc == 0 ? 1e-6 : 0.0, 1e-7 * (1 + inc % 3), -2e-7};
         for (int k = 0; k < n; ++k) {
@@ -317,32 +318,14 @@ static void fric_mode(int mode)
         for (int k = 0; k < n; ++k) {
             const double *slot = fb.statev + (size_t)k * (size_t)fb.b.nStateVar;
             ENSURE(fb.sfd[k] == 0.0);
-            if (mode == 1) {
-                ENSURE_REL(RS_A2(fb.stress, nd, 1, k), ks * sum[0], 1e-12);
-                ENSURE_REL(RS_A2(fb.stress, nd, 2, k), ks * sum[1], 1e-12);
-                ENSURE_SMALL(slot[0], 0.0);
-                double tau2 = ks * ks * (sum[0] * sum[0] + sum[1] * sum[1]);
-                ENSURE_REL(fb.sed[k], 0.5 * 1e5 * 1e-12 + tau2 / (2.0 * ks), 1e-12);
-            } else {
-                ENSURE(RS_A2(fb.stress, nd, 1, k) == 0.0);
-                ENSURE(RS_A2(fb.stress, nd, 2, k) == 0.0);
-                ENSURE_REL(slot[0], sum[0], 1e-12);
-                ENSURE_REL(slot[1], sum[1], 1e-12);
-            }
+            ENSURE(RS_A2(fb.stress, nd, 1, k) == 0.0);
+            ENSURE(RS_A2(fb.stress, nd, 2, k) == 0.0);
+            ENSURE_REL(slot[0], sum[0], 1e-12);
+            ENSURE_REL(slot[1], sum[1], 1e-12);
             ENSURE_REL(RS_A2(fb.stress, nd, 0, k), 1e5 * 1e-6, 1e-12);
         }
     }
     rs_law_unload(&fl);
-}
-
-static void test_fric_lm1_is_rigid_stick_penalty(void)
-{
-    fric_mode(1);
-}
-
-static void test_fric_lm2_is_frictionless_and_slips(void)
-{
-    fric_mode(2);
 }
 
 typedef struct warn_log {
@@ -485,50 +468,90 @@ static void test_adapters_zero_leaving_contacts(void)
     rs_law_unload(&fl);
 }
 
-/* The VUINTER argument order, the hidden CHARACTER*80 lengths and the DEM extension as
- * predefined fields, read back from Fortran. */
+/* The VUINTER argument order, the hidden CHARACTER*80 lengths, the Abaqus integers of
+ * an analytic master (no nodes: nFacNod = nMstNod = 0, numDefTfv = 1), nPred = 0
+ * without fields, and the DEM extension through RS_GETDEM, read back from Fortran. */
 static void test_vuinter_probe_argument_order_and_dem_fields(void)
 {
     rs_law vl;
     rs_error err;
     ENSURE(rs_law_load_vuinter(RS_VUINTER_PROBE_LIB, &vl, &err) == RS_OK);
-    double props[3] = {1.0, 2.0, 42.0};
+    double props[3] = {0.0, 0.0, 42.0};
     int n = 5, nd = 3;
-    law_fix_init(&fb, NULL, props, 3, n, nd);
-    static double sv[16 * RS_BLOCK];
+    enum { NSV = 27 };
+    static double sv[NSV * RS_BLOCK];
+    for (int analytic = 0; analytic < 2; ++analytic) {
+        law_fix_init(&fb, NULL, props, 3, n, nd);
+        memset(sv, 0, sizeof sv);
+        fb.b.statev = sv;
+        fb.b.nStateVar = NSV;
+        fb.b.dTimCur = 2.5e-6;
+        fb.b.analytic_master = analytic;
+        rs_law_block_set_name(fb.b.surfInt, "INTER-1");
+        rs_law_block_set_name(fb.b.surfMst, "DRUM");
+        fb.tempMst[0] = 321.0;
+        for (int k = 0; k < n; ++k) {
+            fb.radius[k] = 0.001 * (k + 1);
+            fb.mass[k] = 0.01 * (k + 1);
+            fb.reff[k] = 0.002 * (k + 1);
+            for (int i = 0; i < nd; ++i) {
+                RS_A2(fb.vrel, nd, i, k) = 10.0 * k + i;
+                RS_A2(fb.rdisp, nd, i, k) = 0.1 * k - 0.01 * i;
+            }
+            fb.curv[2 * k] = 5.0 + k;
+            fb.curv[2 * k + 1] = -3.0 - k;
+            fb.stiff[k] = 1e6 + k;
+            fb.area[k] = 0.5 + k;
+        }
+        ENSURE(rs_law_call(&vl, &fb.b, &err) == RS_OK);
+        for (int k = 0; k < n; ++k) {
+            const double *s = sv + NSV * k;
+            ENSURE(s[26] == 0.0); /* RS_GETDEM's jrcd */
+            ENSURE(s[0] == fb.radius[k] && s[1] == fb.mass[k] && s[2] == fb.reff[k]);
+            ENSURE(s[3] == 10.0 * k && s[4] == 10.0 * k + 1 && s[5] == 10.0 * k + 2);
+            ENSURE(s[6] == 5.0 + k && s[7] == -3.0 - k);
+            ENSURE(s[8] == 7.0 && s[9] == 80.0);
+            ENSURE(s[10] == 0.0); /* nPred: no fields */
+            ENSURE(s[11] == 2.5e-6 && s[12] == 1e6 + k && s[13] == 321.0);
+            ENSURE(s[14] == 100.0 + k);
+            ENSURE(s[15] == (analytic ? 0.0 : 1.0)); /* nFacNod */
+            ENSURE(s[16] == (analytic ? 0.0 : 1.0)); /* nMstNod */
+            ENSURE(s[17] == 1.0);                    /* numDefTfv */
+            for (int i = 0; i < nd; ++i) {
+                ENSURE(RS_A2(fb.stress, nd, i, k) == RS_A2(fb.rdisp, nd, i, k));
+            }
+            ENSURE(fb.sfd[k] == 0.5 + k && fb.svd[k] == 42.0);
+        }
+    }
+    rs_law_unload(&vl);
+}
+
+/* With predefined fields of its own, the engine's count is nPred and preDefSlv holds
+ * them. */
+static void test_vuinter_npred_is_the_engine_fields(void)
+{
+    rs_law vl;
+    rs_error err;
+    ENSURE(rs_law_load_vuinter(RS_VUINTER_PROBE_LIB, &vl, &err) == RS_OK);
+    double props[3] = {0.0, 0.0, 1.0};
+    enum { NSV = 27, NP = 2 };
+    static double sv[NSV * RS_BLOCK], pred[NP * RS_BLOCK], dpred[NP * RS_BLOCK];
+    int n = 3;
+    law_fix_init(&fb, NULL, props, 3, n, 3);
     memset(sv, 0, sizeof sv);
     fb.b.statev = sv;
-    fb.b.nStateVar = 16;
-    fb.b.dTimCur = 2.5e-6;
-    rs_law_block_set_name(fb.b.surfInt, "INTER-1");
-    rs_law_block_set_name(fb.b.surfMst, "DRUM");
-    fb.tempMst[0] = 321.0;
+    fb.b.nStateVar = NSV;
+    fb.b.nPred = NP;
     for (int k = 0; k < n; ++k) {
-        fb.radius[k] = 0.001 * (k + 1);
-        fb.mass[k] = 0.01 * (k + 1);
-        fb.reff[k] = 0.002 * (k + 1);
-        for (int i = 0; i < nd; ++i) {
-            RS_A2(fb.vrel, nd, i, k) = 10.0 * k + i;
-            RS_A2(fb.rdisp, nd, i, k) = 0.1 * k - 0.01 * i;
-        }
-        fb.curv[2 * k] = 5.0 + k;
-        fb.curv[2 * k + 1] = -3.0 - k;
-        fb.stiff[k] = 1e6 + k;
-        fb.area[k] = 0.5 + k;
+        pred[NP * k] = 7.0 + k;
+        pred[NP * k + 1] = -1.0;
     }
+    fb.b.preDefSlv = pred;
+    fb.b.dpreDefSlv = dpred;
     ENSURE(rs_law_call(&vl, &fb.b, &err) == RS_OK);
     for (int k = 0; k < n; ++k) {
-        const double *s = sv + 16 * k;
-        ENSURE(s[0] == fb.radius[k] && s[1] == fb.mass[k] && s[2] == fb.reff[k]);
-        ENSURE(s[3] == 10.0 * k && s[4] == 10.0 * k + 1 && s[5] == 10.0 * k + 2);
-        ENSURE(s[6] == 5.0 + k && s[7] == -3.0 - k);
-        ENSURE(s[8] == 7.0 && s[9] == 80.0 && s[10] == 8.0);
-        ENSURE(s[11] == 2.5e-6 && s[12] == 1e6 + k && s[13] == 321.0);
-        ENSURE(s[14] == 100.0 + k);
-        for (int i = 0; i < nd; ++i) {
-            ENSURE(RS_A2(fb.stress, nd, i, k) == RS_A2(fb.rdisp, nd, i, k));
-        }
-        ENSURE(fb.sfd[k] == 0.5 + k && fb.svd[k] == 42.0);
+        ENSURE(sv[NSV * k + 10] == (double)NP);
+        ENSURE(sv[NSV * k + 25] == 7.0 + k);
     }
     rs_law_unload(&vl);
 }
@@ -542,12 +565,12 @@ int main(void)
     RS_RUN(test_uinter_normal_law_props_first);
     RS_RUN(test_fric_coulomb_matches_builtin_2d);
     RS_RUN(test_fric_coulomb_matches_builtin_3d);
-    RS_RUN(test_fric_lm1_is_rigid_stick_penalty);
     RS_RUN(test_fric_lm2_is_frictionless_and_slips);
     RS_RUN(test_pnewdt_below_one_warns_naming_contact);
     RS_RUN(test_uinter_stiffness_above_stable_limit_warns);
     RS_RUN(test_setup_call_does_not_advance_statev);
     RS_RUN(test_adapters_zero_leaving_contacts);
     RS_RUN(test_vuinter_probe_argument_order_and_dem_fields);
+    RS_RUN(test_vuinter_npred_is_the_engine_fields);
     return rs_test_summary();
 }

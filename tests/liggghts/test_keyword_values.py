@@ -76,6 +76,8 @@ def cases():
     # words
     add("curvature", "missing", HERTZ + " curvature", "")
     add("curvature", "wrong word", HERTZ + " curvature maybe", "maybe")
+    add("pnewdt", "missing", HERTZ + " pnewdt", "")
+    add("pnewdt", "wrong word", HERTZ + " pnewdt halt", "halt")
     add("area", "wrong word", HERTZ + " area nodes", "nodes")
     add("move", "wrong word", HERTZ + " move circular 1 0 0", "")
     add("move", "missing", HERTZ + " move", "")

@@ -1,0 +1,44 @@
+/* rigidsurf: building a Fortran user routine (VUINTER, UINTER, FRIC) from its source,
+ * as `abaqus make` does.
+ *
+ * The compiler is gfortran (or $RIGIDSURF_FC), found on PATH when a routine is built.
+ * The flags follow Abaqus's own fixed-form build: 132 columns, tabs accepted, argument
+ * mismatches allowed; a free-form file (.f90, .f95, .f03, .f08, .F90) has unlimited
+ * lines. The include path holds VABA_PARAM.INC, ABA_PARAM.INC (and their lower-case
+ * names) and the routine's own folder; the library links librigidsurf_abaqus (the
+ * utility routines: include/rigidsurf/abaqus_util.h).
+ *
+ * rs_law_build_cached keeps each result under a name made of the routine's file name
+ * and a hash of its text, of the files it INCLUDEs from its folder, of the Fortran
+ * includes and of the compiler command. The cache folder is $RIGIDSURF_CACHE, else
+ * $XDG_CACHE_HOME/rigidsurf, else $HOME/.cache/rigidsurf, else /tmp/rigidsurf-cache-UID.
+ * Processes building the same routine at once (MPI ranks) wait on a lock: one compiles,
+ * the others load its result. */
+#ifndef RIGIDSURF_LAW_BUILD_H
+#define RIGIDSURF_LAW_BUILD_H
+
+#include "rigidsurf/types.h"
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// 1 if path names a Fortran source by its extension (.f .for .ftn .f77 .F .FOR .fpp
+/// fixed form; .f90 .f95 .f03 .f08 .F90 free form), else 0.
+int rs_law_is_source(const char *path);
+
+/// Compiles src into the shared library out. On a compile error, err names the file
+/// and holds the compiler's first error; the whole compiler output is in out.log.
+/// verbose != 0 prints the compiler command on stdout.
+int rs_law_build(const char *src, const char *out, int verbose, rs_error *err);
+
+/// Builds src into the cache, or finds it there; the library's path goes to so_path.
+int rs_law_build_cached(const char *src, char *so_path, size_t size, rs_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
