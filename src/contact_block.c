@@ -18,6 +18,9 @@ double rs_effective_radius(double R, double k1, double k2)
 
 enum { NDOUBLE = 19 };
 
+/// Slots of a slice's node table: a power of two above twice its most nodes.
+#define RS_FACET_HASH 2048
+
 /* The double arrays of cb, each with its length for n contacts. */
 static void double_arrays(rs_contact_block *cb, size_t n, double **p[NDOUBLE],
                           size_t len[NDOUBLE])
@@ -48,6 +51,13 @@ void rs_cblock_free(rs_contact_block *cb)
         free(*p[i]);
     free(cb->uid);
     free(cb->type);
+    free(cb->fac_node);
+    free(cb->fac_shape);
+    free(cb->fac_xyz);
+    free(cb->sl_conn);
+    free(cb->sl_uid);
+    free(cb->sl_xyz);
+    free(cb->sl_hash);
     memset(cb, 0, sizeof *cb);
 }
 
@@ -197,6 +207,106 @@ void rs_cblock_inputs(rs_contact_block *cb, const rs_track_out *o,
             }
 }
 
+/* Room for the facets of n contacts (and one slice's arrays). */
+static int facet_room(rs_contact_block *cb, int n, rs_error *err)
+{
+    if (!cb->sl_hash) {
+        cb->sl_conn = malloc(4 * RS_BLOCK * sizeof(int));
+        cb->sl_uid = malloc(4 * RS_BLOCK * sizeof(int));
+        cb->sl_xyz = malloc(12 * RS_BLOCK * sizeof(double));
+        cb->sl_hash = malloc(RS_FACET_HASH * sizeof(int));
+        if (!cb->sl_conn || !cb->sl_uid || !cb->sl_xyz || !cb->sl_hash)
+            return rs_error_set(err, RS_ERR_NOMEM, "contact block: out of memory for facets");
+    }
+    if (n <= cb->fac_cap)
+        return RS_OK;
+    const int cap = n > 2 * cb->fac_cap ? n : 2 * cb->fac_cap;
+    int *node = realloc(cb->fac_node, 4 * (size_t)cap * sizeof(int));
+    if (node)
+        cb->fac_node = node;
+    double *shape = realloc(cb->fac_shape, 4 * (size_t)cap * sizeof(double));
+    if (shape)
+        cb->fac_shape = shape;
+    double *xyz = realloc(cb->fac_xyz, 12 * (size_t)cap * sizeof(double));
+    if (xyz)
+        cb->fac_xyz = xyz;
+    if (!node || !shape || !xyz)
+        return rs_error_set(err, RS_ERR_NOMEM,
+                            "contact block: out of memory for the facets of %d contacts", n);
+    cb->fac_cap = cap;
+    return RS_OK;
+}
+
+int rs_cblock_facets(rs_contact_block *cb, const rs_track_out *o, const rs_surface *s,
+                     const rs_pose *pose, rs_error *err)
+{
+    cb->nfac = rs_surface_facet_size(s, NULL);
+    if (cb->nfac == 0 || o->n == 0)
+        return RS_OK;
+    const int rc = facet_room(cb, o->n, err);
+    if (rc)
+        return rc;
+    const int nf = cb->nfac, nd = o->ndir;
+    for (int k = 0; k < o->n; k++) {
+        int node[4] = {0, 0, 0, 0};
+        double xyz[12] = {0}, shape[4] = {0, 0, 0, 0}, xm[3] = {0, 0, 0}, X[3];
+        const int leaving = RS_A2(o->rdisp, nd, 0, k) >= 0.5 * RS_MAXVAL;
+        for (int d = 0; d < nd; d++)
+            xm[d] = leaving ? 0.0 : RS_A2(o->coordmst, nd, d, k);
+        if (pose)
+            rs_pose_to_local(pose, xm, X);
+        else
+            memcpy(X, xm, sizeof X);
+        const int nn = rs_surface_facet(s, o->feature[k], X, node, xyz, shape);
+        for (int i = nn; i < nf; i++) { /* a triangle among quads: its first node again */
+            node[i] = node[0];
+            shape[i] = 0.0;
+            memcpy(xyz + 3 * i, xyz, 3 * sizeof(double));
+        }
+        for (int i = 0; i < nf; i++) {
+            const size_t j = (size_t)k * (size_t)nf + (size_t)i;
+            cb->fac_node[j] = node[i];
+            cb->fac_shape[j] = leaving || nn == 0 ? 0.0 : shape[i];
+            if (pose)
+                rs_pose_to_global(pose, xyz + 3 * i, cb->fac_xyz + 3 * j);
+            else
+                memcpy(cb->fac_xyz + 3 * j, xyz + 3 * i, 3 * sizeof(double));
+        }
+    }
+    return RS_OK;
+}
+
+/* The facet arguments of the slice [k0, k0 + nk): the distinct nodes (sl_uid, sl_xyz)
+ * and each contact's positions among them (sl_conn). */
+static void facet_slice(rs_contact_block *cb, int k0, int nk, int nd, rs_law_block *b)
+{
+    const int nf = cb->nfac;
+    int nm = 0;
+    for (int h = 0; h < RS_FACET_HASH; h++)
+        cb->sl_hash[h] = -1;
+    for (int j = 0; j < nk * nf; j++) {
+        const size_t g = (size_t)k0 * (size_t)nf + (size_t)j;
+        const int uid = cb->fac_node[g];
+        unsigned h = ((unsigned)uid * 2654435761u) & (RS_FACET_HASH - 1);
+        while (cb->sl_hash[h] >= 0 && cb->sl_uid[cb->sl_hash[h]] != uid)
+            h = (h + 1) & (RS_FACET_HASH - 1);
+        if (cb->sl_hash[h] < 0) {
+            cb->sl_hash[h] = nm;
+            cb->sl_uid[nm] = uid;
+            for (int d = 0; d < nd; d++)
+                cb->sl_xyz[(size_t)nm * (size_t)nd + (size_t)d] = cb->fac_xyz[3 * g + (size_t)d];
+            nm++;
+        }
+        cb->sl_conn[j] = cb->sl_hash[h] + 1;
+    }
+    b->fac_nFacNod = nf;
+    b->fac_nMstNod = nm;
+    b->fac_jConMstid = cb->sl_conn;
+    b->fac_shape = cb->fac_shape + (size_t)k0 * (size_t)nf;
+    b->fac_jMstUid = cb->sl_uid;
+    b->fac_coordMst = cb->sl_xyz;
+}
+
 int rs_cblock_call(rs_contact_block *cb, const rs_law *law, const rs_law_block *tmpl,
                    const rs_track_out *o, rs_error *err)
 {
@@ -240,6 +350,8 @@ int rs_cblock_call(rs_contact_block *cb, const rs_law *law, const rs_law_block *
         b.scd = cb->scd + u0;
         b.spd = cb->spd + u0;
         b.svd = cb->svd + u0;
+        if (cb->nfac > 0)
+            facet_slice(cb, k0, nk, nd, &b);
         const int rc = rs_law_call(law, &b, err);
         if (rc)
             return rc;

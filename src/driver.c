@@ -182,6 +182,11 @@ static int call_law(rs_driver *d, int nd, rs_error *err)
     b.dtempMst = &dtm;
     b.warn = d->warn;
     b.warn_ctx = d->warn_ctx;
+    if (!b.analytic_master && rs_law_takes_facets(d->law)) {
+        const int rc = rs_cblock_facets(&d->cb, &d->trk, d->surface, &d->motion.pose, err);
+        if (rc)
+            return rc;
+    }
     return rs_cblock_call(&d->cb, d->law, &b, &d->trk, err);
 }
 

@@ -172,7 +172,9 @@ static void setup_restore(const rs_law_block *b, double *saved)
 /* The block is already the VUINTER argument list in Fortran layout: the pointers go
  * straight through, plus the three hidden CHARACTER*80 lengths. An analytic master has
  * no nodes: nFacNod = nMstNod = 0 (the block keeps the feature id in jConMstid for the
- * engine's own messages). nPred is the engine's; numDefTfv = 1 (one wall temperature). */
+ * engine's own messages). A faceted master's facets come from the block's fac_ fields:
+ * nFacNod, nMstNod, jConMstid, shape, jMstUid and coordMst of the facet nodes. nPred is
+ * the engine's; numDefTfv = 1 (one wall temperature). */
 int rs_law_vuinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
 {
     const rs_loaded_law *ld = (const rs_loaded_law *)law->ctx;
@@ -180,8 +182,13 @@ int rs_law_vuinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
     if (n <= 0)
         return RS_OK;
     /* sfd, scd, spd, svd start at zero: rs_law_call clears them */
-    const int nfac = b->analytic_master ? 0 : b->nFacNod;
-    const int nmst = b->analytic_master ? 0 : b->nMstNod;
+    const int facets = !b->analytic_master && b->fac_nFacNod > 0;
+    const int nfac = b->analytic_master ? 0 : facets ? b->fac_nFacNod : b->nFacNod;
+    const int nmst = b->analytic_master ? 0 : facets ? b->fac_nMstNod : b->nMstNod;
+    const int *jmst = facets ? b->fac_jMstUid : b->jMstUid;
+    const int *jcon = facets ? b->fac_jConMstid : b->jConMstid;
+    const double *shape = facets ? b->fac_shape : b->shape;
+    const double *cmst = facets ? b->fac_coordMst : b->coordMst;
     const double *pred = b->nPred > 0 ? b->preDefSlv : rs_fzeros;
     const double *dpred = b->nPred > 0 ? b->dpreDefSlv : rs_fzeros;
     const double *predm = b->nPred > 0 ? b->preDefMst : rs_fzeros;
@@ -198,9 +205,9 @@ int rs_law_vuinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
     ld->vuinter(b->sfd, b->scd, b->spd, b->svd, b->stress, b->fluxSlv, b->fluxMst, b->sed,
                 statev, &b->kStep, &b->kInc, &nfac, &b->nSlvNod, &nmst, &b->nSurfDir,
                 &b->nDir, &b->nStateVar, &b->nProps, &b->nTemp, &b->nPred, &b->numDefTfv,
-                b->jSlvUid, b->jMstUid, b->jConMstid, &b->timStep, &b->timGlb, &b->dTimCur,
-                b->surfInt, b->surfSlv, b->surfMst, b->rdisp, b->drdisp, b->drot,
-                b->stiffDflt, b->condDflt, b->shape, b->coordSlv, b->coordMst, b->alocaldir,
+                b->jSlvUid, jmst, jcon, &b->timStep, &b->timGlb, &b->dTimCur, b->surfInt,
+                b->surfSlv, b->surfMst, b->rdisp, b->drdisp, b->drot, b->stiffDflt,
+                b->condDflt, shape, b->coordSlv, cmst, b->alocaldir,
                 props, b->areaSlv, b->tempSlv, b->dtempSlv, pred, dpred, b->tempMst,
                 b->dtempMst, predm, dpredm, RS_FNAME_LEN, RS_FNAME_LEN, RS_FNAME_LEN);
     rc = rs_abq_call_end(err);

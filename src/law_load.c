@@ -269,6 +269,11 @@ int rs_law_load_fric(const char *lib, const rs_law *normal, rs_law *out, rs_erro
     return RS_OK;
 }
 
+int rs_law_takes_facets(const rs_law *law)
+{
+    return law && law->update == rs_law_vuinter_update;
+}
+
 void rs_law_unload(rs_law *law)
 {
     if (!law)

@@ -51,6 +51,23 @@ int rs_surface_query_among(const rs_surface *s, const rs_query *q, const int *co
     return rc;
 }
 
+int rs_surface_facet(const rs_surface *s, int f, const double xm[3], int nodes[4],
+                     double xyz[12], double shape[4])
+{
+    if (!s || !s->ops || !s->ops->facet)
+        return 0;
+    return s->ops->facet(s, f, xm, nodes, xyz, shape);
+}
+
+int rs_surface_facet_size(const rs_surface *s, int *nnode)
+{
+    if (nnode)
+        *nnode = 0;
+    if (!s || !s->ops || !s->ops->facet_size)
+        return 0;
+    return s->ops->facet_size(s, nnode);
+}
+
 int rs_surface_adjacent(const rs_surface *s, int fa, int fb)
 {
     return s->ops->adjacent(s, fa, fb);

@@ -60,6 +60,17 @@ typedef struct rs_contact_block {
      * with that key refills only past them. */
     double uni_key[6];
     int uni_n;
+    /* Facets (rs_cblock_facets): per contact its facet's node numbers, shape functions
+     * and node coordinates in the current pose, nfac per contact (0: none); and one
+     * slice's VUINTER facet arrays, made in rs_cblock_call. */
+    int nfac, fac_cap;
+    int *fac_node;     ///< (nfac, n) user node numbers
+    double *fac_shape; ///< (nfac, n)
+    double *fac_xyz;   ///< (3, nfac, n)
+    int *sl_conn;      ///< (nfac, RS_BLOCK) 1-based positions in sl_uid
+    int *sl_uid;       ///< (nfac RS_BLOCK) the slice's distinct nodes
+    double *sl_xyz;    ///< (3, nfac RS_BLOCK) their coordinates
+    int *sl_hash;      ///< open addressing over sl_uid
 } rs_contact_block;
 
 /// Sizes the arrays for cap contacts (cb's settings must be set). Keeps nothing.
@@ -74,6 +85,13 @@ void rs_cblock_free(rs_contact_block *cb);
 /// the tracker's to load (rs_track_load into cb->stress, cb->statev).
 void rs_cblock_inputs(rs_contact_block *cb, const rs_track_out *o,
                       const rs_block_particles *p, double dt);
+
+/// The facets under the contacts of o on the faceted master s in pose (NULL: the
+/// reference configuration), for a law that takes them (rs_law_takes_facets): fills
+/// cb's facet arrays, which rs_cblock_call hands to each slice as VUINTER's facet
+/// arguments. For a kind without facets cb->nfac = 0 and nothing is filled.
+int rs_cblock_facets(rs_contact_block *cb, const rs_track_out *o, const rs_surface *s,
+                     const rs_pose *pose, rs_error *err);
 
 /// Calls law on the contacts of o in slices of at most RS_BLOCK: each slice is tmpl
 /// (the engine's scalars: kStep, kInc, times, names, props, wall temperature, setup,

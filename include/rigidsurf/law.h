@@ -137,6 +137,17 @@ typedef struct rs_law_block {
                           ///< CYLINDER, REVOLUTION), which has no nodes: a Fortran
                           ///< VUINTER then sees nFacNod = nMstNod = 0
 
+    /* A faceted master's facets under the contacts, VUINTER's facet arguments
+     * (fac_nFacNod = 0: none; the engines fill them for laws that take them,
+     * rs_law_takes_facets). */
+    int fac_nFacNod;            ///< nodes per facet: 3, or 4 when the master has quads (a
+                                ///< triangle then repeats its first node, with shape 0)
+    int fac_nMstNod;            ///< the block's distinct facet nodes
+    const int *fac_jConMstid;   ///< (fac_nFacNod, n) 1-based positions in fac_jMstUid
+    const double *fac_shape;    ///< (fac_nFacNod, n) shape functions at the closest point
+    const int *fac_jMstUid;     ///< (fac_nMstNod) the nodes' user numbers
+    const double *fac_coordMst; ///< (nDir, fac_nMstNod) their coordinates, current pose
+
     /// Requests of user routines (PNEWDT < 1, the stiffness they return) are added here
     /// when it is set; the adapters then send no per-contact warning for them.
     rs_law_requests *requests;
@@ -277,6 +288,10 @@ int rs_law_load_c(const char *lib, const char *symbol, rs_law *out, rs_error *er
 
 /// Loads a Fortran VUINTER (symbol vuinter_, built against vaba_param.inc) as a law.
 int rs_law_load_vuinter(const char *lib, rs_law *out, rs_error *err);
+
+/// 1 when law reads a faceted master's facets (the fac_ fields of its block: a loaded
+/// VUINTER), else 0.
+int rs_law_takes_facets(const rs_law *law);
 
 /// Loads a Fortran UINTER (point-wise, symbol uinter_) as a block law. normal (may be
 /// NULL) supplies the normal response when the routine leaves it to the engine.

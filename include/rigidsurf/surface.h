@@ -127,6 +127,17 @@ typedef struct rs_surface_ops {
     int (*closest_among)(const struct rs_surface *s, const struct rs_query *q,
                          const int *const *cand, const int *ncand, struct rs_contacts *out,
                          rs_error *err);
+    /// Optional (NULL: the kind has no facets, as the analytic kinds): the facet under a
+    /// contact on feature f whose closest point is xm, both in the reference
+    /// configuration: its node count nn (3 or 4; 0 when f names no facet), its nodes'
+    /// user numbers (an Abaqus part's node labels; otherwise 1-based, in the file's
+    /// order of the welded points), their coordinates xyz (3 x nn) and the shape
+    /// functions at xm. An edge's or a vertex's facet is that of its lowest-numbered
+    /// triangle.
+    int (*facet)(const struct rs_surface *s, int f, const double xm[3], int nodes[4],
+                 double xyz[12], double shape[4]);
+    /// With facet: the most nodes a facet has (3, or 4 with quads); *nnode, the nodes.
+    int (*facet_size)(const struct rs_surface *s, int *nnode);
 } rs_surface_ops;
 
 typedef struct rs_surface {
@@ -223,6 +234,16 @@ void rs_cands_free(rs_cands *c);
 
 /// 1 when history may pass from feature fa to feature fb (see rs_surface_ops).
 int rs_surface_adjacent(const rs_surface *s, int fa, int fb);
+
+/// The facet under a contact (rs_surface_ops.facet): its node count (0 for a kind without
+/// facets or a feature that names none), its nodes' user numbers, their reference
+/// coordinates and the shape functions at the closest point xm (reference configuration).
+int rs_surface_facet(const rs_surface *s, int f, const double xm[3], int nodes[4],
+                     double xyz[12], double shape[4]);
+
+/// The most nodes a facet of s has (0 for a kind without facets); *nnode (may be NULL)
+/// gets the surface's node count.
+int rs_surface_facet_size(const rs_surface *s, int *nnode);
 
 /// Axis-aligned bounds of the surface in its reference configuration (+-INFINITY where
 /// it is unbounded).

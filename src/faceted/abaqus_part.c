@@ -9,6 +9,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -342,6 +343,16 @@ int rs_abaqus_read_soup(const char *path, rs_soup *soup, char *msg, size_t cap)
     if (!rc) {
         memcpy(soup->xyz, pt.xyz, (size_t)pt.np * 3 * sizeof(double));
         soup->np = pt.np;
+        /* the node numbers, when every one fits an INTEGER (VUINTER's jMstUid) */
+        soup->label = malloc((size_t)pt.np * sizeof(int));
+        for (int i = 0; soup->label && i < pt.np; i++) {
+            if (pt.nid[i] < 1 || pt.nid[i] > INT_MAX) {
+                free(soup->label);
+                soup->label = NULL;
+                break;
+            }
+            soup->label[i] = (int)pt.nid[i];
+        }
         int k = 0;
         for (int e = 0; e < pt.ne && !rc; e++) {
             soup->off[e] = k;

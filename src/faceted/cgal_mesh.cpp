@@ -165,6 +165,7 @@ extern "C" void rs_soup_free(rs_soup *soup)
     std::free(soup->xyz);
     std::free(soup->off);
     std::free(soup->idx);
+    std::free(soup->label);
     std::memset(soup, 0, sizeof *soup);
 }
 

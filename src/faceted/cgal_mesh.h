@@ -17,6 +17,7 @@ typedef struct rs_soup {
     double *xyz;
     int *off;
     int *idx;
+    int *label; ///< np: user node numbers (an Abaqus part's *NODE labels), or NULL
 } rs_soup;
 
 /// Reads the polygon soup of path by its extension (.stl, .obj, .off, .ply; case

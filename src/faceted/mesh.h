@@ -49,6 +49,8 @@ typedef struct rs_mesh {
     int *tnbr;    ///< 3 nt: across slot j of triangle t, 3 t' + j' of the other face
                   ///< of a two-face edge, -1 at open and non-manifold edges
     double *vpn;  ///< 3 nv: angle-weighted pseudo-normal (unit)
+    int *vlabel;  ///< nv: user node number of each vertex (the label of its first point
+                  ///< in the file), or NULL: the vertex's index + 1
     unsigned char *vopen; ///< nv: 1 on an open boundary or non-manifold edge
     double lo[3], hi[3];  ///< bounds
     double size;          ///< the bounds' diagonal

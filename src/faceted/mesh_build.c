@@ -50,6 +50,7 @@ void rs_mesh_free(rs_mesh *m)
     free(m->vfirst);
     free(m->tnbr);
     free(m->vpn);
+    free(m->vlabel);
     free(m->vopen);
     if (m->tree)
         rs_cgal_tree_free(m->tree);
@@ -530,6 +531,14 @@ int rs_mesh_build(const rs_soup *soup, double scale, const double a[3], const do
         goto nomem;
     for (int i = 0; i < soup->np; i++)
         memcpy(m->xyz + 3 * map[i], pts + 3 * i, 3 * sizeof(double));
+    if (soup->label) {
+        /* a welded vertex keeps the label of its first point */
+        m->vlabel = xmalloc((size_t)nv, sizeof(int));
+        if (!m->vlabel)
+            goto nomem;
+        for (int i = soup->np - 1; i >= 0; i--)
+            m->vlabel[map[i]] = soup->label[i];
+    }
     /* triangles and elements; degenerate ones are dropped and reported */
     int nt = 0, nel = 0, ndeg = 0;
     char degs[160] = "";

@@ -593,6 +593,123 @@ static int mesh_triangulate(const rs_surface *s, double span, int nhoop, rs_trim
     return RS_OK;
 }
 
+/* Shape functions of a triangle at p (its plane): the barycentric coordinates. */
+static void tri_shape(const double *x0, const double *x1, const double *x2, const double p[3],
+                      double shape[3])
+{
+    double e1[3], e2[3], nrm[3];
+    for (int d = 0; d < 3; d++) {
+        e1[d] = x1[d] - x0[d];
+        e2[d] = x2[d] - x0[d];
+    }
+    nrm[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    nrm[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    nrm[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    const double nn = nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2];
+    const double *x[3] = {x0, x1, x2};
+    for (int i = 0; i < 3; i++) {
+        const double *a = x[(i + 1) % 3], *b = x[(i + 2) % 3];
+        double u[3], v[3];
+        for (int d = 0; d < 3; d++) {
+            u[d] = a[d] - p[d];
+            v[d] = b[d] - p[d];
+        }
+        const double c[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                             u[0] * v[1] - u[1] * v[0]};
+        shape[i] = (c[0] * nrm[0] + c[1] * nrm[1] + c[2] * nrm[2]) / nn;
+    }
+}
+
+/* Shape functions of a planar quad (bilinear, as Abaqus's R3D4) at p: the local
+ * coordinates (xi, eta) in [-1, 1]^2 by Gauss-Newton on x(xi, eta) = p. */
+static void quad_shape(const double *xq, const double p[3], double shape[4])
+{
+    static const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+    double xi = 0.0, eta = 0.0;
+    for (int it = 0; it < 50; it++) {
+        double r[3] = {-p[0], -p[1], -p[2]}, jx[3] = {0, 0, 0}, jy[3] = {0, 0, 0};
+        for (int i = 0; i < 4; i++) {
+            const double n = 0.25 * (1 + sx[i] * xi) * (1 + sy[i] * eta);
+            const double nx = 0.25 * sx[i] * (1 + sy[i] * eta);
+            const double ny = 0.25 * sy[i] * (1 + sx[i] * xi);
+            for (int d = 0; d < 3; d++) {
+                r[d] += n * xq[3 * i + d];
+                jx[d] += nx * xq[3 * i + d];
+                jy[d] += ny * xq[3 * i + d];
+            }
+        }
+        const double a = jx[0] * jx[0] + jx[1] * jx[1] + jx[2] * jx[2];
+        const double b = jx[0] * jy[0] + jx[1] * jy[1] + jx[2] * jy[2];
+        const double c = jy[0] * jy[0] + jy[1] * jy[1] + jy[2] * jy[2];
+        const double gx = jx[0] * r[0] + jx[1] * r[1] + jx[2] * r[2];
+        const double gy = jy[0] * r[0] + jy[1] * r[1] + jy[2] * r[2];
+        const double det = a * c - b * b;
+        if (!(det > 0.0))
+            break;
+        const double dxi = (c * gx - b * gy) / det, deta = (a * gy - b * gx) / det;
+        xi -= dxi;
+        eta -= deta;
+        if (fabs(dxi) + fabs(deta) < 1e-15)
+            break;
+    }
+    for (int i = 0; i < 4; i++)
+        shape[i] = 0.25 * (1 + sx[i] * xi) * (1 + sy[i] * eta);
+}
+
+static int mesh_facet(const rs_surface *s, int f, const double xm[3], int nodes[4],
+                      double xyz[12], double shape[4])
+{
+    const rs_mesh *m = s->impl;
+    if (!m || f < 0)
+        return 0;
+    const int idx = RS_FEATURE_INDEX(f);
+    int el;
+    switch (RS_FEATURE_TYPE(f)) {
+    case RS_FEAT_FACE:
+        el = idx;
+        break;
+    case RS_FEAT_EDGE:
+        if (idx >= m->ne || m->edge_f0[idx] == m->edge_f0[idx + 1])
+            return 0;
+        el = m->tel[m->edge_f[m->edge_f0[idx]]];
+        break;
+    case RS_FEAT_VERTEX:
+        if (idx >= m->nv || m->vfirst[idx] < 0)
+            return 0;
+        el = m->tel[m->vfirst[idx]];
+        break;
+    default:
+        return 0;
+    }
+    if (el < 0 || el >= m->nel)
+        return 0;
+    const int nn = m->el_nnode[el];
+    for (int i = 0; i < nn; i++) {
+        const int v = m->el_nodes[4 * el + i];
+        nodes[i] = m->vlabel ? m->vlabel[v] : v + 1;
+        for (int d = 0; d < 3; d++)
+            xyz[3 * i + d] = m->xyz[3 * (size_t)v + d];
+    }
+    if (nn == 3)
+        tri_shape(xyz, xyz + 3, xyz + 6, xm, shape);
+    else
+        quad_shape(xyz, xm, shape);
+    return nn;
+}
+
+static int mesh_facet_size(const rs_surface *s, int *nnode)
+{
+    const rs_mesh *m = s->impl;
+    if (nnode)
+        *nnode = m ? m->nv : 0;
+    if (!m)
+        return 0;
+    for (int el = 0; el < m->nel; el++)
+        if (m->el_nnode[el] == 4)
+            return 4;
+    return 3;
+}
+
 static void mesh_free(rs_surface *s)
 {
     rs_mesh_free(s->impl);
@@ -609,7 +726,9 @@ const rs_surface_ops rs_mesh_ops = {"MESH",
                                     mesh_triangulate,
                                     mesh_free,
                                     mesh_candidates,
-                                    mesh_closest_among};
+                                    mesh_closest_among,
+                                    mesh_facet,
+                                    mesh_facet_size};
 
 /* STL checks the reader leaves out: an ASCII STL (it starts with "solid" and reads as
  * text) ends with "endsolid", so a file cut short is an error and not a smaller mesh; a

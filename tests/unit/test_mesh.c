@@ -914,6 +914,19 @@ static void abaqus_rigid_part(void)
     query(&s, 1, &x, &y, &z, NULL, 1.0, &c);
     ENSURE(c.n == 1 && c.feature[0] == RS_FEATURE(RS_FEAT_FACE, 1)); /* element 2 */
     ENSURE_NEAR(c.dist[0], 0.05, 1e-15);
+    /* its facet: the part's node labels, and the unit square's bilinear shape functions
+     * (1-x)(1-y), x(1-y), xy, (1-x)y at (0.3, 0.6) */
+    {
+        const double xm[3] = {c.xm[0][0], c.xm[1][0], c.xm[2][0]};
+        int nodes[4];
+        double xyz[12], sh[4];
+        ENSURE(rs_surface_facet(&s, c.feature[0], xm, nodes, xyz, sh) == 4);
+        ENSURE(nodes[0] == 105 && nodes[1] == 106 && nodes[2] == 107 && nodes[3] == 108);
+        const double want[4] = {0.7 * 0.4, 0.3 * 0.4, 0.3 * 0.6, 0.7 * 0.6};
+        for (int i = 0; i < 4; i++)
+            ENSURE_NEAR(sh[i], want[i], 1e-15);
+        ENSURE(xyz[3 * 2] == 1.0 && xyz[3 * 2 + 1] == 1.0 && xyz[3 * 2 + 2] == 1.0);
+    }
     rs_contacts_free(&c);
     rs_surface_free(&s);
     /* the rigid part in the surface file itself, after its *SURFACE */
@@ -976,6 +989,102 @@ static void repairs_are_reported(void)
     rs_surface_free(&s);
 }
 
+/* The facet under each contact (rs_surface_facet): its nodes interpolated with the
+ * shape functions give the contact's closest point, the shapes sum to 1 and are not
+ * negative, a face's nodes lie in its tangent plane, an edge's facet has two nodes with
+ * weight and a vertex's one, at the closest point. Quads (the torus) have 4 nodes,
+ * triangles (the rounded box) 3. */
+static int facet_case(poly_mesh *pm, const char *name, int want_nn, int nodes_in_file)
+{
+    rs_surface s;
+    if (load_pm(pm, name, &s) != RS_OK)
+        return 0;
+    int nnode = -1, ok = 1;
+    ok &= rs_surface_facet_size(&s, &nnode) == want_nn;
+    ok &= nnode == nodes_in_file;
+    enum { NP = 400 };
+    double x[NP], y[NP], z[NP], r[NP];
+    for (int i = 0; i < NP; i++) {
+        x[i] = 2.6 * (2 * urand() - 1);
+        y[i] = 2.6 * (2 * urand() - 1);
+        z[i] = 1.6 * (2 * urand() - 1);
+        r[i] = 0.05;
+    }
+    rs_contacts c;
+    rs_error e;
+    memset(&c, 0, sizeof c);
+    rs_contacts_reserve(&c, 64, &e);
+    query(&s, NP, x, y, z, r, 0.4, &c);
+    int counted[3] = {0, 0, 0};
+    for (int k = 0; k < c.n && ok; k++) {
+        const double xm[3] = {c.xm[0][k], c.xm[1][k], c.xm[2][k]};
+        const double n[3] = {c.nrm[0][k], c.nrm[1][k], c.nrm[2][k]};
+        int nodes[4];
+        double xyz[12], sh[4];
+        const int nn = rs_surface_facet(&s, c.feature[k], xm, nodes, xyz, sh);
+        const int type = RS_FEATURE_TYPE(c.feature[k]);
+        counted[type]++;
+        if (nn != want_nn) {
+            fprintf(stderr, "%s: contact %d: %d nodes\n", name, k, nn);
+            ok = 0;
+            break;
+        }
+        double sum = 0.0, p[3] = {0, 0, 0};
+        int weighted = 0;
+        for (int i = 0; i < nn; i++) {
+            ok &= nodes[i] >= 1 && nodes[i] <= nnode;
+            ok &= sh[i] >= -1e-12;
+            sum += sh[i];
+            weighted += sh[i] > 1e-12;
+            for (int d = 0; d < 3; d++)
+                p[d] += sh[i] * xyz[3 * i + d];
+            if (type == RS_FEAT_FACE) {
+                const double off = (xyz[3 * i] - xm[0]) * n[0] + (xyz[3 * i + 1] - xm[1]) * n[1] +
+                                   (xyz[3 * i + 2] - xm[2]) * n[2];
+                ok &= fabs(off) < 1e-12;
+            }
+        }
+        ok &= fabs(sum - 1.0) < 1e-12;
+        ok &= dist3(p, xm) < 1e-12;
+        if (type == RS_FEAT_EDGE)
+            ok &= weighted <= 2;
+        if (type == RS_FEAT_VERTEX)
+            ok &= weighted == 1;
+        if (!ok)
+            fprintf(stderr, "%s: contact %d (type %d): sum %.17g, |N x - xm| %.3g, %d weighted\n",
+                    name, k, type, sum, dist3(p, xm), weighted);
+    }
+    /* every kind of feature was met */
+    ok &= counted[0] > 0 && counted[1] > 0 && counted[2] > 0;
+    if (!ok)
+        fprintf(stderr, "%s: faces %d, edges %d, vertices %d\n", name, counted[0], counted[1],
+                counted[2]);
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+    return ok;
+}
+
+static void facets_under_contacts(void)
+{
+    poly_mesh m;
+    torus(&m, 32, 16, 1.0, 0.3);
+    ENSURE(facet_case(&m, "ftorus", 4, 32 * 16));
+    rounded_box(&m, 8, 0.3);
+    const int shared = 6 * 9 * 9 - 12 * 9 + 8; /* the faces' grids share edges and corners */
+    ENSURE(facet_case(&m, "fbox", 3, shared));
+    /* the analytic kinds have no facets */
+    rs_surface s;
+    rs_error e;
+    ENSURE(load("*SURFACE, TYPE=CYLINDER, NAME=p\n0, 0, 0, 1, 0, 0\n0, -1, 0\n"
+                "START, -1, 0\nLINE, 1, 0\n",
+                &s, &e) == RS_OK);
+    int nodes[4];
+    double xyz[12], sh[4], xm[3] = {0, 0, 0};
+    ENSURE(rs_surface_facet_size(&s, NULL) == 0);
+    ENSURE(rs_surface_facet(&s, RS_FEATURE(RS_FEAT_FACE, 0), xm, nodes, xyz, sh) == 0);
+    rs_surface_free(&s);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/rs_test_mesh_XXXXXX");
@@ -992,6 +1101,7 @@ int main(void)
     RS_RUN(repairs_are_reported);
     RS_RUN(abaqus_rigid_part);
     RS_RUN(no_force_jump_at_edges);
+    RS_RUN(facets_under_contacts);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);
     if (system(cmd) != 0)

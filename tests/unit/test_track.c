@@ -681,7 +681,7 @@ static int fixture_adjacent(const rs_surface *s, int fa, int fb)
 
 static const rs_surface_ops fixture_ops = {
     "fixture", 3,   RS_FRAME_GLOBAL_X, NULL, fixture_adjacent, NULL, NULL, NULL, NULL,
-    NULL,      NULL};
+    NULL,      NULL, NULL,              NULL};
 
 /* History (slot, slip, stress, statev) carries across a smooth junction; across a sharp
  * one the old contact leaves (1e30) and the new one starts from zero. */
