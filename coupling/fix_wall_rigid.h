@@ -168,6 +168,7 @@ class FixWallRigid : public Fix
     int ndir_;
     rs_motion motion_;
     bool moving_;
+    bool belt_; // surface_vel: the tracker gets the motion even when the wall stays
     std::string var_vel_[3], var_omega_; // v_ names ("" = constant)
     int ivar_vel_[3], ivar_omega_;
     bool rot_by_period_;

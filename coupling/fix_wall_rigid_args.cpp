@@ -103,10 +103,10 @@ int FixWallRigid::integer(const char *keyword, const char *what, const char *s)
 
 bool FixWallRigid::is_keyword(const char *s) const
 {
-    static const char *const kw[] = {"surface",  "name",   "law",       "props",
-                                     "type",     "statev", "tracking",  "area",
-                                     "contacts", "move",   "rotate",    "temperature",
-                                     "predef",   "vtk",    "curvature", "pnewdt"};
+    static const char *const kw[] = {
+        "surface",  "name", "law",       "props",  "type",       "statev",
+        "tracking", "area", "contacts",  "move",   "rotate",     "temperature",
+        "predef",   "vtk",  "curvature", "pnewdt", "surface_vel"};
     for (const char *k : kw)
         if (std::strcmp(s, k) == 0)
             return true;
@@ -223,6 +223,15 @@ void FixWallRigid::parse(int narg, char **arg)
             iarg += 2;
         } else if (std::strcmp(kw, "move") == 0 || std::strcmp(kw, "rotate") == 0) {
             iarg = parse_motion(narg, arg, iarg);
+        } else if (std::strcmp(kw, "surface_vel") == 0) {
+            need(3, "a surface velocity VX VY VZ");
+            double u[3];
+            for (int d = 0; d < 3; d++)
+                u[d] = number("surface_vel", "a surface velocity component VX VY VZ",
+                              arg[iarg + 1 + d]);
+            rs_motion_set_surface_velocity(&motion_, u);
+            belt_ = u[0] != 0.0 || u[1] != 0.0 || u[2] != 0.0;
+            iarg += 4;
         } else if (std::strcmp(kw, "temperature") == 0) {
             need(1, "a wall temperature");
             temp_wall_ = number("temperature", "a wall temperature", arg[iarg + 1]);
@@ -280,7 +289,8 @@ void FixWallRigid::parse(int narg, char **arg)
         } else {
             fail(std::string("unknown keyword '") + kw +
                  "'; expected surface, name, law, props, type, statev, tracking, area, "
-                 "contacts, move, rotate, temperature, predef, vtk, curvature or pnewdt");
+                 "contacts, move, rotate, surface_vel, temperature, predef, vtk, curvature "
+                 "or pnewdt");
         }
     }
 

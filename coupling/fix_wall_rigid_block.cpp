@@ -102,7 +102,7 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
 
     /* A setup call has no increment: no slip, no master rotation. */
     rs_motion still;
-    const rs_motion *mp = moving_ ? &motion_ : NULL;
+    const rs_motion *mp = moving_ || belt_ ? &motion_ : NULL;
     if (setup_call && moving_) {
         still = motion_;
         for (int a = 0; a < 9; a++)

@@ -96,6 +96,26 @@ void rs_motion_init(rs_motion *m)
     m->dQ[0] = m->dQ[4] = m->dQ[8] = 1.0;
 }
 
+void rs_motion_set_surface_velocity(rs_motion *m, const double U[3])
+{
+    m->belt[0] = U[0];
+    m->belt[1] = U[1];
+    m->belt[2] = U[2];
+}
+
+void rs_motion_belt_at(const rs_motion *m, const double n[3], double u[3])
+{
+    const double *U = m->belt;
+    const double un = U[0] * n[0] + U[1] * n[1] + U[2] * n[2];
+    for (int b = 0; b < 3; b++)
+        u[b] = U[b] - un * n[b];
+    const double lu = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    const double lU = sqrt(U[0] * U[0] + U[1] * U[1] + U[2] * U[2]);
+    const double sc = lu > 0.0 ? lU / lu : 0.0;
+    for (int b = 0; b < 3; b++)
+        u[b] *= sc;
+}
+
 void rs_motion_set_translation(rs_motion *m, const double vel[3])
 {
     m->vel[0] = vel[0];

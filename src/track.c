@@ -295,6 +295,8 @@ pass1_dense(int i, int np, const int *restrict cfeat, const double *restrict cdi
 
 typedef struct master_rates {
     double Q[9], V[3], W[3], C[3];
+    double U[3], Umag; ///< surface velocity (rs_motion.belt) and its length
+    int belt;          ///< U is not zero
 } master_rates;
 
 static void put_frame(rs_track_out *o, int nd, int e, const double n[3], const double t1[3],
@@ -389,7 +391,8 @@ RS_INLINE void run_gather(track_run *restrict r, int m, const rs_track_out *o, i
 
 /* The kinematics of a run of m live contacts (docs/conventions.md):
  * - x_cp = x - arm n with arm = R - rdisp1/2; v_rel = v + w x (x_cp - x) - (V + W x
- *   (x_cp - C)).
+ *   (x_cp - C)) - u, with u the surface velocity U's tangential part scaled to |U|
+ *   (belt != 0 only).
  * - a = Q n_old, q = Q t1_old; P v = cs v + w x v + w (w.v) / (1 + cs) with cs = a.n,
  *   w = a x n; tau1 = P q. Rotations keep cross products, so tau2 = n x tau1, and with
  *   t2 = n x t1 the matrix drot(i,j) = t_i . tau_j is [[d11, -d21], [d21, d11]]. P = I
@@ -400,7 +403,7 @@ RS_INLINE void run_gather(track_run *restrict r, int m, const rs_track_out *o, i
  * branches. nd = 2: t1 only, drot = I. */
 RS_INLINE void run_kinematics(track_run *restrict r, int m, const master_rates *mr,
                               double dt, const rs_particles *p, int i0,
-                              const rs_contacts *c, int k0, const int nd)
+                              const rs_contacts *c, int k0, const int nd, const int belt)
 {
     static const double zero[RS_TRACK_RUN];
     const double *prad = p->radius ? p->radius + i0 : zero;
@@ -413,6 +416,7 @@ RS_INLINE void run_kinematics(track_run *restrict r, int m, const master_rates *
     const double V0 = mr->V[0], V1 = mr->V[1], V2 = mr->V[2];
     const double W0 = mr->W[0], W1 = mr->W[1], W2 = mr->W[2];
     const double C0 = mr->C[0], C1 = mr->C[1], C2 = mr->C[2];
+    const double U0 = mr->U[0], U1 = mr->U[1], U2 = mr->U[2], Um = mr->Umag;
     const double *cnx = c->nrm[0] + k0, *cny = c->nrm[1] + k0, *cnz = c->nrm[2] + k0;
     const double *cax = c->t1[0] + k0, *cay = c->t1[1] + k0, *caz = c->t1[2] + k0;
     const double *cbx = c->t2[0] + k0, *cby = c->t2[1] + k0, *cbz = c->t2[2] + k0;
@@ -425,9 +429,18 @@ RS_INLINE void run_kinematics(track_run *restrict r, int m, const master_rates *
         const double px = pxc[j] + rx, py = pyc[j] + ry, pz = pzc[j] + rz;
         const double wx = pwx[j], wy = pwy[j], wz = pwz[j];
         const double mx = px - C0, my = py - C1, mz = pz - C2;
-        const double vx = pvx[j] + (wy * rz - wz * ry) - V0 - (W1 * mz - W2 * my);
-        const double vy = pvy[j] + (wz * rx - wx * rz) - V1 - (W2 * mx - W0 * mz);
-        const double vz = pvz[j] + (wx * ry - wy * rx) - V2 - (W0 * my - W1 * mx);
+        double vx = pvx[j] + (wy * rz - wz * ry) - V0 - (W1 * mz - W2 * my);
+        double vy = pvy[j] + (wz * rx - wx * rz) - V1 - (W2 * mx - W0 * mz);
+        double vz = pvz[j] + (wx * ry - wy * rx) - V2 - (W0 * my - W1 * mx);
+        if (belt) {
+            const double un = U0 * nx + U1 * ny + U2 * nz;
+            const double ux = U0 - un * nx, uy = U1 - un * ny, uz = U2 - un * nz;
+            const double lu = sqrt(ux * ux + uy * uy + uz * uz);
+            const double sc = lu > 0.0 ? Um / lu : 0.0;
+            vx -= sc * ux;
+            vy -= sc * uy;
+            vz -= sc * uz;
+        }
         const double vn = vx * nx + vy * ny + vz * nz;
         const double v1 = vx * ax + vy * ay + vz * az;
         const int live = r->live[j] != 0.0;
@@ -619,6 +632,16 @@ static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
         xcp[b] = xc[b] - rad * n[b];
     rel_velocity(p, i, mr, xc, xcp, vr);
 
+    if (mr->belt) {
+        double u[3];
+        const double un = rs_dot3(mr->U, n);
+        for (int b = 0; b < 3; b++)
+            u[b] = mr->U[b] - un * n[b];
+        const double lu = sqrt(rs_dot3(u, u)), sc = lu > 0.0 ? mr->Umag / lu : 0.0;
+        for (int b = 0; b < 3; b++)
+            vr[b] -= sc * u[b];
+    }
+
     const double f = *o->dir[e];
     *o->dir[e] = RS_DIR_LEAVING(f);
     o->point[e] = i;
@@ -670,7 +693,10 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
             }
         }
         run_gather(&r, m, out, e0);
-        run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd);
+        if (mr->belt)
+            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 1);
+        else
+            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 0);
         run_outputs(&r, m, c, k0, out, e0, nd);
         run_store(&r, m, tr, c, k0, out, e0);
     }
@@ -762,7 +788,10 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
         for (int b = 0; b < 3; b++) {
             mr.V[b] = m->vel[b];
             mr.W[b] = m->omega * m->axis[b];
+            mr.U[b] = m->belt[b];
         }
+        mr.Umag = sqrt(rs_dot3(mr.U, mr.U));
+        mr.belt = mr.Umag > 0.0;
         rs_motion_center(m, mr.C);
     } else {
         mr.Q[0] = mr.Q[4] = mr.Q[8] = 1.0;

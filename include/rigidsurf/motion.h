@@ -51,13 +51,23 @@ typedef struct rs_motion {
     rs_motion_rates_fn rates; ///< NULL for constant rates
     void *ctx;                ///< passed to rates
     rs_pose pose;             ///< current pose
-    double dQ[9]; ///< incremental rotation of the last rs_motion_advance (row-major)
+    double belt[3]; ///< surface velocity U: the wall's material moves in its tangent plane
+                    ///< while its shape stays (a conveyor belt); see rs_motion_belt_at
+    double dQ[9];   ///< incremental rotation of the last rs_motion_advance (row-major)
     double t_err, phi_err,
         disp_err[3]; ///< compensated-summation remainders of t, phi, disp
 } rs_motion;
 
 /// No motion: identity pose, zero rates, axis = z, centre at the origin.
 void rs_motion_init(rs_motion *m);
+
+/// Sets the surface velocity U (global axes), added to the rigid motion's velocity at
+/// every contact as rs_motion_belt_at gives it. Zero: none.
+void rs_motion_set_surface_velocity(rs_motion *m, const double U[3]);
+
+/// The surface velocity at a contact of unit normal n: U's part in the tangent plane,
+/// scaled to the length of U (as LIGGGHTS's surface_vel), zero when U is along n.
+void rs_motion_belt_at(const rs_motion *m, const double n[3], double u[3]);
 /// Sets a constant translation velocity.
 void rs_motion_set_translation(rs_motion *m, const double vel[3]);
 /// Sets the rotation axis (normalised here; must be non-zero), a point on it, and the

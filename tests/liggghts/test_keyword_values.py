@@ -44,6 +44,7 @@ def cases():
         ("temperature", HERTZ + " temperature {}", False),
         ("capacity", HERTZ + " temperature 300 capacity {}", True),
         ("move linear", HERTZ + " move linear {} 0 0", False),
+        ("surface_vel", HERTZ + " surface_vel {} 0 0", False),
         ("rotate origin", HERTZ + " rotate origin {} 0 0 axis 0 0 1 omega 1", False),
         ("rotate axis", HERTZ + " rotate origin 0 0 0 axis 0 0 {} omega 1", False),
         ("rotate omega", HERTZ + " rotate origin 0 0 0 axis 0 0 1 omega {}", False),
@@ -88,6 +89,8 @@ def cases():
     add("surface", "unknown name", HERTZ + " name roof", "roof")
     add("predef", "missing", HERTZ + " predef", "")
     add("predef", "no such fix", HERTZ + " predef nosuchfix", "nosuchfix")
+    add("law", "vuinter missing source", "fix w all wall/rigid " + SURF +
+        " law vuinter nosuch.f type 2", "nosuch.f: cannot read")
     # files
     for label, f in (("missing file", "nosuch.inp"), ("empty file", "empty.inp"),
                      ("directory", "subdir")):

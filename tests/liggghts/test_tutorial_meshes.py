@@ -12,10 +12,14 @@ surface inline mesh` line:
 - movingMeshGran: 1500 spheres (R = 40 mm) settle in a box of primitive walls; a bucket
   (STL: move, scale, two rotations) then becomes a wall, moves linearly into the bed for
   0.75 s, turns about the y axis (period 2 s) for 0.5 s, stops, and the bed settles.
+- conveyor: spheres of 15 and 25 mm stream for 0.8 s onto a belt (`surface_vel -4.5 0 0`)
+  in a box; the belt carries them off along -x.
 
 Pins: the same number of particles at the end; the bed's centre of mass in the same
 place to within one particle diameter; both beds at rest (kinetic energy below 1% of
-m g H, H the box height); and, for the bucket, that it did touch the bed.
+m g H, H the box height); for the bucket, that it did touch the bed; on the conveyor,
+the bed moving along -x at the stock run's mean velocity to within a tenth of the belt's
+speed.
 """
 import os
 import shutil
@@ -89,6 +93,21 @@ def movingmeshgran():
     return "movingMeshGran", ref, ours, 0.04, 1.0, "v_nc"
 
 
+def conveyor():
+    src = open(os.path.join(ROOT, "conveyor", "in.conveyor")).read()
+    ref = edit(no_dumps(src), [("run\t\t\t140000 upto", "run\t\t\t80000 upto")]) + BED
+    ref += 'variable vbx equal vcm(all,x)\nprint "BELT ${vbx}"\n'
+    ours = edit(ref, [
+        ("fix\t\tcv all mesh/surface file meshes/conveyor.stl type 1 surface_vel -4.5 0. 0.\n",
+         ""),
+        ("fix\t\tbx all mesh/surface file meshes/box.stl      type 1 \n", ""),
+        ("fix wall all wall/gran model hertz tangential history mesh n_meshes 2 meshes bx cv",
+         "fix belt all wall/rigid surface inline mesh meshes/conveyor.stl sides 2 law hertz "
+         "type 1 surface_vel -4.5 0 0\n"
+         "fix box all wall/rigid surface inline mesh meshes/box.stl sides 2 law hertz type 1")])
+    return "conveyor", ref, ours, 0.025, None, None
+
+
 def run(s, name, tag, exe, src_dir, deck):
     d = os.path.join(s.dir, name + "_" + tag)
     shutil.copytree(src_dir, d)
@@ -107,10 +126,10 @@ def body(s):
     if not s.ck.check("stock tutorials present", os.path.isdir(ROOT), ROOT,
                       "install liggghts-doc (tools/setup-deps does)"):
         return
-    for case in (meshgran, movingmeshgran):
+    for case in (meshgran, movingmeshgran, conveyor):
         name, ref, ours, radius, height, contacts = case()
         src_dir = os.path.join(ROOT, name)
-        _, a = run(s, name, "liggghts", REFERENCE, src_dir, ref)
+        out_ref, a = run(s, name, "liggghts", REFERENCE, src_dir, ref)
         out, b = run(s, name, "rigidsurf", s.exe, src_dir, ours)
         if not (a and b):
             continue
@@ -119,10 +138,16 @@ def body(s):
         dcom = max(abs(x - y) for x, y in zip(a[1:4], b[1:4]))
         s.ck.check(name + ": the bed's centre of mass in the same place (one diameter)",
                    dcom <= 2 * radius, "%.3g m apart (radius %g)" % (dcom, radius))
-        for tag, r in (("liggghts", a), ("rigidsurf", b)):
+        for tag, r in (("liggghts", a), ("rigidsurf", b)) if height else ():
             s.ck.check(name + ": %s's bed at rest (KE < 1%% of m g H)" % tag,
                        r[4] < 0.01 * r[5] * 9.81 * height,
                        "KE %.3g J, m g H %.3g J" % (r[4], r[5] * 9.81 * height))
+        if height is None:  # the conveyor: the belt carries the bed along -x
+            va, vb = (float([l for l in o.splitlines() if l.startswith("BELT ")][-1].split()[1])
+                      for o in (out_ref, out))
+            s.ck.check(name + ": the belt carries the bed as stock LIGGGHTS's does",
+                       va < 0 and vb < 0 and abs(va - vb) <= 0.1 * 4.5,
+                       "mean vx %.4g m/s (stock %.4g m/s, belt -4.5 m/s)" % (vb, va))
         if contacts:
             nc = [float(l.split()[3]) for l in out.splitlines()
                   if len(l.split()) == 4 and l.split()[0].isdigit()]

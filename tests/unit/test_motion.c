@@ -218,6 +218,33 @@ static void test_rotation_matrix_matches_quaternion(void)
         }
 }
 
+/* The surface velocity at a contact: U's tangential part scaled to |U| (LIGGGHTS's
+ * surface_vel rule), zero along the normal, and U itself in the tangent plane. */
+static void test_surface_velocity(void)
+{
+    rs_motion m;
+    rs_motion_init(&m);
+    double u[3];
+    const double nz[3] = {0, 0, 1};
+    rs_motion_belt_at(&m, nz, u);
+    ENSURE(u[0] == 0.0 && u[1] == 0.0 && u[2] == 0.0); /* none set */
+    const double U[3] = {0.3, 0.0, 0.4};
+    rs_motion_set_surface_velocity(&m, U);
+    rs_motion_belt_at(&m, nz, u);
+    ENSURE_NEAR(u[0], 0.5, 1e-15); /* (0.3, 0, 0) scaled to |U| = 0.5 */
+    ENSURE(u[1] == 0.0 && u[2] == 0.0);
+    const double nU[3] = {0.6, 0.0, 0.8}; /* along U: nothing tangential */
+    rs_motion_belt_at(&m, nU, u);
+    ENSURE_SMALL(rs_norm3(u), 1e-15);
+    /* a tilted normal: u is tangent, |u| = |U| */
+    const double c = cos(0.3), sn = sin(0.3);
+    const double n2[3] = {sn, 0.0, c};
+    rs_motion_belt_at(&m, n2, u);
+    ENSURE_SMALL(rs_dot3(u, n2), 1e-15);
+    ENSURE_NEAR(rs_norm3(u), 0.5, 1e-15);
+    ENSURE(u[0] > 0.0);
+}
+
 int main(void)
 {
     RS_RUN(test_motion_no_drift);
@@ -226,5 +253,6 @@ int main(void)
     RS_RUN(test_motion_rates_callback);
     RS_RUN(test_motion_rejects_zero_axis);
     RS_RUN(test_rotation_matrix_matches_quaternion);
+    RS_RUN(test_surface_velocity);
     return rs_test_summary();
 }
