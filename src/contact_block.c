@@ -216,7 +216,8 @@ static int facet_room(rs_contact_block *cb, int n, rs_error *err)
         cb->sl_xyz = malloc(12 * RS_BLOCK * sizeof(double));
         cb->sl_hash = malloc(RS_FACET_HASH * sizeof(int));
         if (!cb->sl_conn || !cb->sl_uid || !cb->sl_xyz || !cb->sl_hash)
-            return rs_error_set(err, RS_ERR_NOMEM, "contact block: out of memory for facets");
+            return rs_error_set(err, RS_ERR_NOMEM,
+                                "contact block: out of memory for facets");
     }
     if (n <= cb->fac_cap)
         return RS_OK;
@@ -232,7 +233,8 @@ static int facet_room(rs_contact_block *cb, int n, rs_error *err)
         cb->fac_xyz = xyz;
     if (!node || !shape || !xyz)
         return rs_error_set(err, RS_ERR_NOMEM,
-                            "contact block: out of memory for the facets of %d contacts", n);
+                            "contact block: out of memory for the facets of %d contacts",
+                            n);
     cb->fac_cap = cap;
     return RS_OK;
 }
@@ -294,7 +296,8 @@ static void facet_slice(rs_contact_block *cb, int k0, int nk, int nd, rs_law_blo
             cb->sl_hash[h] = nm;
             cb->sl_uid[nm] = uid;
             for (int d = 0; d < nd; d++)
-                cb->sl_xyz[(size_t)nm * (size_t)nd + (size_t)d] = cb->fac_xyz[3 * g + (size_t)d];
+                cb->sl_xyz[(size_t)nm * (size_t)nd + (size_t)d] =
+                    cb->fac_xyz[3 * g + (size_t)d];
             nm++;
         }
         cb->sl_conn[j] = cb->sl_hash[h] + 1;

@@ -95,7 +95,8 @@ static int find_resources(const char *what, char *libdir, char *incdir, rs_error
 
     /* installed: <prefix>/<libdir> -> <prefix>/<incdir> */
     const size_t nl = strlen(libdir), nr = strlen(RS_REL_LIBDIR);
-    if (nl > nr && strcmp(libdir + nl - nr, RS_REL_LIBDIR) == 0 && libdir[nl - nr - 1] == '/') {
+    if (nl > nr && strcmp(libdir + nl - nr, RS_REL_LIBDIR) == 0 &&
+        libdir[nl - nr - 1] == '/') {
         snprintf(incdir, RS_PATH, "%.*s%s", (int)(nl - nr), libdir, RS_REL_INCDIR);
         char probe[RS_PATH + 32];
         snprintf(probe, sizeof probe, "%s/VABA_PARAM.INC", incdir);
@@ -198,7 +199,8 @@ typedef struct build_cmd {
 } build_cmd;
 
 static void make_cmd(build_cmd *c, const char *fc, int form, const char *incdir,
-                     const char *srcdir, const char *libdir, const char *src, const char *out)
+                     const char *srcdir, const char *libdir, const char *src,
+                     const char *out)
 {
     int a = 0;
     c->argv[a++] = fc;
@@ -300,8 +302,8 @@ static const char *compiler(void)
 
 /* Compiles src to out through a temporary file beside it (so a reader never sees half a
  * library); the compiler's output goes to log. */
-static int compile(const build_cmd *proto, const char *src, const char *out, const char *log,
-                   int verbose, rs_error *err)
+static int compile(const build_cmd *proto, const char *src, const char *out,
+                   const char *log, int verbose, rs_error *err)
 {
     char tmp[RS_PATH + 32];
     snprintf(tmp, sizeof tmp, "%s.tmp%ld", out, (long)getpid());
@@ -320,34 +322,39 @@ static int compile(const build_cmd *proto, const char *src, const char *out, con
     int logfd = open(log, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (logfd < 0) {
         int e = errno;
-        return rs_error_set(err, RS_ERR_IO, "%s: cannot write %s: %s", src, log, strerror(e));
+        return rs_error_set(err, RS_ERR_IO, "%s: cannot write %s: %s", src, log,
+                            strerror(e));
     }
     int rc = run_logged(&c, logfd);
     close(logfd);
     if (rc < 0) {
         int e = errno;
-        return rs_error_set(err, RS_ERR_IO,
-                            "%s: cannot run the Fortran compiler '%s': %s (install gfortran, "
-                            "or set RIGIDSURF_FC)",
-                            src, c.argv[0], strerror(e));
+        return rs_error_set(
+            err, RS_ERR_IO,
+            "%s: cannot run the Fortran compiler '%s': %s (install gfortran, "
+            "or set RIGIDSURF_FC)",
+            src, c.argv[0], strerror(e));
     }
     if (rc == 127)
-        return rs_error_set(err, RS_ERR_IO,
-                            "%s: the Fortran compiler '%s' was not found (install gfortran, "
-                            "or set RIGIDSURF_FC)",
-                            src, c.argv[0]);
+        return rs_error_set(
+            err, RS_ERR_IO,
+            "%s: the Fortran compiler '%s' was not found (install gfortran, "
+            "or set RIGIDSURF_FC)",
+            src, c.argv[0]);
     if (rc != 0) {
         unlink(tmp);
         char first[300];
         first_error(log, first, sizeof first);
-        return rs_error_set(err, RS_ERR_PARSE,
-                            "%s: the Fortran compiler failed (exit %d): %s (whole output: %s)",
-                            src, rc, first, log);
+        return rs_error_set(
+            err, RS_ERR_PARSE,
+            "%s: the Fortran compiler failed (exit %d): %s (whole output: %s)", src, rc,
+            first, log);
     }
     if (rename(tmp, out) != 0) {
         int e = errno;
         unlink(tmp);
-        return rs_error_set(err, RS_ERR_IO, "%s: cannot write %s: %s", src, out, strerror(e));
+        return rs_error_set(err, RS_ERR_IO, "%s: cannot write %s: %s", src, out,
+                            strerror(e));
     }
     return RS_OK;
 }
@@ -433,9 +440,10 @@ int rs_law_build_cached(const char *src, char *so_path, size_t size, rs_error *e
     cache_dir(dir, sizeof dir);
     if (mkdirs(dir) != 0) {
         int e = errno;
-        return rs_error_set(err, RS_ERR_IO,
-                            "%s: cannot create the build cache %s: %s (set RIGIDSURF_CACHE)",
-                            src, dir, strerror(e));
+        return rs_error_set(
+            err, RS_ERR_IO,
+            "%s: cannot create the build cache %s: %s (set RIGIDSURF_CACHE)", src, dir,
+            strerror(e));
     }
     /* the name: the file's stem and the hash of everything the build reads */
     const char *base = strrchr(src, '/');

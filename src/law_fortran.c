@@ -207,9 +207,9 @@ int rs_law_vuinter_update(const rs_law *law, rs_law_block *b, rs_error *err)
                 &b->nDir, &b->nStateVar, &b->nProps, &b->nTemp, &b->nPred, &b->numDefTfv,
                 b->jSlvUid, jmst, jcon, &b->timStep, &b->timGlb, &b->dTimCur, b->surfInt,
                 b->surfSlv, b->surfMst, b->rdisp, b->drdisp, b->drot, b->stiffDflt,
-                b->condDflt, shape, b->coordSlv, cmst, b->alocaldir,
-                props, b->areaSlv, b->tempSlv, b->dtempSlv, pred, dpred, b->tempMst,
-                b->dtempMst, predm, dpredm, RS_FNAME_LEN, RS_FNAME_LEN, RS_FNAME_LEN);
+                b->condDflt, shape, b->coordSlv, cmst, b->alocaldir, props, b->areaSlv,
+                b->tempSlv, b->dtempSlv, pred, dpred, b->tempMst, b->dtempMst, predm,
+                dpredm, RS_FNAME_LEN, RS_FNAME_LEN, RS_FNAME_LEN);
     rc = rs_abq_call_end(err);
     setup_restore(b, saved);
     return rc;

@@ -346,7 +346,8 @@ RS_ABQ_EXPORT void VGETRANK(int *kprocessnum) RS_ABQ_ALIAS("getrank_");
 
 /* Node number (particle tag) -> (slave surface name, tag); jrcd 1 when the tag is not a
  * contact of the current call or an element is asked for. */
-static void partinfo(int num, int jtyp, char *partname, int *locnum, int *jrcd, size_t lpart)
+static void partinfo(int num, int jtyp, char *partname, int *locnum, int *jrcd,
+                     size_t lpart)
 {
     *locnum = 0;
     *jrcd = 1;
@@ -399,16 +400,18 @@ RS_ABQ_EXPORT void vgetvrm_(const char *var, double *rdata, int *jdata, char *cd
     (void)lcdata;
     *jstatus = 1;
     char line[300];
-    snprintf(line, sizeof line,
-             "[rank %d] %s called VGETVRM('%.*s'): VGETVRM reads material point results, "
-             "and a rigidsurf contact has none (the slave is a DEM particle); use RS_GETDEM "
-             "for the particle's data",
-             host.rank, cur.routine ? cur.routine : "a user routine", (int)trimmed(var, lvar),
-             var);
+    snprintf(
+        line, sizeof line,
+        "[rank %d] %s called VGETVRM('%.*s'): VGETVRM reads material point results, "
+        "and a rigidsurf contact has none (the slave is a DEM particle); use RS_GETDEM "
+        "for the particle's data",
+        host.rank, cur.routine ? cur.routine : "a user routine", (int)trimmed(var, lvar),
+        var);
     host_fatal(line);
 }
 RS_ABQ_EXPORT void VGETVRM(const char *var, double *rdata, int *jdata, char *cdata,
-                           int *jstatus, size_t lvar, size_t lcdata) RS_ABQ_ALIAS("vgetvrm_");
+                           int *jstatus, size_t lvar, size_t lcdata)
+    RS_ABQ_ALIAS("vgetvrm_");
 
 /* RS_GETDEM(KNODE, DEMV, JRCD): DEMV(1:8) of contact KNODE of the current call (1 for
  * UINTER and FRIC); see rs_abq_dem_fields. */

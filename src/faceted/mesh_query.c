@@ -594,8 +594,8 @@ static int mesh_triangulate(const rs_surface *s, double span, int nhoop, rs_trim
 }
 
 /* Shape functions of a triangle at p (its plane): the barycentric coordinates. */
-static void tri_shape(const double *x0, const double *x1, const double *x2, const double p[3],
-                      double shape[3])
+static void tri_shape(const double *x0, const double *x1, const double *x2,
+                      const double p[3], double shape[3])
 {
     double e1[3], e2[3], nrm[3];
     for (int d = 0; d < 3; d++) {

@@ -228,8 +228,8 @@ static void info_and_warning_reach_the_host(void)
     ENSURE(rs_abq_call_end(&err) == RS_OK);
     ENSURE(nmessages == 2);
     ENSURE(message_severity[0] == RS_ABQ_INFO && message_severity[1] == RS_ABQ_WARNING);
-    ENSURE(strcmp(messages[0], "rigidsurf INFO [rank 3] VUINTER (XPLB_ABQERR): n 12 r 1.5 s x") ==
-           0);
+    ENSURE(strcmp(messages[0],
+                  "rigidsurf INFO [rank 3] VUINTER (XPLB_ABQERR): n 12 r 1.5 s x") == 0);
     ENSURE(strcmp(messages[1],
                   "rigidsurf WARNING [rank 3] VUINTER (XPLB_ABQERR): n 12 r 1.5 s x") == 0);
     ENSURE(rs_abq_rank() == 3 && rs_abq_ncpus() == 5);
@@ -269,11 +269,11 @@ static void routine_from_source_answers_from_host_and_block(void)
         const double *sv = blk.statev + NSV * k;
         ENSURE(blk.stress[3 * k] == (gap[k] > 0.0 ? K * gap[k] : 0.0));
         ENSURE(sv[0] == 1.0);
-        ENSURE(sv[1] == 3.0 && sv[2] == 5.0); /* rank, rank count */
-        ENSURE(sv[3] == tags[k] && sv[4] == 0.0);   /* VGETPARTINFO: tag, JRCD */
-        ENSURE(sv[5] == 6.0);                       /* "grains" */
+        ENSURE(sv[1] == 3.0 && sv[2] == 5.0);     /* rank, rank count */
+        ENSURE(sv[3] == tags[k] && sv[4] == 0.0); /* VGETPARTINFO: tag, JRCD */
+        ENSURE(sv[5] == 6.0);                     /* "grains" */
         ENSURE(sv[6] == blk.radius[k] && sv[7] == blk.mass[k]);
-        ENSURE(sv[8] == 5.0);                       /* "myjob" */
+        ENSURE(sv[8] == 5.0); /* "myjob" */
         ENSURE(sv[9] == (double)strlen("/some/out/dir"));
     }
     ENSURE(nmessages == NC);
@@ -316,8 +316,9 @@ static void error_severity_fails_the_call(void)
     ENSURE(strstr(err.msg, "VUINTER raised an error") != NULL);
     ENSURE(strstr(err.msg, "penetration 0.002 exceeds the limit 0.0015 at node 9") != NULL);
     ENSURE(nmessages == 1);
-    ENSURE(strcmp(messages[0], "rigidsurf WARNING [rank 3] VUINTER (XPLB_ABQERR): penetration "
-                               "0.001 is past half the limit 0.0015 at node 7") == 0);
+    ENSURE(strcmp(messages[0],
+                  "rigidsurf WARNING [rank 3] VUINTER (XPLB_ABQERR): penetration "
+                  "0.001 is past half the limit 0.0015 at node 7") == 0);
     /* the error does not outlive its call */
     block_setup(1.0e5, 0.0, 0.0, 0.0);
     for (int k = 0; k < NC; ++k)
@@ -372,8 +373,8 @@ static void dem_fields_of_the_current_call(void)
     blk.b.reff = reff;
     rs_abq_call_begin(&blk.b, -1, "VUINTER");
     ENSURE(rs_abq_dem_fields(2, f) == 0);
-    const double want[8] = {blk.radius[1], blk.mass[1], reff[1], vrel[3], vrel[4], vrel[5],
-                            curv[2], curv[3]};
+    const double want[8] = {blk.radius[1], blk.mass[1], reff[1], vrel[3],
+                            vrel[4],       vrel[5],     curv[2], curv[3]};
     for (int i = 0; i < 8; ++i)
         ENSURE(f[i] == want[i]);
     ENSURE(rs_abq_dem_fields(0, f) == 1 && rs_abq_dem_fields(NC + 1, f) == 1);
@@ -467,7 +468,7 @@ static void build_failures_say_why(void)
     rs_error err;
     ENSURE(rs_law_load_vuinter(bad, &law, &err) == RS_ERR_PARSE);
     ENSURE(strstr(err.msg, "broken.f:3:") != NULL); /* the file and the line */
-    ENSURE(strstr(err.msg, "Error") != NULL);      /* the compiler's message */
+    ENSURE(strstr(err.msg, "Error") != NULL);       /* the compiler's message */
     ENSURE(count_files(cache, ".so") == 0);
 
     char missing[300];

@@ -1039,7 +1039,8 @@ static int facet_case(poly_mesh *pm, const char *name, int want_nn, int nodes_in
             for (int d = 0; d < 3; d++)
                 p[d] += sh[i] * xyz[3 * i + d];
             if (type == RS_FEAT_FACE) {
-                const double off = (xyz[3 * i] - xm[0]) * n[0] + (xyz[3 * i + 1] - xm[1]) * n[1] +
+                const double off = (xyz[3 * i] - xm[0]) * n[0] +
+                                   (xyz[3 * i + 1] - xm[1]) * n[1] +
                                    (xyz[3 * i + 2] - xm[2]) * n[2];
                 ok &= fabs(off) < 1e-12;
             }
@@ -1051,14 +1052,15 @@ static int facet_case(poly_mesh *pm, const char *name, int want_nn, int nodes_in
         if (type == RS_FEAT_VERTEX)
             ok &= weighted == 1;
         if (!ok)
-            fprintf(stderr, "%s: contact %d (type %d): sum %.17g, |N x - xm| %.3g, %d weighted\n",
+            fprintf(stderr,
+                    "%s: contact %d (type %d): sum %.17g, |N x - xm| %.3g, %d weighted\n",
                     name, k, type, sum, dist3(p, xm), weighted);
     }
     /* every kind of feature was met */
     ok &= counted[0] > 0 && counted[1] > 0 && counted[2] > 0;
     if (!ok)
-        fprintf(stderr, "%s: faces %d, edges %d, vertices %d\n", name, counted[0], counted[1],
-                counted[2]);
+        fprintf(stderr, "%s: faces %d, edges %d, vertices %d\n", name, counted[0],
+                counted[1], counted[2]);
     rs_contacts_free(&c);
     rs_surface_free(&s);
     return ok;
@@ -1070,7 +1072,8 @@ static void facets_under_contacts(void)
     torus(&m, 32, 16, 1.0, 0.3);
     ENSURE(facet_case(&m, "ftorus", 4, 32 * 16));
     rounded_box(&m, 8, 0.3);
-    const int shared = 6 * 9 * 9 - 12 * 9 + 8; /* the faces' grids share edges and corners */
+    const int shared =
+        6 * 9 * 9 - 12 * 9 + 8; /* the faces' grids share edges and corners */
     ENSURE(facet_case(&m, "fbox", 3, shared));
     /* the analytic kinds have no facets */
     rs_surface s;
