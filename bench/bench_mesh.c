@@ -11,6 +11,9 @@
  *   hits   contacts found (of 20000 spheres)
  *   lists  ns per sphere of rs_surface_query_among with candidate lists (margin r/4),
  *          the step's cost in fix wall/rigid; the lists' own build in ns per sphere
+ *   sorted the same two queries with the spheres in space-filling-curve (Morton) order,
+ *          the order in which LIGGGHTS keeps its atoms (atom_modify sort, on by
+ *          default) and so the order in which fix wall/rigid queries them
  *
  *   bench_mesh [--max N]
  *
@@ -28,6 +31,71 @@
 
 #define NQ 20000
 #define REPS 7
+
+/* Morton code of a point of [-1, 1]^3 on a 1024^3 grid. */
+static uint64_t morton(const double p[3])
+{
+    uint64_t code = 0;
+    unsigned q[3];
+    for (int k = 0; k < 3; k++) {
+        double u = (p[k] + 1.0) * 512.0;
+        q[k] = u < 0.0 ? 0u : u > 1023.0 ? 1023u : (unsigned)u;
+    }
+    for (int b = 9; b >= 0; b--)
+        for (int k = 0; k < 3; k++)
+            code = (code << 1) | ((q[k] >> b) & 1u);
+    return code;
+}
+
+typedef struct keyed {
+    uint64_t key;
+    int i;
+} keyed;
+
+static int cmp_keyed(const void *a, const void *b)
+{
+    const uint64_t x = ((const keyed *)a)->key, y = ((const keyed *)b)->key;
+    return x < y ? -1 : x > y;
+}
+
+/* Times the tree query, the lists' build and the list query of q (ns per sphere). */
+static void time_queries(const rs_surface *s, const rs_query *q, double margin, double *tree,
+                         double *lists_ns, double *build, int *hits)
+{
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    rs_cands cd;
+    memset(&cd, 0, sizeof cd);
+    rs_error e;
+    double tt[REPS], tl[REPS], tb[REPS];
+    for (int k = 0; k < REPS; k++) {
+        c.n = 0;
+        double t0 = rs_bench_thread_now();
+        rs_surface_query(s, q, &c, &e);
+        tt[k] = (rs_bench_thread_now() - t0) / NQ * 1e9;
+        *hits = c.n;
+        t0 = rs_bench_thread_now();
+        rs_surface_candidates(s, q, margin, &cd, &e);
+        tb[k] = (rs_bench_thread_now() - t0) / NQ * 1e9;
+    }
+    static const int *lists[NQ];
+    static int counts[NQ];
+    for (int i = 0; i < NQ; i++) {
+        lists[i] = cd.ids + cd.off[i];
+        counts[i] = cd.off[i + 1] - cd.off[i];
+    }
+    for (int k = 0; k < REPS; k++) {
+        c.n = 0;
+        const double t0 = rs_bench_thread_now();
+        rs_surface_query_among(s, q, lists, counts, &c, &e);
+        tl[k] = (rs_bench_thread_now() - t0) / NQ * 1e9;
+    }
+    *tree = rs_bench_median(tt, REPS);
+    *lists_ns = rs_bench_median(tl, REPS);
+    *build = rs_bench_median(tb, REPS);
+    rs_cands_free(&cd);
+    rs_contacts_free(&c);
+}
 
 /* A UV sphere of about ntri triangles as a binary STL at path. */
 static void write_sphere(const char *path, int ntri)
@@ -79,8 +147,8 @@ int main(int argc, char **argv)
         if (!strcmp(argv[i], "--max"))
             nmax = atoi(argv[++i]);
     printf("# bench_mesh: %s build (%s)\n", RS_BUILD_TYPE, RS_BUILD_FLAGS);
-    printf("# %10s %10s %8s %8s %10s %10s %10s\n", "triangles", "load s", "B/tri", "hits",
-           "tree ns", "lists ns", "build ns");
+    printf("# %10s %10s %8s %8s %10s %10s %10s %10s %10s\n", "triangles", "load s",
+           "B/tri", "hits", "tree ns", "lists ns", "build ns", "tree srt", "lists srt");
     static double dir[NQ][3], x[NQ], y[NQ], z[NQ], r[NQ];
     unsigned long long seed = 88172645463325252ull;
     for (int i = 0; i < NQ; i++) {
@@ -93,10 +161,22 @@ int main(int argc, char **argv)
         for (int k = 0; k < 3; k++)
             dir[i][k] /= l;
     }
+    /* the same directions in Morton order */
+    static keyed order[NQ];
+    static double sdir[NQ][3], sx[NQ], sy[NQ], sz[NQ];
+    for (int i = 0; i < NQ; i++) {
+        order[i].key = morton(dir[i]);
+        order[i].i = i;
+    }
+    qsort(order, NQ, sizeof order[0], cmp_keyed);
+    for (int i = 0; i < NQ; i++)
+        memcpy(sdir[i], dir[order[i].i], sizeof sdir[i]);
     rs_query q;
     memset(&q, 0, sizeof q);
     q.n = NQ;
     q.slave.x = x, q.slave.y = y, q.slave.z = z, q.slave.radius = r;
+    rs_query qs = q;
+    qs.slave.x = sx, qs.slave.y = sy, qs.slave.z = sz;
     for (int n = 100; n <= nmax; n *= 10) {
         const double h = sqrt(4.0 * 3.14159265358979323846 / n), rad = 0.5 * h;
         for (int i = 0; i < NQ; i++) {
@@ -104,9 +184,12 @@ int main(int argc, char **argv)
             x[i] = (1.0 + rad) * dir[i][0];
             y[i] = (1.0 + rad) * dir[i][1];
             z[i] = (1.0 + rad) * dir[i][2];
+            sx[i] = (1.0 + rad) * sdir[i][0];
+            sy[i] = (1.0 + rad) * sdir[i][1];
+            sz[i] = (1.0 + rad) * sdir[i][2];
         }
-        q.gap_max = h;
-        q.dist_min = -rad;
+        q.gap_max = qs.gap_max = h;
+        q.dist_min = qs.dist_min = -rad;
         write_sphere("bench_mesh.stl", n);
         FILE *f = fopen("bench_mesh.inp", "w");
         fputs("*SURFACE, TYPE=MESH, NAME=s, FILE=bench_mesh.stl\n", f);
@@ -129,40 +212,18 @@ int main(int argc, char **argv)
         rs_trimesh_free(&tm);
         const double bytes =
             (double)((m1.uordblks + m1.hblkhd) - (m0.uordblks + m0.hblkhd)) / ntri;
-        rs_contacts c;
-        memset(&c, 0, sizeof c);
-        double tt[REPS], tl[REPS], tb[REPS];
-        rs_cands cd;
-        memset(&cd, 0, sizeof cd);
-        int hits = 0;
-        for (int k = 0; k < REPS; k++) {
-            c.n = 0;
-            t0 = rs_bench_thread_now();
-            rs_surface_query(&s, &q, &c, &e);
-            tt[k] = (rs_bench_thread_now() - t0) / NQ * 1e9;
-            hits = c.n;
-            t0 = rs_bench_thread_now();
-            rs_surface_candidates(&s, &q, 0.25 * rad, &cd, &e);
-            tb[k] = (rs_bench_thread_now() - t0) / NQ * 1e9;
+        double tree, lists_ns, build, tree_s, lists_s, build_s;
+        int hits, hits_s;
+        time_queries(&s, &q, 0.25 * rad, &tree, &lists_ns, &build, &hits);
+        time_queries(&s, &qs, 0.25 * rad, &tree_s, &lists_s, &build_s, &hits_s);
+        if (hits_s != hits) {
+            fprintf(stderr, "bench_mesh: %d contacts in Morton order, %d in random order\n",
+                    hits_s, hits);
+            return 1;
         }
-        static const int *lists[NQ];
-        static int counts[NQ];
-        for (int i = 0; i < NQ; i++) {
-            lists[i] = cd.ids + cd.off[i];
-            counts[i] = cd.off[i + 1] - cd.off[i];
-        }
-        for (int k = 0; k < REPS; k++) {
-            c.n = 0;
-            t0 = rs_bench_thread_now();
-            rs_surface_query_among(&s, &q, lists, counts, &c, &e);
-            tl[k] = (rs_bench_thread_now() - t0) / NQ * 1e9;
-        }
-        printf("  %10d %10.3f %8.0f %8d %10.1f %10.1f %10.1f\n", ntri, tload, bytes, hits,
-               rs_bench_median(tt, REPS), rs_bench_median(tl, REPS),
-               rs_bench_median(tb, REPS));
+        printf("  %10d %10.3f %8.0f %8d %10.1f %10.1f %10.1f %10.1f %10.1f\n", ntri, tload,
+               bytes, hits, tree, lists_ns, build, tree_s, lists_s);
         fflush(stdout);
-        rs_cands_free(&cd);
-        rs_contacts_free(&c);
         rs_surface_free(&s);
     }
     remove("bench_mesh.stl");
