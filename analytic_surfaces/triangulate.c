@@ -168,5 +168,6 @@ void rs_trimesh_free(rs_trimesh *m)
 {
     free(m->xyz);
     free(m->tri);
+    free(m->cell);
     memset(m, 0, sizeof *m);
 }

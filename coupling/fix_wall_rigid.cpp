@@ -44,10 +44,11 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       area_mode_(AREA_NODE), area_const_(1.0), temp_given_(false), temp_wall_(0.0),
       dtemp_wall_(0.0), capacity_wall_(0.0), heat_wall_(0.0), heat_step_(0.0),
       fix_temp_(NULL), fix_heatflux_(NULL), fix_heatcap_(NULL), vtk_every_(0),
-      vtk_mesh_ok_(false), step_checked_(false), row_(NULL), hist_(NULL), nmax_(0),
-      rebuild_(true), lookahead_(0.0), rglob_(0.0), bounds_ok_(false), list_bounds_(false),
-      se_now_(0.0), ncontact_(0), out_step_(-1), out_valid_(false), kstep_(0),
-      run_time0_(0.0), pnewdt_stop_(false), routine_step_warned_(false)
+      vtk_mesh_ok_(false), wear_(false), facets_(false), stress_step_(false), nfacet_(0),
+      step_checked_(false), row_(NULL), hist_(NULL), nmax_(0), rebuild_(true),
+      lookahead_(0.0), rglob_(0.0), bounds_ok_(false), list_bounds_(false), se_now_(0.0),
+      ncontact_(0), out_step_(-1), out_valid_(false), kstep_(0), run_time0_(0.0),
+      pnewdt_stop_(false), routine_step_warned_(false)
 {
     std::memset(&surf_, 0, sizeof surf_);
     std::memset(&loaded_, 0, sizeof loaded_);
@@ -203,6 +204,7 @@ void FixWallRigid::init()
     init_predef();
     if (vtk_every_ > 0 && !vtk_mesh_ok_)
         init_vtk_mesh();
+    init_facets();
     if (1 + atom_size() > kExchangeMax) {
         std::ostringstream o;
         o << "each atom would carry " << 1 + atom_size() << " doubles of contact history ("
@@ -712,6 +714,7 @@ void FixWallRigid::compute(bool setup_call)
     ncontact_ = 0;
     out_valid_ = false;
     heat_step_ = 0.0;
+    begin_facets();
 
     /* Per-atom output: every candidate's row is written by its block each step, so only
      * the rows that may stop being candidates are zeroed here: all of them after a

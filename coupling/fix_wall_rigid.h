@@ -105,6 +105,13 @@ class FixWallRigid : public Fix
     void write_vtk();
     void update_previous_fields();
 
+    /* facets of a MESH: stress and wear (fix_wall_rigid_facets.cpp) */
+    void init_facets();
+    void begin_facets();
+    void facet_pass(const int *idx, int ne, bool setup_call);
+    void reduce_facets(std::vector<double> &sn, std::vector<double> &st,
+                       std::vector<double> &wear);
+
     /* per-atom row layout (doubles): tracker directory (capacity), previous temperature
      * (1), previous predefined fields (npred). The slots are in hist_, slot-major: atom
      * i's slot j at hist_ + (j * nmax_ + i) * slot_size(), so an atom with one contact
@@ -222,6 +229,16 @@ class FixWallRigid : public Fix
     int vtk_every_;
     rs_trimesh vtk_mesh_;
     bool vtk_mesh_ok_;
+
+    /* facets: `wear finnie`, and the facet stresses of the VTK steps */
+    bool wear_;        // wear finnie
+    bool facets_;      // a MESH with vtk or wear: the facet arrays are kept
+    bool stress_step_; // this step's facet forces are summed (a VTK step)
+    int nfacet_;
+    std::vector<double> elem_area_, elem_n_; // reference area and unit normal per facet
+    std::vector<double> elem_f_;             // 3 per facet: this step's force on the wall
+    std::vector<double> wear_el_;            // per facet: this rank's share of the wear
+    std::vector<double> kfinnie_;            // k_finnie with the wall type, per atom type
     bool step_checked_; ///< the time step was checked against the law's critical step
 
     /* per-atom storage */

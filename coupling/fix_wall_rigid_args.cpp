@@ -104,9 +104,9 @@ int FixWallRigid::integer(const char *keyword, const char *what, const char *s)
 bool FixWallRigid::is_keyword(const char *s) const
 {
     static const char *const kw[] = {
-        "surface",  "name", "law",       "props",  "type",       "statev",
-        "tracking", "area", "contacts",  "move",   "rotate",     "temperature",
-        "predef",   "vtk",  "curvature", "pnewdt", "surface_vel"};
+        "surface",  "name", "law",       "props",  "type",        "statev",
+        "tracking", "area", "contacts",  "move",   "rotate",      "temperature",
+        "predef",   "vtk",  "curvature", "pnewdt", "surface_vel", "wear"};
     for (const char *k : kw)
         if (std::strcmp(s, k) == 0)
             return true;
@@ -223,6 +223,16 @@ void FixWallRigid::parse(int narg, char **arg)
             iarg += 2;
         } else if (std::strcmp(kw, "move") == 0 || std::strcmp(kw, "rotate") == 0) {
             iarg = parse_motion(narg, arg, iarg);
+        } else if (std::strcmp(kw, "wear") == 0) {
+            need(1, "'finnie' or 'off'");
+            if (std::strcmp(arg[iarg + 1], "finnie") == 0)
+                wear_ = true;
+            else if (std::strcmp(arg[iarg + 1], "off") == 0)
+                wear_ = false;
+            else
+                fail(std::string("keyword 'wear' expects 'finnie' or 'off', got '") +
+                     arg[iarg + 1] + "'");
+            iarg += 2;
         } else if (std::strcmp(kw, "surface_vel") == 0) {
             need(3, "a surface velocity VX VY VZ");
             double u[3];
@@ -287,10 +297,11 @@ void FixWallRigid::parse(int narg, char **arg)
                      arg[iarg + 1] + "'");
             iarg += 2;
         } else {
-            fail(std::string("unknown keyword '") + kw +
-                 "'; expected surface, name, law, props, type, statev, tracking, area, "
-                 "contacts, move, rotate, surface_vel, temperature, predef, vtk, curvature "
-                 "or pnewdt");
+            fail(
+                std::string("unknown keyword '") + kw +
+                "'; expected surface, name, law, props, type, statev, tracking, area, "
+                "contacts, move, rotate, surface_vel, temperature, predef, vtk, curvature, "
+                "wear or pnewdt");
         }
     }
 
@@ -314,6 +325,9 @@ void FixWallRigid::parse(int narg, char **arg)
     if (rc != RS_OK)
         fail(std::string("keyword 'surface': ") + err.msg);
     surf_ok_ = true;
+    if (wear_ && surf_.kind != RS_SURF_FACETED)
+        fail("keyword 'wear' needs a mesh surface (TYPE=MESH or 'surface inline mesh'): "
+             "the wear is kept per facet");
     if (surf_.warning[0] && comm->me == 0)
         error->warning(FLERR,
                        (std::string("fix wall/rigid: surface: ") + surf_.warning).c_str());

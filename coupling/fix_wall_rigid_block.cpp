@@ -216,6 +216,8 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
             nleave_ ? scatter<2, true, false>(idx, n, ne, setup_call)
                     : scatter<2, false, false>(idx, n, ne, setup_call);
     }
+    if (facets_)
+        facet_pass(idx, ne, setup_call);
 
     if (setup_call) {
         for (int k = 0; k < n; k++)

@@ -39,7 +39,15 @@ void FixWallRigid::update_previous_fields()
  * step. Written by rank 0 (every rank holds the same surface and pose). */
 void FixWallRigid::write_vtk()
 {
-    if (comm->me != 0 || !vtk_mesh_ok_)
+    if (!vtk_mesh_ok_)
+        return;
+    /* a MESH's facets carry their stress (and wear) as cell data: reduced first, by
+     * every rank */
+    std::vector<double> sn, st, wear;
+    const bool cells = facets_ && vtk_mesh_.cell;
+    if (cells)
+        reduce_facets(sn, st, wear);
+    if (comm->me != 0)
         return;
     std::string name = vtk_file_;
     const size_t star = name.find('*');
@@ -65,6 +73,16 @@ void FixWallRigid::write_vtk()
     for (int t = 0; t < vtk_mesh_.ntri; t++)
         std::fprintf(fp, "3 %d %d %d\n", vtk_mesh_.tri[3 * t], vtk_mesh_.tri[3 * t + 1],
                      vtk_mesh_.tri[3 * t + 2]);
+    if (cells) {
+        std::fprintf(fp, "CELL_DATA %d\n", vtk_mesh_.ntri);
+        const std::vector<double> *data[3] = {&sn, &st, &wear};
+        const char *names[3] = {"sigma_n", "sigma_t", "wear"};
+        for (int a = 0; a < (wear_ ? 3 : 2); a++) {
+            std::fprintf(fp, "SCALARS %s double 1\nLOOKUP_TABLE default\n", names[a]);
+            for (int t = 0; t < vtk_mesh_.ntri; t++)
+                std::fprintf(fp, "%.17g\n", (*data[a])[(size_t)vtk_mesh_.cell[t]]);
+        }
+    }
     std::fclose(fp);
 }
 

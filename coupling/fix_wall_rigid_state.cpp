@@ -22,7 +22,7 @@ namespace
 /* 4: a slot ends with the contact's sed, fluxSlv and fluxMst; 3: each atom's record
  * starts with the capacity it was written with (the capacity grows during a run); 2:
  * directory in the row, slots after it */
-const double kRestartVersion = 4.0;
+const double kRestartVersion = 5.0;
 
 } // namespace
 
@@ -93,10 +93,17 @@ void FixWallRigid::write_restart(FILE *fp)
     list[RST_HEAT] = all[0];
     for (int d = 0; d < 4; d++)
         list[RST_DISS + d] = all[1 + d];
+    /* then the facets' wear (`wear finnie`): its count and the totals */
+    const int nwear = wear_ ? (int)wear_el_.size() : 0;
+    std::vector<double> wear((size_t)nwear + 1, 0.0);
+    wear[0] = nwear;
+    if (nwear)
+        MPI_Allreduce(wear_el_.data(), wear.data() + 1, nwear, MPI_DOUBLE, MPI_SUM, world);
     if (comm->me == 0) {
-        int size = RST_COUNT * sizeof(double);
+        int size = (RST_COUNT + 1 + nwear) * sizeof(double);
         std::fwrite(&size, sizeof(int), 1, fp);
         std::fwrite(list, sizeof(double), RST_COUNT, fp);
+        std::fwrite(wear.data(), sizeof(double), (size_t)nwear + 1, fp);
     }
 }
 
@@ -149,6 +156,21 @@ void FixWallRigid::restart(char *buf)
     heat_wall_ = root ? list[RST_HEAT] : 0.0;
     for (int d = 0; d < 4; d++)
         diss_[d] = root ? list[RST_DISS + d] : 0.0;
+    /* the facets' wear, when both the file and this fix keep it */
+    const int nwear = (int)list[RST_COUNT];
+    if (wear_ && nwear > 0) {
+        const int nf = rs_surface_facet_count(&surf_);
+        if (nwear != nf) {
+            std::ostringstream o;
+            o << "restart file has the wear of " << nwear << " facets; this fix's mesh has "
+              << nf << " (keep the surface unchanged)";
+            fail(o.str());
+        }
+        wear_el_.assign((size_t)nf, 0.0);
+        if (root)
+            for (int k = 0; k < nf; k++)
+                wear_el_[k] = list[RST_COUNT + 1 + k];
+    }
 }
 
 void FixWallRigid::grow_arrays(int nmax)

@@ -68,6 +68,28 @@ int rs_surface_facet_size(const rs_surface *s, int *nnode)
     return s->ops->facet_size(s, nnode);
 }
 
+int rs_surface_facet_count(const rs_surface *s)
+{
+    if (!s || !s->ops || !s->ops->facet_area)
+        return 0;
+    return s->ops->facet_area(s, -1, NULL, NULL);
+}
+
+int rs_surface_facet_area(const rs_surface *s, int k, double *area, double n[3])
+{
+    if (!s || !s->ops || !s->ops->facet_area || k < 0 || k >= rs_surface_facet_count(s))
+        return -1;
+    s->ops->facet_area(s, k, area, n);
+    return 0;
+}
+
+int rs_surface_facet_index(const rs_surface *s, int f)
+{
+    if (!s || !s->ops || !s->ops->facet_index)
+        return -1;
+    return s->ops->facet_index(s, f);
+}
+
 int rs_surface_adjacent(const rs_surface *s, int fa, int fb)
 {
     return s->ops->adjacent(s, fa, fb);

@@ -138,6 +138,12 @@ typedef struct rs_surface_ops {
                  double xyz[12], double shape[4]);
     /// With facet: the most nodes a facet has (3, or 4 with quads); *nnode, the nodes.
     int (*facet_size)(const struct rs_surface *s, int *nnode);
+    /// With facet: the facets' count, and for k >= 0 facet k's area and unit normal in the
+    /// reference configuration (k < 0: the count only).
+    int (*facet_area)(const struct rs_surface *s, int k, double *area, double n[3]);
+    /// With facet: the index (0 .. count - 1) of the facet under a contact on feature f
+    /// (an edge's or a vertex's: that of its lowest-numbered triangle), -1 for none.
+    int (*facet_index)(const struct rs_surface *s, int f);
 } rs_surface_ops;
 
 typedef struct rs_surface {
@@ -245,6 +251,16 @@ int rs_surface_facet(const rs_surface *s, int f, const double xm[3], int nodes[4
 /// gets the surface's node count.
 int rs_surface_facet_size(const rs_surface *s, int *nnode);
 
+/// The number of facets of s (0 for a kind without facets).
+int rs_surface_facet_count(const rs_surface *s);
+
+/// Facet k's area and unit outward normal in the reference configuration; 0, or -1 when
+/// k names no facet.
+int rs_surface_facet_area(const rs_surface *s, int k, double *area, double n[3]);
+
+/// The facet under a contact on feature f, or -1 (no facets, or none under f).
+int rs_surface_facet_index(const rs_surface *s, int f);
+
 /// Axis-aligned bounds of the surface in its reference configuration (+-INFINITY where
 /// it is unbounded).
 void rs_surface_bounds(const rs_surface *s, double lo[3], double hi[3]);
@@ -268,6 +284,8 @@ typedef struct rs_trimesh {
     int nvert, ntri;
     double *xyz; ///< 3 * nvert
     int *tri;    ///< 3 * ntri, node order gives the outward normal (right-hand rule)
+    int *cell;   ///< ntri: the facet each triangle shows (rs_surface_facet_index), or NULL
+                 ///< for a kind without facets
 } rs_trimesh;
 int rs_surface_triangulate(const rs_surface *s, double span, int nhoop, rs_trimesh *m,
                            rs_error *err);

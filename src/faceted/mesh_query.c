@@ -588,6 +588,12 @@ static int mesh_triangulate(const rs_surface *s, double span, int nhoop, rs_trim
     }
     memcpy(tm->xyz, m->xyz, 3 * (size_t)m->nv * sizeof(double));
     memcpy(tm->tri, m->tri, 3 * (size_t)m->nt * sizeof(int));
+    tm->cell = malloc((size_t)m->nt * sizeof(int) + 1);
+    if (!tm->cell) {
+        rs_trimesh_free(tm);
+        return rs_error_set(err, RS_ERR_NOMEM, "out of memory for the mesh's display");
+    }
+    memcpy(tm->cell, m->tel, (size_t)m->nt * sizeof(int));
     tm->nvert = m->nv;
     tm->ntri = m->nt;
     return RS_OK;
@@ -656,32 +662,71 @@ static void quad_shape(const double *xq, const double p[3], double shape[4])
         shape[i] = 0.25 * (1 + sx[i] * xi) * (1 + sy[i] * eta);
 }
 
-static int mesh_facet(const rs_surface *s, int f, const double xm[3], int nodes[4],
-                      double xyz[12], double shape[4])
+/* The element under feature f: a face's own, an edge's or a vertex's lowest triangle's. */
+static int facet_element(const rs_mesh *m, int f)
 {
-    const rs_mesh *m = s->impl;
     if (!m || f < 0)
-        return 0;
+        return -1;
     const int idx = RS_FEATURE_INDEX(f);
-    int el;
+    int el = -1;
     switch (RS_FEATURE_TYPE(f)) {
     case RS_FEAT_FACE:
         el = idx;
         break;
     case RS_FEAT_EDGE:
-        if (idx >= m->ne || m->edge_f0[idx] == m->edge_f0[idx + 1])
-            return 0;
-        el = m->tel[m->edge_f[m->edge_f0[idx]]];
+        if (idx < m->ne && m->edge_f0[idx] < m->edge_f0[idx + 1])
+            el = m->tel[m->edge_f[m->edge_f0[idx]]];
         break;
     case RS_FEAT_VERTEX:
-        if (idx >= m->nv || m->vfirst[idx] < 0)
-            return 0;
-        el = m->tel[m->vfirst[idx]];
+        if (idx < m->nv && m->vfirst[idx] >= 0)
+            el = m->tel[m->vfirst[idx]];
         break;
     default:
-        return 0;
+        break;
     }
-    if (el < 0 || el >= m->nel)
+    return el >= 0 && el < m->nel ? el : -1;
+}
+
+static int mesh_facet_index(const rs_surface *s, int f)
+{
+    return facet_element(s->impl, f);
+}
+
+/* Area and normal of element k: the sum of its triangles' (a planar quad's two). */
+static int mesh_facet_area(const rs_surface *s, int k, double *area, double n[3])
+{
+    const rs_mesh *m = s->impl;
+    if (!m)
+        return 0;
+    if (k < 0 || k >= m->nel)
+        return m->nel;
+    double a = 0.0;
+    for (int t = m->el_t0[k]; t < m->el_t0[k + 1]; t++) {
+        const double *p0 = m->xyz + 3 * (size_t)m->tri[3 * t],
+                     *p1 = m->xyz + 3 * (size_t)m->tri[3 * t + 1],
+                     *p2 = m->xyz + 3 * (size_t)m->tri[3 * t + 2];
+        double e1[3], e2[3], c[3];
+        for (int d = 0; d < 3; d++) {
+            e1[d] = p1[d] - p0[d];
+            e2[d] = p2[d] - p0[d];
+        }
+        rs_cross3(e1, e2, c);
+        a += 0.5 * rs_norm3(c);
+    }
+    const double *tn = m->trec + (size_t)RS_MESH_TREC * (size_t)m->el_t0[k];
+    *area = a;
+    n[0] = tn[0];
+    n[1] = tn[1];
+    n[2] = tn[2];
+    return m->nel;
+}
+
+static int mesh_facet(const rs_surface *s, int f, const double xm[3], int nodes[4],
+                      double xyz[12], double shape[4])
+{
+    const rs_mesh *m = s->impl;
+    const int el = facet_element(m, f);
+    if (el < 0)
         return 0;
     const int nn = m->el_nnode[el];
     for (int i = 0; i < nn; i++) {
@@ -728,7 +773,9 @@ const rs_surface_ops rs_mesh_ops = {"MESH",
                                     mesh_candidates,
                                     mesh_closest_among,
                                     mesh_facet,
-                                    mesh_facet_size};
+                                    mesh_facet_size,
+                                    mesh_facet_area,
+                                    mesh_facet_index};
 
 /* STL checks the reader leaves out: an ASCII STL (it starts with "solid" and reads as
  * text) ends with "endsolid", so a file cut short is an error and not a smaller mesh; a

@@ -14,12 +14,15 @@ surface inline mesh` line:
   0.75 s, turns about the y axis (period 2 s) for 0.5 s, stops, and the bed settles.
 - conveyor: spheres of 15 and 25 mm stream for 0.8 s onto a belt (`surface_vel -4.5 0 0`)
   in a box; the belt carries them off along -x.
+- chute_wear: 600 spheres of 1.5 and 2.5 mm run down a chute (`mesh/surface/stress ...
+  wear finnie`, here `wear finnie` and `vtk`) for 0.3 s.
 
 Pins: the same number of particles at the end; the bed's centre of mass in the same
 place to within one particle diameter; both beds at rest (kinetic energy below 1% of
 m g H, H the box height); for the bucket, that it did touch the bed; on the conveyor,
 the bed moving along -x at the stock run's mean velocity to within a tenth of the belt's
-speed.
+speed; on the chute, the chute's total wear (the sum over its facets of the VTK's
+`wear`) within 10% of the stock run's (the beds' paths part, as any two DEM runs do).
 """
 import os
 import shutil
@@ -108,6 +111,34 @@ def conveyor():
     return "conveyor", ref, ours, 0.025, None, None
 
 
+def chute_wear():
+    src = open(os.path.join(ROOT, "chute_wear", "in.chute_wear")).read()
+    ref = edit(no_dumps(src), [("nparticles 6000", "nparticles 600"),
+                               ("run    100000 upto", "run    30000 upto")])
+    ref = edit(ref, [("#insert particles",
+                      "dump dumpstress all mesh/gran/VTK 30000 post/mesh_*.vtk stress wear cad\n"
+                      "#insert particles")]) + BED
+    ours = edit(ref, [
+        ("fix  cad all mesh/surface/stress file meshes/simple_chute.stl type 1 wear finnie\n",
+         ""),
+        ("fix  granwalls all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad",
+         "fix  granwalls all wall/rigid surface inline mesh meshes/simple_chute.stl sides 2 "
+         "law hertz type 1 wear finnie vtk post/mesh_*.vtk 30000"),
+        ("dump dumpstress all mesh/gran/VTK 30000 post/mesh_*.vtk stress wear cad\n", "")])
+    return "chute_wear", ref, ours, 0.0025, None, None
+
+
+def total_wear(path):
+    """The sum of the cell array `wear` of a polydata VTK (LIGGGHTS's FIELD array or our
+    SCALARS)."""
+    toks = open(path).read().split("CELL_DATA", 1)[1].split()
+    n = int(toks[0])
+    i = toks.index("wear")
+    # LIGGGHTS: "wear 1 N double v ...", rigidsurf: "wear double 1 LOOKUP_TABLE default v ..."
+    first = i + 4 if toks[i + 1] == "1" else i + 5
+    return sum(float(v) for v in toks[first:first + n])
+
+
 def run(s, name, tag, exe, src_dir, deck):
     d = os.path.join(s.dir, name + "_" + tag)
     shutil.copytree(src_dir, d)
@@ -126,7 +157,7 @@ def body(s):
     if not s.ck.check("stock tutorials present", os.path.isdir(ROOT), ROOT,
                       "install liggghts-doc (tools/setup-deps does)"):
         return
-    for case in (meshgran, movingmeshgran, conveyor):
+    for case in (meshgran, movingmeshgran, conveyor, chute_wear):
         name, ref, ours, radius, height, contacts = case()
         src_dir = os.path.join(ROOT, name)
         out_ref, a = run(s, name, "liggghts", REFERENCE, src_dir, ref)
@@ -142,7 +173,14 @@ def body(s):
             s.ck.check(name + ": %s's bed at rest (KE < 1%% of m g H)" % tag,
                        r[4] < 0.01 * r[5] * 9.81 * height,
                        "KE %.3g J, m g H %.3g J" % (r[4], r[5] * 9.81 * height))
-        if height is None:  # the conveyor: the belt carries the bed along -x
+        if name == "chute_wear":
+            wa, wb = (total_wear(os.path.join(s.dir, name + "_" + tag, "post",
+                                              "mesh_30000.vtk"))
+                      for tag in ("liggghts", "rigidsurf"))
+            s.ck.check(name + ": the chute wears as stock LIGGGHTS's does (10%)",
+                       wa > 0 and abs(wb - wa) <= 0.1 * wa,
+                       "total wear %.5g (stock %.5g)" % (wb, wa))
+        elif height is None:  # the conveyor: the belt carries the bed along -x
             va, vb = (float([l for l in o.splitlines() if l.startswith("BELT ")][-1].split()[1])
                       for o in (out_ref, out))
             s.ck.check(name + ": the belt carries the bed as stock LIGGGHTS's does",

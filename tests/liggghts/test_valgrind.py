@@ -6,7 +6,8 @@ Decks: a turning drum with capped ends (mantle + caps: corner contacts with two
 features), spheres that spin and slide, per-atom output dumped, write_restart; a second
 process that reads the restart and runs on; a bonded heat case with a lumped wall; a
 malformed fix line (the error path); spheres in an open STL box (MESH: face, edge and
-corner contacts) that turns, and an empty mesh file (its error path).
+corner contacts) that turns, with its facets' wear and VTK, and an empty mesh file (its
+error path); a VUINTER given as its Fortran source, which calls the utility routines.
 
 What counts: every memcheck error (invalid read/write/free, uninitialised value,
 mismatched free), and every definitely or indirectly lost block whose allocation stack
@@ -17,6 +18,7 @@ day" one time in ten from a std::string it has already freed; records whose stac
 holds LAMMPS_NS::Error::all are skipped.
 """
 import math
+import os
 import re
 
 import liglib as L
@@ -29,7 +31,7 @@ OURS = re.compile(r"\b(rs_\w+|rigidsurf_\w+|LAMMPS_NS::FixWallRigid::\w+)\s*\(|"
                   r"\((analytic|closest|contacts|pcache|profile|query|reader|triangulate|"
                   r"contact_block|driver|frame|law\w*|motion|surface|track\w*|error|"
                   r"bonded_interface|coulomb|hertz|hooke|linear_softening|mesh_build|"
-                  r"mesh_query)\.c:\d+\)|\(cgal_mesh\.cpp:\d+\)")
+                  r"mesh_query|abaqus_util)\.c:\d+\)|\(cgal_mesh\.cpp:\d+\)")
 VALGRIND = ["valgrind", "--tool=memcheck", "--leak-check=full", "--num-callers=30",
             "--track-origins=no"]
 
@@ -130,18 +132,33 @@ def body(s):
         for t in tris) + "endsolid box\n"
     s.write("box.stl", stl)
     s.write("empty.stl", "")
-    mesh = L.header((-0.06, 0.06, -0.06, 0.06, -0.01, 0.06), 2e-5)
+    mesh = L.header((-0.06, 0.06, -0.06, 0.06, -0.01, 0.06), 2e-5,
+                    extra_props="fix m5 all property/global k_finnie peratomtypepair 2 "
+                                "1 1 1 1\n")
     for k, (x, y) in enumerate(((0.0, 0.0), (0.05 - R, 0.0), (0.05 - R, 0.05 - R),
                                 (-0.02, -0.05 + R))):
         mesh += L.sphere(k + 1, (x, y, R + 1e-5), R, RHO, v=(0.05, -0.05, 0), omega=(0, 0, 5))
     mesh += "fix grav all gravity 9.81 vector 0 0 -1\n"
     mesh += ("fix w all wall/rigid surface inline mesh box.stl law hertz type 2 "
-             "rotate origin 0 0 0 axis 0 0 1 omega 2\nfix integr all nve/sphere\nrun 300\n")
+             "rotate origin 0 0 0 axis 0 0 1 omega 2 wear finnie vtk box_*.vtk 100\n"
+             "fix integr all nve/sphere\nrun 300\n")
     runs.append(("mesh", mesh, 0))
     badm = L.header((-0.1, 0.1, -0.1, 0.1, -0.05, 0.1), 1e-5)
     badm += L.sphere(1, (0, 0, 0.02), 0.005, RHO)
     badm += "fix w all wall/rigid surface inline mesh empty.stl law hertz type 2\nrun 10\n"
     runs.append(("bad_mesh", badm, 1))
+    # a VUINTER from source: the build (outside valgrind: gfortran is a child process),
+    # the loaded routine and the utility routines it calls
+    os.environ["RIGIDSURF_CACHE"] = s.path("cache")
+    routine = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "abaqus",
+                           "vuinter_util.f")
+    vu = L.header((-0.05, 0.05, -0.05, 0.05, -0.01, 0.05), 1e-5)
+    vu += L.sphere(1, (0.0, 0.0, R - 1e-7), R, RHO)
+    vu += ("fix grav all gravity 9.81 vector 0 0 -1\n"
+           "fix w all wall/rigid surface inline cylinder a 0 0 0 b 1 0 0 c 0 -1 0 profile "
+           "START -1 0 LINE 1 0 end law vuinter %s statev 10 props 2e4 0 0 0\n"
+           "fix integr all nve/sphere\nrun 50\n" % routine)
+    runs.append(("vuinter_source", vu, 0))
     for tag, deck, want_rc in runs:
         rc, out = s.run(tag, deck, expect_ok=False, prefix=VALGRIND, timeout=600)
         s.ck.check(tag + ": exit status %d" % want_rc, rc == want_rc, "%s" % rc,

@@ -612,6 +612,12 @@ static void cube_edges_and_corners(void)
     query(&s, 1, &x, &y, &z, NULL, 1.0, &c);
     ENSURE(c.n == 1 && RS_FEATURE_TYPE(c.feature[0]) == RS_FEAT_EDGE);
     ENSURE_NEAR(c.dist[0], hypot(0.1, 0.2), 1e-15);
+    /* the edge x = 1, z = 1 belongs to elements 2 (top) and 5 (x = 1): its facet is one
+     * of them */
+    {
+        const int k = rs_surface_facet_index(&s, c.feature[0]);
+        ENSURE(k == 1 || k == 4);
+    }
     x = 1.1, y = 1.2, z = 1.3; /* beyond the corner (1, 1, 1) */
     query(&s, 1, &x, &y, &z, NULL, 1.0, &c);
     ENSURE(c.n == 1 && RS_FEATURE_TYPE(c.feature[0]) == RS_FEAT_VERTEX);
@@ -926,6 +932,29 @@ static void abaqus_rigid_part(void)
         for (int i = 0; i < 4; i++)
             ENSURE_NEAR(sh[i], want[i], 1e-15);
         ENSURE(xyz[3 * 2] == 1.0 && xyz[3 * 2 + 1] == 1.0 && xyz[3 * 2 + 2] == 1.0);
+        /* six unit quads with outward axis normals; the contact's facet is element 2 */
+        ENSURE(rs_surface_facet_count(&s) == 6);
+        ENSURE(rs_surface_facet_index(&s, c.feature[0]) == 1);
+        for (int k = 0; k < 6; k++) {
+            double a, n[3];
+            ENSURE(rs_surface_facet_area(&s, k, &a, n) == 0);
+            ENSURE_NEAR(a, 1.0, 1e-15);
+            ENSURE_NEAR(fabs(n[0]) + fabs(n[1]) + fabs(n[2]), 1.0, 1e-15);
+        }
+        double a, n[3];
+        ENSURE(rs_surface_facet_area(&s, 1, &a, n) == 0 && n[2] == 1.0); /* the top */
+        ENSURE(rs_surface_facet_area(&s, 6, &a, n) == -1);
+        /* the display's triangles show their quads: each element twice */
+        rs_trimesh tm;
+        ENSURE(rs_surface_triangulate(&s, 1.0, 1, &tm, &e) == RS_OK);
+        int seen[6] = {0, 0, 0, 0, 0, 0};
+        ENSURE(tm.ntri == 12 && tm.cell != NULL);
+        for (int t = 0; t < tm.ntri; t++)
+            if (tm.cell[t] >= 0 && tm.cell[t] < 6)
+                seen[tm.cell[t]]++;
+        for (int k = 0; k < 6; k++)
+            ENSURE(seen[k] == 2);
+        rs_trimesh_free(&tm);
     }
     rs_contacts_free(&c);
     rs_surface_free(&s);
@@ -1085,6 +1114,8 @@ static void facets_under_contacts(void)
     double xyz[12], sh[4], xm[3] = {0, 0, 0};
     ENSURE(rs_surface_facet_size(&s, NULL) == 0);
     ENSURE(rs_surface_facet(&s, RS_FEATURE(RS_FEAT_FACE, 0), xm, nodes, xyz, sh) == 0);
+    ENSURE(rs_surface_facet_count(&s) == 0);
+    ENSURE(rs_surface_facet_index(&s, RS_FEATURE(RS_FEAT_FACE, 0)) == -1);
     rs_surface_free(&s);
 }
 

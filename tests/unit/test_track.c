@@ -691,6 +691,8 @@ static const rs_surface_ops fixture_ops = {"fixture",
                                            NULL,
                                            NULL,
                                            NULL,
+                                           NULL,
+                                           NULL,
                                            NULL};
 
 /* History (slot, slip, stress, statev) carries across a smooth junction; across a sharp
