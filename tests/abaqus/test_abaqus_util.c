@@ -116,6 +116,21 @@ static void write_text(const char *path, const char *text)
     }
 }
 
+/* A fresh folder for routines' sources. */
+static int source_dir(char dir[256])
+{
+    snprintf(dir, 256, "/tmp/rs_abq_src_XXXXXX");
+    return mkdtemp(dir) != NULL;
+}
+
+/* dir/name as path (size 300); with text, the file is written. */
+static void source_file(const char *dir, const char *name, const char *text, char path[300])
+{
+    snprintf(path, 300, "%s/%s", dir, name);
+    if (text)
+        write_text(path, text);
+}
+
 /* ------------------------------------------------------------ a block of 3 contacts */
 
 enum { NC = 3, NSV = 10 };
@@ -392,12 +407,10 @@ static void cache_follows_text_and_includes(void)
     set_host();
     fresh_cache();
     char src_dir[256];
-    snprintf(src_dir, sizeof src_dir, "/tmp/rs_abq_src_XXXXXX");
-    ENSURE(mkdtemp(src_dir) != NULL);
+    ENSURE(source_dir(src_dir));
     char main_f[300], inc_f[300];
-    snprintf(main_f, sizeof main_f, "%s/law.f", src_dir);
-    snprintf(inc_f, sizeof inc_f, "%s/consts.inc", src_dir);
-    write_text(inc_f, "      PARAMETER (AK = 3.0D0)\n");
+    source_file(src_dir, "law.f", NULL, main_f);
+    source_file(src_dir, "consts.inc", "      PARAMETER (AK = 3.0D0)\n", inc_f);
     const char *text = "      SUBROUTINE VUINTER(SFD,SCD,SPD,SVD,STRESS)\n"
                        "      INCLUDE 'VABA_PARAM.INC'\n"
                        "      INCLUDE 'consts.inc'\n"
@@ -421,14 +434,12 @@ static void two_processes_compile_once(void)
 {
     fresh_cache();
     char src_dir[256];
-    snprintf(src_dir, sizeof src_dir, "/tmp/rs_abq_src_XXXXXX");
-    ENSURE(mkdtemp(src_dir) != NULL);
+    ENSURE(source_dir(src_dir));
     char main_f[300];
-    snprintf(main_f, sizeof main_f, "%s/twice.f", src_dir);
-    write_text(main_f, "      SUBROUTINE VUINTER(X)\n"
-                       "      INCLUDE 'VABA_PARAM.INC'\n"
-                       "      X = 1.0D0\n"
-                       "      END\n");
+    source_file(src_dir, "twice.f",
+                "      SUBROUTINE VUINTER(X)\n      INCLUDE 'VABA_PARAM.INC'\n"
+                "      X = 1.0D0\n      END\n",
+                main_f);
     pid_t kids[2];
     for (int i = 0; i < 2; ++i) {
         kids[i] = fork();
@@ -456,14 +467,12 @@ static void build_failures_say_why(void)
     set_host();
     fresh_cache();
     char src_dir[256];
-    snprintf(src_dir, sizeof src_dir, "/tmp/rs_abq_src_XXXXXX");
-    ENSURE(mkdtemp(src_dir) != NULL);
+    ENSURE(source_dir(src_dir));
     char bad[300];
-    snprintf(bad, sizeof bad, "%s/broken.f", src_dir);
-    write_text(bad, "      SUBROUTINE VUINTER(X)\n"
-                    "      INCLUDE 'VABA_PARAM.INC'\n"
-                    "      X = = 1.0D0\n"
-                    "      END\n");
+    source_file(src_dir, "broken.f",
+                "      SUBROUTINE VUINTER(X)\n      INCLUDE 'VABA_PARAM.INC'\n"
+                "      X = = 1.0D0\n      END\n",
+                bad);
     rs_law law;
     rs_error err;
     ENSURE(rs_law_load_vuinter(bad, &law, &err) == RS_ERR_PARSE);
@@ -472,13 +481,13 @@ static void build_failures_say_why(void)
     ENSURE(count_files(cache, ".so") == 0);
 
     char missing[300];
-    snprintf(missing, sizeof missing, "%s/absent.f", src_dir);
+    source_file(src_dir, "absent.f", NULL, missing);
     ENSURE(rs_law_load_vuinter(missing, &law, &err) == RS_ERR_IO);
     ENSURE(strstr(err.msg, "absent.f: cannot read") != NULL);
 
     char good[300];
-    snprintf(good, sizeof good, "%s/good.f", src_dir);
-    write_text(good, "      SUBROUTINE VUINTER(X)\n      X = 1.0D0\n      END\n");
+    source_file(src_dir, "good.f",
+                "      SUBROUTINE VUINTER(X)\n      X = 1.0D0\n      END\n", good);
     setenv("RIGIDSURF_FC", "/nonexistent/gfortran", 1);
     ENSURE(rs_law_load_vuinter(good, &law, &err) == RS_ERR_IO);
     ENSURE(strstr(err.msg, "/nonexistent/gfortran") != NULL);
