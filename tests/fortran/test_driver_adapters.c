@@ -4,9 +4,13 @@
  *   (a linear spring, to O((omega dt)^2));
  * - a node pressed onto the flat and dragged along it with FRIC Coulomb over
  *   linear_softening (kn = 1e6, from its equilibrium overlap) follows the built-in
- *   coulomb, and while slipping |tau| = mu p. */
+ *   coulomb, and while slipping |tau| = mu p; the same with the FRIC given to the
+ *   loader as its Fortran source (built into a fresh cache). */
+#define _DEFAULT_SOURCE
 #include "rigidsurf/driver.h"
 #include "rs_test.h"
+
+#include <stdlib.h>
 
 #define NSTEP 800
 
@@ -124,12 +128,15 @@ static void test_uinter_unstable_penalty_is_reported(void)
     rs_law_unload(&ul);
 }
 
-static void test_fric_coulomb_drag_matches_builtin(void)
+static void fric_coulomb_drag(const char *lib)
 {
     rs_law fl;
     rs_error err;
     const rs_law *lin = rs_law_find("linear_softening");
-    ENSURE(rs_law_load_fric(RS_FRIC_COULOMB_LIB, lin, &fl, &err) == RS_OK);
+    const int rc = rs_law_load_fric(lib, lin, &fl, &err);
+    if (rc)
+        fprintf(stderr, "%s\n", err.msg);
+    ENSURE(rc == RS_OK);
     const double mu = 0.3, ks = 2e6, kn = 1e6;
     double cp[3] = {mu, ks, kn}, fp[5] = {kn, mu, ks, 0.0, 0.0};
     double va, vb;
@@ -152,10 +159,27 @@ static void test_fric_coulomb_drag_matches_builtin(void)
     rs_law_unload(&fl);
 }
 
+static void test_fric_coulomb_drag_matches_builtin(void)
+{
+    fric_coulomb_drag(RS_FRIC_COULOMB_LIB);
+}
+
+static void test_fric_from_source_in_driver(void)
+{
+    char cache[] = "/tmp/rs_driver_cache_XXXXXX";
+    ENSURE(mkdtemp(cache) != NULL);
+    setenv("RIGIDSURF_CACHE", cache, 1);
+    fric_coulomb_drag(RS_FORTRAN_SRC_DIR "/fric_coulomb.f");
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", cache);
+    ENSURE(system(cmd) == 0);
+}
+
 int main(void)
 {
     RS_RUN(test_uinter_penalty_drop_matches_linear_softening);
     RS_RUN(test_uinter_unstable_penalty_is_reported);
     RS_RUN(test_fric_coulomb_drag_matches_builtin);
+    RS_RUN(test_fric_from_source_in_driver);
     return rs_test_summary();
 }
