@@ -32,6 +32,16 @@
 /* The Fortran entry points, called from C with their hidden lengths. */
 void xplb_abqerr_(const int *lop, const char *string, const int *intv, const double *realv,
                   const char *charv, size_t lstring, size_t lcharv);
+void STDB_ABQERR(const int *lop, const char *string, const int *intv, const double *realv,
+                 const char *charv, size_t lstring, size_t lcharv);
+void xit_(void);
+void XPLB_EXIT(void);
+void getjobname_(char *jobname, int *len, size_t ljobname);
+void GETOUTDIR(char *outdir, int *len, size_t loutdir);
+void getnumcpus_(int *n);
+void GETRANK(int *k);
+void getpartinfo_(const int *num, const int *jtyp, char *part, int *loc, int *jrcd,
+                  size_t lpart);
 
 /* ------------------------------------------------------------ a host that records */
 
@@ -261,6 +271,53 @@ static void an_unknown_severity_ends_the_run(void)
     }
     ENSURE(strstr(fatal_text, "LOP = 7") != NULL);
     ENSURE(strstr(fatal_text, "odd") != NULL);
+}
+
+/* The Standard forms and the upper-case C names answer as the V-forms do; XIT and
+ * XPLB_EXIT end the run through the host. */
+static void standard_forms_and_c_names(void)
+{
+    set_host();
+    char name[256], dir[256], part[80];
+    int len = -1, n = -1, loc = -1, jrcd = -1;
+    getjobname_(name, &len, sizeof name);
+    ENSURE(len == 5 && memcmp(name, "myjob", 5) == 0 && name[5] == ' ' && name[255] == ' ');
+    GETOUTDIR(dir, &len, sizeof dir);
+    ENSURE(len == 13 && memcmp(dir, "/some/out/dir", 13) == 0);
+    getnumcpus_(&n);
+    ENSURE(n == 5);
+    GETRANK(&n);
+    ENSURE(n == 3);
+    /* GETPARTINFO: a node of the current call; an element (JTYP = 1) is none */
+    block_setup(1.0, 0.0, 0.0, 0.0);
+    rs_abq_call_begin(&blk.b, 1, "UINTER");
+    const int node = tags[2], zero = 0, one = 1;
+    getpartinfo_(&node, &zero, part, &loc, &jrcd, sizeof part);
+    ENSURE(jrcd == 0 && loc == tags[2] && memcmp(part, "grains ", 7) == 0);
+    getpartinfo_(&node, &one, part, &loc, &jrcd, sizeof part);
+    ENSURE(jrcd == 1 && loc == 0);
+    const int other = 12345;
+    getpartinfo_(&other, &zero, part, &loc, &jrcd, sizeof part);
+    ENSURE(jrcd == 1);
+    int lop = 1;
+    const char s[] = "standard";
+    STDB_ABQERR(&lop, s, NULL, NULL, NULL, sizeof s - 1, 8);
+    ENSURE(nmessages == 1);
+    ENSURE(strcmp(messages[0], "rigidsurf INFO [rank 3] UINTER (STDB_ABQERR): standard") ==
+           0);
+    rs_error err;
+    ENSURE(rs_abq_call_end(&err) == RS_OK);
+    if (setjmp(fatal_jump) == 0) {
+        xit_();
+        ENSURE(0);
+    }
+    ENSURE(strstr(fatal_text, "called XIT") != NULL);
+    fatal_text[0] = '\0';
+    if (setjmp(fatal_jump) == 0) {
+        XPLB_EXIT();
+        ENSURE(0);
+    }
+    ENSURE(strstr(fatal_text, "called XPLB_EXIT") != NULL);
 }
 
 static void routine_from_source_answers_from_host_and_block(void)
@@ -504,6 +561,7 @@ int main(void)
     RS_RUN(format_substitutes_in_order);
     RS_RUN(info_and_warning_reach_the_host);
     RS_RUN(an_unknown_severity_ends_the_run);
+    RS_RUN(standard_forms_and_c_names);
     RS_RUN(routine_from_source_answers_from_host_and_block);
     RS_RUN(error_severity_fails_the_call);
     RS_RUN(fatal_calls_end_the_run);
