@@ -467,8 +467,8 @@ static int normal_stiffness(const rs_law *normal, const rs_law_block *b, int off
     const int n = b->nSlvNod, nd = b->nDir;
     const size_t nsv = (size_t)b->nStateVar;
     double rd[3 * RS_BLOCK], drd[3 * RS_BLOCK], st[3 * RS_BLOCK], delta[RS_BLOCK];
-    double fs[RS_BLOCK], fm[RS_BLOCK], se[RS_BLOCK], e1[RS_BLOCK], e2[RS_BLOCK],
-        e3[RS_BLOCK], e4[RS_BLOCK];
+    double fs[RS_BLOCK] = {0}, fm[RS_BLOCK] = {0}, se[RS_BLOCK] = {0}, e1[RS_BLOCK],
+           e2[RS_BLOCK], e3[RS_BLOCK], e4[RS_BLOCK];
     memcpy(rd, b->rdisp, (size_t)(nd * n) * sizeof(double));
     memcpy(drd, b->drdisp, (size_t)(nd * n) * sizeof(double));
     memcpy(st, stress0, (size_t)(nd * n) * sizeof(double));
