@@ -126,51 +126,18 @@ void rs_analytic_free(rs_surface *s)
     s->profile.vkind = NULL;
 }
 
-static const rs_surface_ops segments_ops = {"SEGMENTS",
-                                            2,
-                                            RS_FRAME_TRAVEL,
-                                            rs_analytic_closest,
-                                            analytic_adjacent,
-                                            analytic_bounds,
-                                            analytic_spin_axis,
-                                            rs_analytic_triangulate,
-                                            rs_analytic_free,
-                                            NULL,
-                                            NULL,
-                                            NULL,
-                                            NULL,
-                                            NULL,
-                                            NULL};
-static const rs_surface_ops cylinder_ops = {"CYLINDER",
-                                            3,
-                                            RS_FRAME_GENERATOR,
-                                            rs_analytic_closest,
-                                            analytic_adjacent,
-                                            analytic_bounds,
-                                            analytic_spin_axis,
-                                            rs_analytic_triangulate,
-                                            rs_analytic_free,
-                                            NULL,
-                                            NULL,
-                                            NULL,
-                                            NULL,
-                                            NULL,
-                                            NULL};
-static const rs_surface_ops revolution_ops = {"REVOLUTION",
-                                              3,
-                                              RS_FRAME_TRAVEL,
-                                              rs_analytic_closest,
-                                              analytic_adjacent,
-                                              analytic_bounds,
-                                              analytic_spin_axis,
-                                              rs_analytic_triangulate,
-                                              rs_analytic_free,
-                                              NULL,
-                                              NULL,
-                                              NULL,
-                                              NULL,
-                                              NULL,
-                                              NULL};
+/* The analytic kinds search their profile at every query and have no facets: the
+ * optional operations stay NULL. */
+#define ANALYTIC_OPS(kind, nd, conv)                                                       \
+    {                                                                                      \
+        .name = kind, .ndir = nd, .frame = conv, .closest = rs_analytic_closest,           \
+        .adjacent = analytic_adjacent, .bounds = analytic_bounds,                          \
+        .spin_axis = analytic_spin_axis, .triangulate = rs_analytic_triangulate,           \
+        .free = rs_analytic_free                                                           \
+    }
+static const rs_surface_ops segments_ops = ANALYTIC_OPS("SEGMENTS", 2, RS_FRAME_TRAVEL);
+static const rs_surface_ops cylinder_ops = ANALYTIC_OPS("CYLINDER", 3, RS_FRAME_GENERATOR);
+static const rs_surface_ops revolution_ops = ANALYTIC_OPS("REVOLUTION", 3, RS_FRAME_TRAVEL);
 
 const rs_surface_ops *rs_analytic_ops(rs_surface_kind kind)
 {

@@ -679,21 +679,8 @@ static int fixture_adjacent(const rs_surface *s, int fa, int fb)
     return (fa == a && fb == b) || (fa == b && fb == a);
 }
 
-static const rs_surface_ops fixture_ops = {"fixture",
-                                           3,
-                                           RS_FRAME_GLOBAL_X,
-                                           NULL,
-                                           fixture_adjacent,
-                                           NULL,
-                                           NULL,
-                                           NULL,
-                                           NULL,
-                                           NULL,
-                                           NULL,
-                                           NULL,
-                                           NULL,
-                                           NULL,
-                                           NULL};
+static const rs_surface_ops fixture_ops = {
+    .name = "fixture", .ndir = 3, .frame = RS_FRAME_GLOBAL_X, .adjacent = fixture_adjacent};
 
 /* History (slot, slip, stress, statev) carries across a smooth junction; across a sharp
  * one the old contact leaves (1e30) and the new one starts from zero. */
