@@ -27,15 +27,16 @@ enum rs_edge_kind {
 /// consecutive; a face feature's index is its element.
 typedef struct rs_mesh {
     int nv, nt, ne, nel;
-    double *xyz;   ///< 3 nv, reference configuration
-    int *tri;      ///< 3 nt, node order gives the outward normal
-    int *tel;      ///< nt: element of each triangle
-    int *el_t0;    ///< nel + 1: triangles of element k are el_t0[k] .. el_t0[k+1]-1
-    int *el_nodes; ///< 4 nel: the element's nodes (a triangle repeats its first)
-    int *el_nnode; ///< nel: 3 or 4
-    int *tedge;    ///< 3 nt: edge of each slot
-    int *edge_v;   ///< 2 ne: its nodes, lower index first
-    int *edge_f0;  ///< ne + 1: faces of edge e are edge_f[edge_f0[e] ..]
+    double *xyz;    ///< 3 nv, reference configuration
+    int *tri;       ///< 3 nt, node order gives the outward normal
+    int *tel;       ///< nt: element of each triangle
+    int *el_t0;     ///< nel + 1: triangles of element k are el_t0[k] .. el_t0[k+1]-1
+    int *el_nodes;  ///< 4 nel: the element's nodes (a triangle repeats its first)
+    int *el_nnode;  ///< nel: 3 or 4
+    int el_maxnode; ///< 4 when some element is a quad, else 3
+    int *tedge;     ///< 3 nt: edge of each slot
+    int *edge_v;    ///< 2 ne: its nodes, lower index first
+    int *edge_f0;   ///< ne + 1: faces of edge e are edge_f[edge_f0[e] ..]
     int *edge_f;
     unsigned char *edge_kind; ///< rs_edge_kind
     int *vert_e0;             ///< nv + 1: edges at vertex v are vert_e[vert_e0[v] ..]

@@ -575,6 +575,7 @@ int rs_mesh_build(const rs_soup *soup, double scale, const double a[3], const do
         if (quad) {
             m->el_t0[nel] = t_first;
             m->el_nnode[nel] = 4;
+            m->el_maxnode = 4;
             for (int j = 0; j < 4; j++)
                 m->el_nodes[4 * nel + j] = map[c[j]];
             m->tel[t_first] = m->tel[t_first + 1] = nel;
@@ -594,6 +595,8 @@ int rs_mesh_build(const rs_soup *soup, double scale, const double a[3], const do
     m->nt = nt;
     m->nel = nel;
     m->el_t0[nel] = nt;
+    if (m->el_maxnode != 4)
+        m->el_maxnode = 3;
     if (ndeg) {
         char piece[256];
         snprintf(piece, sizeof piece, "%s: dropped %d degenerate facet%s (facet %s%s)",

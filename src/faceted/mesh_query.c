@@ -747,12 +747,7 @@ static int mesh_facet_size(const rs_surface *s, int *nnode)
     const rs_mesh *m = s->impl;
     if (nnode)
         *nnode = m ? m->nv : 0;
-    if (!m)
-        return 0;
-    for (int el = 0; el < m->nel; el++)
-        if (m->el_nnode[el] == 4)
-            return 4;
-    return 3;
+    return m ? m->el_maxnode : 0;
 }
 
 static void mesh_free(rs_surface *s)
@@ -761,21 +756,21 @@ static void mesh_free(rs_surface *s)
     s->impl = NULL;
 }
 
-const rs_surface_ops rs_mesh_ops = {"MESH",
-                                    3,
-                                    RS_FRAME_GLOBAL_X,
-                                    mesh_closest,
-                                    mesh_adjacent,
-                                    mesh_bounds,
-                                    mesh_spin_axis,
-                                    mesh_triangulate,
-                                    mesh_free,
-                                    mesh_candidates,
-                                    mesh_closest_among,
-                                    mesh_facet,
-                                    mesh_facet_size,
-                                    mesh_facet_area,
-                                    mesh_facet_index};
+const rs_surface_ops rs_mesh_ops = {.name = "MESH",
+                                    .ndir = 3,
+                                    .frame = RS_FRAME_GLOBAL_X,
+                                    .closest = mesh_closest,
+                                    .adjacent = mesh_adjacent,
+                                    .bounds = mesh_bounds,
+                                    .spin_axis = mesh_spin_axis,
+                                    .triangulate = mesh_triangulate,
+                                    .free = mesh_free,
+                                    .candidates = mesh_candidates,
+                                    .closest_among = mesh_closest_among,
+                                    .facet = mesh_facet,
+                                    .facet_size = mesh_facet_size,
+                                    .facet_area = mesh_facet_area,
+                                    .facet_index = mesh_facet_index};
 
 /* STL checks the reader leaves out: an ASCII STL (it starts with "solid" and reads as
  * text) ends with "endsolid", so a file cut short is an error and not a smaller mesh; a
