@@ -295,8 +295,9 @@ pass1_dense(int i, int np, const int *restrict cfeat, const double *restrict cdi
 
 typedef struct master_rates {
     double Q[9], V[3], W[3], C[3];
-    double U[3], Umag; ///< surface velocity (rs_motion.belt) and its length
-    int belt;          ///< U is not zero
+    double U[3], Umag;  ///< surface velocity (rs_motion.belt) and its length
+    int belt;           ///< U is not zero
+    const rs_motion *m; ///< the motion these come from (NULL: a fixed master)
 } master_rates;
 
 static void put_frame(rs_track_out *o, int nd, int e, const double n[3], const double t1[3],
@@ -392,7 +393,7 @@ RS_INLINE void run_gather(track_run *restrict r, int m, const rs_track_out *o, i
 /* The kinematics of a run of m live contacts (docs/conventions.md):
  * - x_cp = x - arm n with arm = R - rdisp1/2; v_rel = v + w x (x_cp - x) - (V + W x
  *   (x_cp - C)) - u, with u the surface velocity U's tangential part scaled to |U|
- *   (belt != 0 only).
+ *   (belt != 0 only; rs_motion_belt_at, written out here so the loop vectorizes).
  * - a = Q n_old, q = Q t1_old; P v = cs v + w x v + w (w.v) / (1 + cs) with cs = a.n,
  *   w = a x n; tau1 = P q. Rotations keep cross products, so tau2 = n x tau1, and with
  *   t2 = n x t1 the matrix drot(i,j) = t_i . tau_j is [[d11, -d21], [d21, d11]]. P = I
@@ -634,12 +635,9 @@ static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
 
     if (mr->belt) {
         double u[3];
-        const double un = rs_dot3(mr->U, n);
+        rs_motion_belt_at(mr->m, n, u);
         for (int b = 0; b < 3; b++)
-            u[b] = mr->U[b] - un * n[b];
-        const double lu = sqrt(rs_dot3(u, u)), sc = lu > 0.0 ? mr->Umag / lu : 0.0;
-        for (int b = 0; b < 3; b++)
-            vr[b] -= sc * u[b];
+            vr[b] -= u[b];
     }
 
     const double f = *o->dir[e];
@@ -792,6 +790,7 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
         }
         mr.Umag = sqrt(rs_dot3(mr.U, mr.U));
         mr.belt = mr.Umag > 0.0;
+        mr.m = m;
         rs_motion_center(m, mr.C);
     } else {
         mr.Q[0] = mr.Q[4] = mr.Q[8] = 1.0;
