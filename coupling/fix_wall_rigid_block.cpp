@@ -258,6 +258,7 @@ void FixWallRigid::keep_tracked(const int *idx, int n, double dist_min)
             c.dist[m] = c.dist[e];
             c.curv[0][m] = c.curv[0][e];
             c.curv[1][m] = c.curv[1][e];
+            c.share[m] = c.share[e];
         }
         m++;
     }
@@ -340,11 +341,11 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call)
     ident_ = ident && ne == n;
 }
 
-/* Scatter: F = A (s1 n - s2 t1 - s3 t2) on the particle at x_cp, -F on the wall; the
- * wall's sums, energies, each contact's sed into its slot and the per-atom output of the
- * block's particles. ND = 2: the plane is z = const, t2 = -ez and the contact point keeps
- * the particle's z. LEAVE: some contacts are leaving (they apply nothing). UNITA: every
- * area is 1. */
+/* Scatter: F = w A (s1 n - s2 t1 - s3 t2) on the particle at x_cp, w the contact's
+ * share, -F on the wall; the wall's sums, energies (also times w A), each contact's sed
+ * into its slot and the per-atom output of the block's particles. ND = 2: the plane is z =
+ * const, t2 = -ez and the contact point keeps the particle's z. LEAVE: some contacts are
+ * leaving (they apply nothing). UNITA: every area is 1. */
 template <int ND, bool LEAVE, bool UNITA>
 void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
 {
@@ -358,7 +359,8 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
                              *__restrict pz = bz_.data();
     const double *__restrict alocal = tout_.alocaldir, *__restrict coord = tout_.coordslv,
                              *__restrict rdisp = tout_.rdisp;
-    const double *__restrict stress = cb_.stress, *__restrict area = cb_.area;
+    const double *__restrict stress = cb_.stress, *__restrict area = cb_.area,
+                             *__restrict share = tout_.share;
     const bool track_deepest = !ident_;
     int *__restrict deepest = deepest_.data();
     if (track_deepest)
@@ -372,7 +374,7 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
         if (LEAVE && leaving[e])
             continue;
         const int k = pt[e];
-        const double A = UNITA ? 1.0 : area[e];
+        const double A = (UNITA ? 1.0 : area[e]) * share[e];
         const double *s = stress + (size_t)e * ND;
         const double *L = alocal + (size_t)e * ND * ND; // columns n, t1[, t2]
         const double *xc = coord + (size_t)e * ND;
@@ -420,7 +422,7 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
     if (setup_call) {
         for (int e = 0; e < ne; e++)
             if (!(LEAVE && leaving[e]))
-                se += sed[e] * area[e];
+                se += sed[e] * area[e] * share[e];
     } else {
         const double *__restrict sfd = cb_.sfd, *__restrict spd = cb_.spd,
                                  *__restrict svd = cb_.svd, *__restrict scd = cb_.scd,
@@ -434,7 +436,7 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
                 sedp[e][0] = sedp[e][1] = sedp[e][2] = 0.0;
                 continue;
             }
-            const double A = UNITA ? 1.0 : area[e];
+            const double A = (UNITA ? 1.0 : area[e]) * share[e];
             se += sed[e] * A;
             d0 += sfd[e] * A;
             d1 += spd[e] * A;
@@ -452,7 +454,7 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
             const double *fslv = cb_.flux_slv;
             for (int e = 0; e < ne; e++)
                 if (!(LEAVE && leaving[e]))
-                    heatflux[idx[pt[e]]] += fslv[e] * area[e];
+                    heatflux[idx[pt[e]]] += fslv[e] * area[e] * share[e];
         }
     }
     se_now_ = se;

@@ -273,7 +273,7 @@ int rs_driver_step(rs_driver *d, rs_error *err)
         qslv[i] = 0.0;
     for (int e = 0; e < d->trk.n; ++e) {
         const int i = d->trk.point[e];
-        const double a = d->area[i];
+        const double a = d->area[i] * d->trk.share[e]; /* the contact's share of it */
         const double *al = d->trk.alocaldir + (size_t)e * nd * nd;
         for (int c = 0; c < nd; ++c) {
             double f = RS_A2(cb->stress, nd, 0, e) * al[c];

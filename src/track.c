@@ -32,6 +32,7 @@ void rs_track_out_free(rs_track_out *o)
     free(o->coordmst);
     free(o->vrel);
     free(o->curv);
+    free(o->share);
     memset(o, 0, sizeof *o);
 }
 
@@ -50,15 +51,16 @@ static int out_reserve(rs_track_out *o, int n, rs_error *err)
     if (n <= o->cap)
         return RS_OK;
     size_t c = (size_t)n, d = sizeof(double);
-    int ok =
-        grow((void **)&o->point, c * sizeof(int)) &&
-        grow((void **)&o->feature, c * sizeof(int)) &&
-        grow((void **)&o->slot, c * sizeof(double *)) &&
-        grow((void **)&o->dir, c * sizeof(double *)) &&
-        grow((void **)&o->rdisp, 3 * c * d) && grow((void **)&o->drdisp, 3 * c * d) &&
-        grow((void **)&o->drot, 4 * c * d) && grow((void **)&o->alocaldir, 9 * c * d) &&
-        grow((void **)&o->coordslv, 3 * c * d) && grow((void **)&o->coordmst, 3 * c * d) &&
-        grow((void **)&o->vrel, 3 * c * d) && grow((void **)&o->curv, 2 * c * d);
+    int ok = grow((void **)&o->point, c * sizeof(int)) &&
+             grow((void **)&o->feature, c * sizeof(int)) &&
+             grow((void **)&o->slot, c * sizeof(double *)) &&
+             grow((void **)&o->dir, c * sizeof(double *)) &&
+             grow((void **)&o->rdisp, 3 * c * d) && grow((void **)&o->drdisp, 3 * c * d) &&
+             grow((void **)&o->drot, 4 * c * d) &&
+             grow((void **)&o->alocaldir, 9 * c * d) &&
+             grow((void **)&o->coordslv, 3 * c * d) &&
+             grow((void **)&o->coordmst, 3 * c * d) && grow((void **)&o->vrel, 3 * c * d) &&
+             grow((void **)&o->curv, 2 * c * d) && grow((void **)&o->share, c * d);
     if (!ok)
         return rs_error_set(err, RS_ERR_NOMEM,
                             "rs_track_update: out of memory for %d contacts", n);
@@ -529,6 +531,11 @@ RS_INLINE void run_outputs(const track_run *restrict r, int m, const rs_contacts
     put_cols(o->coordslv + e * nd, m, nd, r->px, r->py, r->pz);
     put_cols(o->coordmst + e * nd, m, nd, c->xm[0] + k0, c->xm[1] + k0, c->xm[2] + k0);
     put_cols(o->curv + 2 * e, m, 2, c->curv[0] + k0, c->curv[1] + k0, NULL);
+    if (c->share)
+        memcpy(o->share + e, c->share + k0, (size_t)m * sizeof(double));
+    else /* a list made by hand, without shares */
+        for (int j = 0; j < m; j++)
+            o->share[e + (size_t)j] = 1.0;
     /* drot(2, 2) = [[d11, -d21], [d21, d11]], column-major. */
     double *restrict dr = o->drot + 4 * e;
     const double *nd21 = r->md21;
@@ -659,6 +666,7 @@ static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
     put_frame(o, nd, e, n, t1, t2);
     RS_A2(o->curv, 2, 0, e) = 0.0;
     RS_A2(o->curv, 2, 1, e) = 0.0;
+    o->share[e] = 1.0;
 }
 
 /* Pass 2 over the ne entries of pass 1: runs of live contacts, leaving slots as they

@@ -116,6 +116,10 @@ typedef struct rs_surface_ops {
                        struct rs_trimesh *m, rs_error *err);
     /// Frees what the kind owns (not the surface struct itself).
     void (*free)(struct rs_surface *s);
+    /// 1 when closest and closest_among set each contact's share (rs_contacts.share)
+    /// from the kind's own topology; 0: the dispatch sets them from the tangent planes of
+    /// each sphere's contacts (docs/conventions.md, "Shares at concave folds").
+    int shares;
     /// Optional (NULL: the kind searches its whole surface at every query): the
     /// candidates of each slave of q within its reach grown by extra, in kind-defined
     /// ids (MESH: triangles), so that an engine can keep them while its slaves and the
@@ -201,10 +205,25 @@ typedef struct rs_contacts {
     double *curv[2]; ///< principal curvatures at xm, along t1 and t2 where the frame is
                      ///< principal (the profile kinds), > 0 where the wall is convex
                      ///< toward the particle; 0 at sharp vertices
+    double *share;   ///< the contact's share of what it exchanges, in [0, 1]: 1 except
+                     ///< where two contacts of one sphere overlap it across a concave
+                     ///< fold (docs/conventions.md, "Shares at concave folds"); set by
+                     ///< rs_surface_query for every kind. NULL in a list made by hand:
+                     ///< every share 1
 } rs_contacts;
 
 /// Allocates room for cap contacts (cap >= 1). Returns RS_ERR_NOMEM on failure.
 int rs_contacts_reserve(rs_contacts *c, int cap, rs_error *err);
+
+/// Most contacts of one sphere that take part in its shares; more keep share 1.
+#define RS_SHARE_MAX 64
+/// The shares of contacts a .. a + m - 1, all of one sphere of radius R, from their
+/// weights, which share[a ..] holds on entry (docs/conventions.md, "Shares at concave
+/// folds"): w_i = v_i / sum_j c_ij v_j over the contacts that overlap the sphere (0 <
+/// dist < R), with c_ii = 1, c_ij = 1 where the discs the sphere cuts from the two
+/// tangent planes (radii a = sqrt(R^2 - dist^2)) meet, D <= a_i + a_j for feet D apart,
+/// else ((a_i + a_j) / D)^16. The others get share 1.
+void rs_contacts_patch_shares(rs_contacts *c, int a, int m, double R);
 /// Frees the arrays and zeroes c.
 void rs_contacts_free(rs_contacts *c);
 

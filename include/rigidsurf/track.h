@@ -91,6 +91,8 @@ typedef struct rs_track_out {
     double *coordmst;  ///< closest master point x_m (ndir, n)
     double *vrel;      ///< relative velocity of x_cp in (n, t1[, t2]) (ndir, n)
     double *curv;      ///< principal curvatures (2, n)
+    double *share;     ///< the contact's share (rs_contacts.share; 1 when leaving): the
+                       ///< engine applies share times what the law returns
 } rs_track_out;
 
 void rs_track_out_free(rs_track_out *o);

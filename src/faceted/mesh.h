@@ -53,6 +53,7 @@ typedef struct rs_mesh {
     int *vlabel;  ///< nv: user node number of each vertex (the label of its first point
                   ///< in the file), or NULL: the vertex's index + 1
     unsigned char *vopen; ///< nv: 1 on an open boundary or non-manifold edge
+    unsigned char *vconc; ///< nv: 1 at the end of a CONCAVE edge
     double lo[3], hi[3];  ///< bounds
     double size;          ///< the bounds' diagonal
     void *tree;           ///< the AABB tree (cgal_mesh.h)

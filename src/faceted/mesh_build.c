@@ -49,6 +49,7 @@ void rs_mesh_free(rs_mesh *m)
     free(m->trec);
     free(m->vfirst);
     free(m->tnbr);
+    free(m->vconc);
     free(m->vpn);
     free(m->vlabel);
     free(m->vopen);
@@ -427,6 +428,15 @@ static int finish_topology(rs_mesh *m, int two_sided)
                 if (m->tedge[3 * o + jo] == e)
                     m->tnbr[3 * t + j] = 3 * o + jo;
         }
+    /* vertices at the end of a concave edge, where contacts may begin or end while a
+     * sphere overlaps them (the query's shares) */
+    m->vconc = xmalloc((size_t)m->nv, 1);
+    if (!m->vconc)
+        goto done;
+    memset(m->vconc, 0, (size_t)m->nv);
+    for (int e = 0; e < m->ne; e++)
+        if (m->edge_kind[e] == RS_EDGE_CONCAVE)
+            m->vconc[m->edge_v[2 * e]] = m->vconc[m->edge_v[2 * e + 1]] = 1;
     for (int v = 0; v < m->nv; v++)
         m->vfirst[v] = -1;
     for (int t = m->nt - 1; t >= 0; t--)

@@ -96,6 +96,7 @@ typedef struct hit {
     double x[3]; /* closest point */
     double n[3]; /* unit normal toward the point's side */
     double dist;
+    double share;
 } hit;
 
 typedef struct scratch {
@@ -103,6 +104,7 @@ typedef struct scratch {
     int cap;
     hit *hits;
     int nhit, hcap;
+    int shares_due; /* the hits' shares hold weights (hit_weights) */
 } scratch;
 
 static int push_hit(scratch *s, const hit *h)
@@ -177,10 +179,85 @@ static int box_triangles(const rs_mesh *m, const double p[3], double reach, scra
     return n;
 }
 
+/* The distance from x to the segment a b. */
+static double segment_distance(const double a[3], const double b[3], const double x[3])
+{
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double w[3] = {x[0] - a[0], x[1] - a[1], x[2] - a[2]};
+    const double f = fmin(1.0, fmax(0.0, rs_dot3(w, u) / rs_dot3(u, u)));
+    const double d[3] = {w[0] - f * u[0], w[1] - f * u[1], w[2] - f * u[2]};
+    return rs_norm3(d);
+}
+
+/* The weights of the contacts s->hits of a sphere of radius R at p, into their share
+ * (docs/conventions.md, "Shares at concave folds"; rs_contacts_patch_shares makes them
+ * shares): the CONCAVE edges among triangles ids[0 .. n) that the sphere reaches (at
+ * distance d_L < R, cutting them in a chord of half-length kappa = sqrt(R^2 - d_L^2)),
+ * and their end vertices (at distance d_v < R, kappa = sqrt(R^2 - d_v^2)), are where a
+ * contact may begin or end while the sphere overlaps it. A contact's weight is a^2 =
+ * R^2 - dist^2 times the product over them of min(1, s / kappa), s the distance from its
+ * foot to the edge or vertex, and at least 1e-300. Returns 1 when two or more contacts
+ * overlap the sphere (the shares are due), else 0 with every share 1. */
+static int hit_weights(const rs_mesh *m, const double p[3], double R, const int *ids, int n,
+                       scratch *s)
+{
+    int nfront = 0;
+    for (int k = 0; k < s->nhit; k++) {
+        const double d = s->hits[k].dist;
+        s->hits[k].share = 1.0;
+        nfront += d > 0.0 && d < R;
+    }
+    if (nfront < 2)
+        return 0;
+    const int nh = s->nhit < RS_SHARE_MAX ? s->nhit : RS_SHARE_MAX;
+    for (int q = 0; q < n; q++) {
+        const int t = ids[q];
+        for (int j = 0; j < 3; j++) {
+            const int e = m->tedge[3 * t + j];
+            if (m->edge_kind[e] != RS_EDGE_CONCAVE || m->edge_f[m->edge_f0[e]] != t)
+                continue; /* each concave edge once, from its lowest face */
+            const double *a = m->xyz + 3 * m->edge_v[2 * e],
+                         *b = m->xyz + 3 * m->edge_v[2 * e + 1];
+            const double dl = segment_distance(a, b, p), k2 = (R - dl) * (R + dl);
+            if (!(k2 > 0.0))
+                continue;
+            const double kappa = sqrt(k2);
+            for (int k = 0; k < nh; k++) {
+                const double sf = segment_distance(a, b, s->hits[k].x);
+                if (sf < kappa)
+                    s->hits[k].share *= sf / kappa;
+            }
+        }
+        for (int j = 0; j < 3; j++) {
+            const int v = m->tri[3 * t + j];
+            if (!m->vconc[v] || m->vfirst[v] != t)
+                continue; /* each such vertex once, from its lowest triangle */
+            const double *x = m->xyz + 3 * v;
+            const double dv[3] = {p[0] - x[0], p[1] - x[1], p[2] - x[2]};
+            const double k2 = R * R - rs_dot3(dv, dv);
+            if (!(k2 > 0.0))
+                continue;
+            const double kappa = sqrt(k2);
+            for (int k = 0; k < nh; k++) {
+                const double *h = s->hits[k].x;
+                const double dh[3] = {h[0] - x[0], h[1] - x[1], h[2] - x[2]};
+                const double sv = rs_norm3(dh);
+                if (sv < kappa)
+                    s->hits[k].share *= sv / kappa;
+            }
+        }
+    }
+    for (int k = 0; k < nh; k++) {
+        const double d = s->hits[k].dist;
+        s->hits[k].share = fmax(s->hits[k].share * (R - d) * (R + d), 1e-300);
+    }
+    return 1;
+}
+
 /* The contacts of point p (reference configuration) among triangles ids[0 .. n), into
  * s->hits: those with dist <= gap_lim and dist >= dist_min. */
-static int point_hits(const rs_mesh *m, int sides, const double p[3], const int *ids, int n,
-                      double gap_lim, double dist_min, scratch *s)
+static int point_hits(const rs_mesh *m, int sides, const double p[3], double radius,
+                      const int *ids, int n, double gap_lim, double dist_min, scratch *s)
 {
     s->nhit = 0;
     /* no feature of a triangle is nearer than tri_bound */
@@ -325,6 +402,7 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], const int 
         }
         s->nhit = w;
     }
+    s->shares_due = radius > 0.0 && hit_weights(m, p, radius, ids, n, s);
     return 0;
 }
 
@@ -456,13 +534,14 @@ static int mesh_closest_among(const rs_surface *s, const rs_query *q,
         /* without a depth limit, penetrations reach down to the nearest triangle: the
          * same contacts with and without candidate lists */
         const double depth = isfinite(q->dist_min) ? q->dist_min : -reach;
-        if (nt < 0 || point_hits(m, s->sides, p, ids, nt, gap_lim, depth, &sc)) {
+        if (nt < 0 || point_hits(m, s->sides, p, r, ids, nt, gap_lim, depth, &sc)) {
             rc = rs_error_set(err, RS_ERR_NOMEM, "out of memory in the mesh query");
             break;
         }
         if (out->n + sc.nhit > out->cap &&
             (rc = rs_contacts_reserve(out, 2 * (out->n + sc.nhit) + 64, err)) != RS_OK)
             break;
+        const int o0 = out->n;
         for (int k = 0; k < sc.nhit; k++) {
             const hit *c = &sc.hits[k];
             const int o = out->n++;
@@ -480,6 +559,7 @@ static int mesh_closest_among(const rs_surface *s, const rs_query *q,
             out->point[o] = i;
             out->feature[o] = c->feature;
             out->dist[o] = c->dist;
+            out->share[o] = c->share;
             out->curv[0][o] = out->curv[1][o] = 0.0;
             for (int d = 0; d < 3; d++) {
                 out->xm[d][o] = xm[d];
@@ -488,6 +568,8 @@ static int mesh_closest_among(const rs_surface *s, const rs_query *q,
                 out->t2[d][o] = t2[d];
             }
         }
+        if (sc.shares_due) /* the same in the reference and the current pose */
+            rs_contacts_patch_shares(out, o0, sc.nhit, r);
     }
     free(sc.ids);
     free(sc.hits);
@@ -760,6 +842,7 @@ const rs_surface_ops rs_mesh_ops = {.name = "MESH",
                                     .ndir = 3,
                                     .frame = RS_FRAME_GLOBAL_X,
                                     .closest = mesh_closest,
+                                    .shares = 1,
                                     .adjacent = mesh_adjacent,
                                     .bounds = mesh_bounds,
                                     .spin_axis = mesh_spin_axis,

@@ -27,7 +27,8 @@ static int bad(const char *what, int k, const char *name)
     return 1;
 }
 
-/* Every contact: finite point, frame, distance and curvatures, unit n, t1, t2. */
+/* Every contact: finite point, frame, distance and curvatures, unit n, t1, t2, a share
+ * in [0, 1]. */
 static int check_contacts(const rs_surface *s, const rs_contacts *c, int nq)
 {
     for (int k = 0; k < c->n; k++) {
@@ -46,6 +47,8 @@ static int check_contacts(const rs_surface *s, const rs_contacts *c, int nq)
         }
         if (c->point[k] < 0 || c->point[k] >= nq)
             return bad("a point index outside the block", k, s->name);
+        if (!(c->share[k] >= 0.0 && c->share[k] <= 1.0))
+            return bad("a share outside [0, 1]", k, s->name);
     }
     return 0;
 }
