@@ -283,6 +283,9 @@ class FixWallRigid : public Fix
     std::vector<double> saved_rows_; // setup call: each particle's row, then its slots
     std::vector<char> leaving_, take_;
     std::vector<int> deepest_;
+    std::vector<double> area_w_; // the block's areas times shares, when shared
+    const double *scatter_area_ =
+        nullptr;                   // the areas the scatter applies: cb_.area or area_w_
     std::vector<double *> c_sedp_; // each contact's sed, fluxSlv, fluxMst in its slot
     int nleave_;                   // leaving contacts of the block
     bool ident_;                   // contact e is particle e's only contact, for all e

@@ -198,9 +198,19 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         rs_law_requests_merge(&requests_, &req);
 
     /* The scatter also stores each live contact's sed in its slot (leaving: 0). A unit
-     * area (the default) drops the products with A, which are exact. */
-    const bool unit =
+     * area (the default) drops the products with A, which are exact. Where contacts
+     * share a patch at a concave fold, each applies w A (docs/conventions.md). */
+    bool unit =
         area_mode_ == AREA_NODE || (area_mode_ == AREA_CONSTANT && area_const_ == 1.0);
+    scatter_area_ = cb_.area;
+    if (tout_.shared) {
+        if (area_w_.size() < (size_t)ne)
+            area_w_.resize((size_t)ne);
+        for (int e = 0; e < ne; e++)
+            area_w_[e] = (unit ? 1.0 : cb_.area[e]) * tout_.share[e];
+        scatter_area_ = area_w_.data();
+        unit = false;
+    }
     if (nd == 3) {
         if (unit)
             nleave_ ? scatter<3, true, true>(idx, n, ne, setup_call)
@@ -341,11 +351,11 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call)
     ident_ = ident && ne == n;
 }
 
-/* Scatter: F = w A (s1 n - s2 t1 - s3 t2) on the particle at x_cp, w the contact's
- * share, -F on the wall; the wall's sums, energies (also times w A), each contact's sed
- * into its slot and the per-atom output of the block's particles. ND = 2: the plane is z =
- * const, t2 = -ez and the contact point keeps the particle's z. LEAVE: some contacts are
- * leaving (they apply nothing). UNITA: every area is 1. */
+/* Scatter: F = A (s1 n - s2 t1 - s3 t2) on the particle at x_cp (A: scatter_area_, the
+ * contact's area times its share), -F on the wall; the wall's sums, energies (times A),
+ * each contact's sed into its slot and the per-atom output of the block's particles. ND =
+ * 2: the plane is z = const, t2 = -ez and the contact point keeps the particle's z. LEAVE:
+ * some contacts are leaving (they apply nothing). UNITA: every area is 1. */
 template <int ND, bool LEAVE, bool UNITA>
 void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
 {
@@ -359,8 +369,7 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
                              *__restrict pz = bz_.data();
     const double *__restrict alocal = tout_.alocaldir, *__restrict coord = tout_.coordslv,
                              *__restrict rdisp = tout_.rdisp;
-    const double *__restrict stress = cb_.stress, *__restrict area = cb_.area,
-                             *__restrict share = tout_.share;
+    const double *__restrict stress = cb_.stress, *__restrict area = scatter_area_;
     const bool track_deepest = !ident_;
     int *__restrict deepest = deepest_.data();
     if (track_deepest)
@@ -374,7 +383,7 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
         if (LEAVE && leaving[e])
             continue;
         const int k = pt[e];
-        const double A = (UNITA ? 1.0 : area[e]) * share[e];
+        const double A = UNITA ? 1.0 : area[e];
         const double *s = stress + (size_t)e * ND;
         const double *L = alocal + (size_t)e * ND * ND; // columns n, t1[, t2]
         const double *xc = coord + (size_t)e * ND;
@@ -422,7 +431,7 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
     if (setup_call) {
         for (int e = 0; e < ne; e++)
             if (!(LEAVE && leaving[e]))
-                se += sed[e] * area[e] * share[e];
+                se += sed[e] * area[e];
     } else {
         const double *__restrict sfd = cb_.sfd, *__restrict spd = cb_.spd,
                                  *__restrict svd = cb_.svd, *__restrict scd = cb_.scd,
@@ -436,7 +445,7 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
                 sedp[e][0] = sedp[e][1] = sedp[e][2] = 0.0;
                 continue;
             }
-            const double A = (UNITA ? 1.0 : area[e]) * share[e];
+            const double A = UNITA ? 1.0 : area[e];
             se += sed[e] * A;
             d0 += sfd[e] * A;
             d1 += spd[e] * A;
@@ -454,7 +463,7 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
             const double *fslv = cb_.flux_slv;
             for (int e = 0; e < ne; e++)
                 if (!(LEAVE && leaving[e]))
-                    heatflux[idx[pt[e]]] += fslv[e] * area[e] * share[e];
+                    heatflux[idx[pt[e]]] += fslv[e] * area[e];
         }
     }
     se_now_ = se;

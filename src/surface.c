@@ -90,19 +90,28 @@ static void group_shares(rs_contacts *c, int a, int m, const double P[3], double
 
 static void contact_shares(const rs_query *q, rs_contacts *c, int k0)
 {
-    for (int k = k0; k < c->n; k++)
-        c->share[k] = 1.0;
-    if (!q->slave.radius)
+    const int n = c->n;
+    const int *restrict pt = c->point;
+    double *restrict sh = c->share;
+    int multi = 0;
+    for (int k = k0; k < n; k++)
+        sh[k] = 1.0;
+    for (int k = k0 + 1; k < n; k++)
+        multi |= pt[k] == pt[k - 1];
+    if (!multi || !q->slave.radius)
         return;
-    for (int a = k0; a < c->n;) {
+    for (int a = k0; a < n;) {
         int b = a + 1;
-        while (b < c->n && c->point[b] == c->point[a])
+        while (b < n && pt[b] == pt[a])
             b++;
-        const int i = c->point[a];
+        const int i = pt[a];
         const double R = q->slave.radius[i];
         if (b - a >= 2 && R > 0.0) {
             const double P[3] = {q->slave.x[i], q->slave.y[i], q->slave.z[i]};
-            group_shares(c, a, b - a < RS_SHARE_MAX ? b - a : RS_SHARE_MAX, P, R);
+            const int m = b - a < RS_SHARE_MAX ? b - a : RS_SHARE_MAX;
+            group_shares(c, a, m, P, R);
+            for (int k = a; k < a + m; k++)
+                c->shared |= sh[k] != 1.0;
         }
         a = b;
     }
@@ -116,6 +125,8 @@ int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
     if (!s->ops)
         return rs_error_set(err, RS_ERR_ARG, "surface '%s' has no kind", s->name);
     const int k0 = out->n;
+    if (k0 == 0)
+        out->shared = 0;
     int rc = s->ops->closest(s, q, out, err);
     if (rc == RS_OK) {
         rs_frame_orient(s->ops->frame, out, k0, out->n);
@@ -146,6 +157,8 @@ int rs_surface_query_among(const rs_surface *s, const rs_query *q, const int *co
     if (!q || !out)
         return rs_error_set(err, RS_ERR_ARG, "rs_surface_query_among: NULL argument");
     const int k0 = out->n;
+    if (k0 == 0)
+        out->shared = 0;
     int rc = s->ops->closest_among(s, q, cand, ncand, out, err);
     if (rc == RS_OK) {
         rs_frame_orient(s->ops->frame, out, k0, out->n);

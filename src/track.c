@@ -736,6 +736,7 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
     out->n = 0;
     out->nleave = 0;
     out->ndir = tr->ndir;
+    out->shared = c && c->share && c->shared;
     /* Pass 1, grouping the contacts by particle: it takes every contact exactly when
      * they name points 0..n-1 in block order (checked here, not in a separate pass). */
     int ne = 0, k = 0;

@@ -210,6 +210,8 @@ typedef struct rs_contacts {
                      ///< fold (docs/conventions.md, "Shares at concave folds"); set by
                      ///< rs_surface_query for every kind. NULL in a list made by hand:
                      ///< every share 1
+    int shared;      ///< nonzero when a share may differ from 1 (kept over appends;
+                     ///< reset by a query into an empty list)
 } rs_contacts;
 
 /// Allocates room for cap contacts (cap >= 1). Returns RS_ERR_NOMEM on failure.

@@ -93,6 +93,7 @@ typedef struct rs_track_out {
     double *curv;      ///< principal curvatures (2, n)
     double *share;     ///< the contact's share (rs_contacts.share; 1 when leaving): the
                        ///< engine applies share times what the law returns
+    int shared;        ///< nonzero when a share may differ from 1 (rs_contacts.shared)
 } rs_track_out;
 
 void rs_track_out_free(rs_track_out *o);

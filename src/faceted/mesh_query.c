@@ -568,8 +568,10 @@ static int mesh_closest_among(const rs_surface *s, const rs_query *q,
                 out->t2[d][o] = t2[d];
             }
         }
-        if (sc.shares_due) /* the same in the reference and the current pose */
+        if (sc.shares_due) { /* the same in the reference and the current pose */
             rs_contacts_patch_shares(out, o0, sc.nhit, r);
+            out->shared = 1;
+        }
     }
     free(sc.ids);
     free(sc.hits);

@@ -17,6 +17,13 @@ Pins:
 - Convergence. Against the analytic drum (a REVOLUTION), the largest distance between
   the centres over the run falls as N grows: N = 90, 360, 720 give strictly decreasing
   errors, and N = 720's is below a tenth of N = 90's.
+- The share in the force. A frictionless sphere settles on the fold line of a shallow V
+  (two planes at half a degree each side of the y axis, so that the fold is met with
+  overlap), as an STL and as a CYLINDER profile of two LINEs. It holds two contacts, each with
+  share 1/2, so the two faces carry one Hertz force between them: the overlap d solves
+  4/3 E* sqrt(R) d^1.5 cos(0.5 deg) = m g (with both forces whole it would be 2^(-2/3) of
+  that), and the centre rests at z = (R - d) / cos(0.5 deg), to 1e-6; the wall carries
+  m g to 1e-6.
 """
 import math
 
@@ -79,7 +86,62 @@ def largest_distance(fa, fb):
     return worst
 
 
+YOUNG, POISSON = (5.0e7, 2.0e8), (0.3, 0.25)  # liglib.header's materials
+HALF = math.radians(0.5)  # each face of the V rises at half a degree from the fold
+
+
+def v_stl(half_width=0.05):
+    """Two rectangles meeting along the y axis, rising at HALF on each side, normals up."""
+    h = half_width * math.tan(HALF)
+    a, b = (-half_width, -half_width, h), (-half_width, half_width, h)
+    c, d = (0.0, -half_width, 0.0), (0.0, half_width, 0.0)
+    e, f = (half_width, -half_width, h), (half_width, half_width, h)
+    return stl([(a, c, d), (a, d, b), (c, e, f), (c, f, d)])
+
+
+def v_inp(half_width=0.05):
+    """The same V as a CYLINDER along y: profile in (x, z), travelling +x, normal up."""
+    h = half_width * math.tan(HALF)
+    return ("*SURFACE, TYPE=CYLINDER, NAME=vee\n0, 0, 0, 1, 0, 0\n0, -1, 0\n"
+            "START, %r, %r\nLINE, 0, 0\nLINE, %r, %r\n" % (-half_width, h, half_width, h))
+
+
+def rest_on_fold(s):
+    mass = RHO * 4.0 / 3.0 * math.pi * R ** 3
+    g = 9.81
+    estar = 1.0 / sum((1 - nu * nu) / e for e, nu in zip(YOUNG, POISSON))
+    d = (mass * g / math.cos(HALF) / (4.0 / 3.0 * estar * math.sqrt(R))) ** (2.0 / 3.0)
+    z_rest = (R - d) / math.cos(HALF)
+    limit = math.sqrt(2 * d / R)
+    s.ck.check("the fold is met with overlap: the angle is below sqrt(2 d / R)",
+               2 * HALF < limit, "%.3g rad against %.3g" % (2 * HALF, limit))
+    s.write("vee.stl", v_stl())
+    s.write("vee.inp", v_inp())
+    for tag, surf in (("fold_mesh", "inline mesh vee.stl"), ("fold_profile", "vee.inp")):
+        deck = L.header((-0.06, 0.06, -0.06, 0.06, -0.01, 0.05), DT, e=0.3, mu=0.0)
+        deck += L.sphere(1, (0.0, 0.0, z_rest + 0.0005), R, RHO)
+        deck += "fix grav all gravity %r vector 0 0 -1\n" % g
+        deck += "fix w all wall/rigid surface %s law hertz type 2\n" % surf
+        deck += "fix integr all nve/sphere\n"
+        deck += ("variable fz equal f_w[3]\nvariable nc equal f_w[7]\n"
+                 "variable x equal x[1]\nvariable z equal z[1]\nrun 40000\n"
+                 'print "REST ${fz} ${nc} ${x} ${z}"\n')
+        rc, out = s.run(tag, deck, expect_ok=False)
+        rest = [l.split()[1:] for l in out.splitlines() if l.startswith("REST ")]
+        if not s.ck.check(tag + ": the run ends", rc == 0 and rest, "exit %s" % rc):
+            continue
+        fz, nc, x, z = (float(v) for v in rest[-1])
+        s.ck.check(tag + ": two touching contacts on the fold line",
+                   nc == 2.0 and abs(x) < 1e-9, "%g contacts, x = %.3g" % (nc, x))
+        s.ck.check(tag + ": the wall carries m g to 1e-6",
+                   abs(abs(fz) - mass * g) <= 1e-6 * mass * g,
+                   "%.10g vs %.10g" % (abs(fz), mass * g))
+        s.ck.check(tag + ": at rest at the closed-form height of shares 1/2, to 1e-6",
+                   abs(z - z_rest) <= 1e-6 * z_rest, "%.10g vs %.10g" % (z, z_rest))
+
+
 def body(s):
+    rest_on_fold(s)
     s.write("drum.inp", L.drum(RC, ZLO, ZHI))
     exact = frames(s, "analytic", "fix w all wall/rigid surface drum.inp law hertz type 2")
     s.ck.check("the sphere rolled: it crossed the bottom of the drum",
