@@ -197,14 +197,13 @@ static double segment_distance(const double a[3], const double b[3], const doubl
  * contact may begin or end while the sphere overlaps it. A contact's weight is a^2 =
  * R^2 - dist^2 times the product over them of min(1, s / kappa), s the distance from its
  * foot to the edge or vertex, and at least 1e-300. Returns 1 when two or more contacts
- * overlap the sphere (the shares are due), else 0 with every share 1. */
+ * overlap the sphere (the shares are due), else 0 with the shares left at 1. */
 static int hit_weights(const rs_mesh *m, const double p[3], double R, const int *ids, int n,
                        scratch *s)
 {
     int nfront = 0;
     for (int k = 0; k < s->nhit; k++) {
         const double d = s->hits[k].dist;
-        s->hits[k].share = 1.0;
         nfront += d > 0.0 && d < R;
     }
     if (nfront < 2)
@@ -212,6 +211,9 @@ static int hit_weights(const rs_mesh *m, const double p[3], double R, const int 
     const int nh = s->nhit < RS_SHARE_MAX ? s->nhit : RS_SHARE_MAX;
     for (int q = 0; q < n; q++) {
         const int t = ids[q];
+        double h, sd[3];
+        if (!(tri_bound(m, t, p, &h, sd) < R * R))
+            continue; /* no edge or vertex of t within the sphere */
         for (int j = 0; j < 3; j++) {
             const int e = m->tedge[3 * t + j];
             if (m->edge_kind[e] != RS_EDGE_CONCAVE || m->edge_f[m->edge_f0[e]] != t)
@@ -402,7 +404,9 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
         }
         s->nhit = w;
     }
-    s->shares_due = radius > 0.0 && hit_weights(m, p, radius, ids, n, s);
+    for (int k = 0; k < s->nhit; k++)
+        s->hits[k].share = 1.0;
+    s->shares_due = s->nhit >= 2 && radius > 0.0 && hit_weights(m, p, radius, ids, n, s);
     return 0;
 }
 
