@@ -944,10 +944,10 @@ static int inner_cylinder(int nh, int nz, const char *name, rs_surface *s)
  * a face's contact begins while the sphere already overlaps it: shares), flat and convex
  * edges, and vertices: inside tessellated cylinders (5.6 and 1.4 degree folds, paths
  * around the hoop at three depths and oblique ones), over a random bumpy height field,
- * and along a concave polyline profile (SEGMENTS). Each change of the contact set is
- * bisected; the jump there is below 1e-9 of the path's force. The cases are built to
- * contain births, where the force would jump by the new contact's whole force without
- * shares. */
+ * along a concave polyline profile (SEGMENTS) and over a polyline bowl (REVOLUTION). Each
+ * change of the contact set is bisected; the jump there is below 1e-9 of the path's force.
+ * The cases are built to contain births, where the force would jump by the new contact's
+ * whole force without shares. */
 static void no_force_jump_along_paths(void)
 {
     enum { NP = 600 };
@@ -1039,6 +1039,54 @@ static void no_force_jump_along_paths(void)
             if (!(one.worst < 1e-9 * one.fmax))
                 fprintf(stderr, "polyline, depth %d: jump %.3g of %.3g\n", depth, one.worst,
                         one.fmax);
+            ENSURE(one.worst < 1e-9 * one.fmax);
+            ps.changes += one.changes;
+            ps.births += one.births;
+        }
+        rs_surface_free(&s);
+    }
+    /* a REVOLUTION bowl whose profile is a polyline (LINEs of 1 to 5 degrees' slope
+     * change, closed on the axis): 20 random straight paths over it, the sphere riding
+     * 2e-4 or 1e-3 into it (measured vertically from the profile under its centre) */
+    {
+        const double rr = 0.05; /* this case's sphere, on a bowl of radius 0.24 */
+        static const double prof[7][2] = {{0.0, 0.0},    {0.04, 0.001}, {0.08, 0.004},
+                                          {0.12, 0.009}, {0.16, 0.016}, {0.20, 0.025},
+                                          {0.24, 0.036}};
+        char text[1024];
+        int len = snprintf(text, sizeof text,
+                           "*SURFACE, TYPE=REVOLUTION, NAME=bowl\n0, 0, 0, 0, 0, 1\n"
+                           "START, 0, 0\n");
+        for (int k = 1; k < 7; k++)
+            len += snprintf(text + len, sizeof text - (size_t)len, "LINE, %.17g, %.17g\n",
+                            prof[k][0], prof[k][1]);
+        rs_surface s;
+        rs_error e;
+        ENSURE(load(text, &s, &e) == RS_OK);
+        unsigned long long seed = 5;
+        for (int path = 0; path < 20; path++) {
+            path_scan one = {0.0, 0.0, 0, 0};
+            const double pen = path % 2 ? 1e-3 : 2e-4;
+            double a[2], b[2];
+            for (int d = 0; d < 2; d++) {
+                a[d] = -0.14 + 0.28 * rs_test_urand(&seed);
+                b[d] = -0.14 + 0.28 * rs_test_urand(&seed);
+            }
+            for (int k = 0; k < NP; k++) {
+                const double t = (double)k / (NP - 1);
+                p[k][0] = a[0] + t * (b[0] - a[0]);
+                p[k][1] = a[1] + t * (b[1] - a[1]);
+                const double rho = hypot(p[k][0], p[k][1]);
+                int j = 0;
+                while (j < 5 && rho > prof[j + 1][0])
+                    j++;
+                const double f = (rho - prof[j][0]) / (prof[j + 1][0] - prof[j][0]);
+                p[k][2] = prof[j][1] + f * (prof[j + 1][1] - prof[j][1]) + rr - pen;
+            }
+            scan_path(&s, rr, (const double(*)[3])p, NP, &one);
+            if (!(one.worst < 1e-9 * one.fmax))
+                fprintf(stderr, "revolution bowl path %d: jump %.3g of %.3g\n", path,
+                        one.worst, one.fmax);
             ENSURE(one.worst < 1e-9 * one.fmax);
             ps.changes += one.changes;
             ps.births += one.births;
