@@ -931,6 +931,21 @@ static void scan_path(const rs_surface *s, double r, const double (*p)[3], int n
     ps->worst = fmax(ps->worst, jumps);
 }
 
+/* Path p[0 .. n) of a sphere of radius r over s (scan_path): its largest jump is below
+ * 1e-9 of its largest resultant; its changes and births are added to *tot. what and
+ * index name the path when it fails. */
+static void check_path(const rs_surface *s, double r, const double (*p)[3], int n,
+                       const char *what, double index, path_scan *tot)
+{
+    path_scan one = {0.0, 0.0, 0, 0};
+    scan_path(s, r, p, n, &one);
+    tot->changes += one.changes;
+    tot->births += one.births;
+    if (!(one.worst < 1e-9 * one.fmax))
+        fprintf(stderr, "%s %g: jump %.3g of %.3g\n", what, index, one.worst, one.fmax);
+    ENSURE(one.worst < 1e-9 * one.fmax);
+}
+
 /* The cylinder of nh x nz planar quads of radius 1, |z| <= 1, normals toward the axis,
  * read as surface NAME. */
 static int inner_cylinder(int nh, int nz, const char *name, rs_surface *s)
@@ -959,7 +974,6 @@ static void no_force_jump_along_paths(void)
         rs_surface s;
         ENSURE(inner_cylinder(nh, 4, c ? "cyl256" : "cyl64", &s) == RS_OK);
         for (int depth = 0; depth < 3; depth++) {
-            path_scan one = {0.0, 0.0, 0, 0};
             const double pen = depth == 0 ? 0.01 : depth == 1 ? 1e-3 : 1e-4;
             /* around the hoop, then a helix that also crosses the flat edges in z */
             for (int h = 0; h < 2; h++) {
@@ -971,14 +985,11 @@ static void no_force_jump_along_paths(void)
                     p[k][1] = rc * sin(th);
                     p[k][2] = h ? -0.9 + 1.8 * t : 0.1;
                 }
-                scan_path(&s, r, (const double(*)[3])p, NP, &one);
+                check_path(&s, r, (const double(*)[3])p, NP,
+                           nh == 64 ? "64-facet cylinder, overlap"
+                                    : "256-facet cylinder, overlap",
+                           pen, &ps);
             }
-            if (!(one.worst < 1e-9 * one.fmax))
-                fprintf(stderr, "cylinder %d, overlap %g: jump %.3g of %.3g\n", nh, pen,
-                        one.worst, one.fmax);
-            ENSURE(one.worst < 1e-9 * one.fmax);
-            ps.changes += one.changes;
-            ps.births += one.births;
         }
         rs_surface_free(&s);
     }
@@ -992,7 +1003,6 @@ static void no_force_jump_along_paths(void)
         unsigned long long seed = 99;
         const double pens[3] = {0.002, 0.01, 0.03};
         for (int path = 0; path < 45; path++) {
-            path_scan one = {0.0, 0.0, 0, 0};
             const double pen = pens[path % 3];
             const double x0 = -0.7 + 1.4 * rs_test_urand(&seed),
                          y0 = -0.7 + 1.4 * rs_test_urand(&seed);
@@ -1005,13 +1015,7 @@ static void no_force_jump_along_paths(void)
                 p[k][1] = y;
                 p[k][2] = 0.1 * sin(3 * x) * cos(2 * y) + 0.01 + r - pen;
             }
-            scan_path(&s, r, (const double(*)[3])p, NP, &one);
-            if (!(one.worst < 1e-9 * one.fmax))
-                fprintf(stderr, "height field path %d: jump %.3g of %.3g\n", path,
-                        one.worst, one.fmax);
-            ENSURE(one.worst < 1e-9 * one.fmax);
-            ps.changes += one.changes;
-            ps.births += one.births;
+            check_path(&s, r, (const double(*)[3])p, NP, "height field path", path, &ps);
         }
         rs_surface_free(&s);
     }
@@ -1027,7 +1031,6 @@ static void no_force_jump_along_paths(void)
         rs_error e;
         ENSURE(load(text, &s, &e) == RS_OK);
         for (int depth = 0; depth < 2; depth++) {
-            path_scan one = {0.0, 0.0, 0, 0};
             const double rc = 1.0 - r + (depth ? 1e-3 : 0.01);
             for (int k = 0; k < NP; k++) {
                 const double th = 0.05 + 6.0 * (double)k / (NP - 1);
@@ -1035,13 +1038,8 @@ static void no_force_jump_along_paths(void)
                 p[k][1] = rc * sin(th);
                 p[k][2] = 0.0;
             }
-            scan_path(&s, r, (const double(*)[3])p, NP, &one);
-            if (!(one.worst < 1e-9 * one.fmax))
-                fprintf(stderr, "polyline, depth %d: jump %.3g of %.3g\n", depth, one.worst,
-                        one.fmax);
-            ENSURE(one.worst < 1e-9 * one.fmax);
-            ps.changes += one.changes;
-            ps.births += one.births;
+            check_path(&s, r, (const double(*)[3])p, NP, "polyline, overlap",
+                       depth ? 1e-3 : 0.01, &ps);
         }
         rs_surface_free(&s);
     }
@@ -1065,7 +1063,6 @@ static void no_force_jump_along_paths(void)
         ENSURE(load(text, &s, &e) == RS_OK);
         unsigned long long seed = 5;
         for (int path = 0; path < 20; path++) {
-            path_scan one = {0.0, 0.0, 0, 0};
             const double pen = path % 2 ? 1e-3 : 2e-4;
             double a[2], b[2];
             for (int d = 0; d < 2; d++) {
@@ -1083,13 +1080,8 @@ static void no_force_jump_along_paths(void)
                 const double f = (rho - prof[j][0]) / (prof[j + 1][0] - prof[j][0]);
                 p[k][2] = prof[j][1] + f * (prof[j + 1][1] - prof[j][1]) + rr - pen;
             }
-            scan_path(&s, rr, (const double(*)[3])p, NP, &one);
-            if (!(one.worst < 1e-9 * one.fmax))
-                fprintf(stderr, "revolution bowl path %d: jump %.3g of %.3g\n", path,
-                        one.worst, one.fmax);
-            ENSURE(one.worst < 1e-9 * one.fmax);
-            ps.changes += one.changes;
-            ps.births += one.births;
+            check_path(&s, rr, (const double(*)[3])p, NP, "revolution bowl path", path,
+                       &ps);
         }
         rs_surface_free(&s);
     }
