@@ -159,14 +159,16 @@ static size_t trimmed(const char *s, size_t len)
     return len;
 }
 
-/* Copies text into a Fortran string of length len, blank-padded. */
-static void to_fortran(char *dst, size_t len, const char *text)
+/* Copies text into a Fortran string of length len, blank-padded; returns the characters
+ * copied (at most len). */
+static int to_fortran(char *dst, size_t len, const char *text)
 {
     size_t n = strlen(text);
     if (n > len)
         n = len;
     memcpy(dst, text, n);
     memset(dst + n, ' ', len - n);
+    return (int)n;
 }
 
 /* Appends to out[*used..size) (always NUL-terminated). */
@@ -298,9 +300,7 @@ RS_ABQ_EXPORT void XIT(void) RS_ABQ_ALIAS("xit_");
 
 RS_ABQ_EXPORT void getjobname_(char *jobname, int *lenjobname, size_t ljobname)
 {
-    to_fortran(jobname, ljobname, host.jobname);
-    size_t n = strlen(host.jobname);
-    *lenjobname = (int)(n < ljobname ? n : ljobname);
+    *lenjobname = to_fortran(jobname, ljobname, host.jobname);
 }
 RS_ABQ_EXPORT void GETJOBNAME(char *jobname, int *lenjobname, size_t ljobname)
     RS_ABQ_ALIAS("getjobname_");
@@ -315,9 +315,7 @@ RS_ABQ_EXPORT void getoutdir_(char *outdir, int *lenoutdir, size_t loutdir)
     const char *dir = host.outdir;
     if (!dir[0])
         dir = getcwd(cwd, sizeof cwd) ? cwd : ".";
-    to_fortran(outdir, loutdir, dir);
-    size_t n = strlen(dir);
-    *lenoutdir = (int)(n < loutdir ? n : loutdir);
+    *lenoutdir = to_fortran(outdir, loutdir, dir);
 }
 RS_ABQ_EXPORT void GETOUTDIR(char *outdir, int *lenoutdir, size_t loutdir)
     RS_ABQ_ALIAS("getoutdir_");
