@@ -137,6 +137,21 @@ static inline double tri_bound(const rs_mesh *m, int t, const double p[3], doubl
     return *h * *h + out * out;
 }
 
+/* The squared distance from x to the segment a b, and the distance. */
+static double segment_distance2(const double a[3], const double b[3], const double x[3])
+{
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double w[3] = {x[0] - a[0], x[1] - a[1], x[2] - a[2]};
+    const double f = fmin(1.0, fmax(0.0, rs_dot3(w, u) / rs_dot3(u, u)));
+    const double d[3] = {w[0] - f * u[0], w[1] - f * u[1], w[2] - f * u[2]};
+    return rs_dot3(d, d);
+}
+
+static double segment_distance(const double a[3], const double b[3], const double x[3])
+{
+    return sqrt(segment_distance2(a, b, x));
+}
+
 /* The squared distance from p to triangle t: to its plane where p projects inside it,
  * else to the nearest of the edges it lies outside of. */
 static double tri_distance2(const rs_mesh *m, int t, const double p[3])
@@ -149,13 +164,8 @@ static double tri_distance2(const rs_mesh *m, int t, const double p[3])
     for (int j = 0; j < 3; j++) {
         if (sd[j] >= 0.0)
             continue;
-        const double *a = m->xyz + 3 * m->tri[3 * t + j],
-                     *b = m->xyz + 3 * m->tri[3 * t + (j + 1) % 3];
-        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-        const double w[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
-        const double f = fmin(1.0, fmax(0.0, rs_dot3(w, u) / rs_dot3(u, u)));
-        const double d[3] = {w[0] - f * u[0], w[1] - f * u[1], w[2] - f * u[2]};
-        best = fmin(best, rs_dot3(d, d));
+        best = fmin(best, segment_distance2(m->xyz + 3 * m->tri[3 * t + j],
+                                            m->xyz + 3 * m->tri[3 * t + (j + 1) % 3], p));
     }
     return best;
 }
@@ -177,16 +187,6 @@ static int box_triangles(const rs_mesh *m, const double p[3], double reach, scra
         n = rs_cgal_tree_box(m->tree, lo, hi, s->ids, s->cap);
     }
     return n;
-}
-
-/* The distance from x to the segment a b. */
-static double segment_distance(const double a[3], const double b[3], const double x[3])
-{
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    const double w[3] = {x[0] - a[0], x[1] - a[1], x[2] - a[2]};
-    const double f = fmin(1.0, fmax(0.0, rs_dot3(w, u) / rs_dot3(u, u)));
-    const double d[3] = {w[0] - f * u[0], w[1] - f * u[1], w[2] - f * u[2]};
-    return rs_norm3(d);
 }
 
 /* The weights of the contacts s->hits of a sphere of radius R at p, into their share
