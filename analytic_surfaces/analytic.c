@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* History may pass between features whose contact normal is continuous at the
  * junction: two segments across a SMOOTH vertex, and a segment and its own vertex (a
@@ -63,10 +64,8 @@ static void profile_box(const rs_surface *s, double box[4])
     const rs_pcache *pc = s->impl;
     box[0] = box[2] = INFINITY;
     box[1] = box[3] = -INFINITY;
-    for (int k = 0; pc && k < pc->nseg; k++)
-        for (int i = 0; i < 4; i++)
-            box[i] =
-                (i & 1) ? fmax(box[i], pc->ps[k].box[i]) : fmin(box[i], pc->ps[k].box[i]);
+    if (pc)
+        memcpy(box, pc->box, 4 * sizeof(double));
 }
 
 static void analytic_bounds(const rs_surface *s, double lo[3], double hi[3])

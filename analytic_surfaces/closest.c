@@ -112,7 +112,7 @@ static int parab_min(const rs_pseg *q, double px, double py, int in_start, int i
 size_t rs_pscratch_bytes(const rs_pcache *pc)
 {
     size_t n = (size_t)pc->nseg, nv = (size_t)pc->nvert;
-    size_t ints = 2 * n * sizeof(unsigned) + n;
+    size_t ints = n * sizeof(int) + n;
     ints = (ints + 15) & ~(size_t)15;
     return ints + (2 * n + nv) * sizeof(rs_hit2) + 64;
 }
@@ -131,10 +131,9 @@ int rs_pscratch_init(rs_pscratch *sc, const rs_pcache *pc, void *stack, size_t s
     uintptr_t a = ((uintptr_t)m + 15u) & ~(uintptr_t)15u;
     m = (unsigned char *)a;
     size_t n = (size_t)pc->nseg;
-    size_t ints = 2 * n * sizeof(unsigned) + n;
+    size_t ints = n * sizeof(int) + n;
     ints = (ints + 15) & ~(size_t)15;
-    sc->seg_stamp = (unsigned *)m;
-    sc->near = (int *)(sc->seg_stamp + n);
+    sc->near = (int *)m;
     sc->state = (unsigned char *)(sc->near + n);
     sc->cand = (rs_hit2 *)(m + ints);
     sc->hits = sc->cand + n;
@@ -147,15 +146,38 @@ void rs_pscratch_free(rs_pscratch *sc)
     sc->heap = NULL;
 }
 
-static int eval_curve(const rs_pcache *pc, int k, double px, double py, rs_hit2 *h);
+/* Segment k's record: the stored one, or (compact) one made in *tmp. */
+RS_INLINE const rs_pseg *seg_rec(const rs_pcache *pc, int k, rs_pseg *tmp)
+{
+    if (pc->ps)
+        return &pc->ps[k];
+    rs_pvert v0, v1;
+    rs_pcache_vertex(pc, k, &v0);
+    rs_pcache_vertex(pc, k + 1 == pc->nvert ? 0 : k + 1, &v1);
+    rs_pcache_segment(pc, k, &v0, &v1, tmp);
+    return tmp;
+}
+
+/* Vertex j's record: the stored one, or (compact) one made in *tmp. */
+RS_INLINE const rs_pvert *vert_rec(const rs_pcache *pc, int j, rs_pvert *tmp)
+{
+    if (pc->pv)
+        return &pc->pv[j];
+    rs_pcache_vertex(pc, j, tmp);
+    return tmp;
+}
+
+static int eval_curve(const rs_pcache *pc, const rs_pseg *q, double px, double py,
+                      rs_hit2 *h);
 
 /* Candidate contact of segment k (before the side and distance filters); 1 when the
  * segment owns the point. LINE here, CIRCL and PARAB in eval_curve. */
 RS_INLINE int eval_seg(const rs_pcache *pc, int k, double px, double py, rs_hit2 *h)
 {
-    const rs_pseg *q = &pc->ps[k];
+    rs_pseg tmp;
+    const rs_pseg *q = seg_rec(pc, k, &tmp);
     if (q->type != RS_LINE)
-        return eval_curve(pc, k, px, py, h);
+        return eval_curve(pc, q, px, py, h);
     int in_start, in_end;
     rs_pseg_owns(q, px, py, &in_start, &in_end);
     if (!(in_start && in_end))
@@ -178,9 +200,10 @@ RS_INLINE int eval_seg(const rs_pcache *pc, int k, double px, double py, rs_hit2
     return 1;
 }
 
-static int eval_curve(const rs_pcache *pc, int k, double px, double py, rs_hit2 *h)
+static int eval_curve(const rs_pcache *pc, const rs_pseg *q, double px, double py,
+                      rs_hit2 *h)
 {
-    const rs_pseg *q = &pc->ps[k];
+    const int k = q->self;
     int in_start, in_end;
     rs_pseg_owns(q, px, py, &in_start, &in_end);
     switch (q->type) {
@@ -236,9 +259,10 @@ static int eval_curve(const rs_pcache *pc, int k, double px, double py, rs_hit2 
 /* Vertex contact of vertex j, if it owns the point. */
 static int eval_vertex(const rs_pcache *pc, int j, double px, double py, rs_hit2 *h)
 {
-    const rs_pvert *v = &pc->pv[j];
-    if (v->kind == RS_VTX_SMOOTH)
+    if (pc->vk[j] == RS_VTX_SMOOTH)
         return 0;
+    rs_pvert tmp;
+    const rs_pvert *v = vert_rec(pc, j, &tmp);
     double dx = px - v->v[0], dy = py - v->v[1];
     double dA = dx * v->ta[0] + dy * v->ta[1], dB = dx * v->tb[0] + dy * v->tb[1];
     double sign = 1.0;
@@ -297,7 +321,8 @@ static inline int near_pos(const rs_pscratch *sc, int nnear, int k)
 static void voronoi_pair(const rs_pcache *pc, rs_pscratch *sc, int nnear, int j, double px,
                          double py)
 {
-    const rs_pvert *v = &pc->pv[j];
+    rs_pvert tmp;
+    const rs_pvert *v = vert_rec(pc, j, &tmp);
     if (v->kind != RS_VTX_CONVEX || v->sa < 0 || v->sb < 0 || v->sa == v->sb)
         return;
     int A = v->sa, B = v->sb, ia = near_pos(sc, nnear, A), ib = near_pos(sc, nnear, B);
@@ -335,68 +360,123 @@ RS_INLINE int seg_near(const rs_pseg *q, double px, double py, double reach)
     return 1;
 }
 
+/* Segment q into the near list when the point is within reach of it, with its candidate
+ * contact (the walk of rs_pcache_hits). */
+RS_INLINE void near_seg(const rs_pcache *pc, const rs_pseg *q, double px, double py,
+                        double reach, rs_pscratch *sc, int *nnear, int *neg)
+{
+    if (q->box[0] - px > reach || px - q->box[1] > reach || q->box[2] - py > reach ||
+        py - q->box[3] > reach)
+        return;
+    const int k = q->self;
+    rs_hit2 *h = &sc->cand[*nnear];
+    int hit;
+    if (q->type == RS_LINE) {
+        /* within reach of the line, then owned (profile.h): the signed distance is the
+         * candidate's */
+        double wx = px - q->o[0], wy = py - q->o[1];
+        double nx = -q->t[1], ny = q->t[0], sd = wx * nx + wy * ny;
+        if (fabs(sd) > reach)
+            return;
+        int in_start, in_end;
+        rs_pseg_owns(q, px, py, &in_start, &in_end);
+        hit = in_start && in_end;
+        if (hit) {
+            double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
+            tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
+            h->x[0] = q->o[0] + tau * q->e[0];
+            h->x[1] = q->o[1] + tau * q->e[1];
+            int flip = pc->sides == 2 && sd < 0.0;
+            h->n[0] = flip ? -nx : nx;
+            h->n[1] = flip ? -ny : ny;
+            h->dist = flip ? -sd : sd;
+            h->kappa = 0.0;
+            h->feature = RS_FEATURE(RS_FEAT_FACE, k);
+        }
+    } else {
+        if (!seg_near(q, px, py, reach))
+            return;
+        hit = eval_curve(pc, q, px, py, h);
+    }
+    sc->near[*nnear] = k;
+    sc->state[*nnear] = (unsigned char)(hit ? SEG_HIT : 0);
+    *neg |= hit && h->dist < 0.0;
+    (*nnear)++;
+}
+
+/* The compact form's walk (profile.h): the boxes within reach, depth first, first child
+ * first, so the segments come in profile order. A segment's record is made when its own
+ * box is within reach, each vertex's once along a run. */
+static void near_tree(const rs_pcache *pc, double px, double py, double reach,
+                      rs_pscratch *sc, int *nnear, int *neg)
+{
+    int sl[2 * RS_PC_MAXDEPTH + 2], si[2 * RS_PC_MAXDEPTH + 2], top = 0;
+    sl[top] = pc->ntlev - 1;
+    si[top++] = 0;
+    while (top > 0) {
+        const int l = sl[--top], i = si[top];
+        const double *b = pc->tree + 4 * ((size_t)pc->tlev[l] + (size_t)i);
+        if (b[0] - px > reach || px - b[1] > reach || b[2] - py > reach ||
+            py - b[3] > reach)
+            continue;
+        if (l > 0) {
+            if (2 * i + 1 < pc->tlev[l] - pc->tlev[l - 1]) {
+                sl[top] = l - 1;
+                si[top++] = 2 * i + 1;
+            }
+            sl[top] = l - 1;
+            si[top++] = 2 * i;
+            continue;
+        }
+        const int k0 = i * RS_PC_LEAF;
+        const int k1 = k0 + RS_PC_LEAF < pc->nseg ? k0 + RS_PC_LEAF : pc->nseg;
+        rs_pvert va, vb;
+        rs_pseg q;
+        int have = -1; /* the vertex whose record va holds */
+        for (int k = k0; k < k1; k++) {
+            double sb[4];
+            rs_pcache_box(pc, k, sb);
+            if (sb[0] - px > reach || px - sb[1] > reach || sb[2] - py > reach ||
+                py - sb[3] > reach)
+                continue;
+            if (have != k)
+                rs_pcache_vertex(pc, k, &va);
+            rs_pcache_vertex(pc, k + 1 == pc->nvert ? 0 : k + 1, &vb);
+            rs_pcache_segment(pc, k, &va, &vb, &q);
+            near_seg(pc, &q, px, py, reach, sc, nnear, neg);
+            va = vb;
+            have = k + 1;
+        }
+    }
+}
+
 int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double dhi,
                    rs_pscratch *sc)
 {
     const int n = pc->nseg;
-    int nh = 0, nnear = 0;
+    int nh = 0, nnear = 0, neg = 0;
     double reach = (pc->sides == 2 || dhi > -dlo) ? dhi : -dlo;
     if (!(reach >= 0.0) || dlo > dhi)
         return 0;
-    /* the candidates: one bucket's list at the first level whose margin covers reach,
-     * else every segment */
-    int l = 0;
-    while (l < pc->nlevel && pc->margin[l] < reach)
-        l++;
-    const int *list = pc->boff + pc->all_at, *end = list + n;
-    if (l < pc->nlevel) {
-        double c = pc->axis ? py : px;
-        double f = (c - pc->lo) * pc->inv_w, top = (double)(pc->nbucket - 1);
-        int b = f > 0.0 ? (int)(f < top ? f : top) : 0;
-        const int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
-        list = pc->boff + bs[b];
-        end = pc->boff + bs[b + 1];
-    }
-    int neg = 0;
-    for (; list < end; list++) {
-        const int k = rs_pcache_seg(*list);
-        const rs_pseg *q = &pc->ps[k];
-        if (q->box[0] - px > reach || px - q->box[1] > reach || q->box[2] - py > reach ||
-            py - q->box[3] > reach)
-            continue;
-        rs_hit2 *h = &sc->cand[nnear];
-        int hit;
-        if (q->type == RS_LINE) {
-            /* within reach of the line, then owned (profile.h): the signed distance is
-             * the candidate's */
-            double wx = px - q->o[0], wy = py - q->o[1];
-            double nx = -q->t[1], ny = q->t[0], sd = wx * nx + wy * ny;
-            if (fabs(sd) > reach)
-                continue;
-            int in_start, in_end;
-            rs_pseg_owns(q, px, py, &in_start, &in_end);
-            hit = in_start && in_end;
-            if (hit) {
-                double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
-                tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
-                h->x[0] = q->o[0] + tau * q->e[0];
-                h->x[1] = q->o[1] + tau * q->e[1];
-                int flip = pc->sides == 2 && sd < 0.0;
-                h->n[0] = flip ? -nx : nx;
-                h->n[1] = flip ? -ny : ny;
-                h->dist = flip ? -sd : sd;
-                h->kappa = 0.0;
-                h->feature = RS_FEATURE(RS_FEAT_FACE, k);
-            }
-        } else {
-            if (!seg_near(q, px, py, reach))
-                continue;
-            hit = eval_curve(pc, k, px, py, h);
+    if (!pc->ps) {
+        near_tree(pc, px, py, reach, sc, &nnear, &neg);
+    } else {
+        /* the candidates: one bucket's list at the first level whose margin covers
+         * reach, else every segment */
+        int l = 0;
+        while (l < pc->nlevel && pc->margin[l] < reach)
+            l++;
+        const int *list = pc->boff + pc->all_at, *end = list + n;
+        if (l < pc->nlevel) {
+            double c = pc->axis ? py : px;
+            double f = (c - pc->lo) * pc->inv_w, top = (double)(pc->nbucket - 1);
+            int b = f > 0.0 ? (int)(f < top ? f : top) : 0;
+            const int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
+            list = pc->boff + bs[b];
+            end = pc->boff + bs[b + 1];
         }
-        sc->near[nnear] = k;
-        sc->state[nnear] = (unsigned char)(hit ? SEG_HIT : 0);
-        neg |= hit && h->dist < 0.0;
-        nnear++;
+        for (; list < end; list++)
+            near_seg(pc, &pc->ps[rs_pcache_seg(*list)], px, py, reach, sc, &nnear, &neg);
     }
     if (pc->sides == 1 && neg) {
         for (int i = 0; i < nnear; i++) {
@@ -409,10 +489,9 @@ int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double
     }
     for (int i = 0; i < nnear; i++) {
         int k = sc->near[i];
-        const rs_pseg *q = &pc->ps[k];
         /* vertex k (the start of segment k) is within reach when both its segments are */
-        if (q->vtx_start) {
-            int sa = pc->pv[k].sa;
+        if (pc->vk[k] != RS_VTX_SMOOTH) {
+            int sa = k > 0 ? k - 1 : (pc->closed ? n - 1 : -1);
             int sa_near =
                 sa < 0 || (i > 0 ? sc->near[i - 1] == sa : sc->near[nnear - 1] == sa);
             rs_hit2 *h = &sc->hits[nh];
@@ -425,7 +504,7 @@ int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double
             if (c->dist >= dlo && c->dist <= dhi)
                 sc->hits[nh++] = *c;
         }
-        if (q->vtx_end) {
+        if (k == n - 1 && !pc->closed) {
             rs_hit2 *h = &sc->hits[nh];
             if (eval_vertex(pc, n, px, py, h) && h->dist >= dlo && h->dist <= dhi)
                 nh++;
@@ -621,9 +700,29 @@ static int points_one_line(const rs_pcache *pc, const rs_ppoints *pts, int i,
     return i;
 }
 
+/* rs_pcache_points for the compact form: each point through rs_pcache_hits. */
+static int points_each(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_contacts *out,
+                       rs_pscratch *sc, int *need)
+{
+    const pout o = {out->point,  out->feature, out->xm[0], out->xm[1],
+                    out->nrm[0], out->nrm[1],  out->dist,  out->curv[0]};
+    for (; i < pts->n; i++) {
+        const int nk = rs_pcache_hits(pc, pts->u[i], pts->v[i], pts->dlo, pts->dhi[i], sc);
+        if (nk > out->cap - out->n) {
+            *need = nk;
+            return i;
+        }
+        for (int k = 0; k < nk; k++)
+            put_hit(&o, out->n++, pts->base + i, &sc->hits[k]);
+    }
+    return i;
+}
+
 int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_contacts *out,
                      rs_pscratch *sc, int *need)
 {
+    if (!pc->ps)
+        return points_each(pc, pts, i, out, sc, need);
     if (pc->nseg == 1 && pc->ps[0].type == RS_LINE)
         return points_one_line(pc, pts, i, out, sc, need);
     const int n = pc->nseg, m = pts->n, two = pc->sides == 2, cap = out->cap;
@@ -752,7 +851,7 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                 if (!seg_near(q, px, py, reach))
                     continue;
                 rs_hit2 h;
-                const int hit = eval_curve(pc, k, px, py, &h);
+                const int hit = eval_curve(pc, q, px, py, &h);
                 if (hit && !two && h.dist < 0.0) {
                     slow = 1;
                     break;

@@ -1,5 +1,6 @@
-/* The query data of a profile (rs_pcache_build): per-segment and per-vertex data for the
- * ownership rules of profile.h, and the bucket index along one profile axis. */
+/* The query data of a profile (rs_pcache_build): per-segment and per-vertex records for
+ * the ownership rules of profile.h, and their index (profile.h: stored records with a
+ * bucket index along one profile axis, or the compact tree). */
 #include "profile.h"
 #include "rs_compiler.h"
 
@@ -175,15 +176,207 @@ static int chain_owner(const rs_pcache *pc, double margin, int b, const int *lis
     return -1;
 }
 
+/* The smaller of two finite numbers. */
+static inline double min2(double a, double b)
+{
+    return a < b ? a : b;
+}
+
 static void box_add(double box[4], double x, double y)
 {
-    box[0] = fmin(box[0], x);
-    box[1] = fmax(box[1], x);
-    box[2] = fmin(box[2], y);
-    box[3] = fmax(box[3], y);
+    box[0] = min2(box[0], x);
+    box[1] = max2(box[1], x);
+    box[2] = min2(box[2], y);
+    box[3] = max2(box[3], y);
+}
+
+static void box_union(double box[4], const double b[4])
+{
+    box[0] = min2(box[0], b[0]);
+    box[1] = max2(box[1], b[1]);
+    box[2] = min2(box[2], b[2]);
+    box[3] = max2(box[3], b[3]);
+}
+
+void rs_pcache_vertex(const rs_pcache *pc, int j, rs_pvert *v)
+{
+    const int n = pc->nseg;
+    const rs_segment *seg = pc->seg;
+    memset(v, 0, sizeof *v);
+    v->sa = j > 0 ? j - 1 : (pc->closed ? n - 1 : -1);
+    v->sb = j < n ? j : -1;
+    const double *pos = v->sb >= 0 ? seg[v->sb].p0 : seg[v->sa].p1;
+    v->v[0] = pos[0];
+    v->v[1] = pos[1];
+    if (v->sa >= 0)
+        rs_segment_end_tangent(&seg[v->sa], 1, v->ta);
+    if (v->sb >= 0)
+        rs_segment_end_tangent(&seg[v->sb], 0, v->tb);
+    v->kind = pc->vk[j];
+    if (v->kind == RS_VTX_SMOOTH) {
+        double t[2] = {v->ta[0] + v->tb[0], v->ta[1] + v->tb[1]};
+        normalize2(t);
+        v->ta[0] = v->tb[0] = t[0];
+        v->ta[1] = v->tb[1] = t[1];
+    }
+    v->na[0] = -v->ta[1];
+    v->na[1] = v->ta[0];
+    v->nb[0] = -v->tb[1];
+    v->nb[1] = v->tb[0];
+    if (v->sa < 0) {
+        v->nfb[0] = v->nb[0];
+        v->nfb[1] = v->nb[1];
+    } else if (v->sb < 0) {
+        v->nfb[0] = v->na[0];
+        v->nfb[1] = v->na[1];
+    } else {
+        double b[2] = {v->na[0] + v->nb[0], v->na[1] + v->nb[1]};
+        if (hypot(b[0], b[1]) > 1e-6) {
+            normalize2(b);
+        } else {
+            b[0] = v->ta[0];
+            b[1] = v->ta[1];
+        }
+        v->nfb[0] = b[0];
+        v->nfb[1] = b[1];
+    }
+    v->seg_owns_edge =
+        pc->revolution && v->kind == RS_VTX_END && fabs(v->v[0]) <= 1e-12 * pc->size;
+}
+
+void rs_pcache_box(const rs_pcache *pc, int k, double box[4])
+{
+    const rs_segment *g = &pc->seg[k];
+    const double tol = 1e-12 * pc->size;
+    box[0] = box[2] = INFINITY;
+    box[1] = box[3] = -INFINITY;
+    box_add(box, g->p0[0], g->p0[1]);
+    box_add(box, g->p1[0], g->p1[1]);
+    if (g->type == RS_CIRCL) {
+        /* An arc under 180 degrees lies inside the circle on its chord (Thales). */
+        double bc[2] = {0.5 * (g->p0[0] + g->p1[0]), 0.5 * (g->p0[1] + g->p1[1])};
+        double br = 0.5 * hypot(g->p1[0] - g->p0[0], g->p1[1] - g->p0[1]);
+        box_add(box, bc[0] - br, bc[1] - br);
+        box_add(box, bc[0] + br, bc[1] + br);
+    } else if (g->type == RS_PARAB) {
+        /* The curve lies in the hull of its Bezier points p0, 2 pm - (p0 + p1)/2, p1. */
+        box_add(box, 2.0 * g->pm[0] - 0.5 * (g->p0[0] + g->p1[0]),
+                2.0 * g->pm[1] - 0.5 * (g->p0[1] + g->p1[1]));
+    }
+    for (int i = 0; i < 4; i++)
+        box[i] += (i & 1 ? 1.0 : -1.0) * (1e-12 * fabs(box[i]) + tol);
+}
+
+void rs_pcache_segment(const rs_pcache *pc, int k, const rs_pvert *v0, const rs_pvert *v1,
+                       rs_pseg *q)
+{
+    const rs_segment *g = &pc->seg[k];
+    memset(q, 0, sizeof *q);
+    q->type = g->type;
+    q->self = k;
+    rs_pcache_box(pc, k, q->box);
+    switch (g->type) {
+    case RS_LINE:
+        q->o[0] = g->p0[0];
+        q->o[1] = g->p0[1];
+        q->e[0] = g->p1[0] - g->p0[0];
+        q->e[1] = g->p1[1] - g->p0[1];
+        q->inv_len2 = 1.0 / (q->e[0] * q->e[0] + q->e[1] * q->e[1]);
+        q->t[0] = q->e[0];
+        q->t[1] = q->e[1];
+        normalize2(q->t);
+        break;
+    case RS_CIRCL:
+        q->sgn = g->sweep > 0.0 ? 1.0 : -1.0;
+        q->o[0] = g->pm[0];
+        q->o[1] = g->pm[1];
+        q->rad = g->radius;
+        break;
+    case RS_PARAB:
+        q->o[0] = g->pm[0];
+        q->o[1] = g->pm[1];
+        for (int i = 0; i < 2; i++) {
+            q->B[i] = 0.5 * (g->p1[i] - g->p0[i]);
+            q->C[i] = 0.5 * (g->p0[i] + g->p1[i]) - g->pm[i];
+        }
+        break;
+    }
+    /* the ownership tests of its two vertices */
+    q->start_incl =
+        v0->kind == RS_VTX_SMOOTH || v0->kind == RS_VTX_CONCAVE || v0->seg_owns_edge;
+    q->end_incl = v1->seg_owns_edge;
+    q->vtx_start = v0->kind != RS_VTX_SMOOTH;
+    q->vtx_end = k == pc->nseg - 1 && !pc->closed;
+    q->nl[0] = -q->t[1];
+    q->nl[1] = q->t[0];
+    for (int i = 0; i < 2; i++) {
+        q->v0[i] = v0->v[i];
+        q->tb0[i] = v0->tb[i];
+        q->v1[i] = v1->v[i];
+        q->ta1[i] = v1->ta[i];
+    }
+}
+
+/* Vertex kinds: END at the ends of an open profile, else the profile's own (from
+ * rs_profile_finish) or, without them, from the angle between the two tangents. */
+static void vertex_kinds(const rs_profile *p, rs_pcache *pc)
+{
+    const int n = pc->nseg;
+    for (int j = 0; j < pc->nvert; j++) {
+        const int sa = j > 0 ? j - 1 : (pc->closed ? n - 1 : -1), sb = j < n ? j : -1;
+        int kind;
+        if (sa < 0 || sb < 0) {
+            kind = RS_VTX_END;
+        } else if (p->vkind && j < p->nvert) {
+            kind = p->vkind[j];
+        } else {
+            double ta[2], tb[2];
+            rs_segment_end_tangent(&p->seg[sa], 1, ta);
+            rs_segment_end_tangent(&p->seg[sb], 0, tb);
+            double c = ta[0] * tb[1] - ta[1] * tb[0];
+            double d = ta[0] * tb[0] + ta[1] * tb[1];
+            double ang = atan2(c, d);
+            kind = fabs(ang) <= RS_SMOOTH_ANGLE           ? RS_VTX_SMOOTH
+                   : fabs(ang) >= RS_PI - RS_SMOOTH_ANGLE ? RS_VTX_CONVEX
+                   : ang > 0.0                            ? RS_VTX_CONCAVE
+                                                          : RS_VTX_CONVEX;
+        }
+        pc->vk[j] = (unsigned char)kind;
+    }
+}
+
+/* The compact form's tree (profile.h): the boxes of the runs of RS_PC_LEAF segments, then
+ * each level from the one below. */
+static void build_tree(rs_pcache *pc)
+{
+    const int n = pc->nseg;
+    double *t = pc->tree;
+    for (int k = 0; k < n; k++) {
+        double *leaf = t + 4 * (size_t)(k / RS_PC_LEAF), box[4];
+        rs_pcache_box(pc, k, box);
+        if (k % RS_PC_LEAF == 0)
+            memcpy(leaf, box, sizeof box);
+        else
+            box_union(leaf, box);
+    }
+    for (int l = 1; l < pc->ntlev; l++) {
+        const int below = pc->tlev[l - 1], cnt_below = pc->tlev[l] - below;
+        for (int i = 0; i < pc->tlev[l + 1] - pc->tlev[l]; i++) {
+            double *b = t + 4 * ((size_t)pc->tlev[l] + (size_t)i);
+            memcpy(b, t + 4 * ((size_t)below + 2 * (size_t)i), 4 * sizeof(double));
+            if (2 * i + 1 < cnt_below)
+                box_union(b, t + 4 * ((size_t)below + 2 * (size_t)i + 1));
+        }
+    }
+    memcpy(pc->box, t + 4 * (size_t)pc->tlev[pc->ntlev - 1], sizeof pc->box);
 }
 
 int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
+{
+    return rs_pcache_build_as(s, s->profile.nseg > RS_PC_LARGE, out, err);
+}
+
+int rs_pcache_build_as(const rs_surface *s, int compact, rs_pcache **out, rs_error *err)
 {
     const rs_profile *p = &s->profile;
     int n = p->nseg;
@@ -191,161 +384,69 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
     if (n < 1 || !p->seg)
         return rs_error_set(err, RS_ERR_ARG, "surface '%s' has no profile segments",
                             s->name);
-    double size = rs_profile_size(p);
     const rs_segment *last = &p->seg[n - 1];
     int closed = p->vkind ? p->closed
                           : (n >= 2 && last->p1[0] == p->seg[0].p0[0] &&
                              last->p1[1] == p->seg[0].p0[1]);
     int nv = closed ? n : n + 1;
-    /* the geometry first (a scratch header), then the bucket index sized from it */
-    size_t head =
-        sizeof(rs_pcache) + (size_t)n * sizeof(rs_pseg) + (size_t)nv * sizeof(rs_pvert);
-    head = (head + 15) & ~(size_t)15;
-    unsigned char *blk = calloc(1, head);
+    /* the header and the vertex kinds, then the records (stored) or the tree (compact);
+     * the stored form's bucket index is sized from the records and added after */
+    const size_t head = (sizeof(rs_pcache) + (size_t)nv + 15) & ~(size_t)15;
+    int tlev[RS_PC_MAXDEPTH + 1], ntlev = 0;
+    size_t body;
+    if (compact) {
+        int cnt = (n + RS_PC_LEAF - 1) / RS_PC_LEAF;
+        tlev[0] = 0;
+        for (;;) {
+            tlev[ntlev + 1] = tlev[ntlev] + cnt;
+            ntlev++;
+            if (cnt == 1)
+                break;
+            cnt = (cnt + 1) / 2;
+        }
+        body = (size_t)tlev[ntlev] * 4 * sizeof(double);
+    } else {
+        body = (size_t)n * sizeof(rs_pseg) + (size_t)nv * sizeof(rs_pvert);
+    }
+    const size_t whole = (head + body + 15) & ~(size_t)15;
+    unsigned char *blk = calloc(1, whole);
     if (!blk)
         return rs_error_set(err, RS_ERR_NOMEM, "out of memory for the query data");
     rs_pcache *pc = (rs_pcache *)blk;
-    pc->ps = (rs_pseg *)(blk + sizeof(rs_pcache));
-    pc->pv = (rs_pvert *)(blk + sizeof(rs_pcache) + (size_t)n * sizeof(rs_pseg));
+    pc->vk = blk + sizeof(rs_pcache);
     pc->nseg = n;
     pc->nvert = nv;
     pc->closed = closed;
     pc->sides = s->sides == 2 ? 2 : 1;
-    pc->size = size;
+    pc->revolution = s->kind == RS_SURF_REVOLUTION;
+    pc->size = rs_profile_size(p);
     pc->seg = p->seg;
-    double tol = 1e-12 * size;
-    for (int k = 0; k < n; k++) {
-        const rs_segment *g = &p->seg[k];
-        rs_pseg *q = &pc->ps[k];
-        q->type = g->type;
-        q->box[0] = q->box[2] = INFINITY;
-        q->box[1] = q->box[3] = -INFINITY;
-        box_add(q->box, g->p0[0], g->p0[1]);
-        box_add(q->box, g->p1[0], g->p1[1]);
-        switch (g->type) {
-        case RS_LINE:
-            q->o[0] = g->p0[0];
-            q->o[1] = g->p0[1];
-            q->e[0] = g->p1[0] - g->p0[0];
-            q->e[1] = g->p1[1] - g->p0[1];
-            q->inv_len2 = 1.0 / (q->e[0] * q->e[0] + q->e[1] * q->e[1]);
-            q->t[0] = q->e[0];
-            q->t[1] = q->e[1];
-            normalize2(q->t);
-            break;
-        case RS_CIRCL: {
-            /* An arc under 180 degrees lies inside the circle on its chord (Thales). */
-            q->sgn = g->sweep > 0.0 ? 1.0 : -1.0;
-            q->o[0] = g->pm[0];
-            q->o[1] = g->pm[1];
-            q->rad = g->radius;
-            double bc[2] = {0.5 * (g->p0[0] + g->p1[0]), 0.5 * (g->p0[1] + g->p1[1])};
-            double br = 0.5 * hypot(g->p1[0] - g->p0[0], g->p1[1] - g->p0[1]);
-            box_add(q->box, bc[0] - br, bc[1] - br);
-            box_add(q->box, bc[0] + br, bc[1] + br);
-            break;
-        }
-        case RS_PARAB:
-            /* The curve lies in the hull of its Bezier points p0, 2 pm - (p0 + p1)/2, p1.
-             */
-            q->o[0] = g->pm[0];
-            q->o[1] = g->pm[1];
-            for (int i = 0; i < 2; i++) {
-                q->B[i] = 0.5 * (g->p1[i] - g->p0[i]);
-                q->C[i] = 0.5 * (g->p0[i] + g->p1[i]) - g->pm[i];
-            }
-            box_add(q->box, 2.0 * g->pm[0] - 0.5 * (g->p0[0] + g->p1[0]),
-                    2.0 * g->pm[1] - 0.5 * (g->p0[1] + g->p1[1]));
-            break;
-        }
-        for (int i = 0; i < 4; i++)
-            q->box[i] += (i & 1 ? 1.0 : -1.0) * (1e-12 * fabs(q->box[i]) + tol);
+    vertex_kinds(p, pc);
+    if (compact) {
+        pc->tree = (double *)(blk + head);
+        pc->ntlev = ntlev;
+        memcpy(pc->tlev, tlev, (size_t)(ntlev + 1) * sizeof(int));
+        build_tree(pc);
+        *out = pc;
+        return RS_OK;
     }
-    for (int j = 0; j < nv; j++) {
-        rs_pvert *v = &pc->pv[j];
-        v->sa = j > 0 ? j - 1 : (closed ? n - 1 : -1);
-        v->sb = j < n ? j : -1;
-        const double *pos = v->sb >= 0 ? p->seg[v->sb].p0 : p->seg[v->sa].p1;
-        v->v[0] = pos[0];
-        v->v[1] = pos[1];
-        if (v->sa >= 0)
-            rs_segment_end_tangent(&p->seg[v->sa], 1, v->ta);
-        if (v->sb >= 0)
-            rs_segment_end_tangent(&p->seg[v->sb], 0, v->tb);
-        if (v->sa < 0 || v->sb < 0) {
-            v->kind = RS_VTX_END;
-        } else if (p->vkind && j < p->nvert) {
-            v->kind = p->vkind[j];
-        } else {
-            double c = v->ta[0] * v->tb[1] - v->ta[1] * v->tb[0];
-            double d = v->ta[0] * v->tb[0] + v->ta[1] * v->tb[1];
-            double ang = atan2(c, d);
-            v->kind = fabs(ang) <= RS_SMOOTH_ANGLE           ? RS_VTX_SMOOTH
-                      : fabs(ang) >= RS_PI - RS_SMOOTH_ANGLE ? RS_VTX_CONVEX
-                      : ang > 0.0                            ? RS_VTX_CONCAVE
-                                                             : RS_VTX_CONVEX;
-        }
-        if (v->kind == RS_VTX_SMOOTH) {
-            double t[2] = {v->ta[0] + v->tb[0], v->ta[1] + v->tb[1]};
-            normalize2(t);
-            v->ta[0] = v->tb[0] = t[0];
-            v->ta[1] = v->tb[1] = t[1];
-        }
-        v->na[0] = -v->ta[1];
-        v->na[1] = v->ta[0];
-        v->nb[0] = -v->tb[1];
-        v->nb[1] = v->tb[0];
-        if (v->sa < 0) {
-            v->nfb[0] = v->nb[0];
-            v->nfb[1] = v->nb[1];
-        } else if (v->sb < 0) {
-            v->nfb[0] = v->na[0];
-            v->nfb[1] = v->na[1];
-        } else {
-            double b[2] = {v->na[0] + v->nb[0], v->na[1] + v->nb[1]};
-            if (hypot(b[0], b[1]) > 1e-6) {
-                normalize2(b);
-            } else {
-                b[0] = v->ta[0];
-                b[1] = v->ta[1];
-            }
-            v->nfb[0] = b[0];
-            v->nfb[1] = b[1];
-        }
-        v->seg_owns_edge = s->kind == RS_SURF_REVOLUTION && v->kind == RS_VTX_END &&
-                           fabs(v->v[0]) <= 1e-12 * size;
-    }
-    /* each segment carries the ownership tests of its two vertices */
+    pc->ps = (rs_pseg *)(blk + head);
+    pc->pv = (rs_pvert *)(blk + head + (size_t)n * sizeof(rs_pseg));
+    for (int j = 0; j < nv; j++)
+        rs_pcache_vertex(pc, j, &pc->pv[j]);
+    pc->box[0] = pc->box[2] = INFINITY;
+    pc->box[1] = pc->box[3] = -INFINITY;
     for (int k = 0; k < n; k++) {
-        rs_pseg *q = &pc->ps[k];
-        const rs_pvert *v0 = &pc->pv[k], *v1 = &pc->pv[k + 1 == nv ? 0 : k + 1];
-        q->start_incl =
-            v0->kind == RS_VTX_SMOOTH || v0->kind == RS_VTX_CONCAVE || v0->seg_owns_edge;
-        q->end_incl = v1->seg_owns_edge;
-        q->vtx_start = v0->kind != RS_VTX_SMOOTH;
-        q->vtx_end = k == n - 1 && !closed;
-        q->nl[0] = -q->t[1];
-        q->nl[1] = q->t[0];
-        for (int i = 0; i < 2; i++) {
-            q->v0[i] = v0->v[i];
-            q->tb0[i] = v0->tb[i];
-            q->v1[i] = v1->v[i];
-            q->ta1[i] = v1->ta[i];
-        }
+        rs_pcache_segment(pc, k, &pc->pv[k], &pc->pv[k + 1 == nv ? 0 : k + 1], &pc->ps[k]);
+        box_union(pc->box, pc->ps[k].box);
     }
 
     /* Bucket axis: the one whose finest level costs less to scan (a drum's mantle
      * pieces spread along z, not along r). */
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (int k = 0; k < n; k++)
-        for (int a = 0; a < 2; a++) {
-            lo[a] = fmin(lo[a], pc->ps[k].box[2 * a]);
-            hi[a] = fmax(hi[a], pc->ps[k].box[2 * a + 1]);
-        }
+    const double lo[2] = {pc->box[0], pc->box[2]}, hi[2] = {pc->box[1], pc->box[3]};
     double best = -1.0;
     int best_axis = 0;
-    const int bps = n > RS_PC_LARGE ? 1 : RS_PC_BUCKETS_PER_SEG;
-    const int nb = n * bps;
+    const int nb = n * RS_PC_BUCKETS_PER_SEG;
     pc->nbucket = nb;
     int *cnt = n > 1 ? malloc((size_t)(nb + 1) * sizeof(int)) : NULL;
     for (int a = 0; a < 2 && cnt; a++) {
@@ -377,27 +478,26 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
         pc->lo = lo[best_axis];
         pc->inv_w = (double)nb / (hi[best_axis] - lo[best_axis]);
         pc->nlevel =
-            bucket_levels(pc, hi[best_axis] - lo[best_axis], 32L * bps * n + 64, &entries);
+            bucket_levels(pc, hi[best_axis] - lo[best_axis], 32L * nb + 64, &entries);
     }
     size_t ints =
         (size_t)pc->nlevel * (size_t)(2 * pc->nbucket + 1) + (size_t)entries + (size_t)n;
-    unsigned char *nblk = realloc(blk, head + ints * sizeof(int));
+    unsigned char *nblk = realloc(blk, whole + ints * sizeof(int));
     if (!nblk) {
         free(blk);
         return rs_error_set(err, RS_ERR_NOMEM, "out of memory for the query data");
     }
     blk = nblk;
     pc = (rs_pcache *)blk;
-    pc->ps = (rs_pseg *)(blk + sizeof(rs_pcache));
-    pc->pv = (rs_pvert *)(blk + sizeof(rs_pcache) + (size_t)n * sizeof(rs_pseg));
-    pc->bstart = (int *)(blk + head);
+    pc->vk = blk + sizeof(rs_pcache);
+    pc->ps = (rs_pseg *)(blk + head);
+    pc->pv = (rs_pvert *)(blk + head + (size_t)n * sizeof(rs_pseg));
+    pc->bstart = (int *)(blk + whole);
     pc->boff = pc->bstart + (size_t)pc->nlevel * (size_t)(pc->nbucket + 1);
     pc->all_at = (int)entries;
     pc->bchain = pc->boff + entries + n;
-    for (int k = 0; k < n; k++) {
+    for (int k = 0; k < n; k++)
         pc->boff[entries + k] = k * (int)sizeof(rs_pseg);
-        pc->ps[k].self = k;
-    }
     long off = 0;
     for (int l = 0; l < pc->nlevel; l++) {
         int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
@@ -428,7 +528,7 @@ int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err)
                 const int k = rs_pcache_seg(pc->boff[e]);
                 chain = pc->ps[k].type == RS_LINE &&
                         (e == bs[b] || (k == rs_pcache_seg(pc->boff[e - 1]) + 1 &&
-                                        pc->pv[k].kind == RS_VTX_SMOOTH));
+                                        pc->vk[k] == RS_VTX_SMOOTH));
             }
             if (chain) {
                 const int own =

@@ -129,25 +129,38 @@ typedef struct rs_pvert {
     int seg_owns_edge;   ///< END on a revolution axis: the segment owns dA = 0 / dB = 0
 } rs_pvert;
 
-/* 1D bucket index along one profile axis (the one that spreads the segments best).
- * Bucket b covers [lo + b w, lo + (b + 1) w). Level l lists, in profile order, the
- * segments whose bounding box comes within margin[l] of the bucket, so a point within
- * reach <= margin[l] of a segment finds it in its own bucket's list at level l. Reaches
- * beyond the last level scan every segment. */
+/* The index of a profile's query data, in one of two forms.
+ *
+ * Stored records (profiles of up to RS_PC_LARGE segments): every segment's rs_pseg and
+ * every vertex's rs_pvert, and a 1D bucket index along one profile axis (the one that
+ * spreads the segments best). Bucket b covers [lo + b w, lo + (b + 1) w). Level l
+ * lists, in profile order, the segments whose bounding box comes within margin[l] of
+ * the bucket, so a point within reach <= margin[l] of a segment finds it in its own
+ * bucket's list at level l. Reaches beyond the last level scan every segment.
+ *
+ * Compact (larger profiles): no per-segment records. A query makes the records of the
+ * segments it meets from the profile (rs_pcache_segment, rs_pcache_vertex), and finds
+ * them through a tree of bounding boxes over runs of RS_PC_LEAF consecutive segments:
+ * level 0 boxes the runs, each box of level l + 1 the two boxes 2i, 2i + 1 of level l.
+ * A depth-first walk, first child first, meets the segments in profile order. The
+ * index costs about 4 doubles per RS_PC_LEAF / 2 segments and serves any reach. */
 #define RS_PC_MAXLEVEL 12
 /* Buckets per segment: fine enough that most buckets along a chain of collinear pieces
- * lie inside one piece (rs_pcache_build gives those an owner). Profiles of more than
- * RS_PC_LARGE segments take one bucket per segment: the lists then hold a quarter of the
- * entries for the same reach, which bounds the index's memory. */
+ * lie inside one piece (rs_pcache_build gives those an owner). */
 #define RS_PC_BUCKETS_PER_SEG 4
 #define RS_PC_LARGE 16384
+#define RS_PC_LEAF 8
+#define RS_PC_MAXDEPTH 40
 typedef struct rs_pcache {
     int nseg, nvert, closed, sides;
+    int revolution; ///< a REVOLUTION profile (END vertices on the axis: seg_owns_edge)
     double size;
+    double box[4]; ///< the profile's bounding box (the segments' boxes' union)
     const rs_segment *seg;
-    rs_pseg *ps;
-    rs_pvert *pv;
-    int axis; ///< 0: buckets along x (or r), 1: along y (or z)
+    unsigned char *vk; ///< nvert: each vertex's rs_vertex_kind
+    rs_pseg *ps;       ///< stored records, or NULL (compact)
+    rs_pvert *pv;      ///< stored records, or NULL (compact)
+    int axis;          ///< 0: buckets along x (or r), 1: along y (or z)
     int nbucket, nlevel;
     double lo, inv_w;              ///< bucket of coordinate c: floor((c - lo) inv_w)
     double margin[RS_PC_MAXLEVEL]; ///< increasing
@@ -157,6 +170,9 @@ typedef struct rs_pcache {
     int *boff;   ///< the levels' lists, then every segment (from all_at, for reaches
                  ///< beyond the last level), as byte offsets into ps
     int all_at;
+    double *tree; ///< compact: the boxes (xmin, xmax, ymin, ymax) of every level
+    int ntlev;    ///< compact: levels of the tree; level l starts at box tlev[l]
+    int tlev[RS_PC_MAXDEPTH + 1];
 } rs_pcache;
 
 /// The segment index of a byte offset into ps.
@@ -165,8 +181,21 @@ static inline int rs_pcache_seg(int off)
     return off / (int)sizeof(rs_pseg);
 }
 
-/// Builds the query data of an analytic surface's profile (one malloc'ed block).
+/// Segment k's bounding box (xmin, xmax, ymin, ymax), grown by the query's tolerance:
+/// the box of its record.
+void rs_pcache_box(const rs_pcache *pc, int k, double box[4]);
+/// Vertex j's record, made from the profile (what the stored form keeps in pv[j]).
+void rs_pcache_vertex(const rs_pcache *pc, int j, rs_pvert *v);
+/// Segment k's record from its vertices' records v0 (vertex k) and v1 (vertex k + 1, or
+/// 0 when the profile closes there): what the stored form keeps in ps[k].
+void rs_pcache_segment(const rs_pcache *pc, int k, const rs_pvert *v0, const rs_pvert *v1,
+                       rs_pseg *q);
+
+/// Builds the query data of an analytic surface's profile (one malloc'ed block), compact
+/// when the profile has more than RS_PC_LARGE segments.
 int rs_pcache_build(const rs_surface *s, rs_pcache **out, rs_error *err);
+/// The same in the form asked for (compact != 0: no stored records, the tree).
+int rs_pcache_build_as(const rs_surface *s, int compact, rs_pcache **out, rs_error *err);
 
 /// One contact in the profile plane.
 typedef struct rs_hit2 {
@@ -179,8 +208,6 @@ typedef struct rs_hit2 {
 
 /// Scratch for rs_pcache_hits, sized by the profile. Stack storage covers small profiles.
 typedef struct rs_pscratch {
-    unsigned stamp;       ///< dedup stamp of the multi-bucket gather
-    unsigned *seg_stamp;  ///< nseg
     int *near;            ///< nseg: the segments within reach, in profile order
     unsigned char *state; ///< nseg: per near entry, hit / drop flags
     rs_hit2 *cand;        ///< nseg: per near entry, its candidate contact

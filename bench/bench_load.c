@@ -11,9 +11,14 @@
  *
  *   bench_load [--max N] [--shape NAME]
  *
- * Printed: seconds of thread CPU time to parse (best of 3 below 10^6 segments), and the
+ * Printed: seconds of thread CPU time to parse (best of 3 below 10^6 segments), the
  * heap bytes the surface holds per segment (glibc mallinfo2: bytes in use, mmap'ed
- * blocks included, after the parse minus before). */
+ * blocks included, after the parse minus before), and the query's ns per point: 20000
+ * points, each at a random point of a random segment moved by up to h along each axis,
+ * queried in one block at a reach (gap_max) of 2 h, the best of 3, where h is the
+ * profile's larger bounding-box side over its segment count (the saw's teeth stand h
+ * apart). Profiles of more than 16384 segments keep the compact form of
+ * the query data (analytic_surfaces/profile.h). */
 #define _GNU_SOURCE
 #include "bench_clock.h"
 #include "rigidsurf/surface.h"
@@ -74,6 +79,47 @@ static void make(const char *shape, int n)
     }
 }
 
+/* ns per point of one block query around the profile (see the top of this file). */
+static double query_ns(const rs_surface *s)
+{
+    enum { NP = 20000 };
+    static double x[NP], y[NP], z[NP];
+    const rs_profile *p = &s->profile;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int k = 0; k < p->nseg; k++)
+        for (int a = 0; a < 2; a++) {
+            lo[a] = fmin(lo[a], fmin(p->seg[k].p0[a], p->seg[k].p1[a]));
+            hi[a] = fmax(hi[a], fmax(p->seg[k].p0[a], p->seg[k].p1[a]));
+        }
+    const double h = fmax(hi[0] - lo[0], hi[1] - lo[1]) / p->nseg;
+    unsigned long long st = 0x9E3779B97F4A7C15ull;
+    for (int i = 0; i < NP; i++) {
+        double u[4];
+        for (int j = 0; j < 4; j++) {
+            st = st * 6364136223846793005ull + 1442695040888963407ull;
+            u[j] = (double)(st >> 11) * 0x1.0p-53;
+        }
+        const rs_segment *g = &p->seg[(int)(u[0] * p->nseg) % p->nseg];
+        x[i] = g->p0[0] + u[1] * (g->p1[0] - g->p0[0]) + 2.0 * h * (u[2] - 0.5);
+        y[i] = g->p0[1] + u[1] * (g->p1[1] - g->p0[1]) + 2.0 * h * (u[3] - 0.5);
+        z[i] = 0.0;
+    }
+    rs_query q = {NP, {x, y, z, NULL}, NULL, 2.0 * h, -2.0 * h};
+    rs_contacts c = {0};
+    double best = INFINITY;
+    for (int r = 0; r < 3; r++) {
+        c.n = 0;
+        const double t0 = rs_bench_thread_now();
+        if (rs_surface_query(s, &q, &c, NULL) != RS_OK || c.n < NP / 4) {
+            fprintf(stderr, "bench_load: the query failed (%d contacts)\n", c.n);
+            exit(1);
+        }
+        best = fmin(best, rs_bench_thread_now() - t0);
+    }
+    rs_contacts_free(&c);
+    return 1e9 * best / NP;
+}
+
 int main(int argc, char **argv)
 {
     int nmax = 1000000;
@@ -90,14 +136,15 @@ int main(int argc, char **argv)
         }
     }
     printf("build: %s %s\n", RS_BUILD_TYPE, RS_BUILD_FLAGS);
-    printf("%-8s %9s %12s %14s\n", "shape", "segments", "load s", "bytes/segment");
+    printf("%-8s %9s %12s %14s %14s\n", "shape", "segments", "load s", "bytes/segment",
+           "query ns/pt");
     const char *shapes[] = {"line", "polygon", "saw", "spiral", "arcs"};
     for (int si = 0; si < 5; si++) {
         if (only && strcmp(only, shapes[si]))
             continue;
         for (int n = 1000; n <= nmax; n *= 10) {
             make(shapes[si], n);
-            double best = INFINITY;
+            double best = INFINITY, qbest = INFINITY;
             size_t bytes = 0;
             const int reps = n < 1000000 ? 3 : 1;
             for (int r = 0; r < reps; r++) {
@@ -114,10 +161,12 @@ int main(int argc, char **argv)
                 }
                 const struct mallinfo2 m1 = mallinfo2();
                 bytes = (m1.uordblks + m1.hblkhd) - (m0.uordblks + m0.hblkhd);
+                qbest = fmin(qbest, query_ns(&s));
                 rs_surface_free(&s);
                 best = fmin(best, t);
             }
-            printf("%-8s %9d %12.4f %14.0f\n", shapes[si], n, best, (double)bytes / n);
+            printf("%-8s %9d %12.4f %14.0f %14.0f\n", shapes[si], n, best,
+                   (double)bytes / n, qbest);
             fflush(stdout);
         }
     }

@@ -1,6 +1,8 @@
 /* The block query against an independent brute-force distance to the profile, on blocks
- * larger than the query's internal chunk, with a pose, radii and points on the axis; and
- * a block answers exactly as its points queried one at a time. */
+ * larger than the query's internal chunk, with a pose, radii and points on the axis; a
+ * block answers exactly as its points queried one at a time; and the compact form of
+ * the query data (profile.h) answers exactly as the stored one. */
+#include "profile.h"
 #include "rigidsurf/motion.h"
 #include "rigidsurf/surface.h"
 #define RS_TEST_SEED 0x2545F4914F6CDD1Dull
@@ -210,34 +212,146 @@ static void test_query_large_profile_is_brute_force_closest(void)
     rs_surface s;
     ENSURE(parse(deck, &s) == 0);
     ENSURE(s.profile.nseg == NSEG);
-    const double reach = 3.0 * h;
-    static double x[N], y[N], z[N];
-    for (int i = 0; i < N; i++) {
-        const double u = urand(), v = (8.0 * urand() - 2.0) * h;
-        x[i] = c30 * u - s30 * v;
-        y[i] = s30 * u + c30 * v;
-        z[i] = 0.0;
-    }
-    rs_query q = {N, {x, y, z, NULL}, NULL, reach, -reach};
-    rs_contacts c = {0};
-    ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
-    int k = 0, checked = 0;
-    for (int i = 0; i < N; i++) {
-        double best = INFINITY;
-        for (; k < c.n && c.point[k] == i; k++)
-            best = fabs(c.dist[k]) < best ? fabs(c.dist[k]) : best;
-        const double d = profile_distance(&s, x[i], y[i]);
-        if (d <= 0.99 * reach) {
-            ENSURE_NEAR(best, d, 1e-12);
-            checked++;
-        } else if (d > 1.01 * reach) {
-            ENSURE(best == INFINITY);
+    for (int far = 0; far < 2; far++) {
+        const double reach = far ? 1200.0 * h : 3.0 * h;
+        const int m = far ? 300 : N;
+        static double x[N], y[N], z[N];
+        for (int i = 0; i < m; i++) {
+            const double u = urand(),
+                         v = (far ? 3000.0 * urand() - 1000.0 : 8.0 * urand() - 2.0) * h;
+            x[i] = c30 * u - s30 * v;
+            y[i] = s30 * u + c30 * v;
+            z[i] = 0.0;
         }
+        rs_query q = {m, {x, y, z, NULL}, NULL, reach, -reach};
+        rs_contacts c = {0};
+        ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
+        int k = 0, checked = 0;
+        for (int i = 0; i < m; i++) {
+            double best = INFINITY;
+            for (; k < c.n && c.point[k] == i; k++)
+                best = fabs(c.dist[k]) < best ? fabs(c.dist[k]) : best;
+            const double d = profile_distance(&s, x[i], y[i]);
+            if (d <= 0.99 * reach) {
+                ENSURE_NEAR(best, d, 1e-12);
+                checked++;
+            } else if (d > 1.01 * reach) {
+                ENSURE(best == INFINITY);
+            }
+        }
+        ENSURE(k == c.n);
+        ENSURE(checked > m / 2);
+        rs_contacts_free(&c);
     }
-    ENSURE(k == c.n);
-    ENSURE(checked > N / 2);
-    rs_contacts_free(&c);
     rs_surface_free(&s);
+}
+
+/* The profile-plane contacts of every point of pts through pc (the loop of query.c). */
+static void plane_contacts(const rs_pcache *pc, const rs_ppoints *pts, rs_contacts *c)
+{
+    rs_pscratch sc;
+    ENSURE(rs_pscratch_init(&sc, pc, NULL, 0) == 0);
+    c->n = 0;
+    for (int i = 0;;) {
+        int need = 0;
+        i = rs_pcache_points(pc, pts, i, c, &sc, &need);
+        if (i >= pts->n)
+            break;
+        ENSURE(need > 0 && rs_contacts_reserve(c, 2 * (c->n + need) + 64, NULL) == 0);
+    }
+    rs_pscratch_free(&sc);
+}
+
+/* The stored and the compact form of one profile's query data give the same contacts,
+ * value for value, in the same order, for points around the profile at reaches from
+ * zero to a third of its size, with and without a lower distance limit. */
+static void check_compact_is_stored(const char *deck, double reach_frac)
+{
+    rs_surface s;
+    ENSURE(parse(deck, &s) == 0);
+    rs_pcache *st = NULL, *cp = NULL;
+    ENSURE(rs_pcache_build_as(&s, 0, &st, NULL) == 0 && st->ps && st->pv);
+    ENSURE(rs_pcache_build_as(&s, 1, &cp, NULL) == 0 && !cp->ps && !cp->pv);
+    for (int i = 0; i < 4; i++)
+        ENSURE(st->box[i] == cp->box[i]);
+    enum { N = 3000 };
+    static double u[N], v[N], dh[N];
+    const double *b = st->box, size = fmax(b[1] - b[0], b[3] - b[2]);
+    for (int pass = 0; pass < 2; pass++) {
+        for (int i = 0; i < N; i++) {
+            u[i] = b[0] - 0.1 * size + (b[1] - b[0] + 0.2 * size) * urand();
+            v[i] = b[2] - 0.1 * size + (b[3] - b[2] + 0.2 * size) * urand();
+            if (s.kind == RS_SURF_REVOLUTION)
+                u[i] = fabs(u[i]);
+            dh[i] = i % 97 == 0 ? NAN : reach_frac * size * urand();
+        }
+        const rs_ppoints pts = {N, u, v, dh, pass ? -0.01 * size : -INFINITY, 0};
+        rs_contacts a = {0}, c = {0};
+        plane_contacts(st, &pts, &a);
+        plane_contacts(cp, &pts, &c);
+        ENSURE(a.n == c.n && a.n > N / 4);
+        for (int k = 0; k < a.n; k++) {
+            ENSURE(a.point[k] == c.point[k] && a.feature[k] == c.feature[k]);
+            ENSURE(a.xm[0][k] == c.xm[0][k] && a.xm[1][k] == c.xm[1][k]);
+            ENSURE(a.nrm[0][k] == c.nrm[0][k] && a.nrm[1][k] == c.nrm[1][k]);
+            ENSURE(a.dist[k] == c.dist[k] && a.curv[0][k] == c.curv[0][k]);
+        }
+        rs_contacts_free(&a);
+        rs_contacts_free(&c);
+    }
+    free(st);
+    free(cp);
+    rs_surface_free(&s);
+}
+
+static void test_query_compact_form_is_stored_form(void)
+{
+    /* the three decks above: fillets on a two-sided drum, a closed one-sided profile
+     * with a pocket, an open profile of lines and arcs */
+    check_compact_is_stored("*SURFACE, TYPE=REVOLUTION, NAME=d, SIDES=2, FILLET "
+                            "RADIUS=0.02\n0,0,0, 0,0,1\nSTART, 0, -0.05\n"
+                            "LINE, 0.15, -0.05\nLINE, 0.15, 0.05\nLINE, 0, 0.05\n",
+                            0.3);
+    check_compact_is_stored("*SURFACE, TYPE=CYLINDER, NAME=c\n0,0,0, 1,0,0\n0,0,1\n"
+                            "START, 0, 0\nLINE, 2, 0\nLINE, 2, 2\nLINE, 1, 0.8\n"
+                            "LINE, 0, 2\nLINE, 0, 0\n",
+                            0.3);
+    check_compact_is_stored("*SURFACE, TYPE=CYLINDER, NAME=o, SIDES=2\n0.1,0.2,0.3, "
+                            "1.1,0.2,0.3\n0.1,0.2,1.3\nSTART, -1, 0\nLINE, 0, 0\n"
+                            "CIRCL, 1, 1, 0, 1\nLINE, 1, 2\nCIRCL, 2, 3, 2, 2\n",
+                            0.3);
+    /* a hopper of parabolas and lines, one-sided, open at the axis */
+    check_compact_is_stored("*SURFACE, TYPE=REVOLUTION, NAME=h\n0,0,0, 0,0,1\n"
+                            "START, 0, 0\nLINE, 0.1, 0\nPARAB, 0.25, 0.1, 0.3, 0.3\n"
+                            "LINE, 0.3, 0.6\nPARAB, 0.2, 0.7, 0.1, 0.72\n",
+                            0.3);
+    /* a random closed polygon of 300 LINE and CIRCL pieces (a star: convex and
+     * concave corners, smooth runs), one side and two */
+    for (int sides = 1; sides <= 2; sides++) {
+        static char deck[300 * 90 + 256];
+        size_t o = (size_t)snprintf(deck, sizeof deck,
+                                    "*SURFACE, TYPE=SEGMENTS, NAME=star%s\nSTART, 1, 0\n",
+                                    sides == 2 ? ", SIDES=2" : "");
+        double X0 = 1.0, Y0 = 0.0;
+        for (int k = 1; k <= 300; k++) {
+            const double th = 2.0 * RS_PI * k / 300,
+                         r = k == 300 ? 1.0 : 0.8 + 0.4 * urand();
+            const double X = r * cos(th), Y = -r * sin(th);
+            if (k % 3 == 0 && k != 300) {
+                /* the centre off the chord's middle, either side: a bulge or a dent */
+                const double c = (urand() < 0.5 ? -1.0 : 1.0) * (0.3 + 0.7 * urand());
+                o += (size_t)snprintf(
+                    deck + o, sizeof deck - o, "CIRCL, %.17g, %.17g, %.17g, %.17g\n", X, Y,
+                    0.5 * (X0 + X) - c * (Y - Y0), 0.5 * (Y0 + Y) + c * (X - X0));
+            } else {
+                o += (size_t)snprintf(deck + o, sizeof deck - o, "LINE, %.17g, %.17g\n", X,
+                                      Y);
+            }
+            X0 = X;
+            Y0 = Y;
+        }
+        check_compact_is_stored(deck, 0.05);
+    }
 }
 
 /* A REVOLUTION profile about z: a cap from the axis to (r0, -H), npc collinear LINE
@@ -399,6 +513,7 @@ int main(void)
     RS_RUN(test_query_block_closed_one_side_is_brute_force_closest);
     RS_RUN(test_query_block_open_lines_and_arcs_is_brute_force_closest);
     RS_RUN(test_query_large_profile_is_brute_force_closest);
+    RS_RUN(test_query_compact_form_is_stored_form);
     RS_RUN(test_query_collinear_chain_gives_one_face_contact);
     RS_RUN(test_query_oblique_chain_gives_one_face_contact);
     return rs_test_summary();
