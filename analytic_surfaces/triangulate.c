@@ -66,10 +66,11 @@ int rs_analytic_triangulate(const rs_surface *s, double span, int nhoop, rs_trim
     int closed = s->profile.closed;
     int nodes = closed ? np - 1 : np; /* the closing node is node 0 */
     int nv, nt;
+    const double axis_tol = 1e-12 * rs_profile_size(&s->profile);
     if (s->kind == RS_SURF_REVOLUTION) {
         nv = 0;
         for (int i = 0; i < nodes; i++)
-            nv += fabs(xy[2 * i]) <= 1e-12 * rs_profile_size(&s->profile) ? 1 : nhoop;
+            nv += fabs(xy[2 * i]) <= axis_tol ? 1 : nhoop;
         nt = 2 * (np - 1) * nhoop;
     } else {
         nv = 2 * nodes;
@@ -87,7 +88,6 @@ int rs_analytic_triangulate(const rs_surface *s, double span, int nhoop, rs_trim
     const double *a = s->a, *ex = s->ex, *ey = s->ey, *ez = s->ez;
     int v = 0, t = 0;
     if (s->kind == RS_SURF_REVOLUTION) {
-        double tol = 1e-12 * rs_profile_size(&s->profile);
         int *ring = malloc((size_t)nodes * sizeof(int));
         if (!ring) {
             free(xy);
@@ -98,7 +98,7 @@ int rs_analytic_triangulate(const rs_surface *s, double span, int nhoop, rs_trim
         for (int i = 0; i < nodes; i++) {
             double r = xy[2 * i], z = xy[2 * i + 1];
             base[i] = v;
-            ring[i] = fabs(r) <= tol ? 1 : nhoop;
+            ring[i] = fabs(r) <= axis_tol ? 1 : nhoop;
             for (int j = 0; j < ring[i]; j++) {
                 double th = 2.0 * RS_PI * j / nhoop, c = cos(th), sn = sin(th);
                 for (int d = 0; d < 3; d++)

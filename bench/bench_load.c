@@ -8,6 +8,8 @@
  *   saw      a sawtooth of steep teeth (every tooth spans the whole height)
  *   spiral   an Archimedean spiral of LINE pieces (turns nest along both axes)
  *   arcs     a wave of CIRCL arcs (corners at the joints)
+ *   drum     a REVOLUTION drum: a bottom cap, its mantle in collinear LINE pieces and a
+ *            top cap
  *
  *   bench_load [--max N] [--shape NAME]
  *
@@ -18,7 +20,9 @@
  * queried in one block at a reach (gap_max) of 2 h, the best of 3, where h is the
  * profile's larger bounding-box side over its segment count (the saw's teeth stand h
  * apart). Profiles of more than 16384 segments keep the compact form of
- * the query data (analytic_surfaces/profile.h). */
+ * the query data (analytic_surfaces/profile.h). Then the seconds of thread CPU time of
+ * rs_surface_triangulate with 16 points around the hoop (a span of 1 for the extruded
+ * shapes): the display mesh of fix wall/rigid's vtk output and rigidsurf-frames --vtk. */
 #define _GNU_SOURCE
 #include "bench_clock.h"
 #include "rigidsurf/surface.h"
@@ -48,8 +52,17 @@ static void put(const char *fmt, double a, double b)
 static void make(const char *shape, int n)
 {
     len = 0;
-    put("*SURFACE, TYPE=SEGMENTS, NAME=p\n%.0s%.0s", 0, 0);
     const double pi = 3.14159265358979323846;
+    if (!strcmp(shape, "drum")) {
+        put("*SURFACE, TYPE=REVOLUTION, NAME=p\n0, 0, 0, 0, 0, 1\nSTART, 0, %.17g%.0s\n",
+            0.0, 0);
+        put("LINE, %.17g, %.17g\n", 1.0, 0.0);
+        for (int k = 1; k <= n - 2; k++)
+            put("LINE, %.17g, %.17g\n", 1.0, (double)k / (n - 2));
+        put("LINE, %.17g, %.17g\n", 0.0, 1.0);
+        return;
+    }
+    put("*SURFACE, TYPE=SEGMENTS, NAME=p\n%.0s%.0s", 0, 0);
     if (!strcmp(shape, "line")) {
         put("START, %.17g, %.17g\n", 0.0, 0.0);
         for (int k = 1; k <= n; k++)
@@ -103,6 +116,11 @@ static double query_ns(const rs_surface *s)
         x[i] = g->p0[0] + u[1] * (g->p1[0] - g->p0[0]) + 2.0 * h * (u[2] - 0.5);
         y[i] = g->p0[1] + u[1] * (g->p1[1] - g->p0[1]) + 2.0 * h * (u[3] - 0.5);
         z[i] = 0.0;
+        if (s->kind == RS_SURF_REVOLUTION) { /* (r, z) in the x-z plane, r >= 0 */
+            x[i] = fabs(x[i]);
+            z[i] = y[i];
+            y[i] = 0.0;
+        }
     }
     rs_query q = {NP, {x, y, z, NULL}, NULL, 2.0 * h, -2.0 * h};
     rs_contacts c = {0};
@@ -118,6 +136,21 @@ static double query_ns(const rs_surface *s)
     }
     rs_contacts_free(&c);
     return 1e9 * best / NP;
+}
+
+/* Seconds to triangulate the surface for display (see the top of this file). */
+static double triangulate_s(const rs_surface *s)
+{
+    rs_trimesh m;
+    rs_error e;
+    const double t0 = rs_bench_thread_now();
+    if (rs_surface_triangulate(s, 1.0, 16, &m, &e) != RS_OK) {
+        fprintf(stderr, "bench_load: the triangulation failed: %s\n", e.msg);
+        exit(1);
+    }
+    const double t = rs_bench_thread_now() - t0;
+    rs_trimesh_free(&m);
+    return t;
 }
 
 int main(int argc, char **argv)
@@ -136,15 +169,15 @@ int main(int argc, char **argv)
         }
     }
     printf("build: %s %s\n", RS_BUILD_TYPE, RS_BUILD_FLAGS);
-    printf("%-8s %9s %12s %14s %14s\n", "shape", "segments", "load s", "bytes/segment",
-           "query ns/pt");
-    const char *shapes[] = {"line", "polygon", "saw", "spiral", "arcs"};
-    for (int si = 0; si < 5; si++) {
+    printf("%-8s %9s %12s %14s %14s %14s\n", "shape", "segments", "load s", "bytes/segment",
+           "query ns/pt", "triangulate s");
+    const char *shapes[] = {"line", "polygon", "saw", "spiral", "arcs", "drum"};
+    for (int si = 0; si < 6; si++) {
         if (only && strcmp(only, shapes[si]))
             continue;
         for (int n = 1000; n <= nmax; n *= 10) {
             make(shapes[si], n);
-            double best = INFINITY, qbest = INFINITY;
+            double best = INFINITY, qbest = INFINITY, tbest = INFINITY;
             size_t bytes = 0;
             const int reps = n < 1000000 ? 3 : 1;
             for (int r = 0; r < reps; r++) {
@@ -162,11 +195,12 @@ int main(int argc, char **argv)
                 const struct mallinfo2 m1 = mallinfo2();
                 bytes = (m1.uordblks + m1.hblkhd) - (m0.uordblks + m0.hblkhd);
                 qbest = fmin(qbest, query_ns(&s));
+                tbest = fmin(tbest, triangulate_s(&s));
                 rs_surface_free(&s);
                 best = fmin(best, t);
             }
-            printf("%-8s %9d %12.4f %14.0f %14.0f\n", shapes[si], n, best,
-                   (double)bytes / n, qbest);
+            printf("%-8s %9d %12.4f %14.0f %14.0f %14.4f\n", shapes[si], n, best,
+                   (double)bytes / n, qbest, tbest);
             fflush(stdout);
         }
     }
