@@ -52,11 +52,15 @@ typedef struct rs_mesh {
     double *vpn;  ///< 3 nv: angle-weighted pseudo-normal (unit)
     int *vlabel;  ///< nv: user node number of each vertex (the label of its first point
                   ///< in the file), or NULL: the vertex's index + 1
-    unsigned char *vopen; ///< nv: 1 on an open boundary or non-manifold edge
-    unsigned char *vconc; ///< nv: 1 at the end of a CONCAVE edge
-    double lo[3], hi[3];  ///< bounds
-    double size;          ///< the bounds' diagonal
-    void *tree;           ///< the AABB tree (cgal_mesh.h)
+    unsigned char *vopen;  ///< nv: 1 on an open boundary or non-manifold edge
+    unsigned char *vconc;  ///< nv: 1 at the end of a CONCAVE edge
+    unsigned char *tfirst; ///< nt: bit j when the triangle is the first face of the edge
+                           ///< of slot j (edge_f[edge_f0[e]]), bit 3 + j when it is
+                           ///< vfirst of its node j: the query tests each edge and
+                           ///< vertex from that triangle alone
+    double lo[3], hi[3];   ///< bounds
+    double size;           ///< the bounds' diagonal
+    void *tree;            ///< the AABB tree (cgal_mesh.h)
 } rs_mesh;
 
 /// Builds the mesh of a polygon soup: scale and placement (rot row-major columns ex, ey,

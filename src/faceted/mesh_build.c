@@ -50,6 +50,7 @@ void rs_mesh_free(rs_mesh *m)
     free(m->vfirst);
     free(m->tnbr);
     free(m->vconc);
+    free(m->tfirst);
     free(m->vpn);
     free(m->vlabel);
     free(m->vopen);
@@ -442,6 +443,18 @@ static int finish_topology(rs_mesh *m, int two_sided)
     for (int t = m->nt - 1; t >= 0; t--)
         for (int j = 0; j < 3; j++)
             m->vfirst[m->tri[3 * t + j]] = t;
+    m->tfirst = xmalloc((size_t)m->nt, 1);
+    if (!m->tfirst)
+        goto done;
+    for (int t = 0; t < m->nt; t++) {
+        unsigned bits = 0;
+        for (int j = 0; j < 3; j++) {
+            const int e = m->tedge[3 * t + j];
+            bits |= (unsigned)(m->edge_f[m->edge_f0[e]] == t) << j;
+            bits |= (unsigned)(m->vfirst[m->tri[3 * t + j]] == t) << (3 + j);
+        }
+        m->tfirst[t] = (unsigned char)bits;
+    }
     for (int t = 0; t < m->nt; t++) {
         double *r = m->trec + RS_MESH_TREC * (size_t)t;
         for (int d = 0; d < 3; d++) {

@@ -216,7 +216,7 @@ static int hit_weights(const rs_mesh *m, const double p[3], double R, const int 
             continue; /* no edge or vertex of t within the sphere */
         for (int j = 0; j < 3; j++) {
             const int e = m->tedge[3 * t + j];
-            if (m->edge_kind[e] != RS_EDGE_CONCAVE || m->edge_f[m->edge_f0[e]] != t)
+            if (!(m->tfirst[t] >> j & 1u) || m->edge_kind[e] != RS_EDGE_CONCAVE)
                 continue; /* each concave edge once, from its lowest face */
             const double *a = m->xyz + 3 * m->edge_v[2 * e],
                          *b = m->xyz + 3 * m->edge_v[2 * e + 1];
@@ -232,7 +232,7 @@ static int hit_weights(const rs_mesh *m, const double p[3], double R, const int 
         }
         for (int j = 0; j < 3; j++) {
             const int v = m->tri[3 * t + j];
-            if (!m->vconc[v] || m->vfirst[v] != t)
+            if (!(m->tfirst[t] >> (3 + j) & 1u) || !m->vconc[v])
                 continue; /* each such vertex once, from its lowest triangle */
             const double *x = m->xyz + 3 * v;
             const double dv[3] = {p[0] - x[0], p[1] - x[1], p[2] - x[2]};
@@ -295,9 +295,9 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
             if (sd[j] > 0.0)
                 continue;
             /* an edge is tested from its lowest-numbered face: within reach, so is it */
-            const int e = m->tedge[3 * t + j];
-            if (m->edge_f[m->edge_f0[e]] != t)
+            if (!(m->tfirst[t] >> j & 1u))
                 continue;
+            const int e = m->tedge[3 * t + j];
             /* a two-face edge: this face leaves p outside (sd[j] <= 0), the other too? */
             const int nb = m->tnbr[3 * t + j];
             const int owns = nb >= 0 ? !(side_of(m, nb / 3, nb % 3, p) > 0.0) &&
@@ -343,10 +343,10 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
         }
         for (int j = 0; j < 3; j++) {
             if (sd[j] > 0.0 && sd[(j + 2) % 3] > 0.0)
-                continue;        /* vertex j lies between slots j - 1 and j */
-            const int v = tv[j]; /* tested from its lowest-numbered triangle */
-            if (m->vfirst[v] != t)
-                continue;
+                continue; /* vertex j lies between slots j - 1 and j */
+            if (!(m->tfirst[t] >> (3 + j) & 1u))
+                continue; /* tested from its lowest-numbered triangle */
+            const int v = tv[j];
             /* its two edges in this triangle first (the same products as vertex_owns) */
             const double *pv = m->xyz + 3 * v;
             const double w0[3] = {p[0] - pv[0], p[1] - pv[1], p[2] - pv[2]};
