@@ -404,9 +404,9 @@ RS_INLINE void near_seg(const rs_pcache *pc, const rs_pseg *q, double px, double
     (*nnear)++;
 }
 
-/* The compact form's walk (profile.h): the boxes within reach, depth first, first child
- * first, so the segments come in profile order. A segment's record is made when its own
- * box is within reach, each vertex's once along a run. */
+/* The tree's walk (profile.h): the boxes within reach, depth first, first child first,
+ * so the segments come in profile order. In the compact form a segment's record is made
+ * when its own box is within reach, each vertex's once along a run. */
 static void near_tree(const rs_pcache *pc, double px, double py, double reach,
                       rs_pscratch *sc, int *nnear, int *neg)
 {
@@ -430,6 +430,11 @@ static void near_tree(const rs_pcache *pc, double px, double py, double reach,
         }
         const int k0 = i * RS_PC_LEAF;
         const int k1 = k0 + RS_PC_LEAF < pc->nseg ? k0 + RS_PC_LEAF : pc->nseg;
+        if (pc->ps) {
+            for (int k = k0; k < k1; k++)
+                near_seg(pc, &pc->ps[k], px, py, reach, sc, nnear, neg);
+            continue;
+        }
         rs_pvert va, vb;
         rs_pseg q;
         int have = -1; /* the vertex whose record va holds */
@@ -458,24 +463,19 @@ int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double
     double reach = (pc->sides == 2 || dhi > -dlo) ? dhi : -dlo;
     if (!(reach >= 0.0) || dlo > dhi)
         return 0;
-    if (!pc->ps) {
+    /* the candidates: one bucket's list at the first level whose margin covers reach,
+     * else (and in the compact form) the tree's */
+    int l = 0;
+    while (pc->ps && l < pc->nlevel && pc->margin[l] < reach)
+        l++;
+    if (!pc->ps || l == pc->nlevel) {
         near_tree(pc, px, py, reach, sc, &nnear, &neg);
     } else {
-        /* the candidates: one bucket's list at the first level whose margin covers
-         * reach, else every segment */
-        int l = 0;
-        while (l < pc->nlevel && pc->margin[l] < reach)
-            l++;
-        const int *list = pc->boff + pc->all_at, *end = list + n;
-        if (l < pc->nlevel) {
-            double c = pc->axis ? py : px;
-            double f = (c - pc->lo) * pc->inv_w, top = (double)(pc->nbucket - 1);
-            int b = f > 0.0 ? (int)(f < top ? f : top) : 0;
-            const int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
-            list = pc->boff + bs[b];
-            end = pc->boff + bs[b + 1];
-        }
-        for (; list < end; list++)
+        double c = pc->axis ? py : px;
+        double f = (c - pc->lo) * pc->inv_w, top = (double)(pc->nbucket - 1);
+        int b = f > 0.0 ? (int)(f < top ? f : top) : 0;
+        const int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
+        for (const int *list = pc->boff + bs[b]; list < pc->boff + bs[b + 1]; list++)
             near_seg(pc, &pc->ps[rs_pcache_seg(*list)], px, py, reach, sc, &nnear, &neg);
     }
     if (pc->sides == 1 && neg) {
@@ -569,13 +569,12 @@ RS_INLINE int put_line(const pout *o, int nh, int k, const rs_pseg *q, int pt, d
 enum { PP_SUB = 64 };
 
 /* Per point: a pre-pass over a run of points finds each one's reach and its bucket's
- * list (offsets into boff; every segment's list starts at all_at), then one pass per
- * point walks the
- * near segments in profile order, each followed at once by its contacts (vertex k,
- * segment k, closing vertex), which is the order of rs_pcache_hits when no Voronoi pair
- * can drop a face. A penetrated face with one side (the Voronoi pass) and the start
- * vertex of a closed profile (its other segment is the last near one) hand the point to
- * rs_pcache_hits. */
+ * list (offsets into boff), then one pass per point walks the near segments in profile
+ * order, each followed at once by its contacts (vertex k, segment k, closing vertex),
+ * which is the order of rs_pcache_hits when no Voronoi pair can drop a face. A
+ * penetrated face with one side (the Voronoi pass), the start vertex of a closed
+ * profile (its other segment is the last near one) and a reach beyond the last level
+ * (the tree's walk) hand the point to rs_pcache_hits. */
 /* Vertex k, the start of segment k (prev: the near segment before k in the list, -1
  * for none): emitted when the segment before it is near too, or when it starts an open
  * profile. Returns 1, having emitted nothing, for the start vertex of a closed profile,
@@ -774,9 +773,11 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                 bc = l < pc->nlevel ? pc->bchain + (size_t)l * (size_t)pc->nbucket : NULL;
                 lreach = rch[j];
             }
+            /* beyond the last level: the per-point path walks the tree, with room for
+             * every segment */
             lb[j] = bs ? bs[b] : all;
             le[j] = bs ? bs[b + 1] : all + n;
-            lc[j] = bc ? bc[b] : 0;
+            lc[j] = bc ? bc[b] : -1;
             bound += 2 * (le[j] - lb[j]) + 1;
             if (bound > cap) {
                 stop = j;
@@ -789,8 +790,8 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                 continue;
             const double px = pu[i + j], py = pv[i + j], dhi = pdh[i + j], reach = rch[j];
             const int k0 = nh, pt = base + i + j;
-            int prev = -1, slow = 0;
-            if (lc[j]) {
+            int prev = -1, slow = lc[j] < 0;
+            if (lc[j] > 0) {
                 /* A LINE chain (rs_pcache_build): the face that owns the point, on its
                  * particle side (either side with SIDES=2), is its only contact; a
                  * point no face owns, or behind a one-sided face, takes the per-point

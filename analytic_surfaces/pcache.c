@@ -345,8 +345,8 @@ static void vertex_kinds(const rs_profile *p, rs_pcache *pc)
     }
 }
 
-/* The compact form's tree (profile.h): the boxes of the runs of RS_PC_LEAF segments, then
- * each level from the one below. */
+/* The tree of boxes (profile.h): the boxes of the runs of RS_PC_LEAF segments, then each
+ * level from the one below; the root's is the profile's box. */
 static void build_tree(rs_pcache *pc)
 {
     const int n = pc->nseg;
@@ -389,25 +389,19 @@ int rs_pcache_build_as(const rs_surface *s, int compact, rs_pcache **out, rs_err
                           : (n >= 2 && last->p1[0] == p->seg[0].p0[0] &&
                              last->p1[1] == p->seg[0].p0[1]);
     int nv = closed ? n : n + 1;
-    /* the header and the vertex kinds, then the records (stored) or the tree (compact);
-     * the stored form's bucket index is sized from the records and added after */
+    /* the header and the vertex kinds, the records (stored form), then the tree; the
+     * stored form's bucket index is sized from the records and added after */
     const size_t head = (sizeof(rs_pcache) + (size_t)nv + 15) & ~(size_t)15;
-    int tlev[RS_PC_MAXDEPTH + 1], ntlev = 0;
-    size_t body;
-    if (compact) {
-        int cnt = (n + RS_PC_LEAF - 1) / RS_PC_LEAF;
-        tlev[0] = 0;
-        for (;;) {
-            tlev[ntlev + 1] = tlev[ntlev] + cnt;
-            ntlev++;
-            if (cnt == 1)
-                break;
-            cnt = (cnt + 1) / 2;
-        }
-        body = (size_t)tlev[ntlev] * 4 * sizeof(double);
-    } else {
-        body = (size_t)n * sizeof(rs_pseg) + (size_t)nv * sizeof(rs_pvert);
+    int tlev[RS_PC_MAXDEPTH + 1] = {0}, ntlev = 0;
+    for (int cnt = (n + RS_PC_LEAF - 1) / RS_PC_LEAF;; cnt = (cnt + 1) / 2) {
+        tlev[ntlev + 1] = tlev[ntlev] + cnt;
+        ntlev++;
+        if (cnt == 1)
+            break;
     }
+    const size_t recs =
+        compact ? 0 : (size_t)n * sizeof(rs_pseg) + (size_t)nv * sizeof(rs_pvert);
+    const size_t body = recs + (size_t)tlev[ntlev] * 4 * sizeof(double);
     const size_t whole = (head + body + 15) & ~(size_t)15;
     unsigned char *blk = calloc(1, whole);
     if (!blk)
@@ -422,11 +416,11 @@ int rs_pcache_build_as(const rs_surface *s, int compact, rs_pcache **out, rs_err
     pc->size = rs_profile_size(p);
     pc->seg = p->seg;
     vertex_kinds(p, pc);
+    pc->tree = (double *)(blk + head + recs);
+    pc->ntlev = ntlev;
+    memcpy(pc->tlev, tlev, (size_t)(ntlev + 1) * sizeof(int));
+    build_tree(pc);
     if (compact) {
-        pc->tree = (double *)(blk + head);
-        pc->ntlev = ntlev;
-        memcpy(pc->tlev, tlev, (size_t)(ntlev + 1) * sizeof(int));
-        build_tree(pc);
         *out = pc;
         return RS_OK;
     }
@@ -434,12 +428,8 @@ int rs_pcache_build_as(const rs_surface *s, int compact, rs_pcache **out, rs_err
     pc->pv = (rs_pvert *)(blk + head + (size_t)n * sizeof(rs_pseg));
     for (int j = 0; j < nv; j++)
         rs_pcache_vertex(pc, j, &pc->pv[j]);
-    pc->box[0] = pc->box[2] = INFINITY;
-    pc->box[1] = pc->box[3] = -INFINITY;
-    for (int k = 0; k < n; k++) {
+    for (int k = 0; k < n; k++)
         rs_pcache_segment(pc, k, &pc->pv[k], &pc->pv[k + 1 == nv ? 0 : k + 1], &pc->ps[k]);
-        box_union(pc->box, pc->ps[k].box);
-    }
 
     /* Bucket axis: the one whose finest level costs less to scan (a drum's mantle
      * pieces spread along z, not along r). */
@@ -492,6 +482,7 @@ int rs_pcache_build_as(const rs_surface *s, int compact, rs_pcache **out, rs_err
     pc->vk = blk + sizeof(rs_pcache);
     pc->ps = (rs_pseg *)(blk + head);
     pc->pv = (rs_pvert *)(blk + head + (size_t)n * sizeof(rs_pseg));
+    pc->tree = (double *)(blk + head + recs);
     pc->bstart = (int *)(blk + whole);
     pc->boff = pc->bstart + (size_t)pc->nlevel * (size_t)(pc->nbucket + 1);
     pc->all_at = (int)entries;

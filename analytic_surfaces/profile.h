@@ -129,21 +129,22 @@ typedef struct rs_pvert {
     int seg_owns_edge;   ///< END on a revolution axis: the segment owns dA = 0 / dB = 0
 } rs_pvert;
 
-/* The index of a profile's query data, in one of two forms.
+/* The index of a profile's query data, in one of two forms, both with a tree of
+ * bounding boxes over runs of RS_PC_LEAF consecutive segments: level 0 boxes the runs,
+ * each box of level l + 1 the two boxes 2i, 2i + 1 of level l. A depth-first walk, first
+ * child first, meets the segments in profile order. The tree costs about 4 doubles per
+ * RS_PC_LEAF / 2 segments and serves any reach.
  *
  * Stored records (profiles of up to RS_PC_LARGE segments): every segment's rs_pseg and
  * every vertex's rs_pvert, and a 1D bucket index along one profile axis (the one that
  * spreads the segments best). Bucket b covers [lo + b w, lo + (b + 1) w). Level l
  * lists, in profile order, the segments whose bounding box comes within margin[l] of
  * the bucket, so a point within reach <= margin[l] of a segment finds it in its own
- * bucket's list at level l. Reaches beyond the last level scan every segment.
+ * bucket's list at level l. Reaches beyond the last level walk the tree.
  *
- * Compact (larger profiles): no per-segment records. A query makes the records of the
- * segments it meets from the profile (rs_pcache_segment, rs_pcache_vertex), and finds
- * them through a tree of bounding boxes over runs of RS_PC_LEAF consecutive segments:
- * level 0 boxes the runs, each box of level l + 1 the two boxes 2i, 2i + 1 of level l.
- * A depth-first walk, first child first, meets the segments in profile order. The
- * index costs about 4 doubles per RS_PC_LEAF / 2 segments and serves any reach. */
+ * Compact (larger profiles): no per-segment records and no buckets. A query walks the
+ * tree and makes the records of the segments it meets from the profile
+ * (rs_pcache_segment, rs_pcache_vertex). */
 #define RS_PC_MAXLEVEL 12
 /* Buckets per segment: fine enough that most buckets along a chain of collinear pieces
  * lie inside one piece (rs_pcache_build gives those an owner). */
@@ -167,11 +168,11 @@ typedef struct rs_pcache {
     int *bstart;                   ///< level l, bucket b: [l (nbucket + 1) + b], into boff
     int *bchain; ///< level l, bucket b: [l nbucket + b]: 0, 1 for a LINE chain, 2 + k
                  ///< for a chain whose points within the level's margin segment k owns
-    int *boff;   ///< the levels' lists, then every segment (from all_at, for reaches
-                 ///< beyond the last level), as byte offsets into ps
+    int *boff;   ///< the levels' lists, then every segment (from all_at: the room a
+                 ///< reach beyond the last level may need), as byte offsets into ps
     int all_at;
-    double *tree; ///< compact: the boxes (xmin, xmax, ymin, ymax) of every level
-    int ntlev;    ///< compact: levels of the tree; level l starts at box tlev[l]
+    double *tree; ///< the boxes (xmin, xmax, ymin, ymax) of the tree's every level
+    int ntlev;    ///< levels of the tree; level l starts at box tlev[l]
     int tlev[RS_PC_MAXDEPTH + 1];
 } rs_pcache;
 

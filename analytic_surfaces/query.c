@@ -201,28 +201,55 @@ static int ring_sectors(const rs_pcache *pc, const double *F, double axis_tol, i
             idx[n++] = j;
     if (n == 0)
         return RS_OK;
-    /* the gate: the opposite half-plane's closest profile point, at any distance */
-    for (int a = 0; a < n; a++) {
-        su[a] = -pu[idx[a]];
-        sv[a] = pv[idx[a]];
-        sd[a] = INFINITY;
-    }
+    /* The gate: the opposite half-plane's closest profile point, at any distance. It
+     * is searched within a reach that grows by 8 until a contact is found: the nearest
+     * contact within reach r is the nearest of all when there is one. A point's search
+     * starts at 2 u + its reach (its own closest point, when within reach, is that far
+     * from the mirror point at most) and ends at the farthest corner of the profile's
+     * box, within which the profile lies. */
     {
-        const rs_ppoints pts = {n, su, sv, sd, -INFINITY, 0};
-        int rc = profile_contacts(pc, &pts, tmp, sc, err);
-        if (rc)
-            return rc;
-        double best[CH];
+        double r[CH], rmax[CH], best[CH];
+        int left[CH], nleft = n;
+        const double *b = pc->box;
         for (int a = 0; a < n; a++) {
+            const int j = idx[a];
+            const double fu = fmax(fabs(-pu[j] - b[0]), fabs(-pu[j] - b[1]));
+            const double fv = fmax(fabs(pv[j] - b[2]), fabs(pv[j] - b[3]));
+            rmax[a] = 1.01 * sqrt(fu * fu + fv * fv) + 1e-12 * pc->size;
+            r[a] = fmin(2.0 * pu[j] + dh[j], rmax[a]);
             best[a] = INFINITY;
             ring[a] = 0;
+            left[a] = a;
         }
-        for (int k = 0; k < tmp->n; k++) {
-            const int a = tmp->point[k];
-            if (fabs(tmp->dist[k]) < best[a]) {
-                best[a] = fabs(tmp->dist[k]);
-                ring[a] = tmp->xm[0][k] > axis_tol;
+        while (nleft > 0) {
+            double dlo = 0.0;
+            for (int e = 0; e < nleft; e++) {
+                const int a = left[e], j = idx[a];
+                su[e] = -pu[j];
+                sv[e] = pv[j];
+                sd[e] = r[a];
+                dlo = fmin(dlo, -r[a]);
             }
+            const rs_ppoints pts = {nleft, su, sv, sd, dlo, 0};
+            int rc = profile_contacts(pc, &pts, tmp, sc, err);
+            if (rc)
+                return rc;
+            for (int k = 0; k < tmp->n; k++) {
+                const int a = left[tmp->point[k]];
+                if (fabs(tmp->dist[k]) < best[a]) {
+                    best[a] = fabs(tmp->dist[k]);
+                    ring[a] = tmp->xm[0][k] > axis_tol;
+                }
+            }
+            int keep = 0;
+            for (int e = 0; e < nleft; e++) {
+                const int a = left[e];
+                if (best[a] < INFINITY || !(r[a] < rmax[a]))
+                    continue; /* found, or none within the whole profile's reach */
+                r[a] = fmin(8.0 * r[a], rmax[a]);
+                left[keep++] = a;
+            }
+            nleft = keep;
         }
         for (int a = 0; a < n; a++)
             nring += ring[a];
@@ -240,7 +267,10 @@ static int ring_sectors(const rs_pcache *pc, const double *F, double axis_tol, i
             sd[nn] = dh[j]; /* the in-plane distance is at most the 3D one */
             map[nn++] = a;
         }
-        const rs_ppoints pts = {nn, su, sv, sd, -INFINITY, 0};
+        /* Below, a contact counts only where its 3D distance d3 >= |in-plane distance|
+         * passes: one side, on the particle side (in-plane distance >= 0); two sides,
+         * d3 <= dh. So the profile query needs no penetration deeper than that. */
+        const rs_ppoints pts = {nn, su, sv, sd, sides == 2 ? -INFINITY : 0.0, 0};
         int rc = profile_contacts(pc, &pts, tmp, sc, err);
         if (rc)
             return rc;

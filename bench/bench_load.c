@@ -19,10 +19,12 @@
  * points, each at a random point of a random segment moved by up to h along each axis,
  * queried in one block at a reach (gap_max) of 2 h, the best of 3, where h is the
  * profile's larger bounding-box side over its segment count (the saw's teeth stand h
- * apart). Profiles of more than 16384 segments keep the compact form of
- * the query data (analytic_surfaces/profile.h). Then the seconds of thread CPU time of
- * rs_surface_triangulate with 16 points around the hoop (a span of 1 for the extruded
- * shapes): the display mesh of fix wall/rigid's vtk output and rigidsurf-frames --vtk. */
+ * apart); "wide" the same at a reach of 50 h, beyond what the bucket lists of the stored
+ * form serve (about 8 segment spacings), so its points walk the tree. Profiles of more than
+ * 16384 segments keep the compact form of the query data (analytic_surfaces/profile.h).
+ * Then the seconds of thread CPU time of rs_surface_triangulate with 16 points around the
+ * hoop (a span of 1 for the extruded shapes): the display mesh of fix wall/rigid's vtk
+ * output and rigidsurf-frames --vtk. */
 #define _GNU_SOURCE
 #include "bench_clock.h"
 #include "rigidsurf/surface.h"
@@ -93,7 +95,7 @@ static void make(const char *shape, int n)
 }
 
 /* ns per point of one block query around the profile (see the top of this file). */
-static double query_ns(const rs_surface *s)
+static double query_ns(const rs_surface *s, double reach_h)
 {
     enum { NP = 20000 };
     static double x[NP], y[NP], z[NP];
@@ -122,7 +124,7 @@ static double query_ns(const rs_surface *s)
             y[i] = 0.0;
         }
     }
-    rs_query q = {NP, {x, y, z, NULL}, NULL, 2.0 * h, -2.0 * h};
+    rs_query q = {NP, {x, y, z, NULL}, NULL, reach_h * h, -reach_h * h};
     rs_contacts c = {0};
     double best = INFINITY;
     for (int r = 0; r < 3; r++) {
@@ -169,15 +171,15 @@ int main(int argc, char **argv)
         }
     }
     printf("build: %s %s\n", RS_BUILD_TYPE, RS_BUILD_FLAGS);
-    printf("%-8s %9s %12s %14s %14s %14s\n", "shape", "segments", "load s", "bytes/segment",
-           "query ns/pt", "triangulate s");
+    printf("%-8s %9s %12s %14s %14s %12s %14s\n", "shape", "segments", "load s",
+           "bytes/segment", "query ns/pt", "wide ns/pt", "triangulate s");
     const char *shapes[] = {"line", "polygon", "saw", "spiral", "arcs", "drum"};
     for (int si = 0; si < 6; si++) {
         if (only && strcmp(only, shapes[si]))
             continue;
         for (int n = 1000; n <= nmax; n *= 10) {
             make(shapes[si], n);
-            double best = INFINITY, qbest = INFINITY, tbest = INFINITY;
+            double best = INFINITY, qbest = INFINITY, wbest = INFINITY, tbest = INFINITY;
             size_t bytes = 0;
             const int reps = n < 1000000 ? 3 : 1;
             for (int r = 0; r < reps; r++) {
@@ -194,13 +196,14 @@ int main(int argc, char **argv)
                 }
                 const struct mallinfo2 m1 = mallinfo2();
                 bytes = (m1.uordblks + m1.hblkhd) - (m0.uordblks + m0.hblkhd);
-                qbest = fmin(qbest, query_ns(&s));
+                qbest = fmin(qbest, query_ns(&s, 2.0));
+                wbest = fmin(wbest, query_ns(&s, 50.0));
                 tbest = fmin(tbest, triangulate_s(&s));
                 rs_surface_free(&s);
                 best = fmin(best, t);
             }
-            printf("%-8s %9d %12.4f %14.0f %14.0f %14.4f\n", shapes[si], n, best,
-                   (double)bytes / n, qbest, tbest);
+            printf("%-8s %9d %12.4f %14.0f %14.0f %12.0f %14.4f\n", shapes[si], n, best,
+                   (double)bytes / n, qbest, wbest, tbest);
             fflush(stdout);
         }
     }

@@ -185,19 +185,22 @@ static void test_query_block_open_lines_and_arcs_is_brute_force_closest(void)
         0);
 }
 
-/* A profile of 24000 segments (more than RS_PC_LARGE: one bucket per segment), turned
- * by 30 degrees in its plane: tall teeth, collinear runs (LINE chains) and arcs, queried
- * at a reach of a few segment lengths, within the levels of its bucket index. Each point
- * near the profile gets, as its nearest contact, its brute-force distance over all
- * segments; a point beyond reach gets none. */
-static void test_query_large_profile_is_brute_force_closest(void)
+/* A profile of nseg segments, turned by 30 degrees in its plane: tall teeth, collinear
+ * runs (LINE chains) and arcs, queried one-sided at a reach of a few segment lengths,
+ * and with SIDES=2 at a reach of 1200 (one-sided, a point far behind an open end is
+ * nearest to that end, which owns only the particle side). Each point near the profile
+ * gets, as its nearest contact, its brute-force distance over all segments; a point beyond
+ * reach gets none. */
+static void check_large_profile(int nseg, int sides)
 {
-    enum { NSEG = 24000, N = 4000 };
-    static char deck[NSEG * 80 + 256];
-    const double h = 1.0 / NSEG, c30 = cos(RS_PI / 6), s30 = sin(RS_PI / 6);
+    enum { N = 4000, MAXSEG = 24000 };
+    static char deck[MAXSEG * 80 + 256];
+    ENSURE(nseg <= MAXSEG);
+    const double h = 1.0 / nseg, c30 = cos(RS_PI / 6), s30 = sin(RS_PI / 6);
     size_t o = (size_t)snprintf(deck, sizeof deck,
-                                "*SURFACE, TYPE=SEGMENTS, NAME=big\nSTART, 0, 0\n");
-    for (int k = 1; k <= NSEG; k++) {
+                                "*SURFACE, TYPE=SEGMENTS, NAME=big%s\nSTART, 0, 0\n",
+                                sides == 2 ? ", SIDES=2" : "");
+    for (int k = 1; k <= nseg; k++) {
         const int part = (k / 1000) % 3;
         double P[2] = {k * h, part == 0 && k % 2 ? 4.0 * h : 0.0},
                C[2] = {(k - 0.5) * h, (k % 2 ? 1.0 : -1.0) * h};
@@ -211,8 +214,9 @@ static void test_query_large_profile_is_brute_force_closest(void)
     }
     rs_surface s;
     ENSURE(parse(deck, &s) == 0);
-    ENSURE(s.profile.nseg == NSEG);
-    for (int far = 0; far < 2; far++) {
+    ENSURE(s.profile.nseg == nseg);
+    ENSURE((((const rs_pcache *)s.impl)->ps == NULL) == (nseg > RS_PC_LARGE));
+    for (int far = sides - 1; far < sides; far++) {
         const double reach = far ? 1200.0 * h : 3.0 * h;
         const int m = far ? 300 : N;
         static double x[N], y[N], z[N];
@@ -244,6 +248,16 @@ static void test_query_large_profile_is_brute_force_closest(void)
         rs_contacts_free(&c);
     }
     rs_surface_free(&s);
+}
+
+/* The compact form (more than RS_PC_LARGE segments), and the stored form at 3000
+ * segments, whose bucket lists serve reaches up to a few segment lengths: the reach of
+ * 1200 walks its tree. */
+static void test_query_large_profile_is_brute_force_closest(void)
+{
+    check_large_profile(24000, 1);
+    check_large_profile(24000, 2);
+    check_large_profile(3000, 2);
 }
 
 /* The profile-plane contacts of every point of pts through pc (the loop of query.c). */
