@@ -464,18 +464,23 @@ int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double
     if (!(reach >= 0.0) || dlo > dhi)
         return 0;
     /* the candidates: one bucket's list at the first level whose margin covers reach,
-     * else (and in the compact form) the tree's */
+     * else every segment of a small profile, else (and in the compact form) the tree's */
     int l = 0;
     while (pc->ps && l < pc->nlevel && pc->margin[l] < reach)
         l++;
-    if (!pc->ps || l == pc->nlevel) {
+    if (!pc->ps || (l == pc->nlevel && n > RS_PC_SCAN)) {
         near_tree(pc, px, py, reach, sc, &nnear, &neg);
     } else {
-        double c = pc->axis ? py : px;
-        double f = (c - pc->lo) * pc->inv_w, top = (double)(pc->nbucket - 1);
-        int b = f > 0.0 ? (int)(f < top ? f : top) : 0;
-        const int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
-        for (const int *list = pc->boff + bs[b]; list < pc->boff + bs[b + 1]; list++)
+        const int *list = pc->boff + pc->all_at, *end = list + n;
+        if (l < pc->nlevel) {
+            double c = pc->axis ? py : px;
+            double f = (c - pc->lo) * pc->inv_w, top = (double)(pc->nbucket - 1);
+            int b = f > 0.0 ? (int)(f < top ? f : top) : 0;
+            const int *bs = pc->bstart + (size_t)l * (size_t)(pc->nbucket + 1);
+            list = pc->boff + bs[b];
+            end = pc->boff + bs[b + 1];
+        }
+        for (; list < end; list++)
             near_seg(pc, &pc->ps[rs_pcache_seg(*list)], px, py, reach, sc, &nnear, &neg);
     }
     if (pc->sides == 1 && neg) {
@@ -565,6 +570,17 @@ RS_INLINE int put_line(const pout *o, int nh, int k, const rs_pseg *q, int pt, d
     return nh + 1;
 }
 
+/* The contacts of one point by rs_pcache_hits into slots nh onwards (room reserved);
+ * returns the new count. */
+static int put_hits(const rs_pcache *pc, const pout *o, int nh, int pt, double px,
+                    double py, double dlo, double dhi, rs_pscratch *sc)
+{
+    const int nk = rs_pcache_hits(pc, px, py, dlo, dhi, sc);
+    for (int k = 0; k < nk; k++)
+        put_hit(o, nh + k, pt, &sc->hits[k]);
+    return nh + nk;
+}
+
 /* Points searched per pre-pass of rs_pcache_points. */
 enum { PP_SUB = 64 };
 
@@ -573,8 +589,9 @@ enum { PP_SUB = 64 };
  * order, each followed at once by its contacts (vertex k, segment k, closing vertex),
  * which is the order of rs_pcache_hits when no Voronoi pair can drop a face. A
  * penetrated face with one side (the Voronoi pass), the start vertex of a closed
- * profile (its other segment is the last near one) and a reach beyond the last level
- * (the tree's walk) hand the point to rs_pcache_hits. */
+ * profile (its other segment is the last near one) and, in a profile of more than
+ * RS_PC_SCAN segments, a reach beyond the last level (the tree's walk) hand the point to
+ * rs_pcache_hits. */
 /* Vertex k, the start of segment k (prev: the near segment before k in the list, -1
  * for none): emitted when the segment before it is near too, or when it starts an open
  * profile. Returns 1, having emitted nothing, for the start vertex of a closed profile,
@@ -773,11 +790,11 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                 bc = l < pc->nlevel ? pc->bchain + (size_t)l * (size_t)pc->nbucket : NULL;
                 lreach = rch[j];
             }
-            /* beyond the last level: the per-point path walks the tree, with room for
-             * every segment */
+            /* beyond the last level: every segment, walked here in a small profile, else
+             * by the per-point path's tree (-1) with room for every segment */
             lb[j] = bs ? bs[b] : all;
             le[j] = bs ? bs[b + 1] : all + n;
-            lc[j] = bc ? bc[b] : -1;
+            lc[j] = bc ? bc[b] : n > RS_PC_SCAN ? -1 : 0;
             bound += 2 * (le[j] - lb[j]) + 1;
             if (bound > cap) {
                 stop = j;
@@ -790,8 +807,12 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                 continue;
             const double px = pu[i + j], py = pv[i + j], dhi = pdh[i + j], reach = rch[j];
             const int k0 = nh, pt = base + i + j;
-            int prev = -1, slow = lc[j] < 0;
-            if (lc[j] > 0) {
+            int prev = -1, slow = 0;
+            if (lc[j] < 0) {
+                nh = put_hits(pc, &o, nh, pt, px, py, dlo, dhi, sc);
+                continue;
+            }
+            if (lc[j]) {
                 /* A LINE chain (rs_pcache_build): the face that owns the point, on its
                  * particle side (either side with SIDES=2), is its only contact; a
                  * point no face owns, or behind a one-sided face, takes the per-point
@@ -868,11 +889,8 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
                     nh = put_vertex(pc, &o, nh, n, pt, px, py, dlo, dhi);
                 prev = k;
             }
-            if (slow) {
-                nh = k0 + rs_pcache_hits(pc, px, py, dlo, dhi, sc);
-                for (int k = k0; k < nh; k++)
-                    put_hit(&o, k, pt, &sc->hits[k - k0]);
-            }
+            if (slow)
+                nh = put_hits(pc, &o, k0, pt, px, py, dlo, dhi, sc);
         }
         i += stop;
         if (stop < c) {

@@ -140,7 +140,8 @@ typedef struct rs_pvert {
  * spreads the segments best). Bucket b covers [lo + b w, lo + (b + 1) w). Level l
  * lists, in profile order, the segments whose bounding box comes within margin[l] of
  * the bucket, so a point within reach <= margin[l] of a segment finds it in its own
- * bucket's list at level l. Reaches beyond the last level walk the tree.
+ * bucket's list at level l. Reaches beyond the last level walk the tree, or scan every
+ * segment in a profile of at most RS_PC_SCAN.
  *
  * Compact (larger profiles): no per-segment records and no buckets. A query walks the
  * tree and makes the records of the segments it meets from the profile
@@ -151,6 +152,7 @@ typedef struct rs_pvert {
 #define RS_PC_BUCKETS_PER_SEG 4
 #define RS_PC_LARGE 16384
 #define RS_PC_LEAF 8
+#define RS_PC_SCAN 64
 #define RS_PC_MAXDEPTH 40
 typedef struct rs_pcache {
     int nseg, nvert, closed, sides;
@@ -168,8 +170,8 @@ typedef struct rs_pcache {
     int *bstart;                   ///< level l, bucket b: [l (nbucket + 1) + b], into boff
     int *bchain; ///< level l, bucket b: [l nbucket + b]: 0, 1 for a LINE chain, 2 + k
                  ///< for a chain whose points within the level's margin segment k owns
-    int *boff;   ///< the levels' lists, then every segment (from all_at: the room a
-                 ///< reach beyond the last level may need), as byte offsets into ps
+    int *boff;   ///< the levels' lists, then every segment (from all_at: the list of a
+                 ///< reach beyond the last level), as byte offsets into ps
     int all_at;
     double *tree; ///< the boxes (xmin, xmax, ymin, ymax) of the tree's every level
     int ntlev;    ///< levels of the tree; level l starts at box tlev[l]
