@@ -7,7 +7,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Profile polyline: arcs get one node per 2 pi / nh of sweep, parabolas 16 pieces. */
+/* Profile polyline: arcs get one node per 2 pi / nh of sweep, parabolas 16 pieces, and a
+ * run of LINE pieces joined by SMOOTH vertices (collinear) one piece: its inner
+ * vertices add nothing to the picture. */
 static int polyline(const rs_profile *p, int nh, double **out, int *count)
 {
     int n = 1;
@@ -28,6 +30,9 @@ static int polyline(const rs_profile *p, int nh, double **out, int *count)
         int np = g->type == RS_LINE    ? 1
                  : g->type == RS_PARAB ? 16
                                        : (int)ceil(fabs(g->sweep) / (2.0 * RS_PI / nh)) + 1;
+        if (g->type == RS_LINE && k + 1 < p->nseg && p->seg[k + 1].type == RS_LINE &&
+            p->vkind && p->vkind[k + 1] == RS_VTX_SMOOTH)
+            continue; /* vertex k + 1 lies on the line through the run */
         for (int i = 1; i <= np; i++) {
             double x[2], t[2], kap;
             if (i == np) {

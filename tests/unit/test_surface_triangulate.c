@@ -1,5 +1,6 @@
 /* Display triangulation: every node lies on the surface and the node order of every
- * triangle gives the outward normal (the side the particles live on). */
+ * triangle gives the outward normal (the side the particles live on); a run of
+ * collinear LINE pieces shows as one piece. */
 #include "rigidsurf/surface.h"
 #include "rs_test.h"
 
@@ -102,6 +103,40 @@ static void test_surface_triangulate_bad_arguments(void)
     rs_surface_free(&s);
 }
 
+/* A drum whose mantle is 500 collinear LINE pieces shows as the drum of one mantle LINE:
+ * the same nodes and triangles (the pieces' inner vertices lie on the mantle). */
+static void test_surface_triangulate_collinear_run_is_one_piece(void)
+{
+    enum { NP = 500 };
+    static char deck[NP * 48 + 256];
+    int o = snprintf(deck, sizeof deck,
+                     "*SURFACE, TYPE=REVOLUTION, NAME=d\n0,0,0, 0,0,1\nSTART, 0, 0\n"
+                     "LINE, 0.15, 0\n");
+    for (int k = 1; k <= NP; k++)
+        o += snprintf(deck + o, sizeof deck - (size_t)o, "LINE, 0.15, %.17g\n",
+                      0.1 * k / NP);
+    snprintf(deck + o, sizeof deck - (size_t)o, "LINE, 0, 0.1\n");
+    const char *one = "*SURFACE, TYPE=REVOLUTION, NAME=d\n0,0,0, 0,0,1\nSTART, 0, 0\n"
+                      "LINE, 0.15, 0\nLINE, 0.15, 0.1\nLINE, 0, 0.1\n";
+    rs_surface s[2];
+    rs_trimesh m[2];
+    rs_error e;
+    ENSURE(rs_surface_parse(deck, "tri", NULL, &s[0], &e) == 0 &&
+           s[0].profile.nseg == NP + 2);
+    ENSURE(rs_surface_parse(one, "tri", NULL, &s[1], &e) == 0);
+    for (int i = 0; i < 2; i++)
+        ENSURE(rs_surface_triangulate(&s[i], 1.0, 24, &m[i], &e) == 0);
+    ENSURE(m[0].nvert == m[1].nvert && m[0].ntri == m[1].ntri);
+    for (int v = 0; v < 3 * m[0].nvert; v++)
+        ENSURE_NEAR(m[0].xyz[v], m[1].xyz[v], 1e-15);
+    for (int t = 0; t < 3 * m[0].ntri; t++)
+        ENSURE(m[0].tri[t] == m[1].tri[t]);
+    for (int i = 0; i < 2; i++) {
+        rs_trimesh_free(&m[i]);
+        rs_surface_free(&s[i]);
+    }
+}
+
 int main(void)
 {
     RS_RUN(test_surface_triangulate_segments_outward);
@@ -109,5 +144,6 @@ int main(void)
     RS_RUN(test_surface_triangulate_bounded_cylinder_outward);
     RS_RUN(test_surface_triangulate_revolution_outward);
     RS_RUN(test_surface_triangulate_bad_arguments);
+    RS_RUN(test_surface_triangulate_collinear_run_is_one_piece);
     return rs_test_summary();
 }
