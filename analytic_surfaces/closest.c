@@ -109,17 +109,44 @@ static int parab_min(const rs_pseg *q, double px, double py, int in_start, int i
     return found;
 }
 
+/* Bytes of scratch for cap near segments (hits: at most 2 cap + 1, profile.h). */
+static size_t scratch_bytes(size_t cap)
+{
+    size_t ints = cap * sizeof(int) + cap;
+    ints = (ints + 15) & ~(size_t)15;
+    return ints + (3 * cap + 1) * sizeof(rs_hit2) + 64;
+}
+
+/* The scratch's capacity: every segment in the stored form, at first RS_PSCRATCH_CAP in
+ * the compact one (rs_pscratch_grow). */
+static int scratch_cap(const rs_pcache *pc)
+{
+    return pc->ps || pc->nseg <= RS_PSCRATCH_CAP ? pc->nseg : RS_PSCRATCH_CAP;
+}
+
 size_t rs_pscratch_bytes(const rs_pcache *pc)
 {
-    size_t n = (size_t)pc->nseg, nv = (size_t)pc->nvert;
+    return scratch_bytes((size_t)scratch_cap(pc));
+}
+
+/* The arrays of a scratch of capacity cap in block m. */
+static void scratch_carve(rs_pscratch *sc, unsigned char *m, int cap)
+{
+    m = (unsigned char *)(((uintptr_t)m + 15u) & ~(uintptr_t)15u);
+    size_t n = (size_t)cap;
     size_t ints = n * sizeof(int) + n;
     ints = (ints + 15) & ~(size_t)15;
-    return ints + (2 * n + nv) * sizeof(rs_hit2) + 64;
+    sc->cap = cap;
+    sc->near = (int *)m;
+    sc->state = (unsigned char *)(sc->near + n);
+    sc->cand = (rs_hit2 *)(m + ints);
+    sc->hits = sc->cand + n;
 }
 
 int rs_pscratch_init(rs_pscratch *sc, const rs_pcache *pc, void *stack, size_t stack_bytes)
 {
-    size_t need = rs_pscratch_bytes(pc);
+    const int cap = scratch_cap(pc);
+    size_t need = scratch_bytes((size_t)cap);
     unsigned char *m = stack;
     sc->heap = NULL;
     if (!m || stack_bytes < need) {
@@ -128,15 +155,19 @@ int rs_pscratch_init(rs_pscratch *sc, const rs_pcache *pc, void *stack, size_t s
             return RS_ERR_NOMEM;
         sc->heap = m;
     }
-    uintptr_t a = ((uintptr_t)m + 15u) & ~(uintptr_t)15u;
-    m = (unsigned char *)a;
-    size_t n = (size_t)pc->nseg;
-    size_t ints = n * sizeof(int) + n;
-    ints = (ints + 15) & ~(size_t)15;
-    sc->near = (int *)m;
-    sc->state = (unsigned char *)(sc->near + n);
-    sc->cand = (rs_hit2 *)(m + ints);
-    sc->hits = sc->cand + n;
+    scratch_carve(sc, m, cap);
+    return RS_OK;
+}
+
+int rs_pscratch_grow(rs_pscratch *sc, const rs_pcache *pc)
+{
+    const int cap = sc->cap > pc->nseg / 4 ? pc->nseg : 4 * sc->cap;
+    unsigned char *m = malloc(scratch_bytes((size_t)cap));
+    if (!m)
+        return RS_ERR_NOMEM;
+    free(sc->heap);
+    sc->heap = m;
+    scratch_carve(sc, m, cap);
     return RS_OK;
 }
 
@@ -368,6 +399,10 @@ RS_INLINE void near_seg(const rs_pcache *pc, const rs_pseg *q, double px, double
     if (q->box[0] - px > reach || px - q->box[1] > reach || q->box[2] - py > reach ||
         py - q->box[3] > reach)
         return;
+    if (*nnear == sc->cap) {
+        sc->full = 1; /* the compact form's scratch: rs_pcache_hits asks for more */
+        return;
+    }
     const int k = q->self;
     rs_hit2 *h = &sc->cand[*nnear];
     int hit;
@@ -463,6 +498,7 @@ int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double
     double reach = (pc->sides == 2 || dhi > -dlo) ? dhi : -dlo;
     if (!(reach >= 0.0) || dlo > dhi)
         return 0;
+    sc->full = 0;
     /* the candidates: one bucket's list at the first level whose margin covers reach,
      * else every segment of a small profile, else (and in the compact form) the tree's */
     int l = 0;
@@ -483,6 +519,9 @@ int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double
         for (; list < end; list++)
             near_seg(pc, &pc->ps[rs_pcache_seg(*list)], px, py, reach, sc, &nnear, &neg);
     }
+    if (sc->full) /* more segments within reach than the scratch holds: again, larger */
+        return rs_pscratch_grow(sc, pc) == RS_OK ? rs_pcache_hits(pc, px, py, dlo, dhi, sc)
+                                                 : -1;
     if (pc->sides == 1 && neg) {
         for (int i = 0; i < nnear; i++) {
             int k = sc->near[i];
@@ -575,6 +614,7 @@ RS_INLINE int put_line(const pout *o, int nh, int k, const rs_pseg *q, int pt, d
 static int put_hits(const rs_pcache *pc, const pout *o, int nh, int pt, double px,
                     double py, double dlo, double dhi, rs_pscratch *sc)
 {
+    /* >= 0: the stored form's scratch holds every segment, so it never grows */
     const int nk = rs_pcache_hits(pc, px, py, dlo, dhi, sc);
     for (int k = 0; k < nk; k++)
         put_hit(o, nh + k, pt, &sc->hits[k]);
@@ -724,6 +764,10 @@ static int points_each(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_con
                     out->nrm[0], out->nrm[1],  out->dist,  out->curv[0]};
     for (; i < pts->n; i++) {
         const int nk = rs_pcache_hits(pc, pts->u[i], pts->v[i], pts->dlo, pts->dhi[i], sc);
+        if (nk < 0) {
+            *need = -1; /* out of memory for the scratch */
+            return i;
+        }
         if (nk > out->cap - out->n) {
             *need = nk;
             return i;

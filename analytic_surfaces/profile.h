@@ -209,8 +209,13 @@ typedef struct rs_hit2 {
     double kappa; ///< profile curvature, > 0 convex toward the point; 0 at vertices
 } rs_hit2;
 
-/// Scratch for rs_pcache_hits, sized by the profile. Stack storage covers small profiles.
+/// Scratch for rs_pcache_hits, sized by the profile: its every segment in the stored
+/// form; in the compact form RS_PSCRATCH_CAP at first, grown (rs_pscratch_grow) when
+/// more segments come within a point's reach. Stack storage covers small profiles.
+#define RS_PSCRATCH_CAP 4096
 typedef struct rs_pscratch {
+    int cap;              ///< near segments it holds
+    int full;             ///< the last walk met more than cap
     int *near;            ///< nseg: the segments within reach, in profile order
     unsigned char *state; ///< nseg: per near entry, hit / drop flags
     rs_hit2 *cand;        ///< nseg: per near entry, its candidate contact
@@ -219,13 +224,15 @@ typedef struct rs_pscratch {
 } rs_pscratch;
 
 int rs_pscratch_init(rs_pscratch *sc, const rs_pcache *pc, void *stack, size_t stack_bytes);
+/// A larger scratch (4 times, at most every segment) on the heap; RS_ERR_NOMEM leaves sc.
+int rs_pscratch_grow(rs_pscratch *sc, const rs_pcache *pc);
 void rs_pscratch_free(rs_pscratch *sc);
 /// Bytes of scratch a profile needs.
 size_t rs_pscratch_bytes(const rs_pcache *pc);
 
 /// Contacts of point (px, py) whose distance lies in [dlo, dhi] (dhi = gap_max + radius,
 /// dlo = dist_min), in profile order (vertex k before segment k). Returns the count;
-/// the hits are in sc->hits.
+/// the hits are in sc->hits. -1: out of memory for a larger scratch.
 int rs_pcache_hits(const rs_pcache *pc, double px, double py, double dlo, double dhi,
                    rs_pscratch *sc);
 
@@ -242,7 +249,8 @@ typedef struct rs_ppoints {
 /// profile-plane form: xm[0..1] the closest point, nrm[0..1] the normal, dist, curv[0]
 /// the profile curvature, feature and point (base + index); the other arrays are left
 /// for the caller. Returns pts->n when done; it stops before a point for which out may
-/// lack room, returning that point's index with *need set to the room it asks for.
+/// lack room, returning that point's index with *need set to the room it asks for, or
+/// to -1 when the scratch could not grow (out of memory).
 int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_contacts *out,
                      rs_pscratch *sc, int *need);
 

@@ -155,6 +155,8 @@ static int profile_contacts(const rs_pcache *pc, const rs_ppoints *pts, rs_conta
         i = rs_pcache_points(pc, pts, i, tmp, sc, &need);
         if (i >= pts->n)
             return RS_OK;
+        if (need < 0)
+            return rs_error_set(err, RS_ERR_NOMEM, "out of memory for the query scratch");
         int rc = rs_contacts_reserve(tmp, 2 * (tmp->n + need) + 64, err);
         if (rc)
             return rc;
@@ -441,6 +443,11 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
             i = rs_pcache_points(pc, &pts, i, out, &sc, &need);
             if (i >= m)
                 break;
+            if (need < 0) {
+                out->n = k0;
+                rc = rs_error_set(err, RS_ERR_NOMEM, "out of memory for the query scratch");
+                goto done;
+            }
             if ((rc = rs_contacts_reserve(out, 2 * (out->n + need) + 64, err)) != RS_OK) {
                 out->n = k0; /* no contact of this chunk is left half mapped */
                 goto done;

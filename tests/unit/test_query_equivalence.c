@@ -187,7 +187,8 @@ static void test_query_block_open_lines_and_arcs_is_brute_force_closest(void)
 
 /* A profile of nseg segments, turned by 30 degrees in its plane: tall teeth, collinear
  * runs (LINE chains) and arcs, queried one-sided at a reach of a few segment lengths,
- * and with SIDES=2 at a reach of 1200 (one-sided, a point far behind an open end is
+ * and with SIDES=2 at a reach of 1200, or 6000 in the compact form, where points meet
+ * more segments than its first scratch holds (one-sided, a point far behind an open end is
  * nearest to that end, which owns only the particle side). Each point near the profile
  * gets, as its nearest contact, its brute-force distance over all segments; a point beyond
  * reach gets none. */
@@ -217,7 +218,7 @@ static void check_large_profile(int nseg, int sides)
     ENSURE(s.profile.nseg == nseg);
     ENSURE((((const rs_pcache *)s.impl)->ps == NULL) == (nseg > RS_PC_LARGE));
     for (int far = sides - 1; far < sides; far++) {
-        const double reach = far ? 1200.0 * h : 3.0 * h;
+        const double reach = (far ? (nseg > RS_PC_LARGE ? 6000.0 : 1200.0) : 3.0) * h;
         const int m = far ? 300 : N;
         static double x[N], y[N], z[N];
         for (int i = 0; i < m; i++) {
