@@ -237,8 +237,10 @@ static int ring_sectors(const rs_pcache *pc, const double *F, double axis_tol, i
             if (rc)
                 return rc;
             for (int k = 0; k < tmp->n; k++) {
+                /* within the point's own reach only (one side, the batch's dlo may
+                 * reach deeper for it, where a nearer contact above could be missed) */
                 const int a = left[tmp->point[k]];
-                if (fabs(tmp->dist[k]) < best[a]) {
+                if (fabs(tmp->dist[k]) <= r[a] && fabs(tmp->dist[k]) < best[a]) {
                     best[a] = fabs(tmp->dist[k]);
                     ring[a] = tmp->xm[0][k] > axis_tol;
                 }
