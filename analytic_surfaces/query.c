@@ -203,57 +203,35 @@ static int ring_sectors(const rs_pcache *pc, const double *F, double axis_tol, i
             idx[n++] = j;
     if (n == 0)
         return RS_OK;
-    /* The gate: the opposite half-plane's closest profile point, at any distance. It
-     * is searched within a reach that grows by 8 until a contact is found: the nearest
-     * contact within reach r is the nearest of all when there is one. A point's search
-     * starts at 2 u + its reach (its own closest point, when within reach, is that far
-     * from the mirror point at most) and ends at the farthest corner of the profile's
-     * box, within which the profile lies. */
+    /* The gate: whether the opposite half-plane's closest profile point lies off the
+     * axis. Sector s queries the point (u cos a, v) of its half-plane, within u (1 + cos
+     * a) <= 2 u of the mirror point (-u, v); so when a sector has a contact within the
+     * reach dh, the mirror point has a profile point within 2 u + dh, and its nearest
+     * contact within that reach is its nearest of all. When it has none there, no
+     * sector has a contact, and the ring is left out. */
     {
-        double r[CH], rmax[CH], best[CH];
-        int left[CH], nleft = n;
-        const double *b = pc->box;
+        double r[CH], best[CH], dlo = 0.0;
         for (int a = 0; a < n; a++) {
             const int j = idx[a];
-            const double fu = fmax(fabs(-pu[j] - b[0]), fabs(-pu[j] - b[1]));
-            const double fv = fmax(fabs(pv[j] - b[2]), fabs(pv[j] - b[3]));
-            rmax[a] = 1.01 * sqrt(fu * fu + fv * fv) + 1e-12 * pc->size;
-            r[a] = fmin(2.0 * pu[j] + dh[j], rmax[a]);
+            su[a] = -pu[j];
+            sv[a] = pv[j];
+            sd[a] = r[a] = 2.0 * pu[j] + dh[j];
+            dlo = fmin(dlo, -r[a]);
             best[a] = INFINITY;
             ring[a] = 0;
-            left[a] = a;
         }
-        while (nleft > 0) {
-            double dlo = 0.0;
-            for (int e = 0; e < nleft; e++) {
-                const int a = left[e], j = idx[a];
-                su[e] = -pu[j];
-                sv[e] = pv[j];
-                sd[e] = r[a];
-                dlo = fmin(dlo, -r[a]);
+        const rs_ppoints pts = {n, su, sv, sd, dlo, 0};
+        int rc = profile_contacts(pc, &pts, tmp, sc, err);
+        if (rc)
+            return rc;
+        for (int k = 0; k < tmp->n; k++) {
+            /* within the point's own reach only (one side, the batch's depth limit is the
+             * deepest point's, and a contact found deeper could hide a nearer one) */
+            const int a = tmp->point[k];
+            if (fabs(tmp->dist[k]) <= r[a] && fabs(tmp->dist[k]) < best[a]) {
+                best[a] = fabs(tmp->dist[k]);
+                ring[a] = tmp->xm[0][k] > axis_tol;
             }
-            const rs_ppoints pts = {nleft, su, sv, sd, dlo, 0};
-            int rc = profile_contacts(pc, &pts, tmp, sc, err);
-            if (rc)
-                return rc;
-            for (int k = 0; k < tmp->n; k++) {
-                /* within the point's own reach only (one side, the batch's dlo may
-                 * reach deeper for it, where a nearer contact above could be missed) */
-                const int a = left[tmp->point[k]];
-                if (fabs(tmp->dist[k]) <= r[a] && fabs(tmp->dist[k]) < best[a]) {
-                    best[a] = fabs(tmp->dist[k]);
-                    ring[a] = tmp->xm[0][k] > axis_tol;
-                }
-            }
-            int keep = 0;
-            for (int e = 0; e < nleft; e++) {
-                const int a = left[e];
-                if (best[a] < INFINITY || !(r[a] < rmax[a]))
-                    continue; /* found, or none within the whole profile's reach */
-                r[a] = fmin(8.0 * r[a], rmax[a]);
-                left[keep++] = a;
-            }
-            nleft = keep;
         }
         for (int a = 0; a < n; a++)
             nring += ring[a];
