@@ -2,7 +2,8 @@
  * contains the axis, in an outlet narrower than itself, touches the wall in every
  * sector, each contact at the 3D distance from the sphere's centre to that sector's
  * closest point (law of cosines for a pipe); where the surface closes on the axis (a
- * cap, a bowl) the sphere keeps its one contact. */
+ * cap, a bowl) the sphere keeps its one contact; and a sphere's contacts within its
+ * radius do not depend on how far beyond it the query reaches. */
 #include "rs_test.h"
 #include "rs_test_geom.h"
 
@@ -120,11 +121,63 @@ static void test_ring_points_have_one_contact(void)
     rs_surface_free(&s);
 }
 
+/* The query is monotone in its reach: spheres at random near the axis of hoppers with an
+ * outlet narrower than they are (one side and two) get, with gap_max = 0, exactly the
+ * contacts they get with a gap_max of 10 sphere radii that lie within their radius, ring
+ * sectors included, value for value and in the same order. */
+static void test_ring_contacts_do_not_depend_on_the_reach(void)
+{
+    static const char *decks[] = {
+        "*SURFACE, TYPE=REVOLUTION, NAME=h\n0,0,0, 0,0,1\nSTART, 0.003, 0\n"
+        "LINE, 0.05, 0.05\nLINE, 0.05, 0.2\n",
+        "*SURFACE, TYPE=REVOLUTION, NAME=h2, SIDES=2\n0,0,0, 0,0,1\nSTART, 0.003, 0\n"
+        "LINE, 0.05, 0.05\nLINE, 0.05, 0.2\n",
+        "*SURFACE, TYPE=REVOLUTION, NAME=p\n0,0,0, 0,0,1\nSTART, 0.002, 0\n"
+        "PARAB, 0.01, 0.02, 0.03, 0.05\nLINE, 0.03, 0.1\n"};
+    enum { N = 2000 };
+    static double x[N], y[N], z[N], r[N];
+    int rings = 0;
+    for (int d = 0; d < 3; d++) {
+        rs_surface s;
+        ENSURE(parse(decks[d], &s) == 0);
+        for (int i = 0; i < N; i++) {
+            const double R = 0.001 + 0.01 * urand(), rr = 1.2 * R * urand();
+            const double th = 2.0 * RS_PI * urand();
+            x[i] = rr * cos(th);
+            y[i] = rr * sin(th);
+            z[i] = -0.02 + 0.15 * urand();
+            r[i] = R;
+        }
+        rs_contacts near = {0}, far = {0};
+        rs_query q0 = {N, {x, y, z, r}, NULL, 0.0, -INFINITY};
+        rs_query q1 = {N, {x, y, z, r}, NULL, 0.1, -INFINITY};
+        ENSURE(rs_surface_query(&s, &q0, &near, NULL) == 0);
+        ENSURE(rs_surface_query(&s, &q1, &far, NULL) == 0);
+        int k = 0;
+        for (int e = 0; e < far.n; e++) {
+            if (!(far.dist[e] <= r[far.point[e]]))
+                continue;
+            ENSURE(k < near.n && near.point[k] == far.point[e]);
+            ENSURE(near.feature[k] == far.feature[e] && near.dist[k] == far.dist[e]);
+            for (int a = 0; a < 3; a++)
+                ENSURE(near.xm[a][k] == far.xm[a][e] && near.nrm[a][k] == far.nrm[a][e]);
+            rings += near.feature[k] >= RS_SECTOR_STRIDE;
+            k++;
+        }
+        ENSURE(k == near.n);
+        rs_contacts_free(&near);
+        rs_contacts_free(&far);
+        rs_surface_free(&s);
+    }
+    ENSURE(rings > 100);
+}
+
 int main(void)
 {
     RS_RUN(test_ring_sphere_on_the_axis_of_a_narrow_pipe);
     RS_RUN(test_ring_sphere_off_the_axis_keeps_the_sectors_in_reach);
     RS_RUN(test_ring_none_where_the_surface_closes_on_the_axis);
     RS_RUN(test_ring_points_have_one_contact);
+    RS_RUN(test_ring_contacts_do_not_depend_on_the_reach);
     return rs_test_summary();
 }
