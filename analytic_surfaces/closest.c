@@ -609,16 +609,24 @@ RS_INLINE int put_line(const pout *o, int nh, int k, const rs_pseg *q, int pt, d
     return nh + 1;
 }
 
-/* The contacts of one point by rs_pcache_hits into slots nh onwards (room reserved);
- * returns the new count. */
-static int put_hits(const rs_pcache *pc, const pout *o, int nh, int pt, double px,
-                    double py, double dlo, double dhi, rs_pscratch *sc)
+/* The nk contacts rs_pcache_hits left in sc->hits, of point pt, into slots nh onwards
+ * (room reserved); returns the new count. */
+static int put_found(const pout *o, int nh, int pt, const rs_pscratch *sc, int nk)
 {
-    /* >= 0: the stored form's scratch holds every segment, so it never grows */
-    const int nk = rs_pcache_hits(pc, px, py, dlo, dhi, sc);
     for (int k = 0; k < nk; k++)
         put_hit(o, nh + k, pt, &sc->hits[k]);
     return nh + nk;
+}
+
+/* The contacts of one point by rs_pcache_hits into slots nh onwards (room reserved);
+ * returns the new count. For the stored form, whose scratch holds every segment, so
+ * that it never grows (rs_pcache_hits >= 0). Out of line: the walks' slow path, kept
+ * out of their loops. */
+static RS_NOINLINE int put_hits(const rs_pcache *pc, const pout *o, int nh, int pt,
+                                double px, double py, double dlo, double dhi,
+                                rs_pscratch *sc)
+{
+    return put_found(o, nh, pt, sc, rs_pcache_hits(pc, px, py, dlo, dhi, sc));
 }
 
 /* Points searched per pre-pass of rs_pcache_points. */
@@ -744,10 +752,8 @@ static int points_one_line(const rs_pcache *pc, const rs_ppoints *pts, int i,
                 o.kap[nh] = 0.0;
                 nh++;
             } else if (what[j] < 0.0) {
-                const int nk = rs_pcache_hits(pc, pts->u[i + j], pts->v[i + j], dlo,
-                                              pts->dhi[i + j], sc);
-                for (int k = 0; k < nk; k++)
-                    put_hit(&o, nh++, base + i + j, &sc->hits[k]);
+                nh = put_hits(pc, &o, nh, base + i + j, pts->u[i + j], pts->v[i + j], dlo,
+                              pts->dhi[i + j], sc);
             }
         }
         i += c;
@@ -772,8 +778,7 @@ static int points_each(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_con
             *need = nk;
             return i;
         }
-        for (int k = 0; k < nk; k++)
-            put_hit(&o, out->n++, pts->base + i, &sc->hits[k]);
+        out->n = put_found(&o, out->n, pts->base + i, sc, nk);
     }
     return i;
 }
