@@ -39,8 +39,8 @@ typedef struct rs_mesh {
     int *edge_f0;   ///< ne + 1: faces of edge e are edge_f[edge_f0[e] ..]
     int *edge_f;
     unsigned char *edge_kind; ///< rs_edge_kind
-    int *vert_e0;             ///< nv + 1: edges at vertex v are vert_e[vert_e0[v] ..]
-    int *vert_e;
+    int *vert_e0;             ///< nv + 1: vertex v's edges lead to its neighbours
+    int *vert_w;              ///< vert_w[vert_e0[v] .. vert_e0[v + 1]), one per edge
     double *trec; ///< RS_MESH_TREC nt: per triangle its normal n, first node a0,
                   ///< and for each edge slot j the unit in-plane normal m_j into
                   ///< the triangle with c_j = m_j . (the edge's lower node):

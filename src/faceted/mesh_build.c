@@ -45,7 +45,7 @@ void rs_mesh_free(rs_mesh *m)
     free(m->edge_f);
     free(m->edge_kind);
     free(m->vert_e0);
-    free(m->vert_e);
+    free(m->vert_w);
     free(m->trec);
     free(m->vfirst);
     free(m->tnbr);
@@ -321,10 +321,10 @@ static int finish_topology(rs_mesh *m, int two_sided)
     int rc = -1;
     m->edge_kind = xmalloc((size_t)m->ne, 1);
     m->vert_e0 = calloc((size_t)m->nv + 2, sizeof(int));
-    m->vert_e = xmalloc(2 * (size_t)m->ne, sizeof(int));
+    m->vert_w = xmalloc(2 * (size_t)m->ne, sizeof(int));
     m->vpn = calloc(3 * (size_t)m->nv + 1, sizeof(double));
     m->vopen = calloc((size_t)m->nv + 1, 1);
-    if (!tn || !tm || !m->edge_kind || !m->vert_e0 || !m->vert_e || !m->vpn || !m->vopen)
+    if (!tn || !tm || !m->edge_kind || !m->vert_e0 || !m->vert_w || !m->vpn || !m->vopen)
         goto done;
     for (int t = 0; t < m->nt; t++) {
         double a2;
@@ -374,7 +374,7 @@ static int finish_topology(rs_mesh *m, int two_sided)
         const double eA[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
         m->edge_kind[e] = rs_dot3(c, eA) > 0.0 ? RS_EDGE_CONVEX : RS_EDGE_CONCAVE;
     }
-    /* edges at each vertex */
+    /* the neighbours of each vertex, one per edge */
     for (int e = 0; e < m->ne; e++) {
         m->vert_e0[m->edge_v[2 * e] + 1]++;
         m->vert_e0[m->edge_v[2 * e + 1] + 1]++;
@@ -386,8 +386,9 @@ static int finish_topology(rs_mesh *m, int two_sided)
         goto done;
     memcpy(fill, m->vert_e0, (size_t)m->nv * sizeof(int));
     for (int e = 0; e < m->ne; e++) {
-        m->vert_e[fill[m->edge_v[2 * e]]++] = e;
-        m->vert_e[fill[m->edge_v[2 * e + 1]]++] = e;
+        const int a = m->edge_v[2 * e], b = m->edge_v[2 * e + 1];
+        m->vert_w[fill[a]++] = b;
+        m->vert_w[fill[b]++] = a;
     }
     free(fill);
     /* angle-weighted pseudo-normals */

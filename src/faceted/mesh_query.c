@@ -13,6 +13,7 @@
 #include "cgal_mesh.h"
 #include "mesh.h"
 #include "rigidsurf/vec.h"
+#include "rs_compiler.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -53,12 +54,18 @@ static int edge_owns(const rs_mesh *m, int e, const double p[3])
     return along_from(m, e, a, p) > 0.0 && along_from(m, e, b, p) > 0.0;
 }
 
-/* Does vertex v own p: at or beyond v along each of its edges? */
+/* Does vertex v own p: at or beyond v along each of its edges, (p - v).(w - v) <= 0 for
+ * each neighbour w (the products of along_from)? */
 static int vertex_owns(const rs_mesh *m, int v, const double p[3])
 {
-    for (int k = m->vert_e0[v]; k < m->vert_e0[v + 1]; k++)
-        if (along_from(m, m->vert_e[k], v, p) > 0.0)
+    const double *pv = m->xyz + 3 * v;
+    for (int k = m->vert_e0[v]; k < m->vert_e0[v + 1]; k++) {
+        const double *pw = m->xyz + 3 * m->vert_w[k];
+        if ((p[0] - pv[0]) * (pw[0] - pv[0]) + (p[1] - pv[1]) * (pw[1] - pv[1]) +
+                (p[2] - pv[2]) * (pw[2] - pv[2]) >
+            0.0)
             return 0;
+    }
     return 1;
 }
 
@@ -492,6 +499,45 @@ static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
     return rc;
 }
 
+/* How far ahead of the slave queried its successors' candidates are fetched: the records
+ * indexed by triangle RS_MESH_AHEAD slaves ahead, the nodes' coordinates (found through
+ * the triangles' nodes, fetched before) RS_MESH_AHEAD_NODES ahead. On a mesh larger than
+ * the caches most candidates' records come from memory, and the query of one slave
+ * would wait for each in turn. */
+#define RS_MESH_AHEAD 4
+#define RS_MESH_AHEAD_NODES 2
+/* Meshes of fewer triangles (records of about 14 MB) are left to the caches: fetching
+ * ahead costs the instructions and gains nothing where the records stay cached. */
+#define RS_MESH_PREFETCH_MIN 32768
+
+/* Asks for the records of each triangle of ids[0 .. n) that the query reads: its row of
+ * trec (144 bytes: up to four cache lines), its nodes, neighbours, edges, element and
+ * first-face flags (stage 0); or its nodes' coordinates and neighbour offsets (stage 1). */
+static void prefetch_candidates(const rs_mesh *m, const int *ids, int n, int stage)
+{
+    for (int k = 0; k < n; k++) {
+        const size_t t = (size_t)ids[k];
+        if (stage == 1) {
+            const int *tv = m->tri + 3 * t;
+            for (int j = 0; j < 3; j++) {
+                RS_PREFETCH(m->xyz + 3 * (size_t)tv[j]);
+                RS_PREFETCH(m->vert_e0 + tv[j]);
+            }
+            continue;
+        }
+        const double *r = m->trec + RS_MESH_TREC * t;
+        RS_PREFETCH(r);
+        RS_PREFETCH(r + 8);
+        RS_PREFETCH(r + 16);
+        RS_PREFETCH(r + RS_MESH_TREC - 1);
+        RS_PREFETCH(m->tri + 3 * t);
+        RS_PREFETCH(m->tnbr + 3 * t);
+        RS_PREFETCH(m->tedge + 3 * t);
+        RS_PREFETCH(m->tel + t);
+        RS_PREFETCH(m->tfirst + t);
+    }
+}
+
 static int mesh_closest_among(const rs_surface *s, const rs_query *q,
                               const int *const *cand, const int *ncand, rs_contacts *out,
                               rs_error *err)
@@ -510,7 +556,15 @@ static int mesh_closest_among(const rs_surface *s, const rs_query *q,
     if (!sc.ids)
         return rs_error_set(err, RS_ERR_NOMEM, "out of memory for the mesh query");
     sc.cap = 256;
+    const int ahead = cand && m->nt >= RS_MESH_PREFETCH_MIN;
     for (int i = 0; i < q->n; i++) {
+        if (ahead) {
+            const int ia = i + RS_MESH_AHEAD, ib = i + RS_MESH_AHEAD_NODES;
+            if (ia < q->n)
+                prefetch_candidates(m, cand[ia], ncand[ia], 0);
+            if (ib < q->n)
+                prefetch_candidates(m, cand[ib], ncand[ib], 1);
+        }
         const double r = q->slave.radius ? q->slave.radius[i] : 0.0;
         const double gap_lim = q->gap_max + r;
         if (!(gap_lim >= 0.0))

@@ -499,6 +499,104 @@ static void brute_force_meshes(void)
     }
 }
 
+/* A mesh large enough that the list query fetches its candidates' records ahead
+ * (mesh_query.c, RS_MESH_PREFETCH_MIN) and 4000 spheres in one query: through candidate
+ * lists the contacts are those of the tree query, value for value, and the nearest of
+ * each of the first 300 is the brute-force closest point of all triangles. */
+static void large_mesh_lists_are_the_tree(void)
+{
+    poly_mesh pm;
+    uv_sphere(&pm, 130, 130); /* 33800 triangles */
+    double(*T)[9] = malloc((size_t)pm.nf * 2 * sizeof *T);
+    const int ntri = pm_triangles(&pm, T);
+    ENSURE(ntri >= 32768);
+    rs_surface s;
+    if (load_pm(&pm, "large", &s) != RS_OK) {
+        ENSURE(0);
+        free(T);
+        return;
+    }
+    enum { NP = 4000 };
+    static double x[NP], y[NP], z[NP], r[NP];
+    unsigned long long seed = 41;
+    for (int i = 0; i < NP; i++) {
+        double d[3], l2 = 0.0;
+        for (int k = 0; k < 3; k++) {
+            d[k] = 2.0 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 - 1.0;
+            l2 += d[k] * d[k];
+        }
+        const double u = (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0;
+        const double rho = (0.97 + 0.06 * u) / sqrt(l2); /* inside and outside */
+        x[i] = rho * d[0], y[i] = rho * d[1], z[i] = rho * d[2];
+        r[i] = 0.02;
+    }
+    rs_query q;
+    memset(&q, 0, sizeof q);
+    q.n = NP;
+    q.slave.x = x, q.slave.y = y, q.slave.z = z, q.slave.radius = r;
+    q.gap_max = 0.01;
+    q.dist_min = -0.05;
+    rs_contacts ct, cl;
+    memset(&ct, 0, sizeof ct);
+    memset(&cl, 0, sizeof cl);
+    rs_cands cd;
+    memset(&cd, 0, sizeof cd);
+    rs_error e;
+    ENSURE(rs_surface_query(&s, &q, &ct, &e) == RS_OK);
+    ENSURE(rs_surface_candidates(&s, &q, 0.005, &cd, &e) == RS_OK);
+    const int **lists = malloc(NP * sizeof *lists);
+    int *counts = malloc(NP * sizeof *counts);
+    for (int i = 0; i < NP; i++) {
+        lists[i] = cd.ids + cd.off[i];
+        counts[i] = cd.off[i + 1] - cd.off[i];
+    }
+    ENSURE(rs_surface_query_among(&s, &q, lists, counts, &cl, &e) == RS_OK);
+    ENSURE(ct.n > NP / 2);
+    ENSURE(cl.n == ct.n);
+    int same = cl.n == ct.n;
+    for (int k = 0; same && k < ct.n; k++) {
+        same = cl.point[k] == ct.point[k] && cl.feature[k] == ct.feature[k] &&
+               cl.dist[k] == ct.dist[k] && cl.share[k] == ct.share[k];
+        for (int d = 0; d < 3; d++)
+            same = same && cl.xm[d][k] == ct.xm[d][k] && cl.nrm[d][k] == ct.nrm[d][k];
+    }
+    ENSURE(same);
+    /* the nearest contact of each of the first 300 spheres against all triangles */
+    int k = 0, bad = 0;
+    for (int i = 0; i < 300; i++) {
+        const double p[3] = {x[i], y[i], z[i]};
+        double best = INFINITY, cb[3] = {0, 0, 0};
+        for (int t = 0; t < ntri; t++) {
+            double cp[3];
+            const double dd = closest_on_triangle(T[t], p, cp);
+            if (dd < best) {
+                best = dd;
+                memcpy(cb, cp, sizeof cp);
+            }
+        }
+        int kbest = -1;
+        for (; k < cl.n && cl.point[k] == i; k++)
+            if (kbest < 0 || fabs(cl.dist[k]) < fabs(cl.dist[kbest]))
+                kbest = k;
+        if (kbest < 0) { /* none only outside, beyond the gap limit */
+            bad += !(sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) > 1.0 &&
+                     best >= r[i] + q.gap_max - 1e-9);
+            continue;
+        }
+        const double xm[3] = {cl.xm[0][kbest], cl.xm[1][kbest], cl.xm[2][kbest]};
+        if (!(fabs(fabs(cl.dist[kbest]) - best) <= 1e-12 && dist3(xm, cb) <= 1e-9))
+            bad++;
+    }
+    ENSURE(bad == 0);
+    free(lists);
+    free(counts);
+    free(T);
+    rs_cands_free(&cd);
+    rs_contacts_free(&ct);
+    rs_contacts_free(&cl);
+    rs_surface_free(&s);
+}
+
 /* One-sided, from outside a closed convex mesh: exactly one contact at every point, the
  * brute-force closest point. */
 static void one_contact_outside_convex(void)
@@ -1456,6 +1554,7 @@ int main(void)
     if (!mkdtemp(tmpdir))
         return 1;
     RS_RUN(brute_force_meshes);
+    RS_RUN(large_mesh_lists_are_the_tree);
     RS_RUN(one_contact_outside_convex);
     RS_RUN(flat_fan_one_contact);
     RS_RUN(cone_apex_contact_per_face);
