@@ -685,18 +685,25 @@ void FixWallRigid::build_candidate_lists()
 }
 
 /* After a block's query: the bound of each particle without a contact within the
- * tracking thickness, its smallest gap (gmin, the look-ahead where nothing is within
- * it) at its position now. A particle with a contact holds it, so is not skipped; an
- * older bound stays valid for it (the distance to a fixed surface changes no faster
- * than the particle moves). */
+ * tracking thickness and without a contact in its history, its smallest gap (gmin, the
+ * look-ahead where nothing is within it) at its position now. Every other particle gets
+ * none (-inf), so the step's filter (compute) passes it without looking further: one
+ * with a contact within the tracking thickness holds it; one that holds a contact from
+ * before (a refresh's lists, a setup call, whose history is put back afterwards) must be
+ * queried to see it leave. */
 void FixWallRigid::update_bounds(const int *idx, int n, const double *gmin)
 {
     double **x = atom->x;
     const double *radius = atom->radius;
     for (int k = 0; k < n; k++) {
-        if (!(gmin[k] > tracking_))
-            continue;
         const int i = idx[k];
+        bool free = gmin[k] > tracking_;
+        for (int j = 0; free && j < capacity_; j++)
+            free = row_[i][j] == RS_DIR_EMPTY;
+        if (!free) {
+            gapref_[i] = -INFINITY;
+            continue;
+        }
         gapref_[i] = gmin[k] - 1e-9 * radius[i]; /* a margin for the rounding of the gap */
         double *xr = &xref_[4 * (size_t)i];
         xr[0] = x[i][0];
@@ -735,9 +742,9 @@ void FixWallRigid::compute(bool setup_call)
     if (refresh)
         build_candidates();
 
-    /* The candidates this step: all of them, less those that hold no contact and whose
-     * distance bound keeps them beyond the tracking thickness (a test as cheap as a
-     * primitive wall's). */
+    /* The candidates this step: all of them, less those whose distance bound keeps them
+     * beyond the tracking thickness (a test as cheap as a primitive wall's; a particle
+     * that holds a contact has no bound, update_bounds). */
     const int *list = cand_.data();
     int nc = (int)cand_.size();
     if ((bounds_ok_ || list_bounds_) && !setup_call) {
@@ -752,13 +759,8 @@ void FixWallRigid::compute(bool setup_call)
             if (room > 0.0 && radius[i] == xr[3]) {
                 const double dx = x[i][0] - xr[0], dy = x[i][1] - xr[1],
                              dz = x[i][2] - xr[2];
-                if (dx * dx + dy * dy + dz * dz < room * room) {
-                    bool held = false;
-                    for (int j = 0; j < capacity_; j++)
-                        held |= row_[i][j] != RS_DIR_EMPTY;
-                    if (!held)
-                        continue;
-                }
+                if (dx * dx + dy * dy + dz * dz < room * room)
+                    continue;
             }
             active_[na++] = i;
         }

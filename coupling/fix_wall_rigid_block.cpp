@@ -54,6 +54,11 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         qd[k] = row_[i];
         qh[k] = slot0(i);
         rmax = std::max(rmax, R);
+        /* the tracker reads the directory and the slot's head after the query */
+        __builtin_prefetch(row_[i], 0, 3);
+        __builtin_prefetch(qh[k], 0, 3);
+        __builtin_prefetch(qh[k] + 8, 0, 3);
+        __builtin_prefetch(array_atom[i], 1, 3);
     }
     if (setup_call) {
         saved_rows_.resize((size_t)n * as);

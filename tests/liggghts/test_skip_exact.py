@@ -9,8 +9,10 @@ queried every step. 60 spheres with random velocities bounce in a closed drum un
 (hertz, tangential history, default tracking 0), and the two runs must give the same
 trajectories, forces and wall totals to the last bit, over 8000 steps that include many
 impacts, flights inside the skin (8 mm, so that spheres are skipped for long) and
-rebuilds of the neighbour lists; and one sphere dropped on the bottom from 5 mm, skipped
-while it falls and caught at the step it touches. Both for the REVOLUTION drum (bounds
+rebuilds of the neighbour lists; one sphere dropped on the bottom from 5 mm, skipped
+while it falls and caught at the step it touches; and one sphere sliding on the bottom,
+lifted 1 mm between two runs (displace_atoms) while it holds its contact: the next run
+must see that contact leave at its first step, not carry its slip to the landing. Both for the REVOLUTION drum (bounds
 from the query's look-ahead) and for the same drum as a MESH (an STL of 96 x 8 quads and
 capped ends; bounds from the candidate lists' nearest triangles).
 """
@@ -46,12 +48,21 @@ def drum_stl(n=96, nz=8, zlo=-0.02, zhi=0.02):
     return "\n".join(out + ["endsolid drum"]) + "\n"
 
 
-def deck(extra, drop=False):
+def deck(extra, drop=False, lift=False):
     d = L.header((-0.035, 0.035, -0.035, 0.035, -0.035, 0.035), DT)
     d += "neighbor %r bin\n" % SKIN  # a wide skin: long skips between rebuilds
     if drop:
         # one sphere dropped on the drum's bottom cap from a gap of 5 mm, at rest
         return d + L.sphere(1, (0.0, 0.0, -0.02 + R + 0.005), R, RHO) + tail(extra, 5000)
+    if lift:
+        # one sphere rolling on the bottom cap, pressed into it, lifted while it holds
+        # its contact and stopped: it falls straight back, so its distance bound lets it
+        # be skipped until it touches, and lands after about 1400 steps of the second
+        # run, where the tangential stress of a contact carried over would differ
+        d += L.sphere(1, (-0.01, 0.0, -0.02 + R - 1e-6), R, RHO, v=(0.1, 0.03, 0.0))
+        return d + tail(extra, 1000, "displace_atoms all move 0 0 0.001\n"
+                        "set atom 1 vx 0 vy 0 vz 0 omegax 0 omegay 0 omegaz 0\n"
+                        "run 3000\n")
     rng = random.Random(7)
     for k in range(60):
         while True:
@@ -64,14 +75,14 @@ def deck(extra, drop=False):
     return d + tail(extra, 8000)
 
 
-def tail(extra, steps):
+def tail(extra, steps, more=""):
     d = "fix g all gravity 9.81 vector 0 %s\n" % ("-1 0" if steps == 8000 else "0 -1")
     d += "fix w all wall/rigid %s law hertz type 2%s\n" % (SURF[0], extra)
     d += "fix integr all nve/sphere\n"
     d += L.dump_lines("d", 1000, "traj.dump", COLS)
     d += ('variable fw equal f_w[1]+f_w[2]+f_w[3]\n'
           'fix pr all print 100 "${fw}" file wall.txt screen no\n')
-    d += "run %d\n" % steps
+    d += "run %d\n" % steps + more
     return d
 
 
@@ -80,15 +91,17 @@ def body(s):
     s.write("drum.stl", drum_stl())
     for kind, surf in (("revolution", "surface drum.inp"), ("mesh", "surface inline mesh drum.stl")):
         SURF[0] = surf
-        for case, drop, nd in (("bed", False, 9), ("drop", True, 6)):
+        for case, drop, lift, nd in (("bed", False, False, 9), ("drop", True, False, 6),
+                                     ("lift", False, True, 5)):
             name = kind + " " + case
             out = {}
             for tag, extra in (("static", ""),
                                ("moving", " rotate origin 0 0 0 axis 1 0 0 omega 0")):
-                s.run(kind + "_" + case + "_" + tag, deck(extra, drop))
+                s.run(kind + "_" + case + "_" + tag, deck(extra, drop, lift))
                 out[tag] = (open(s.path("traj.dump")).read(), open(s.path("wall.txt")).read())
-                s.ck.check("%s, %s: dump written" % (name, tag),
-                           out[tag][0].count("ITEM: TIMESTEP") == nd)
+                nsnap = out[tag][0].count("ITEM: TIMESTEP")
+                s.ck.check("%s, %s: dump written" % (name, tag), nsnap == nd,
+                           "%d snapshots" % nsnap)
             st, mv = out["static"], out["moving"]
             s.ck.check(name + ": trajectories and forces identical to the last bit",
                        st[0] == mv[0], why="the dumps differ")
