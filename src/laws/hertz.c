@@ -82,7 +82,7 @@ RS_INLINE void hertz_block(int n, const int nsv, double dt, const double *restri
         const double d = rd[nd * c];
         const int live = !RS_LAW_LEAVING(d) && d > 0.0;
         const int forget = !RS_LAW_LEAVING(d) && !(d > 0.0) && update;
-        const double area = ar[c];
+        const double per_area = 1.0 / ar[c]; /* one division for the six per-area values */
         const double sqrtval = sqrt(rr[c] * d);
         const double Sn = 2. * Yeff * sqrtval;
         const double St = 8. * Geff * sqrtval;
@@ -120,20 +120,21 @@ RS_INLINE void hertz_block(int n, const int nsv, double dt, const double *restri
         const double ft0 = cap ? fc0 : fd0, ft1 = cap ? fc1 : fd1;
         const double sn0 = cap && update ? -fc0 / kt : s0;
         const double sn1 = cap && update ? -fc1 / kt : s1;
+        /* the slip beyond the elastic limit ft_friction / kt = ratio shrmag */
         const double slip_work =
-            cap && update ? ft_friction * (shrmag - ft_friction / kt) : 0.0;
+            cap && update ? ft_friction * (shrmag - ratio * shrmag) : 0.0;
         const double damp = gammat * (vt0 * vt0 + vt1 * vt1);
         const double damp_power = cap ? 0.0 : damp;
 
-        st[nd * c] = live ? Fn / area : 0.0;
-        st[nd * c + 1] = live ? -ft0 / area : 0.0;
+        st[nd * c] = live ? Fn * per_area : 0.0;
+        st[nd * c + 1] = live ? -ft0 * per_area : 0.0;
         if (nd == 3)
-            st[nd * c + 2] = live ? -ft1 / area : 0.0;
+            st[nd * c + 2] = live ? -ft1 * per_area : 0.0;
         sed[c] =
-            live ? (0.4 * kn * d * d + 0.5 * kt * (sn0 * sn0 + sn1 * sn1)) / area : 0.0;
+            live ? (0.4 * kn * d * d + 0.5 * kt * (sn0 * sn0 + sn1 * sn1)) * per_area : 0.0;
         if (update) {
-            svd[c] = live ? (Fn_damping * -vn + damp_power) * dt / area : 0.0;
-            sfd[c] = live ? slip_work / area : 0.0;
+            svd[c] = live ? (Fn_damping * -vn + damp_power) * dt * per_area : 0.0;
+            sfd[c] = live ? slip_work * per_area : 0.0;
             sv[(size_t)nsv * c] = live ? sn0 : forget ? 0.0 : so0;
             if (nd == 3)
                 sv[(size_t)nsv * c + 1] = live ? sn1 : forget ? 0.0 : so1;
