@@ -267,6 +267,22 @@ static double closest_on_triangle(const double T[9], const double p[3], double c
 
 /* FACETED tangents from the definition: global x on the tangent plane, global z when x is
  * within 0.1 degree of n. */
+/* Brute force: the distance from p to the nearest of triangles T[0 .. nt) and its
+ * closest point cb. */
+static double nearest_of_all(const double (*T)[9], int nt, const double p[3], double cb[3])
+{
+    double best = INFINITY;
+    for (int t = 0; t < nt; t++) {
+        double cp[3];
+        const double dd = closest_on_triangle(T[t], p, cp);
+        if (dd < best) {
+            best = dd;
+            memcpy(cb, cp, sizeof cp);
+        }
+    }
+    return best;
+}
+
 static void faceted_t1(const double n[3], double t1[3])
 {
     const double x[3] = {1, 0, 0}, z[3] = {0, 0, 1};
@@ -362,15 +378,8 @@ static int brute_force_case(const poly_mesh *pm, const char *name, int sides, do
                    spread *
                        (2.0 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 -
                         1.0);
-        double best = INFINITY, cb[3];
-        for (int t = 0; t < nt; t++) {
-            double cp[3];
-            const double dd = closest_on_triangle(T[t], p, cp);
-            if (dd < best) {
-                best = dd;
-                memcpy(cb, cp, sizeof cp);
-            }
-        }
+        double cb[3];
+        const double best = nearest_of_all((const double(*)[9])T, nt, p, cb);
         query(&s, 1, p, p + 1, p + 2, NULL, 1.0, &c);
         { /* candidate lists, taken 0.05 away and queried here, give the same contacts */
             rs_query q;
@@ -565,15 +574,8 @@ static void large_mesh_lists_are_the_tree(void)
     int k = 0, bad = 0;
     for (int i = 0; i < 300; i++) {
         const double p[3] = {x[i], y[i], z[i]};
-        double best = INFINITY, cb[3] = {0, 0, 0};
-        for (int t = 0; t < ntri; t++) {
-            double cp[3];
-            const double dd = closest_on_triangle(T[t], p, cp);
-            if (dd < best) {
-                best = dd;
-                memcpy(cb, cp, sizeof cp);
-            }
-        }
+        double cb[3] = {0, 0, 0};
+        const double best = nearest_of_all((const double(*)[9])T, ntri, p, cb);
         int kbest = -1;
         for (; k < cl.n && cl.point[k] == i; k++)
             if (kbest < 0 || fabs(cl.dist[k]) < fabs(cl.dist[kbest]))
