@@ -697,10 +697,10 @@ void FixWallRigid::update_bounds(const int *idx, int n, const double *gmin)
     const double *radius = atom->radius;
     for (int k = 0; k < n; k++) {
         const int i = idx[k];
-        bool free = gmin[k] > tracking_;
-        for (int j = 0; free && j < capacity_; j++)
-            free = row_[i][j] == RS_DIR_EMPTY;
-        if (!free) {
+        bool unheld = gmin[k] > tracking_;
+        for (int j = 0; unheld && j < capacity_; j++)
+            unheld = row_[i][j] == RS_DIR_EMPTY;
+        if (!unheld) {
             gapref_[i] = -INFINITY;
             continue;
         }

@@ -54,7 +54,8 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         qd[k] = row_[i];
         qh[k] = slot0(i);
         rmax = std::max(rmax, R);
-        /* the tracker reads the directory and the slot's head after the query */
+        /* asked for now, read after the query: the directory and the slot's head by the
+         * tracker, the output row by the scatter */
         __builtin_prefetch(row_[i], 0, 3);
         __builtin_prefetch(qh[k], 0, 3);
         __builtin_prefetch(qh[k] + 8, 0, 3);
