@@ -10,9 +10,10 @@ queried every step. 60 spheres with random velocities bounce in a closed drum un
 trajectories, forces and wall totals to the last bit, over 8000 steps that include many
 impacts, flights inside the skin (8 mm, so that spheres are skipped for long) and
 rebuilds of the neighbour lists; one sphere dropped on the bottom from 5 mm, skipped
-while it falls and caught at the step it touches; and one sphere sliding on the bottom,
-lifted 1 mm between two runs (displace_atoms) while it holds its contact: the next run
-must see that contact leave at its first step, not carry its slip to the landing. Both for the REVOLUTION drum (bounds
+while it falls and caught at the step it touches; and one sphere rolling on the bottom,
+lifted 1 mm and stopped between two runs (displace_atoms, set) while it holds its
+contact: the second run must see that contact leave at its first step, not carry its
+slip and stress to the landing. Both for the REVOLUTION drum (bounds
 from the query's look-ahead) and for the same drum as a MESH (an STL of 96 x 8 quads and
 capped ends; bounds from the candidate lists' nearest triangles).
 """
