@@ -371,13 +371,19 @@ static void voronoi_pair(const rs_pcache *pc, rs_pscratch *sc, int nnear, int j,
         sc->state[drop] |= SEG_DROP;
 }
 
+/* Whether the box (xmin, xmax, ymin, ymax) lies farther than reach from the point along
+ * x or y. */
+RS_INLINE int box_far(const double b[4], double px, double py, double reach)
+{
+    return b[0] - px > reach || px - b[1] > reach || b[2] - py > reach || py - b[3] > reach;
+}
+
 /* Whether the point is within reach of segment k: its bounding box and, for LINE and
  * CIRCL, its line or circle. A superset of the segments within reach is enough (the
  * vertices of a segment lie on both). */
 RS_INLINE int seg_near(const rs_pseg *q, double px, double py, double reach)
 {
-    if (q->box[0] - px > reach || px - q->box[1] > reach || q->box[2] - py > reach ||
-        py - q->box[3] > reach)
+    if (box_far(q->box, px, py, reach))
         return 0;
     if (q->type == RS_LINE) {
         double sd = (px - q->o[0]) * (-q->t[1]) + (py - q->o[1]) * q->t[0];
@@ -396,8 +402,7 @@ RS_INLINE int seg_near(const rs_pseg *q, double px, double py, double reach)
 RS_INLINE void near_seg(const rs_pcache *pc, const rs_pseg *q, double px, double py,
                         double reach, rs_pscratch *sc, int *nnear, int *neg)
 {
-    if (q->box[0] - px > reach || px - q->box[1] > reach || q->box[2] - py > reach ||
-        py - q->box[3] > reach)
+    if (box_far(q->box, px, py, reach))
         return;
     if (*nnear == sc->cap) {
         sc->full = 1; /* the compact form's scratch: rs_pcache_hits asks for more */
@@ -451,8 +456,7 @@ static void near_tree(const rs_pcache *pc, double px, double py, double reach,
     while (top > 0) {
         const int l = sl[--top], i = si[top];
         const double *b = pc->tree + 4 * ((size_t)pc->tlev[l] + (size_t)i);
-        if (b[0] - px > reach || px - b[1] > reach || b[2] - py > reach ||
-            py - b[3] > reach)
+        if (box_far(b, px, py, reach))
             continue;
         if (l > 0) {
             if (2 * i + 1 < pc->tlev[l] - pc->tlev[l - 1]) {
@@ -476,8 +480,7 @@ static void near_tree(const rs_pcache *pc, double px, double py, double reach,
         for (int k = k0; k < k1; k++) {
             double sb[4];
             rs_pcache_box(pc, k, sb);
-            if (sb[0] - px > reach || px - sb[1] > reach || sb[2] - py > reach ||
-                py - sb[3] > reach)
+            if (box_far(sb, px, py, reach))
                 continue;
             if (have != k)
                 rs_pcache_vertex(pc, k, &va);
@@ -889,8 +892,7 @@ int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_conta
             for (; !lc[j] && list < end; list++) {
                 const rs_pseg *q = (const rs_pseg *)((const char *)ps + *list);
                 const int k = q->self;
-                if (q->box[0] - px > reach || px - q->box[1] > reach ||
-                    q->box[2] - py > reach || py - q->box[3] > reach)
+                if (box_far(q->box, px, py, reach))
                     continue;
                 if (q->type == RS_LINE) {
                     /* The vertex tests of a segment are its ends' (profile.h): when the

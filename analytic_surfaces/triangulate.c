@@ -7,18 +7,22 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Profile polyline: arcs get one node per 2 pi / nh of sweep, parabolas 16 pieces, and a
- * run of LINE pieces joined by SMOOTH vertices (collinear) one piece: its inner
- * vertices add nothing to the picture. */
+/* Pieces of segment g in the polyline: arcs one per 2 pi / nh of sweep, parabolas 16. */
+static int seg_pieces(const rs_segment *g, int nh)
+{
+    return g->type == RS_LINE    ? 1
+           : g->type == RS_PARAB ? 16
+                                 : (int)ceil(fabs(g->sweep) / (2.0 * RS_PI / nh)) + 1;
+}
+
+/* Profile polyline, seg_pieces pieces a segment, except that a run of LINE pieces joined
+ * by SMOOTH vertices (collinear) is one piece: its inner vertices add nothing to the
+ * picture. */
 static int polyline(const rs_profile *p, int nh, double **out, int *count)
 {
     int n = 1;
-    for (int k = 0; k < p->nseg; k++) {
-        const rs_segment *g = &p->seg[k];
-        n += g->type == RS_LINE    ? 1
-             : g->type == RS_PARAB ? 16
-                                   : (int)ceil(fabs(g->sweep) / (2.0 * RS_PI / nh)) + 1;
-    }
+    for (int k = 0; k < p->nseg; k++)
+        n += seg_pieces(&p->seg[k], nh);
     double *xy = malloc(2 * (size_t)n * sizeof *xy);
     if (!xy)
         return RS_ERR_NOMEM;
@@ -27,9 +31,7 @@ static int polyline(const rs_profile *p, int nh, double **out, int *count)
     xy[m++] = p->seg[0].p0[1];
     for (int k = 0; k < p->nseg; k++) {
         const rs_segment *g = &p->seg[k];
-        int np = g->type == RS_LINE    ? 1
-                 : g->type == RS_PARAB ? 16
-                                       : (int)ceil(fabs(g->sweep) / (2.0 * RS_PI / nh)) + 1;
+        const int np = seg_pieces(g, nh);
         if (g->type == RS_LINE && k + 1 < p->nseg && p->seg[k + 1].type == RS_LINE &&
             p->vkind && p->vkind[k + 1] == RS_VTX_SMOOTH)
             continue; /* vertex k + 1 lies on the line through the run */
