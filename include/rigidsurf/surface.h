@@ -249,7 +249,8 @@ typedef struct rs_cands {
 /// 1 when the surface's kind gives candidate lists (rs_surface_candidates), else 0.
 int rs_surface_has_candidates(const rs_surface *s);
 /// The candidates of every slave of q within its reach (radius + gap_max, and down to
-/// dist_min) grown by extra: valid while slaves and master move less than extra in all.
+/// dist_min) grown by extra, less any that can give it no contact from anywhere within
+/// extra: valid while slaves and master move less than extra in all.
 int rs_surface_candidates(const rs_surface *s, const rs_query *q, double extra, rs_cands *c,
                           rs_error *err);
 /// rs_surface_query testing slave i against its candidates cand[i][0 .. ncand[i]) only;

@@ -417,6 +417,57 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
     return 0;
 }
 
+/* May triangle t give a contact to some point within ext of p, or take part in its
+ * shares? Each test by which point_hits lets t's face, or an edge or vertex it tests,
+ * own a point is the sign of a side p . m - c with unit m, or of a product (p - v).(w - v)
+ * over the length |w - v|: neither moves by more than ext when p moves by ext. So a
+ * feature whose test fails at p by more than ext (and a rounding margin) owns no point
+ * within ext, and a triangle whose features all fail gives no contact there. hit_weights
+ * reads a triangle's concave edges and vertices wherever the sphere reaches them: such a
+ * triangle is always kept. */
+static int may_own(const rs_mesh *m, int t, const double p[3], double ext)
+{
+    const unsigned fl = m->tfirst[t];
+    const int *tv = m->tri + 3 * t;
+    for (int j = 0; j < 3; j++)
+        if (((fl >> j & 1u) && m->edge_kind[m->tedge[3 * t + j]] == RS_EDGE_CONCAVE) ||
+            ((fl >> (3 + j) & 1u) && m->vconc[tv[j]]))
+            return 1;
+    double h, sd[3];
+    tri_bound(m, t, p, &h, sd);
+    if (sd[0] > -ext && sd[1] > -ext && sd[2] > -ext)
+        return 1; /* its face */
+    for (int j = 0; j < 3; j++) {
+        if (!(fl >> j & 1u) || sd[j] > ext)
+            continue; /* edge j is tested only where p is outside across it */
+        const int e = m->tedge[3 * t + j], nb = m->tnbr[3 * t + j];
+        if (nb >= 0 && side_of(m, nb / 3, nb % 3, p) > ext)
+            continue; /* inside the other face */
+        const int a = m->edge_v[2 * e], b = m->edge_v[2 * e + 1];
+        const double *pa = m->xyz + 3 * a, *pb = m->xyz + 3 * b;
+        const double u[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+        const double L = rs_norm3(u);
+        if (along_from(m, e, a, p) > -ext * L && along_from(m, e, b, p) > -ext * L)
+            return 1;
+    }
+    for (int j = 0; j < 3; j++) {
+        if (!(fl >> (3 + j) & 1u))
+            continue;
+        const int v = tv[j];
+        const double *pv = m->xyz + 3 * v;
+        int owns = 1;
+        for (int k = m->vert_e0[v]; k < m->vert_e0[v + 1] && owns; k++) {
+            const double *pw = m->xyz + 3 * m->vert_w[k];
+            const double u[3] = {pw[0] - pv[0], pw[1] - pv[1], pw[2] - pv[2]};
+            const double w[3] = {p[0] - pv[0], p[1] - pv[1], p[2] - pv[2]};
+            owns = !(rs_dot3(w, u) > ext * rs_norm3(u));
+        }
+        if (owns)
+            return 1;
+    }
+    return 0;
+}
+
 /* p, slave i of q, in the reference configuration. */
 static void slave_local(const rs_query *q, int i, double p[3])
 {
@@ -431,8 +482,10 @@ static void slave_local(const rs_query *q, int i, double p[3])
     }
 }
 
-/* The triangles within reach + extra of each slave: the tree's boxes, less those
- * farther (tri_distance2). */
+/* The triangles within reach + extra of each slave that may give it a contact from
+ * anywhere within extra: the tree's boxes, less those farther (tri_distance2) and those
+ * whose features own no point within extra (may_own). near is the nearest of all within
+ * reach. */
 static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
                            rs_cands *c, rs_error *err)
 {
@@ -485,11 +538,15 @@ static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
             c->idcap = cap;
         }
         double near2 = lim * lim;
+        /* extra and a margin for the rounding of the tests at p */
+        const double ext =
+            extra + 1e-9 * (m->size + fabs(p[0]) + fabs(p[1]) + fabs(p[2]) + lim);
         for (int k = 0; k < n; k++) {
             const double d2 = tri_distance2(m, sc.ids[k], p);
             if (d2 <= lim * lim) {
-                c->ids[nid++] = sc.ids[k];
                 near2 = fmin(near2, d2);
+                if (may_own(m, sc.ids[k], p, ext))
+                    c->ids[nid++] = sc.ids[k];
             }
         }
         c->near[i] = sqrt(near2);

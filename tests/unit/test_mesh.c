@@ -346,6 +346,9 @@ static void query(const rs_surface *s, int n, const double *x, const double *y,
         fprintf(stderr, "query: %s\n", e.msg);
 }
 
+/* Contacts with shares below 1 among those the list checks of brute_force_case met. */
+static int lists_shared;
+
 /* Every point near mesh pm (file name, sides): the nearest contact is the brute-force
  * closest point of all triangles to 1e-12, its normal points from it to the point, and
  * its frame is the FACETED one; every contact is a local minimum (no triangle at its
@@ -381,15 +384,33 @@ static int brute_force_case(const poly_mesh *pm, const char *name, int sides, do
         double cb[3];
         const double best = nearest_of_all((const double(*)[9])T, nt, p, cb);
         query(&s, 1, p, p + 1, p + 2, NULL, 1.0, &c);
-        { /* candidate lists, taken 0.05 away and queried here, give the same contacts */
+        /* candidate lists with a margin of 0.05, taken 0.047 away and taken all but the
+         * margin away in a random direction, give here the contacts of the whole mesh,
+         * for a sphere of radius 0.15 (so with their shares at concave folds) */
+        const double rr = 0.15;
+        rs_contacts c3;
+        memset(&c3, 0, sizeof c3);
+        query(&s, 1, p, p + 1, p + 2, &rr, 1.0 - rr, &c3);
+        for (int i = 0; i < c3.n; i++)
+            lists_shared += c3.share[i] < 1.0;
+        double dir[3], l2 = 0.0;
+        for (int d = 0; d < 3; d++) {
+            dir[d] = 2.0 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 - 1.0;
+            l2 += dir[d] * dir[d];
+        }
+        const double away[2][3] = {{0.03, -0.03, 0.02},
+                                   {0.04999 * dir[0] / sqrt(l2), 0.04999 * dir[1] / sqrt(l2),
+                                    0.04999 * dir[2] / sqrt(l2)}};
+        for (int w = 0; w < 2 && ok; w++) {
             rs_query q;
             memset(&q, 0, sizeof q);
-            const double p0[3] = {p[0] + 0.03, p[1] - 0.03, p[2] + 0.02};
+            const double p0[3] = {p[0] + away[w][0], p[1] + away[w][1], p[2] + away[w][2]};
             q.n = 1;
             q.slave.x = p0;
             q.slave.y = p0 + 1;
             q.slave.z = p0 + 2;
-            q.gap_max = 1.0;
+            q.slave.radius = &rr;
+            q.gap_max = 1.0 - rr;
             q.dist_min = -INFINITY;
             rs_cands cd;
             memset(&cd, 0, sizeof cd);
@@ -399,17 +420,22 @@ static int brute_force_case(const poly_mesh *pm, const char *name, int sides, do
             q.slave.x = p, q.slave.y = p + 1, q.slave.z = p + 2;
             const int *lst = cd.ids, nl = same ? cd.off[1] : 0;
             same = same && rs_surface_query_among(&s, &q, &lst, &nl, &c2, &e) == RS_OK;
-            same = same && c2.n == c.n;
-            for (int i = 0; same && i < c.n; i++)
-                same = c2.feature[i] == c.feature[i] && c2.dist[i] == c.dist[i];
+            same = same && c2.n == c3.n;
+            for (int i = 0; same && i < c3.n; i++) {
+                same = c2.feature[i] == c3.feature[i] && c2.dist[i] == c3.dist[i] &&
+                       c2.share[i] == c3.share[i];
+                for (int d = 0; d < 3; d++)
+                    same = same && c2.xm[d][i] == c3.xm[d][i];
+            }
             rs_contacts_free(&c2);
             rs_cands_free(&cd);
             if (!same) {
-                fprintf(stderr, "%s: point %d: candidate lists change the contacts\n", name,
-                        k);
+                fprintf(stderr, "%s: point %d: candidate lists taken %s change the contacts\n",
+                        name, k, w ? "at the margin" : "0.047 away");
                 ok = 0;
             }
         }
+        rs_contacts_free(&c3);
         int kbest = -1;
         for (int i = 0; i < c.n; i++) {
             if (kbest < 0 || fabs(c.dist[i]) < fabs(c.dist[kbest]))
@@ -506,6 +532,7 @@ static void brute_force_meshes(void)
         pm_free(&m);
         ENSURE(ok);
     }
+    ENSURE(lists_shared > 0);
 }
 
 /* A mesh large enough that the list query fetches its candidates' records ahead
