@@ -417,22 +417,32 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
     return 0;
 }
 
-/* May triangle t give a contact to some point within ext of p, or take part in its
- * shares? Each test by which point_hits lets t's face, or an edge or vertex it tests,
- * own a point is the sign of a side p . m - c with unit m, or of a product (p - v).(w - v)
- * over the length |w - v|: neither moves by more than ext when p moves by ext. So a
- * feature whose test fails at p by more than ext (and a rounding margin) owns no point
- * within ext, and a triangle whose features all fail gives no contact there. hit_weights
- * reads a triangle's concave edges and vertices wherever the sphere reaches them: such a
- * triangle is always kept. */
-static int may_own(const rs_mesh *m, int t, const double p[3], double ext)
+/* May triangle t give a contact to some point within ext of p, or take part in the
+ * shares of a sphere of radius R there? Each test by which point_hits lets t's face, or
+ * an edge or vertex it tests, own a point is the sign of a side p . m - c with unit m, or
+ * of a product (p - v).(w - v) over the length |w - v|: neither moves by more than ext
+ * when p moves by ext. So a feature whose test fails at p by more than ext (and a
+ * rounding margin) owns no point within ext, and a triangle whose features all fail
+ * gives no contact there. hit_weights reads the concave edges and vertices that a
+ * triangle tests, where they are nearer than R: such a triangle is kept while they are
+ * nearer than R + ext. */
+static int may_own(const rs_mesh *m, int t, const double p[3], double ext, double R)
 {
     const unsigned fl = m->tfirst[t];
     const int *tv = m->tri + 3 * t;
-    for (int j = 0; j < 3; j++)
-        if (((fl >> j & 1u) && m->edge_kind[m->tedge[3 * t + j]] == RS_EDGE_CONCAVE) ||
-            ((fl >> (3 + j) & 1u) && m->vconc[tv[j]]))
+    for (int j = 0; j < 3; j++) {
+        const int e = m->tedge[3 * t + j];
+        if ((fl >> j & 1u) && m->edge_kind[e] == RS_EDGE_CONCAVE &&
+            segment_distance(m->xyz + 3 * m->edge_v[2 * e], m->xyz + 3 * m->edge_v[2 * e + 1],
+                             p) < R + ext)
             return 1;
+        if ((fl >> (3 + j) & 1u) && m->vconc[tv[j]]) {
+            const double *x = m->xyz + 3 * tv[j];
+            const double dv[3] = {p[0] - x[0], p[1] - x[1], p[2] - x[2]};
+            if (rs_norm3(dv) < R + ext)
+                return 1;
+        }
+    }
     double h, sd[3];
     tri_bound(m, t, p, &h, sd);
     if (sd[0] > -ext && sd[1] > -ext && sd[2] > -ext)
@@ -545,7 +555,7 @@ static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
             const double d2 = tri_distance2(m, sc.ids[k], p);
             if (d2 <= lim * lim) {
                 near2 = fmin(near2, d2);
-                if (may_own(m, sc.ids[k], p, ext))
+                if (may_own(m, sc.ids[k], p, ext, r))
                     c->ids[nid++] = sc.ids[k];
             }
         }

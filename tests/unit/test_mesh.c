@@ -535,6 +535,83 @@ static void brute_force_meshes(void)
     ENSURE(lists_shared > 0);
 }
 
+/* Candidate lists keep the concave folds that shorten the shares of a sphere anywhere
+ * within their margin: a sphere of radius 0.15 placed 0.9 of its radius from each node
+ * of a bumpy height field (two-sided; valleys, ridges and saddles), on either side, with
+ * its list taken all but the margin (0.05) farther from the node, gets the contacts and
+ * the shares of the tree query, value for value. */
+static void lists_keep_the_folds_of_shares(void)
+{
+    poly_mesh pm;
+    height_field(&pm, 20, 14);
+    const int np = pm.np;
+    double *node = malloc(3 * (size_t)np * sizeof *node);
+    memcpy(node, pm.xyz, 3 * (size_t)np * sizeof *node);
+    char path[128];
+    snprintf(path, sizeof path, "%s/folds.off", tmpdir);
+    write_off(&pm, path);
+    pm_free(&pm);
+    rs_surface s;
+    rs_error e;
+    if (load("*SURFACE, TYPE=MESH, NAME=folds, FILE=folds.off, SIDES=2\n", &s, &e) != RS_OK) {
+        fprintf(stderr, "%s\n", e.msg);
+        free(node);
+        ENSURE(0);
+        return;
+    }
+    const double R = 0.15, margin = 0.05;
+    unsigned long long seed = 29;
+    int shared = 0, bad = 0;
+    rs_contacts ct, cl;
+    memset(&ct, 0, sizeof ct);
+    memset(&cl, 0, sizeof cl);
+    rs_cands cd;
+    memset(&cd, 0, sizeof cd);
+    for (int v = 0; v < np; v++)
+        for (int side = -1; side <= 1; side += 2) {
+            double u[3];
+            for (int d = 0; d < 3; d++)
+                u[d] = 2.0 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 - 1.0;
+            u[2] = side * (1.0 + fabs(u[2]));
+            const double l = rs_norm3(u);
+            double p[3], p0[3];
+            for (int d = 0; d < 3; d++) {
+                p[d] = node[3 * v + d] + 0.9 * R * u[d] / l;
+                p0[d] = p[d] + 0.99998 * margin * u[d] / l;
+            }
+            rs_query q;
+            memset(&q, 0, sizeof q);
+            q.n = 1;
+            q.slave.x = p0, q.slave.y = p0 + 1, q.slave.z = p0 + 2;
+            q.slave.radius = &R;
+            q.gap_max = 0.05;
+            q.dist_min = -R;
+            int ok = rs_surface_candidates(&s, &q, margin, &cd, &e) == RS_OK;
+            q.slave.x = p, q.slave.y = p + 1, q.slave.z = p + 2;
+            ct.n = cl.n = 0;
+            const int *lst = cd.ids, nl = ok ? cd.off[1] : 0;
+            ok = ok && rs_surface_query(&s, &q, &ct, &e) == RS_OK &&
+                 rs_surface_query_among(&s, &q, &lst, &nl, &cl, &e) == RS_OK &&
+                 cl.n == ct.n;
+            for (int k = 0; ok && k < ct.n; k++)
+                ok = cl.feature[k] == ct.feature[k] && cl.dist[k] == ct.dist[k] &&
+                     cl.share[k] == ct.share[k];
+            for (int k = 0; k < ct.n; k++)
+                shared += ct.share[k] < 1.0;
+            if (!ok) {
+                fprintf(stderr, "node %d, side %d: the lists change the contacts\n", v, side);
+                bad++;
+            }
+        }
+    ENSURE(bad == 0);
+    ENSURE(shared > 50);
+    free(node);
+    rs_cands_free(&cd);
+    rs_contacts_free(&ct);
+    rs_contacts_free(&cl);
+    rs_surface_free(&s);
+}
+
 /* A mesh large enough that the list query fetches its candidates' records ahead
  * (mesh_query.c, RS_MESH_PREFETCH_MIN) and 4000 spheres in one query: through candidate
  * lists the contacts are those of the tree query, value for value, and the nearest of
@@ -1584,6 +1661,7 @@ int main(void)
         return 1;
     RS_RUN(brute_force_meshes);
     RS_RUN(large_mesh_lists_are_the_tree);
+    RS_RUN(lists_keep_the_folds_of_shares);
     RS_RUN(one_contact_outside_convex);
     RS_RUN(flat_fan_one_contact);
     RS_RUN(cone_apex_contact_per_face);
