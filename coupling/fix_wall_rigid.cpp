@@ -650,11 +650,16 @@ void FixWallRigid::build_candidates()
 
 /* Each candidate's list of surface candidates within the step's reach (the tracking
  * thickness and look-ahead, down to the deepest penetration a step asks for) grown by
- * the skin: the lists stay complete until the next refresh, which comes before a
- * particle or the wall has moved half a skin. */
+ * a margin, what particle and wall may move before the next refresh. The refresh comes
+ * before the wall has moved half a skin. Where LIGGGHTS checks every step and builds as
+ * soon as a particle has moved half a skin (neigh_modify delay 0 every 1 check yes),
+ * a wall that stays in place needs half a skin; otherwise the margin is the skin. */
 void FixWallRigid::build_candidate_lists()
 {
     const int nlocal = atom->nlocal;
+    const bool half_skin =
+        !moving_ && neighbor->delay == 0 && neighbor->every == 1 && neighbor->dist_check;
+    const double margin = half_skin ? 0.5 * neighbor->skin : neighbor->skin;
     cfirst_.resize(nlocal);
     cnum_.resize(nlocal);
     cids_.clear();
@@ -666,7 +671,7 @@ void FixWallRigid::build_candidate_lists()
         rs_query q = sphere_query(cand_.data() + b0, n);
         q.gap_max = tracking_ + lookahead_;
         q.dist_min = -(rglob_ + lookahead_);
-        if (rs_surface_candidates(&surf_, &q, neighbor->skin, &cands_, &err) != RS_OK)
+        if (rs_surface_candidates(&surf_, &q, margin, &cands_, &err) != RS_OK)
             fail_one(std::string("surface candidates: ") + err.msg);
         const size_t base = cids_.size();
         cids_.insert(cids_.end(), cands_.ids, cands_.ids + cands_.off[n]);
