@@ -313,19 +313,26 @@ static int load(const char *text, rs_surface *s, rs_error *e)
     return rs_surface_read(path, NULL, s, e);
 }
 
-/* Writes m as NAME.off, frees it and reads it as surface NAME. */
-static int load_pm(poly_mesh *m, const char *name, rs_surface *s)
+/* Writes m as NAME.off, frees it and reads it as surface NAME, one- or two-sided. */
+static int load_pm_sides(poly_mesh *m, const char *name, int sides, rs_surface *s)
 {
     char path[128], text[160];
     snprintf(path, sizeof path, "%s/%s.off", tmpdir, name);
     write_off(m, path);
     pm_free(m);
-    snprintf(text, sizeof text, "*SURFACE, TYPE=MESH, NAME=%s, FILE=%s.off\n", name, name);
+    snprintf(text, sizeof text, "*SURFACE, TYPE=MESH, NAME=%s, FILE=%s.off%s\n", name, name,
+             sides == 2 ? ", SIDES=2" : "");
     rs_error e;
     const int rc = load(text, s, &e);
     if (rc)
         fprintf(stderr, "%s\n", e.msg);
     return rc;
+}
+
+/* The same, one-sided. */
+static int load_pm(poly_mesh *m, const char *name, rs_surface *s)
+{
+    return load_pm_sides(m, name, 1, s);
 }
 
 static void query(const rs_surface *s, int n, const double *x, const double *y,
@@ -547,14 +554,9 @@ static void lists_keep_the_folds_of_shares(void)
     const int np = pm.np;
     double *node = malloc(3 * (size_t)np * sizeof *node);
     memcpy(node, pm.xyz, 3 * (size_t)np * sizeof *node);
-    char path[128];
-    snprintf(path, sizeof path, "%s/folds.off", tmpdir);
-    write_off(&pm, path);
-    pm_free(&pm);
     rs_surface s;
     rs_error e;
-    if (load("*SURFACE, TYPE=MESH, NAME=folds, FILE=folds.off, SIDES=2\n", &s, &e) != RS_OK) {
-        fprintf(stderr, "%s\n", e.msg);
+    if (load_pm_sides(&pm, "folds", 2, &s) != RS_OK) {
         free(node);
         ENSURE(0);
         return;
