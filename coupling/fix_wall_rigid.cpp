@@ -652,13 +652,13 @@ void FixWallRigid::build_candidates()
  * thickness and look-ahead, down to the deepest penetration a step asks for) grown by
  * a margin, what particle and wall may move before the next refresh. The refresh comes
  * before the wall has moved half a skin. Where LIGGGHTS checks every step and builds as
- * soon as a particle has moved half a skin (neigh_modify delay 0 every 1 check yes),
- * a wall that stays in place needs half a skin; otherwise the margin is the skin. */
+ * soon as a particle has moved half a skin (neigh_modify delay 0 every 1 check yes once
+ * no), a wall that stays in place needs half a skin; otherwise the margin is the skin. */
 void FixWallRigid::build_candidate_lists()
 {
     const int nlocal = atom->nlocal;
-    const bool half_skin =
-        !moving_ && neighbor->delay == 0 && neighbor->every == 1 && neighbor->dist_check;
+    const bool half_skin = !moving_ && neighbor->delay == 0 && neighbor->every == 1 &&
+                           neighbor->dist_check && !neighbor->build_once;
     const double margin = half_skin ? 0.5 * neighbor->skin : neighbor->skin;
     cfirst_.resize(nlocal);
     cnum_.resize(nlocal);

@@ -6,8 +6,9 @@ Pins: on a face interior, our MESH wall (an STL plate of 32 triangles, law hertz
 for a normal and an oblique, spinning impact; a sphere dropped exactly on the vertex
 that six coplanar triangles share rebounds as on LIGGGHTS's primitive plane (one
 contact, not six); and a sphere sliding across the plate's flat edges hands its history
-over, so its trajectory is the primitive plane's. Positions, velocities and spins agree
-to 1e-9 relative at every output step.
+over, so its trajectory is the primitive plane's; and a fast impact between neighbour
+builds that LIGGGHTS delays finds the plate in time. Positions, velocities and spins
+agree to 1e-9 relative at every output step.
 """
 import math
 
@@ -51,9 +52,10 @@ def fan(radius):
     return [(o, p[k], p[(k + 1) % 6]) for k in range(6)]
 
 
-def compare(s, name, ours, ref, atoms, steps, gravity, integrator, box, touched):
+def compare(s, name, ours, ref, atoms, steps, gravity, integrator, box, touched,
+            extra_props=""):
     L.compare_walls(s, name, ours, ref, atoms, steps, gravity, integrator, box, touched,
-                    DT, SCALES, TOL)
+                    DT, SCALES, TOL, extra_props)
 
 
 def body(s):
@@ -88,6 +90,14 @@ def body(s):
     compare(s, "mesh_slide_across_edges", ours, prim,
             L.sphere(1, (-0.002, 0.005, R), R, RHO, v=(0.5, 0.2, 0)),
             6000, True, "nve/sphere", box, lambda f: f[-1][1][1]["omegay"] > 0)
+    # 5. a fast impact under LIGGGHTS's default delay between neighbour builds (skin
+    #    0.5 mm, builds at most every 10 steps, 0.375 mm apart): the last build before
+    #    the impact finds the sphere 0.3 mm above the plate, more than half the skin, and
+    #    the next comes after it touched. Its candidate lists must reach a whole skin.
+    compare(s, "mesh_impact_delayed_builds", ours, prim,
+            L.sphere(1, (0.03, 0.07, R + 0.0003 + 3 * 0.000375), R, RHO, v=(0, 0, -3.75)),
+            400, False, "nve/sphere", box, vz_flips,
+            extra_props="neighbor 0.0005 bin\nneigh_modify delay 10\n")
     fr = L.read_dump(s.path("mesh_slide_across_edges_rigid.dump"))
     x, y = fr[-1][1][1]["x"], fr[-1][1][1]["y"]
     s.ck.check("mesh_slide_across_edges: the sphere crossed x = 0 and y = x", x > 0 and y < x,
