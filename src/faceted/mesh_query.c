@@ -478,11 +478,23 @@ static int may_own(const rs_mesh *m, int t, const double p[3], double ext, doubl
     return 0;
 }
 
-/* p, slave i of q, in the reference configuration. */
-static void slave_local(const rs_query *q, int i, double p[3])
+/* The query's pose, NULL where it is the identity (a mesh in its reference
+ * configuration): its points and results then need no transform. */
+static const rs_pose *moved_pose(const rs_query *q)
+{
+    const rs_pose *p = q->pose;
+    if (!p)
+        return NULL;
+    for (int a = 0; a < 9; a++)
+        if (p->R[a] != (a % 4 == 0 ? 1.0 : 0.0))
+            return p;
+    return p->T[0] != 0.0 || p->T[1] != 0.0 || p->T[2] != 0.0 ? p : NULL;
+}
+
+/* p, slave i of q, in the reference configuration (pose: moved_pose(q)). */
+static void slave_local(const rs_query *q, const rs_pose *pose, int i, double p[3])
 {
     const double x[3] = {q->slave.x[i], q->slave.y[i], q->slave.z[i]};
-    const rs_pose *pose = q->pose;
     if (pose) { /* X = R^T (x - T) */
         const double w[3] = {x[0] - pose->T[0], x[1] - pose->T[1], x[2] - pose->T[2]};
         for (int d = 0; d < 3; d++)
@@ -513,6 +525,7 @@ static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
             return rs_error_set(err, RS_ERR_NOMEM, "out of memory for candidate lists");
         c->offcap = q->n + 1;
     }
+    const rs_pose *pose = moved_pose(q);
     scratch sc;
     memset(&sc, 0, sizeof sc);
     int rc = RS_OK, nid = 0;
@@ -522,7 +535,7 @@ static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
         c->near[i] = 0.0;
         const double r = q->slave.radius ? q->slave.radius[i] : 0.0;
         double p[3];
-        slave_local(q, i, p);
+        slave_local(q, pose, i, p);
         /* as the query's reach (mesh_closest_among), from anywhere within extra */
         double lim = q->gap_max + r;
         if (-q->dist_min > lim)
@@ -615,7 +628,7 @@ static int mesh_closest_among(const rs_surface *s, const rs_query *q,
                             s->name);
     if (!q->slave.x || !q->slave.y || !q->slave.z)
         return rs_error_set(err, RS_ERR_ARG, "rs_surface_query: missing coordinates");
-    const rs_pose *pose = q->pose;
+    const rs_pose *pose = moved_pose(q);
     scratch sc;
     memset(&sc, 0, sizeof sc);
     int rc = RS_OK;
@@ -637,7 +650,7 @@ static int mesh_closest_among(const rs_surface *s, const rs_query *q,
         if (!(gap_lim >= 0.0))
             continue;
         double p[3];
-        slave_local(q, i, p);
+        slave_local(q, pose, i, p);
         /* The box reaches the gap limit and, behind a one-sided mesh, the penetrations
          * down to dist_min; without that bound, down to the nearest triangle. */
         double reach = gap_lim;
