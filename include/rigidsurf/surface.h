@@ -100,7 +100,8 @@ typedef struct rs_surface_ops {
     int ndir;                  ///< local directions: 2 (a plane problem) or 3
     rs_frame_convention frame; ///< how t1 and t2 follow from the principal frame
     /// Appends the contacts of every query point to out, in the principal frame (see
-    /// rs_frame_convention); contacts of one point are consecutive.
+    /// rs_frame_convention); contacts of one point are consecutive. A kind of the
+    /// convention RS_FRAME_GLOBAL_X leaves t1 and t2: the frame follows from n alone.
     int (*closest)(const struct rs_surface *s, const struct rs_query *q,
                    struct rs_contacts *out, rs_error *err);
     /// 1 when a contact may hand its history from feature fa to feature fb (the normal

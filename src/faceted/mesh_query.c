@@ -81,21 +81,6 @@ static void any_tangent(const double n[3], double t[3])
         t[d] /= l;
 }
 
-/* An orthonormal basis (t1, t2, n) for unit n, without a square root (Duff et al.,
- * "Building an orthonormal basis, revisited", 2017): the principal frame of a flat
- * feature, whose curvatures are 0 along any tangent. */
-static void tangent_basis(const double n[3], double t1[3], double t2[3])
-{
-    const double sg = copysign(1.0, n[2]);
-    const double a = -1.0 / (sg + n[2]), b = n[0] * n[1] * a;
-    t1[0] = 1.0 + sg * n[0] * n[0] * a;
-    t1[1] = sg * b;
-    t1[2] = -sg * n[0];
-    t2[0] = b;
-    t2[1] = sg + n[1] * n[1] * a;
-    t2[2] = -n[1];
-}
-
 /* One contact of the point being queried, in the reference configuration. */
 typedef struct hit {
     int feature;
@@ -683,7 +668,7 @@ static int mesh_closest_among(const rs_surface *s, const rs_query *q,
         for (int k = 0; k < sc.nhit; k++) {
             const hit *c = &sc.hits[k];
             const int o = out->n++;
-            double xm[3], n[3], t1[3], t2[3];
+            double xm[3], n[3];
             if (pose) { /* x = R X + T */
                 rs_matvec3(pose->R, c->x, xm);
                 rs_matvec3(pose->R, c->n, n);
@@ -693,17 +678,16 @@ static int mesh_closest_among(const rs_surface *s, const rs_query *q,
                 memcpy(xm, c->x, sizeof xm);
                 memcpy(n, c->n, sizeof n);
             }
-            tangent_basis(n, t1, t2);
             out->point[o] = i;
             out->feature[o] = c->feature;
             out->dist[o] = c->dist;
             out->share[o] = c->share;
+            /* flat: no curvature; t1 and t2 follow from n (RS_FRAME_GLOBAL_X,
+             * rs_frame_orient) */
             out->curv[0][o] = out->curv[1][o] = 0.0;
             for (int d = 0; d < 3; d++) {
                 out->xm[d][o] = xm[d];
                 out->nrm[d][o] = n[d];
-                out->t1[d][o] = t1[d];
-                out->t2[d][o] = t2[d];
             }
         }
         if (sc.shares_due) { /* the same in the reference and the current pose */
