@@ -55,15 +55,16 @@ static int edge_owns(const rs_mesh *m, int e, const double p[3])
 }
 
 /* Does vertex v own p: at or beyond v along each of its edges, (p - v).(w - v) <= 0 for
- * each neighbour w (the products of along_from)? */
-static int vertex_owns(const rs_mesh *m, int v, const double p[3])
+ * each neighbour w (the products of along_from)? With ext > 0: could it own a point
+ * within ext of p, (p - v).(w - v) <= ext |w - v| for each w (may_own)? */
+static int vertex_owns(const rs_mesh *m, int v, const double p[3], double ext)
 {
     const double *pv = m->xyz + 3 * v;
+    const double w[3] = {p[0] - pv[0], p[1] - pv[1], p[2] - pv[2]};
     for (int k = m->vert_e0[v]; k < m->vert_e0[v + 1]; k++) {
         const double *pw = m->xyz + 3 * m->vert_w[k];
-        if ((p[0] - pv[0]) * (pw[0] - pv[0]) + (p[1] - pv[1]) * (pw[1] - pv[1]) +
-                (p[2] - pv[2]) * (pw[2] - pv[2]) >
-            0.0)
+        const double u[3] = {pw[0] - pv[0], pw[1] - pv[1], pw[2] - pv[2]};
+        if (rs_dot3(w, u) > (ext > 0.0 ? ext * rs_norm3(u) : 0.0))
             return 0;
     }
     return 1;
@@ -349,7 +350,7 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
                              w0[2] * (pw[2] - pv[2]) >
                          0.0;
             }
-            if (!beyond && vertex_owns(m, v, p)) {
+            if (!beyond && vertex_owns(m, v, p, 0.0)) {
                 const double *x = m->xyz + 3 * v, *pn = m->vpn + 3 * v;
                 double dv[3] = {p[0] - x[0], p[1] - x[1], p[2] - x[2]};
                 const double L = rs_norm3(dv);
@@ -445,21 +446,9 @@ static int may_own(const rs_mesh *m, int t, const double p[3], double ext, doubl
         if (along_from(m, e, a, p) > -ext * L && along_from(m, e, b, p) > -ext * L)
             return 1;
     }
-    for (int j = 0; j < 3; j++) {
-        if (!(fl >> (3 + j) & 1u))
-            continue;
-        const int v = tv[j];
-        const double *pv = m->xyz + 3 * v;
-        int owns = 1;
-        for (int k = m->vert_e0[v]; k < m->vert_e0[v + 1] && owns; k++) {
-            const double *pw = m->xyz + 3 * m->vert_w[k];
-            const double u[3] = {pw[0] - pv[0], pw[1] - pv[1], pw[2] - pv[2]};
-            const double w[3] = {p[0] - pv[0], p[1] - pv[1], p[2] - pv[2]};
-            owns = !(rs_dot3(w, u) > ext * rs_norm3(u));
-        }
-        if (owns)
+    for (int j = 0; j < 3; j++)
+        if ((fl >> (3 + j) & 1u) && vertex_owns(m, tv[j], p, ext))
             return 1;
-    }
     return 0;
 }
 
