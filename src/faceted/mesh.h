@@ -10,8 +10,6 @@
 #define RS_MESH_FLAT_ANGLE 1e-9
 /// Vertices closer than this fraction of the mesh's size are welded.
 #define RS_MESH_WELD_REL 1e-9
-/// Doubles of a triangle's record (rs_mesh.trec): n, a0, then (m_j, c_j) for j = 0..2.
-#define RS_MESH_TREC 18
 /// Most triangles a mesh may have (feature ids stay ints).
 #define RS_MESH_MAX_TRI (1 << 27)
 
@@ -22,6 +20,28 @@ enum rs_edge_kind {
     RS_EDGE_BOUNDARY = 3,   ///< one face: owns the quarter space beyond it in front
     RS_EDGE_NONMANIFOLD = 4 ///< three faces or more: owns its wedge on either side
 };
+
+/// The query's record of a triangle: all it reads of a candidate triangle, in the three
+/// cache lines of one 192-byte block, so that a candidate costs three lines from memory
+/// on a mesh larger than the caches. Its integers repeat tri, tedge and tel of the mesh.
+typedef struct rs_mtri {
+    _Alignas(64) double n[3]; ///< unit normal
+    double a0[3];             ///< the first node
+    double e[3][4];           ///< per edge slot j the unit in-plane normal m_j into the
+                              ///< triangle, and c_j = m_j . (the edge's lower node): p's
+                              ///< side of edge j is p . m_j - c_j (across a flat edge the
+                              ///< second face holds exactly -m_j, -c_j of the first)
+    int v[3];                 ///< nodes (tri)
+    int edge[3];              ///< the edge of each slot (tedge)
+    int nbr[3];               ///< across slot j, 3 t' + j' of the other face of a two-face
+                              ///< edge, -1 at open and non-manifold edges
+    int el;                   ///< element (tel)
+    unsigned char first;      ///< bit j when the triangle is the first face of the edge of
+                              ///< slot j (edge_f[edge_f0[e]]), bit 3 + j when it is vfirst
+                              ///< of its node j: the query tests each edge and vertex from
+                              ///< that triangle alone
+} rs_mtri;
+_Static_assert(sizeof(rs_mtri) == 192, "a triangle's record spans three cache lines");
 
 /// A mesh as the query uses it. Triangles of one element (a planar quad) are
 /// consecutive; a face feature's index is its element.
@@ -41,23 +61,13 @@ typedef struct rs_mesh {
     unsigned char *edge_kind; ///< rs_edge_kind
     int *vert_e0;             ///< nv + 1: vertex v's edges lead to its neighbours
     int *vert_w;              ///< vert_w[vert_e0[v] .. vert_e0[v + 1]), one per edge
-    double *trec; ///< RS_MESH_TREC nt: per triangle its normal n, first node a0,
-                  ///< and for each edge slot j the unit in-plane normal m_j into
-                  ///< the triangle with c_j = m_j . (the edge's lower node):
-                  ///< p's side of edge j is p . m_j - c_j (across a flat edge the
-                  ///< second face holds exactly -m_j, -c_j of the first)
+    rs_mtri *rec; ///< nt: the query's records, 64-byte aligned
     int *vfirst;  ///< nv: the lowest-numbered triangle at each vertex
-    int *tnbr;    ///< 3 nt: across slot j of triangle t, 3 t' + j' of the other face
-                  ///< of a two-face edge, -1 at open and non-manifold edges
     double *vpn;  ///< 3 nv: angle-weighted pseudo-normal (unit)
     int *vlabel;  ///< nv: user node number of each vertex (the label of its first point
                   ///< in the file), or NULL: the vertex's index + 1
     unsigned char *vopen;  ///< nv: 1 on an open boundary or non-manifold edge
     unsigned char *vconc;  ///< nv: 1 at the end of a CONCAVE edge
-    unsigned char *tfirst; ///< nt: bit j when the triangle is the first face of the edge
-                           ///< of slot j (edge_f[edge_f0[e]]), bit 3 + j when it is
-                           ///< vfirst of its node j: the query tests each edge and
-                           ///< vertex from that triangle alone
     double lo[3], hi[3];   ///< bounds
     double size;           ///< the bounds' diagonal
     void *tree;            ///< the AABB tree (cgal_mesh.h)

@@ -46,11 +46,9 @@ void rs_mesh_free(rs_mesh *m)
     free(m->edge_kind);
     free(m->vert_e0);
     free(m->vert_w);
-    free(m->trec);
+    free(m->rec);
     free(m->vfirst);
-    free(m->tnbr);
     free(m->vconc);
-    free(m->tfirst);
     free(m->vpn);
     free(m->vlabel);
     free(m->vopen);
@@ -411,24 +409,25 @@ static int finish_topology(rs_mesh *m, int two_sided)
             m->vpn[3 * v + d] = l > 0.0 ? m->vpn[3 * v + d] / l : 0.0;
     }
     /* the query's per-triangle records and each vertex's first triangle */
-    m->trec = xmalloc(RS_MESH_TREC * (size_t)m->nt, sizeof(double));
+    if ((size_t)m->nt + 1 > SIZE_MAX / sizeof(rs_mtri))
+        goto done;
+    m->rec = aligned_alloc(_Alignof(rs_mtri), ((size_t)m->nt + 1) * sizeof(rs_mtri));
     m->vfirst = xmalloc((size_t)m->nv, sizeof(int));
-    if (!m->trec || !m->vfirst)
+    if (!m->rec || !m->vfirst)
         goto done;
-    m->tnbr = xmalloc(3 * (size_t)m->nt, sizeof(int));
-    if (!m->tnbr)
-        goto done;
+    memset(m->rec, 0, ((size_t)m->nt + 1) * sizeof(rs_mtri));
     for (int t = 0; t < m->nt; t++)
         for (int j = 0; j < 3; j++) {
             const int e = m->tedge[3 * t + j];
-            m->tnbr[3 * t + j] = -1;
+            rs_mtri *r = m->rec + t;
+            r->nbr[j] = -1;
             if (m->edge_f0[e + 1] - m->edge_f0[e] != 2)
                 continue;
             const int o = m->edge_f[m->edge_f0[e]] == t ? m->edge_f[m->edge_f0[e] + 1]
                                                         : m->edge_f[m->edge_f0[e]];
             for (int jo = 0; jo < 3; jo++)
                 if (m->tedge[3 * o + jo] == e)
-                    m->tnbr[3 * t + j] = 3 * o + jo;
+                    r->nbr[j] = 3 * o + jo;
         }
     /* vertices at the end of a concave edge, where contacts may begin or end while a
      * sphere overlaps them (the query's shares) */
@@ -444,31 +443,28 @@ static int finish_topology(rs_mesh *m, int two_sided)
     for (int t = m->nt - 1; t >= 0; t--)
         for (int j = 0; j < 3; j++)
             m->vfirst[m->tri[3 * t + j]] = t;
-    m->tfirst = xmalloc((size_t)m->nt, 1);
-    if (!m->tfirst)
-        goto done;
     for (int t = 0; t < m->nt; t++) {
+        rs_mtri *r = m->rec + t;
         unsigned bits = 0;
         for (int j = 0; j < 3; j++) {
             const int e = m->tedge[3 * t + j];
             bits |= (unsigned)(m->edge_f[m->edge_f0[e]] == t) << j;
             bits |= (unsigned)(m->vfirst[m->tri[3 * t + j]] == t) << (3 + j);
+            r->v[j] = m->tri[3 * t + j];
+            r->edge[j] = e;
         }
-        m->tfirst[t] = (unsigned char)bits;
-    }
-    for (int t = 0; t < m->nt; t++) {
-        double *r = m->trec + RS_MESH_TREC * (size_t)t;
+        r->first = (unsigned char)bits;
+        r->el = m->tel[t];
         for (int d = 0; d < 3; d++) {
-            r[d] = tn[3 * t + d];
-            r[3 + d] = m->xyz[3 * m->tri[3 * t] + d];
+            r->n[d] = tn[3 * t + d];
+            r->a0[d] = m->xyz[3 * m->tri[3 * t] + d];
         }
         for (int j = 0; j < 3; j++) {
             const double *mm = tm + 9 * t + 3 * j;
             const double *a = m->xyz + 3 * m->edge_v[2 * m->tedge[3 * t + j]];
-            double *rj = r + 6 + 4 * j;
             for (int d = 0; d < 3; d++)
-                rj[d] = mm[d];
-            rj[3] = a[0] * mm[0] + a[1] * mm[1] + a[2] * mm[2];
+                r->e[j][d] = mm[d];
+            r->e[j][3] = a[0] * mm[0] + a[1] * mm[1] + a[2] * mm[2];
         }
     }
     rc = 0;

@@ -23,10 +23,10 @@
 #include <string.h>
 #include <sys/stat.h>
 
-/* p's side of edge slot j of triangle t: p . m_j - c_j (rs_mesh.trec), > 0 inside. */
+/* p's side of edge slot j of triangle t: p . m_j - c_j (rs_mtri.e), > 0 inside. */
 static inline double side_of(const rs_mesh *m, int t, int j, const double p[3])
 {
-    const double *r = m->trec + RS_MESH_TREC * (size_t)t + 6 + 4 * j;
+    const double *r = m->rec[t].e[j];
     return p[0] * r[0] + p[1] * r[1] + p[2] * r[2] - r[3];
 }
 
@@ -119,11 +119,12 @@ static int push_hit(scratch *s, const hit *h)
 static inline double tri_bound(const rs_mesh *m, int t, const double p[3], double *h,
                                double sd[3])
 {
-    const double *r = m->trec + RS_MESH_TREC * (size_t)t;
-    *h = (p[0] - r[3]) * r[0] + (p[1] - r[4]) * r[1] + (p[2] - r[5]) * r[2];
+    const rs_mtri *r = m->rec + t;
+    *h = (p[0] - r->a0[0]) * r->n[0] + (p[1] - r->a0[1]) * r->n[1] +
+         (p[2] - r->a0[2]) * r->n[2];
     double out = 0.0;
     for (int j = 0; j < 3; j++) {
-        const double *rj = r + 6 + 4 * j;
+        const double *rj = r->e[j];
         sd[j] = p[0] * rj[0] + p[1] * rj[1] + p[2] * rj[2] - rj[3];
         out = -sd[j] > out ? -sd[j] : out;
     }
@@ -157,8 +158,8 @@ static double tri_distance2(const rs_mesh *m, int t, const double p[3])
     for (int j = 0; j < 3; j++) {
         if (sd[j] >= 0.0)
             continue;
-        best = fmin(best, segment_distance2(m->xyz + 3 * m->tri[3 * t + j],
-                                            m->xyz + 3 * m->tri[3 * t + (j + 1) % 3], p));
+        best = fmin(best, segment_distance2(m->xyz + 3 * m->rec[t].v[j],
+                                            m->xyz + 3 * m->rec[t].v[(j + 1) % 3], p));
     }
     return best;
 }
@@ -207,9 +208,10 @@ static int hit_weights(const rs_mesh *m, const double p[3], double R, const int 
         double h, sd[3];
         if (!(tri_bound(m, t, p, &h, sd) < R * R))
             continue; /* no edge or vertex of t within the sphere */
+        const rs_mtri *r = m->rec + t;
         for (int j = 0; j < 3; j++) {
-            const int e = m->tedge[3 * t + j];
-            if (!(m->tfirst[t] >> j & 1u) || m->edge_kind[e] != RS_EDGE_CONCAVE)
+            const int e = r->edge[j];
+            if (!(r->first >> j & 1u) || m->edge_kind[e] != RS_EDGE_CONCAVE)
                 continue; /* each concave edge once, from its lowest face */
             const double *a = m->xyz + 3 * m->edge_v[2 * e],
                          *b = m->xyz + 3 * m->edge_v[2 * e + 1];
@@ -224,8 +226,8 @@ static int hit_weights(const rs_mesh *m, const double p[3], double R, const int 
             }
         }
         for (int j = 0; j < 3; j++) {
-            const int v = m->tri[3 * t + j];
-            if (!(m->tfirst[t] >> (3 + j) & 1u) || !m->vconc[v])
+            const int v = r->v[j];
+            if (!(r->first >> (3 + j) & 1u) || !m->vconc[v])
                 continue; /* each such vertex once, from its lowest triangle */
             const double *x = m->xyz + 3 * v;
             const double dv[3] = {p[0] - x[0], p[1] - x[1], p[2] - x[2]};
@@ -260,8 +262,9 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
     const int one_sided = sides != 2;
     for (int k = 0; k < n; k++) {
         const int t = ids[k];
-        const int *tv = m->tri + 3 * t;
-        const double *nt = m->trec + RS_MESH_TREC * (size_t)t; /* its normal */
+        const rs_mtri *r = m->rec + t;
+        const int *tv = r->v;
+        const double *nt = r->n;
         double h, sd[3];
         if (!(tri_bound(m, t, p, &h, sd) <= lim * lim))
             continue;
@@ -272,7 +275,7 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
          * vertices are tested. */
         if (sd[0] > 0.0 && sd[1] > 0.0 && sd[2] > 0.0) {
             hit c;
-            c.feature = RS_FEATURE(RS_FEAT_FACE, m->tel[t]);
+            c.feature = RS_FEATURE(RS_FEAT_FACE, r->el);
             c.tri = t;
             const double sg = (!one_sided && h < 0.0) ? -1.0 : 1.0;
             c.dist = sg * h;
@@ -288,11 +291,11 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
             if (sd[j] > 0.0)
                 continue;
             /* an edge is tested from its lowest-numbered face: within reach, so is it */
-            if (!(m->tfirst[t] >> j & 1u))
+            if (!(r->first >> j & 1u))
                 continue;
-            const int e = m->tedge[3 * t + j];
+            const int e = r->edge[j];
             /* a two-face edge: this face leaves p outside (sd[j] <= 0), the other too? */
-            const int nb = m->tnbr[3 * t + j];
+            const int nb = r->nbr[j];
             const int owns = nb >= 0 ? !(side_of(m, nb / 3, nb % 3, p) > 0.0) &&
                                            along_from(m, e, m->edge_v[2 * e], p) > 0.0 &&
                                            along_from(m, e, m->edge_v[2 * e + 1], p) > 0.0
@@ -315,7 +318,7 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
                 double pn[3] = {0.0, 0.0, 0.0}; /* the faces' mean normal */
                 for (int q = 0; q < nf && q < 2; q++)
                     for (int d = 0; d < 3; d++)
-                        pn[d] += m->trec[RS_MESH_TREC * (size_t)m->edge_f[f0 + q] + d];
+                        pn[d] += m->rec[m->edge_f[f0 + q]].n[d];
                 double sg = 1.0;
                 if (one_sided && nf <= 2) {
                     if (rs_dot3(dv, pn) < 0.0) {
@@ -337,7 +340,7 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
         for (int j = 0; j < 3; j++) {
             if (sd[j] > 0.0 && sd[(j + 2) % 3] > 0.0)
                 continue; /* vertex j lies between slots j - 1 and j */
-            if (!(m->tfirst[t] >> (3 + j) & 1u))
+            if (!(r->first >> (3 + j) & 1u))
                 continue; /* tested from its lowest-numbered triangle */
             const int v = tv[j];
             /* its two edges in this triangle first (the same products as vertex_owns) */
@@ -386,7 +389,7 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
                     continue;
                 if (!(o->dist > c->dist || (o->dist == c->dist && o->feature < c->feature)))
                     continue;
-                const int *tc = m->tri + 3 * c->tri, *to = m->tri + 3 * o->tri;
+                const int *tc = m->rec[c->tri].v, *to = m->rec[o->tri].v;
                 for (int i = 0; i < 3 && !drop; i++)
                     for (int j = 0; j < 3; j++)
                         if (tc[i] == to[j])
@@ -414,10 +417,11 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
  * nearer than R + ext. */
 static int may_own(const rs_mesh *m, int t, const double p[3], double ext, double R)
 {
-    const unsigned fl = m->tfirst[t];
-    const int *tv = m->tri + 3 * t;
+    const rs_mtri *r = m->rec + t;
+    const unsigned fl = r->first;
+    const int *tv = r->v;
     for (int j = 0; j < 3; j++) {
-        const int e = m->tedge[3 * t + j];
+        const int e = r->edge[j];
         if ((fl >> j & 1u) && m->edge_kind[e] == RS_EDGE_CONCAVE &&
             segment_distance(m->xyz + 3 * m->edge_v[2 * e], m->xyz + 3 * m->edge_v[2 * e + 1],
                              p) < R + ext)
@@ -436,7 +440,7 @@ static int may_own(const rs_mesh *m, int t, const double p[3], double ext, doubl
     for (int j = 0; j < 3; j++) {
         if (!(fl >> j & 1u) || sd[j] > ext)
             continue; /* edge j is tested only where p is outside across it */
-        const int e = m->tedge[3 * t + j], nb = m->tnbr[3 * t + j];
+        const int e = r->edge[j], nb = r->nbr[j];
         if (nb >= 0 && side_of(m, nb / 3, nb % 3, p) > ext)
             continue; /* inside the other face */
         const int a = m->edge_v[2 * e], b = m->edge_v[2 * e + 1];
@@ -564,31 +568,24 @@ static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
  * ahead costs the instructions and gains nothing where the records stay cached. */
 #define RS_MESH_PREFETCH_MIN 32768
 
-/* Asks for the records of each triangle of ids[0 .. n) that the query reads: its row of
- * trec (144 bytes: up to four cache lines), its nodes, neighbours, edges, element and
- * first-face flags (stage 0); or its nodes' coordinates and neighbour offsets (stage 1). */
+/* Asks for what the query reads of each triangle of ids[0 .. n): its record, three cache
+ * lines (stage 0); or its nodes' coordinates and neighbour offsets, found through the
+ * record fetched before (stage 1). */
 static void prefetch_candidates(const rs_mesh *m, const int *ids, int n, int stage)
 {
     for (int k = 0; k < n; k++) {
-        const size_t t = (size_t)ids[k];
+        const rs_mtri *r = m->rec + ids[k];
         if (stage == 1) {
-            const int *tv = m->tri + 3 * t;
             for (int j = 0; j < 3; j++) {
-                RS_PREFETCH(m->xyz + 3 * (size_t)tv[j]);
-                RS_PREFETCH(m->vert_e0 + tv[j]);
+                RS_PREFETCH(m->xyz + 3 * (size_t)r->v[j]);
+                RS_PREFETCH(m->vert_e0 + r->v[j]);
             }
             continue;
         }
-        const double *r = m->trec + RS_MESH_TREC * t;
-        RS_PREFETCH(r);
-        RS_PREFETCH(r + 8);
-        RS_PREFETCH(r + 16);
-        RS_PREFETCH(r + RS_MESH_TREC - 1);
-        RS_PREFETCH(m->tri + 3 * t);
-        RS_PREFETCH(m->tnbr + 3 * t);
-        RS_PREFETCH(m->tedge + 3 * t);
-        RS_PREFETCH(m->tel + t);
-        RS_PREFETCH(m->tfirst + t);
+        const char *c = (const char *)r;
+        RS_PREFETCH(c);
+        RS_PREFETCH(c + 64);
+        RS_PREFETCH(c + 128);
     }
 }
 
@@ -908,7 +905,7 @@ static int mesh_facet_area(const rs_surface *s, int k, double *area, double n[3]
         rs_cross3(e1, e2, c);
         a += 0.5 * rs_norm3(c);
     }
-    const double *tn = m->trec + (size_t)RS_MESH_TREC * (size_t)m->el_t0[k];
+    const double *tn = m->rec[m->el_t0[k]].n;
     *area = a;
     n[0] = tn[0];
     n[1] = tn[1];
