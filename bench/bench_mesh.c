@@ -9,11 +9,14 @@
  *   B/tri  heap bytes the surface holds per triangle (glibc mallinfo2, after - before)
  *   tree   ns per sphere of rs_surface_query (the AABB tree at every query)
  *   hits   contacts found (of 20000 spheres)
+ *   cands  candidate triangles a sphere in its list (rs_surface_candidates)
  *   lists  ns per sphere of rs_surface_query_among with candidate lists (margin r/4),
  *          the step's cost in fix wall/rigid; the lists' own build in ns per sphere
  *   sorted the same two queries with the spheres in space-filling-curve (Morton) order,
  *          the order in which LIGGGHTS keeps its atoms (atom_modify sort, on by
  *          default) and so the order in which fix wall/rigid queries them
+ *
+ * and last the growth of each query's cost from the smallest size to the largest.
  *
  *   bench_mesh [--max N]
  *
@@ -60,7 +63,7 @@ static int cmp_keyed(const void *a, const void *b)
 
 /* Times the tree query, the lists' build and the list query of q (ns per sphere). */
 static void time_queries(const rs_surface *s, const rs_query *q, double margin, double *tree,
-                         double *lists_ns, double *build, int *hits)
+                         double *lists_ns, double *build, int *hits, double *cands)
 {
     rs_contacts c;
     memset(&c, 0, sizeof c);
@@ -93,6 +96,7 @@ static void time_queries(const rs_surface *s, const rs_query *q, double margin, 
     *tree = rs_bench_median(tt, REPS);
     *lists_ns = rs_bench_median(tl, REPS);
     *build = rs_bench_median(tb, REPS);
+    *cands = (double)cd.off[NQ] / NQ;
     rs_cands_free(&cd);
     rs_contacts_free(&c);
 }
@@ -147,8 +151,9 @@ int main(int argc, char **argv)
         if (!strcmp(argv[i], "--max"))
             nmax = atoi(argv[++i]);
     printf("# bench_mesh: %s build (%s)\n", RS_BUILD_TYPE, RS_BUILD_FLAGS);
-    printf("# %10s %10s %8s %8s %10s %10s %10s %10s %10s\n", "triangles", "load s",
-           "B/tri", "hits", "tree ns", "lists ns", "build ns", "tree srt", "lists srt");
+    printf("# %10s %10s %8s %8s %6s %10s %10s %10s %10s %10s\n", "triangles", "load s",
+           "B/tri", "hits", "cands", "tree ns", "lists ns", "build ns", "tree srt",
+           "lists srt");
     static double dir[NQ][3], x[NQ], y[NQ], z[NQ], r[NQ];
     unsigned long long seed = 88172645463325252ull;
     for (int i = 0; i < NQ; i++) {
@@ -177,6 +182,8 @@ int main(int argc, char **argv)
     q.slave.x = x, q.slave.y = y, q.slave.z = z, q.slave.radius = r;
     rs_query qs = q;
     qs.slave.x = sx, qs.slave.y = sy, qs.slave.z = sz;
+    double first[4] = {0.0}, last[4] = {0.0};
+    int nfirst = 0, nlast = 0;
     for (int n = 100; n <= nmax; n *= 10) {
         const double h = sqrt(4.0 * 3.14159265358979323846 / n), rad = 0.5 * h;
         for (int i = 0; i < NQ; i++) {
@@ -214,18 +221,31 @@ int main(int argc, char **argv)
             (double)((m1.uordblks + m1.hblkhd) - (m0.uordblks + m0.hblkhd)) / ntri;
         double tree, lists_ns, build, tree_s, lists_s, build_s;
         int hits, hits_s;
-        time_queries(&s, &q, 0.25 * rad, &tree, &lists_ns, &build, &hits);
-        time_queries(&s, &qs, 0.25 * rad, &tree_s, &lists_s, &build_s, &hits_s);
+        double cands, cands_s;
+        time_queries(&s, &q, 0.25 * rad, &tree, &lists_ns, &build, &hits, &cands);
+        time_queries(&s, &qs, 0.25 * rad, &tree_s, &lists_s, &build_s, &hits_s, &cands_s);
         if (hits_s != hits) {
             fprintf(stderr, "bench_mesh: %d contacts in Morton order, %d in random order\n",
                     hits_s, hits);
             return 1;
         }
-        printf("  %10d %10.3f %8.0f %8d %10.1f %10.1f %10.1f %10.1f %10.1f\n", ntri, tload,
-               bytes, hits, tree, lists_ns, build, tree_s, lists_s);
+        printf("  %10d %10.3f %8.0f %8d %6.2f %10.1f %10.1f %10.1f %10.1f %10.1f\n", ntri,
+               tload, bytes, hits, cands, tree, lists_ns, build, tree_s, lists_s);
         fflush(stdout);
+        const double row[4] = {tree, lists_ns, tree_s, lists_s};
+        if (!nfirst) {
+            memcpy(first, row, sizeof row);
+            nfirst = ntri;
+        }
+        memcpy(last, row, sizeof row);
+        nlast = ntri;
         rs_surface_free(&s);
     }
+    if (nlast > nfirst)
+        printf("# from %d to %d triangles the cost grows: tree %.2f x, lists %.2f x, "
+               "sorted: tree %.2f x, lists %.2f x (target: at most 3 x)\n",
+               nfirst, nlast, last[0] / first[0], last[1] / first[1], last[2] / first[2],
+               last[3] / first[3]);
     remove("bench_mesh.stl");
     remove("bench_mesh.inp");
     return 0;

@@ -23,7 +23,8 @@ enum rs_edge_kind {
 
 /// The query's record of a triangle: all it reads of a candidate triangle, in the three
 /// cache lines of one 192-byte block, so that a candidate costs three lines from memory
-/// on a mesh larger than the caches. Its integers repeat tri, tedge and tel of the mesh.
+/// on a mesh larger than the caches. Its integers repeat tri, tedge, tel and edge_kind of
+/// the mesh.
 typedef struct rs_mtri {
     _Alignas(64) double n[3]; ///< unit normal
     double a0[3];             ///< the first node
@@ -40,6 +41,7 @@ typedef struct rs_mtri {
                               ///< slot j (edge_f[edge_f0[e]]), bit 3 + j when it is vfirst
                               ///< of its node j: the query tests each edge and vertex from
                               ///< that triangle alone
+    unsigned char kind[3];    ///< the kind of each slot's edge (rs_edge_kind)
 } rs_mtri;
 _Static_assert(sizeof(rs_mtri) == 192, "a triangle's record spans three cache lines");
 

@@ -452,6 +452,7 @@ static int finish_topology(rs_mesh *m, int two_sided)
             bits |= (unsigned)(m->vfirst[m->tri[3 * t + j]] == t) << (3 + j);
             r->v[j] = m->tri[3 * t + j];
             r->edge[j] = e;
+            r->kind[j] = m->edge_kind[e];
         }
         r->first = (unsigned char)bits;
         r->el = m->tel[t];

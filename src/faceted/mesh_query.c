@@ -30,13 +30,28 @@ static inline double side_of(const rs_mesh *m, int t, int j, const double p[3])
     return p[0] * r[0] + p[1] * r[1] + p[2] * r[2] - r[3];
 }
 
-/* (p - v).(w - v) for edge e seen from its node v (the other node w). */
+/* (p - v).(w - v): the position of p along the edge of nodes v and w, seen from v. */
+static inline double along(const rs_mesh *m, int v, int w, const double p[3])
+{
+    const double *pv = m->xyz + 3 * v, *pw = m->xyz + 3 * w;
+    return (p[0] - pv[0]) * (pw[0] - pv[0]) + (p[1] - pv[1]) * (pw[1] - pv[1]) +
+           (p[2] - pv[2]) * (pw[2] - pv[2]);
+}
+
+/* along for edge e seen from its node v. */
 static double along_from(const rs_mesh *m, int e, int v, const double p[3])
 {
     const int a = m->edge_v[2 * e], b = m->edge_v[2 * e + 1];
-    const double *pv = m->xyz + 3 * v, *pw = m->xyz + 3 * (v == a ? b : a);
-    return (p[0] - pv[0]) * (pw[0] - pv[0]) + (p[1] - pv[1]) * (pw[1] - pv[1]) +
-           (p[2] - pv[2]) * (pw[2] - pv[2]);
+    return along(m, v, v == a ? b : a, p);
+}
+
+/* The nodes of the edge of slot j of triangle record r, lower index first as in edge_v:
+ * from the record, without a look into edge_v. */
+static inline void slot_nodes(const rs_mtri *r, int j, int *a, int *b)
+{
+    const int u = r->v[j], w = r->v[(j + 1) % 3];
+    *a = u < w ? u : w;
+    *b = u < w ? w : u;
 }
 
 /* Does edge e own p: strictly between its nodes, and outside each of its faces? */
@@ -210,11 +225,11 @@ static int hit_weights(const rs_mesh *m, const double p[3], double R, const int 
             continue; /* no edge or vertex of t within the sphere */
         const rs_mtri *r = m->rec + t;
         for (int j = 0; j < 3; j++) {
-            const int e = r->edge[j];
-            if (!(r->first >> j & 1u) || m->edge_kind[e] != RS_EDGE_CONCAVE)
+            if (!(r->first >> j & 1u) || r->kind[j] != RS_EDGE_CONCAVE)
                 continue; /* each concave edge once, from its lowest face */
-            const double *a = m->xyz + 3 * m->edge_v[2 * e],
-                         *b = m->xyz + 3 * m->edge_v[2 * e + 1];
+            int ia, ib;
+            slot_nodes(r, j, &ia, &ib);
+            const double *a = m->xyz + 3 * ia, *b = m->xyz + 3 * ib;
             const double dl = segment_distance(a, b, p), k2 = (R - dl) * (R + dl);
             if (!(k2 > 0.0))
                 continue;
@@ -294,17 +309,17 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
             if (!(r->first >> j & 1u))
                 continue;
             const int e = r->edge[j];
+            int ia, ib;
+            slot_nodes(r, j, &ia, &ib);
             /* a two-face edge: this face leaves p outside (sd[j] <= 0), the other too? */
             const int nb = r->nbr[j];
             const int owns = nb >= 0 ? !(side_of(m, nb / 3, nb % 3, p) > 0.0) &&
-                                           along_from(m, e, m->edge_v[2 * e], p) > 0.0 &&
-                                           along_from(m, e, m->edge_v[2 * e + 1], p) > 0.0
+                                           along(m, ia, ib, p) > 0.0 && along(m, ib, ia, p) > 0.0
                                      : edge_owns(m, e, p);
             if (owns) {
-                const int ia = m->edge_v[2 * e], ib = m->edge_v[2 * e + 1];
                 const double *a = m->xyz + 3 * ia, *b = m->xyz + 3 * ib;
                 const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-                const double f = along_from(m, e, ia, p) / rs_dot3(u, u);
+                const double f = along(m, ia, ib, p) / rs_dot3(u, u);
                 hit c;
                 c.feature = RS_FEATURE(RS_FEAT_EDGE, e);
                 c.tri = -1;
@@ -421,10 +436,10 @@ static int may_own(const rs_mesh *m, int t, const double p[3], double ext, doubl
     const unsigned fl = r->first;
     const int *tv = r->v;
     for (int j = 0; j < 3; j++) {
-        const int e = r->edge[j];
-        if ((fl >> j & 1u) && m->edge_kind[e] == RS_EDGE_CONCAVE &&
-            segment_distance(m->xyz + 3 * m->edge_v[2 * e], m->xyz + 3 * m->edge_v[2 * e + 1],
-                             p) < R + ext)
+        int a, b;
+        slot_nodes(r, j, &a, &b);
+        if ((fl >> j & 1u) && r->kind[j] == RS_EDGE_CONCAVE &&
+            segment_distance(m->xyz + 3 * a, m->xyz + 3 * b, p) < R + ext)
             return 1;
         if ((fl >> (3 + j) & 1u) && m->vconc[tv[j]]) {
             const double *x = m->xyz + 3 * tv[j];
@@ -440,14 +455,15 @@ static int may_own(const rs_mesh *m, int t, const double p[3], double ext, doubl
     for (int j = 0; j < 3; j++) {
         if (!(fl >> j & 1u) || sd[j] > ext)
             continue; /* edge j is tested only where p is outside across it */
-        const int e = r->edge[j], nb = r->nbr[j];
+        const int nb = r->nbr[j];
         if (nb >= 0 && side_of(m, nb / 3, nb % 3, p) > ext)
             continue; /* inside the other face */
-        const int a = m->edge_v[2 * e], b = m->edge_v[2 * e + 1];
+        int a, b;
+        slot_nodes(r, j, &a, &b);
         const double *pa = m->xyz + 3 * a, *pb = m->xyz + 3 * b;
         const double u[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
         const double L = rs_norm3(u);
-        if (along_from(m, e, a, p) > -ext * L && along_from(m, e, b, p) > -ext * L)
+        if (along(m, a, b, p) > -ext * L && along(m, b, a, p) > -ext * L)
             return 1;
     }
     for (int j = 0; j < 3; j++)
@@ -564,22 +580,22 @@ static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
  * would wait for each in turn. */
 #define RS_MESH_AHEAD 4
 #define RS_MESH_AHEAD_NODES 2
-/* Meshes of fewer triangles (records of about 14 MB) are left to the caches: fetching
+/* Meshes of fewer triangles (about 15 MB in all) are left to the caches: fetching
  * ahead costs the instructions and gains nothing where the records stay cached. */
 #define RS_MESH_PREFETCH_MIN 32768
 
 /* Asks for what the query reads of each triangle of ids[0 .. n): its record, three cache
- * lines (stage 0); or its nodes' coordinates and neighbour offsets, found through the
- * record fetched before (stage 1). */
+ * lines (stage 0); or its nodes' coordinates, found through the record fetched before
+ * (stage 1), which the tests of its edges and vertices read. A vertex's neighbours
+ * (vert_e0, vert_w) are left to be read when they are needed: on a fine mesh a sphere
+ * tests a vertex's ownership about once in twenty queries. */
 static void prefetch_candidates(const rs_mesh *m, const int *ids, int n, int stage)
 {
     for (int k = 0; k < n; k++) {
         const rs_mtri *r = m->rec + ids[k];
         if (stage == 1) {
-            for (int j = 0; j < 3; j++) {
+            for (int j = 0; j < 3; j++)
                 RS_PREFETCH(m->xyz + 3 * (size_t)r->v[j]);
-                RS_PREFETCH(m->vert_e0 + r->v[j]);
-            }
             continue;
         }
         const char *c = (const char *)r;
