@@ -62,8 +62,9 @@ static int cmp_keyed(const void *a, const void *b)
 }
 
 /* Times the tree query, the lists' build and the list query of q (ns per sphere). */
-static void time_queries(const rs_surface *s, const rs_query *q, double margin, double *tree,
-                         double *lists_ns, double *build, int *hits, double *cands)
+static void time_queries(const rs_surface *s, const rs_query *q, double margin,
+                         double *tree, double *lists_ns, double *build, int *hits,
+                         double *cands)
 {
     rs_contacts c;
     memset(&c, 0, sizeof c);

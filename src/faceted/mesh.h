@@ -63,16 +63,16 @@ typedef struct rs_mesh {
     unsigned char *edge_kind; ///< rs_edge_kind
     int *vert_e0;             ///< nv + 1: vertex v's edges lead to its neighbours
     int *vert_w;              ///< vert_w[vert_e0[v] .. vert_e0[v + 1]), one per edge
-    rs_mtri *rec; ///< nt: the query's records, 64-byte aligned
-    int *vfirst;  ///< nv: the lowest-numbered triangle at each vertex
-    double *vpn;  ///< 3 nv: angle-weighted pseudo-normal (unit)
-    int *vlabel;  ///< nv: user node number of each vertex (the label of its first point
-                  ///< in the file), or NULL: the vertex's index + 1
-    unsigned char *vopen;  ///< nv: 1 on an open boundary or non-manifold edge
-    unsigned char *vconc;  ///< nv: 1 at the end of a CONCAVE edge
-    double lo[3], hi[3];   ///< bounds
-    double size;           ///< the bounds' diagonal
-    void *tree;            ///< the AABB tree (cgal_mesh.h)
+    rs_mtri *rec;             ///< nt: the query's records, 64-byte aligned
+    int *vfirst;              ///< nv: the lowest-numbered triangle at each vertex
+    double *vpn;              ///< 3 nv: angle-weighted pseudo-normal (unit)
+    int *vlabel; ///< nv: user node number of each vertex (the label of its first point
+                 ///< in the file), or NULL: the vertex's index + 1
+    unsigned char *vopen; ///< nv: 1 on an open boundary or non-manifold edge
+    unsigned char *vconc; ///< nv: 1 at the end of a CONCAVE edge
+    double lo[3], hi[3];  ///< bounds
+    double size;          ///< the bounds' diagonal
+    void *tree;           ///< the AABB tree (cgal_mesh.h)
 } rs_mesh;
 
 /// Builds the mesh of a polygon soup: scale and placement (rot row-major columns ex, ey,

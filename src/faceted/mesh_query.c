@@ -314,7 +314,8 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
             /* a two-face edge: this face leaves p outside (sd[j] <= 0), the other too? */
             const int nb = r->nbr[j];
             const int owns = nb >= 0 ? !(side_of(m, nb / 3, nb % 3, p) > 0.0) &&
-                                           along(m, ia, ib, p) > 0.0 && along(m, ib, ia, p) > 0.0
+                                           along(m, ia, ib, p) > 0.0 &&
+                                           along(m, ib, ia, p) > 0.0
                                      : edge_owns(m, e, p);
             if (owns) {
                 const double *a = m->xyz + 3 * ia, *b = m->xyz + 3 * ib;
