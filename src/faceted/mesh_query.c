@@ -115,17 +115,38 @@ typedef struct scratch {
     int shares_due; /* the hits' shares hold weights (hit_weights) */
 } scratch;
 
-static int push_hit(scratch *s, const hit *h)
+/* The slot of the next hit of s, grown as needed (NULL: out of memory); it counts once
+ * s->nhit is advanced. Hits are written and read field by field: a copy of the whole
+ * struct would load it in pieces wider than the stores that wrote it, and wait for
+ * them. */
+static hit *next_hit(scratch *s)
 {
     if (s->nhit == s->hcap) {
         int cap = s->hcap ? 2 * s->hcap : 16;
         hit *nh = realloc(s->hits, (size_t)cap * sizeof *nh);
         if (!nh)
-            return -1;
+            return NULL;
         s->hits = nh;
         s->hcap = cap;
     }
-    s->hits[s->nhit++] = *h;
+    return &s->hits[s->nhit];
+}
+
+/* Appends a hit to s, field by field; -1 when out of memory. */
+static int put_hit(scratch *s, int feature, int tri, const double x[3], const double n[3],
+                   double dist)
+{
+    hit *c = next_hit(s);
+    if (!c)
+        return -1;
+    c->feature = feature;
+    c->tri = tri;
+    c->dist = dist;
+    for (int d = 0; d < 3; d++) {
+        c->x[d] = x[d];
+        c->n[d] = n[d];
+    }
+    s->nhit++;
     return 0;
 }
 
@@ -289,16 +310,13 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
          * vertex itself, with both sides 0): the sides found here decide which edges and
          * vertices are tested. */
         if (sd[0] > 0.0 && sd[1] > 0.0 && sd[2] > 0.0) {
-            hit c;
-            c.feature = RS_FEATURE(RS_FEAT_FACE, r->el);
-            c.tri = t;
             const double sg = (!one_sided && h < 0.0) ? -1.0 : 1.0;
-            c.dist = sg * h;
-            for (int d = 0; d < 3; d++) {
-                c.x[d] = p[d] - h * nt[d];
-                c.n[d] = sg * nt[d];
-            }
-            if (c.dist <= gap_lim && c.dist >= dist_min && push_hit(s, &c))
+            const double dist = sg * h;
+            if (!(dist <= gap_lim && dist >= dist_min))
+                continue;
+            const double x[3] = {p[0] - h * nt[0], p[1] - h * nt[1], p[2] - h * nt[2]};
+            const double n[3] = {sg * nt[0], sg * nt[1], sg * nt[2]};
+            if (put_hit(s, RS_FEATURE(RS_FEAT_FACE, r->el), t, x, n, dist))
                 return -1;
             continue;
         }
@@ -321,13 +339,10 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
                 const double *a = m->xyz + 3 * ia, *b = m->xyz + 3 * ib;
                 const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
                 const double f = along(m, ia, ib, p) / rs_dot3(u, u);
-                hit c;
-                c.feature = RS_FEATURE(RS_FEAT_EDGE, e);
-                c.tri = -1;
-                double dv[3];
+                double x[3], dv[3], n[3];
                 for (int d = 0; d < 3; d++) {
-                    c.x[d] = a[d] + f * u[d];
-                    dv[d] = p[d] - c.x[d];
+                    x[d] = a[d] + f * u[d];
+                    dv[d] = p[d] - x[d];
                 }
                 const double L = rs_norm3(dv);
                 const int f0 = m->edge_f0[e], nf = m->edge_f0[e + 1] - f0;
@@ -345,11 +360,12 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
                 }
                 const double lp = rs_norm3(pn);
                 for (int d = 0; d < 3; d++)
-                    c.n[d] = L > 0.0 ? sg * dv[d] / L : (lp > 0.0 ? pn[d] / lp : 0.0);
+                    n[d] = L > 0.0 ? sg * dv[d] / L : (lp > 0.0 ? pn[d] / lp : 0.0);
                 if (!(L > 0.0) && !(lp > 0.0))
-                    any_tangent(u, c.n);
-                c.dist = sg * L;
-                if (c.dist <= gap_lim && c.dist >= dist_min && push_hit(s, &c))
+                    any_tangent(u, n);
+                const double dist = sg * L;
+                if (dist <= gap_lim && dist >= dist_min &&
+                    put_hit(s, RS_FEATURE(RS_FEAT_EDGE, e), -1, x, n, dist))
                     return -1;
             }
         }
@@ -379,15 +395,12 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
                         continue; /* behind an open boundary: nothing */
                     sg = -1.0;    /* behind a pocket: a penetration */
                 }
-                hit c;
-                c.feature = RS_FEATURE(RS_FEAT_VERTEX, v);
-                c.tri = -1;
-                for (int d = 0; d < 3; d++) {
-                    c.x[d] = x[d];
-                    c.n[d] = L > 0.0 ? sg * dv[d] / L : pn[d];
-                }
-                c.dist = sg * L;
-                if (c.dist <= gap_lim && c.dist >= dist_min && push_hit(s, &c))
+                double n[3];
+                for (int d = 0; d < 3; d++)
+                    n[d] = L > 0.0 ? sg * dv[d] / L : pn[d];
+                const double dist = sg * L;
+                if (dist <= gap_lim && dist >= dist_min &&
+                    put_hit(s, RS_FEATURE(RS_FEAT_VERTEX, v), -1, x, n, dist))
                     return -1;
             }
         }
@@ -411,8 +424,11 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
                         if (tc[i] == to[j])
                             drop = 1;
             }
-            if (!drop)
-                s->hits[w++] = *c;
+            if (!drop) {
+                if (w != k)
+                    s->hits[w] = *c;
+                w++;
+            }
         }
         s->nhit = w;
     }
@@ -678,8 +694,10 @@ static int mesh_closest_among(const rs_surface *s, const rs_query *q,
                 for (int d = 0; d < 3; d++)
                     xm[d] += pose->T[d];
             } else {
-                memcpy(xm, c->x, sizeof xm);
-                memcpy(n, c->n, sizeof n);
+                for (int d = 0; d < 3; d++) {
+                    xm[d] = c->x[d];
+                    n[d] = c->n[d];
+                }
             }
             out->point[o] = i;
             out->feature[o] = c->feature;
