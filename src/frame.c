@@ -67,9 +67,9 @@ void rs_frame_orient(rs_frame_convention conv, rs_contacts *c, int k0, int k1)
         }
         break;
     case RS_FRAME_GLOBAL_X: /* the curvatures stay the principal ones */
-        faceted_block(k1 - k0, c->nrm[0] + k0, c->nrm[1] + k0, c->nrm[2] + k0, c->t1[0] + k0,
-                      c->t1[1] + k0, c->t1[2] + k0, c->t2[0] + k0, c->t2[1] + k0,
-                      c->t2[2] + k0);
+        faceted_block(k1 - k0, c->nrm[0] + k0, c->nrm[1] + k0, c->nrm[2] + k0,
+                      c->t1[0] + k0, c->t1[1] + k0, c->t1[2] + k0, c->t2[0] + k0,
+                      c->t2[1] + k0, c->t2[2] + k0);
         break;
     }
 }
