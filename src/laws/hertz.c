@@ -78,6 +78,7 @@ RS_INLINE void hertz_block(int n, const int nsv, double dt, const double *restri
                            const int update)
 {
     const double c56 = rs_sqrt_five_over_six;
+    RS_IVDEP
     for (int c = 0; c < n; ++c) {
         const double d = rd[nd * c];
         const int live = !RS_LAW_LEAVING(d) && d > 0.0;
@@ -135,11 +136,14 @@ RS_INLINE void hertz_block(int n, const int nsv, double dt, const double *restri
         if (update) {
             svd[c] = live ? (Fn_damping * -vn + damp_power) * dt * per_area : 0.0;
             sfd[c] = live ? slip_work * per_area : 0.0;
-            sv[(size_t)nsv * c] = live ? sn0 : forget ? 0.0 : so0;
+            /* the kept shear goes through a product with 0 or 1, so that the store is
+             * not a conditional one (which the vectoriser cannot make strided) */
+            const double keep = (live || forget) ? 0.0 : 1.0;
+            sv[(size_t)nsv * c] = (live ? sn0 : 0.0) + keep * so0;
             if (nd == 3)
-                sv[(size_t)nsv * c + 1] = live ? sn1 : forget ? 0.0 : so1;
+                sv[(size_t)nsv * c + 1] = (live ? sn1 : 0.0) + keep * so1;
             else
-                sv[(size_t)nsv * c + 1] = forget ? 0.0 : sv[(size_t)nsv * c + 1];
+                sv[(size_t)nsv * c + 1] = (forget ? 0.0 : 1.0) * sv[(size_t)nsv * c + 1];
         }
     }
 }
