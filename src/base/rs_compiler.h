@@ -44,13 +44,12 @@
 #endif
 
 /* The loop's arrays do not overlap: they are restrict parameters of an always-inlined
- * function, which the vectoriser no longer sees as such once it is inlined. Without it,
- * a loop over many arrays needs more run-time overlap checks than GCC makes, and stays
- * scalar. */
+ * function, which GCC's vectoriser no longer sees as such once it is inlined. Without
+ * it, a loop over many arrays needs more run-time overlap checks than GCC makes, and
+ * stays scalar. (Clang's own pragma for this turns every copy it cannot vectorise, such
+ * as a strided store with gaps, into a warning.) */
 #if defined(__GNUC__) && !defined(__clang__)
 #define RS_IVDEP _Pragma("GCC ivdep")
-#elif defined(__clang__)
-#define RS_IVDEP _Pragma("clang loop vectorize(assume_safety)")
 #else
 #define RS_IVDEP
 #endif
