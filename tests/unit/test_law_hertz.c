@@ -173,10 +173,68 @@ static void test_hertz_maxval_contact_gets_zero_force(void)
     }
     F.stress[0] = 5.0;
     F.statev[0] = 1e-6;
+    F.statev[1] = -2e-6;
     rs_error err;
     ENSURE(rs_law_call(law(), &F.b, &err) == RS_OK);
     ENSURE(F.stress[0] == 0.0 && F.stress[1] == 0.0 && F.stress[2] == 0.0);
     ENSURE(F.sed[0] == 0.0 && F.svd[0] == 0.0);
+    /* a leaving contact keeps its shear: only an open one forgets it */
+    ENSURE(F.statev[0] == 1e-6 && F.statev[1] == -2e-6);
+}
+
+/* The inputs of contact k of the mixed block below: sticking, capped by friction, open,
+ * leaving, with turned frames, other radii, masses and areas. */
+static void mixed_contact(law_fix *f, int slot, int k)
+{
+    const int kind = k % 4; /* 0 sticking, 1 capped, 2 open, 3 leaving */
+    const double a = 0.1 * (k + 1);
+    f->rdisp[3 * slot] = kind == 2 ? -1e-5 * (k + 1) : 1e-5 * (k + 2);
+    f->drdisp[3 * slot + 1] = 1e-7 * cos(a);
+    f->drdisp[3 * slot + 2] = 1e-7 * sin(a);
+    f->vrel[3 * slot] = -0.1 * a;
+    f->vrel[3 * slot + 1] = 0.02 * a;
+    f->vrel[3 * slot + 2] = -0.01 * a;
+    f->statev[2 * slot] = kind == 1 ? 4e-4 : 2e-7 * (k + 1);
+    f->statev[2 * slot + 1] = kind == 1 ? -3e-4 : -1e-7 * k;
+    RS_DROT(f->drot, 0, 0, slot) = RS_DROT(f->drot, 1, 1, slot) = cos(0.01 * k);
+    RS_DROT(f->drot, 1, 0, slot) = sin(0.01 * k);
+    RS_DROT(f->drot, 0, 1, slot) = -sin(0.01 * k);
+    f->radius[slot] = 0.01 + 1e-3 * k;
+    f->mass[slot] = 1e-3 * (1.0 + 0.1 * k);
+    f->area[slot] = 1.0 + 0.5 * k;
+    if (kind == 3)
+        for (int i = 0; i < 3; ++i)
+            f->rdisp[3 * slot + i] = f->drdisp[3 * slot + i] = RS_MAXVAL;
+}
+
+/* A block of contacts gives each the values it gets alone, bit for bit: the block loop
+ * runs several contacts at once (vectorized) and the rest one at a time, and both must
+ * be the law of one contact. */
+static void test_hertz_block_equals_contacts_one_by_one(void)
+{
+    enum { N = 11 };
+    static law_fix B;
+    law_fix_init(&B, law(), P, 7, N, 3);
+    for (int k = 0; k < N; ++k)
+        mixed_contact(&B, k, k);
+    rs_error err;
+    ENSURE(rs_law_call(law(), &B.b, &err) == RS_OK);
+    int capped = 0;
+    for (int k = 0; k < N; ++k) {
+        law_fix_init(&F, law(), P, 7, 1, 3);
+        mixed_contact(&F, 0, k);
+        ENSURE(rs_law_call(law(), &F.b, &err) == RS_OK);
+        for (int i = 0; i < 3; ++i)
+            ENSURE(B.stress[3 * k + i] == F.stress[i]);
+        ENSURE(B.statev[2 * k] == F.statev[0] && B.statev[2 * k + 1] == F.statev[1]);
+        ENSURE(B.sed[k] == F.sed[0] && B.svd[k] == F.svd[0] && B.sfd[k] == F.sfd[0]);
+        capped += F.sfd[0] > 0.0;
+        if (k % 4 == 2) /* open: forgets */
+            ENSURE(F.statev[0] == 0.0 && F.statev[1] == 0.0 && F.stress[0] == 0.0);
+        if (k % 4 == 3) /* leaving: keeps */
+            ENSURE(F.statev[0] == 2e-7 * (k + 1) && F.statev[1] == -1e-7 * k);
+    }
+    ENSURE(capped >= 2); /* the capped contacts slip */
 }
 
 static void test_hertz_setup_call_does_not_advance_history(void)
@@ -244,6 +302,7 @@ int main(void)
     RS_RUN(test_hertz_open_contact_clears_history);
     RS_RUN(test_hertz_maxval_contact_gets_zero_force);
     RS_RUN(test_hertz_setup_call_does_not_advance_history);
+    RS_RUN(test_hertz_block_equals_contacts_one_by_one);
     RS_RUN(test_hertz_restitution_matches_input);
     return rs_test_summary();
 }
