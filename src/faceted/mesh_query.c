@@ -115,30 +115,21 @@ typedef struct scratch {
     int shares_due; /* the hits' shares hold weights (hit_weights) */
 } scratch;
 
-/* The slot of the next hit of s, grown as needed (NULL: out of memory); it counts once
- * s->nhit is advanced. Hits are written and read field by field: a copy of the whole
- * struct would load it in pieces wider than the stores that wrote it, and wait for
- * them. */
-static hit *next_hit(scratch *s)
+/* Appends a hit to s, its array grown as needed; -1 when out of memory. Hits are written
+ * and read field by field: a copy of the whole struct would load it in pieces wider than
+ * the stores that wrote it, and wait for them. */
+static int put_hit(scratch *s, int feature, int tri, const double x[3], const double n[3],
+                   double dist)
 {
     if (s->nhit == s->hcap) {
         int cap = s->hcap ? 2 * s->hcap : 16;
         hit *nh = realloc(s->hits, (size_t)cap * sizeof *nh);
         if (!nh)
-            return NULL;
+            return -1;
         s->hits = nh;
         s->hcap = cap;
     }
-    return &s->hits[s->nhit];
-}
-
-/* Appends a hit to s, field by field; -1 when out of memory. */
-static int put_hit(scratch *s, int feature, int tri, const double x[3], const double n[3],
-                   double dist)
-{
-    hit *c = next_hit(s);
-    if (!c)
-        return -1;
+    hit *c = &s->hits[s->nhit];
     c->feature = feature;
     c->tri = tri;
     c->dist = dist;
@@ -453,11 +444,12 @@ static int may_own(const rs_mesh *m, int t, const double p[3], double ext, doubl
     const unsigned fl = r->first;
     const int *tv = r->v;
     for (int j = 0; j < 3; j++) {
-        int a, b;
-        slot_nodes(r, j, &a, &b);
-        if ((fl >> j & 1u) && r->kind[j] == RS_EDGE_CONCAVE &&
-            segment_distance(m->xyz + 3 * a, m->xyz + 3 * b, p) < R + ext)
-            return 1;
+        if ((fl >> j & 1u) && r->kind[j] == RS_EDGE_CONCAVE) {
+            int a, b;
+            slot_nodes(r, j, &a, &b);
+            if (segment_distance(m->xyz + 3 * a, m->xyz + 3 * b, p) < R + ext)
+                return 1;
+        }
         if ((fl >> (3 + j) & 1u) && m->vconc[tv[j]]) {
             const double *x = m->xyz + 3 * tv[j];
             const double dv[3] = {p[0] - x[0], p[1] - x[1], p[2] - x[2]};
