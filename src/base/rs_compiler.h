@@ -26,6 +26,17 @@
 #define RS_PREFETCH(a) ((void)(a))
 #endif
 
+/* RS_PREFETCH into the second-level cache only: for lines asked for far ahead, many at a
+ * time. The level-2 cache tracks more misses in flight than the first level, and the
+ * lines do not push out what the first level holds meanwhile. */
+#if defined(__GNUC__) && defined(__x86_64__)
+#define RS_PREFETCH_L2(a) __asm__ volatile("prefetcht1 %0" : : "m"(*(const char *)(a)))
+#elif defined(__GNUC__)
+#define RS_PREFETCH_L2(a) __builtin_prefetch((a), 0, 2)
+#else
+#define RS_PREFETCH_L2(a) ((void)(a))
+#endif
+
 /* Built twice, for AVX2 and for the baseline ISA; the loader picks the one the CPU runs
  * (GCC function multiversioning, x86-64). Loops written to vectorise run 4 doubles wide
  * where the CPU has AVX2. No FMA: contraction stays off (ISO C mode). */

@@ -582,13 +582,13 @@ static int mesh_candidates(const rs_surface *s, const rs_query *q, double extra,
     return rc;
 }
 
-/* How far ahead of the slave queried its successors' candidates are fetched: the records
- * indexed by triangle RS_MESH_AHEAD slaves ahead, the nodes' coordinates (found through
- * the triangles' nodes, fetched before) RS_MESH_AHEAD_NODES ahead. On a mesh larger than
- * the caches most candidates' records come from memory, and the query of one slave
- * would wait for each in turn. */
-#define RS_MESH_AHEAD 4
-#define RS_MESH_AHEAD_NODES 2
+/* How far ahead of the slave queried its successors' candidates are fetched, into the
+ * second-level cache: the records indexed by triangle RS_MESH_AHEAD slaves ahead, the
+ * nodes' coordinates (found through the triangles' nodes, fetched before)
+ * RS_MESH_AHEAD_NODES ahead. On a mesh larger than the caches most candidates' records
+ * come from memory, and the query of one slave would wait for each in turn. */
+#define RS_MESH_AHEAD 8
+#define RS_MESH_AHEAD_NODES 4
 /* Meshes of fewer triangles (about 15 MB in all) are left to the caches: fetching
  * ahead costs the instructions and gains nothing where the records stay cached. */
 #define RS_MESH_PREFETCH_MIN 32768
@@ -604,13 +604,13 @@ static void prefetch_candidates(const rs_mesh *m, const int *ids, int n, int sta
         const rs_mtri *r = m->rec + ids[k];
         if (stage == 1) {
             for (int j = 0; j < 3; j++)
-                RS_PREFETCH(m->xyz + 3 * (size_t)r->v[j]);
+                RS_PREFETCH_L2(m->xyz + 3 * (size_t)r->v[j]);
             continue;
         }
         const char *c = (const char *)r;
-        RS_PREFETCH(c);
-        RS_PREFETCH(c + 64);
-        RS_PREFETCH(c + 128);
+        RS_PREFETCH_L2(c);
+        RS_PREFETCH_L2(c + 64);
+        RS_PREFETCH_L2(c + 128);
     }
 }
 
