@@ -16,6 +16,9 @@
  *          the order in which LIGGGHTS keeps its atoms (atom_modify sort, on by
  *          default) and so the order in which fix wall/rigid queries them
  *
+ * Every query runs as fix wall/rigid runs it: in blocks of RS_BLOCK spheres, each into
+ * the same contact list, emptied before the block.
+ *
  * and last the growth of each query's cost from the smallest size to the largest.
  *
  *   bench_mesh [--max N]
@@ -61,7 +64,20 @@ static int cmp_keyed(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-/* Times the tree query, the lists' build and the list query of q (ns per sphere). */
+/* q's spheres first .. first + n - 1, as the query of one block. */
+static rs_query block_of(const rs_query *q, int first, int n)
+{
+    rs_query b = *q;
+    b.n = n;
+    b.slave.x += first;
+    b.slave.y += first;
+    b.slave.z += first;
+    b.slave.radius += first;
+    return b;
+}
+
+/* Times the tree query, the lists' build and the list query of q (ns per sphere), each in
+ * blocks of RS_BLOCK spheres into one reused contact list, as fix wall/rigid calls them. */
 static void time_queries(const rs_surface *s, const rs_query *q, double margin,
                          double *tree, double *lists_ns, double *build, int *hits,
                          double *cands)
@@ -71,33 +87,56 @@ static void time_queries(const rs_surface *s, const rs_query *q, double margin,
     rs_cands cd;
     memset(&cd, 0, sizeof cd);
     rs_error e;
+    static int ids[16 * NQ], off[NQ + 1];
     double tt[REPS], tl[REPS], tb[REPS];
     for (int k = 0; k < REPS; k++) {
-        c.n = 0;
+        *hits = 0;
         double t0 = rs_bench_thread_now();
-        rs_surface_query(s, q, &c, &e);
+        for (int b0 = 0; b0 < NQ; b0 += RS_BLOCK) {
+            const int n = NQ - b0 < RS_BLOCK ? NQ - b0 : RS_BLOCK;
+            const rs_query b = block_of(q, b0, n);
+            c.n = 0;
+            rs_surface_query(s, &b, &c, &e);
+            *hits += c.n;
+        }
         tt[k] = (rs_bench_thread_now() - t0) / NQ * 1e9;
-        *hits = c.n;
+        /* the lists, kept as the fix keeps them: one array of all blocks' ids */
+        off[0] = 0;
         t0 = rs_bench_thread_now();
-        rs_surface_candidates(s, q, margin, &cd, &e);
+        for (int b0 = 0; b0 < NQ; b0 += RS_BLOCK) {
+            const int n = NQ - b0 < RS_BLOCK ? NQ - b0 : RS_BLOCK;
+            const rs_query b = block_of(q, b0, n);
+            rs_surface_candidates(s, &b, margin, &cd, &e);
+            if (off[b0] + cd.off[n] > 16 * NQ) {
+                fprintf(stderr, "bench_mesh: more than 16 candidates a sphere\n");
+                exit(1);
+            }
+            memcpy(ids + off[b0], cd.ids, (size_t)cd.off[n] * sizeof *ids);
+            for (int i = 0; i < n; i++)
+                off[b0 + i + 1] = off[b0] + cd.off[i + 1];
+        }
         tb[k] = (rs_bench_thread_now() - t0) / NQ * 1e9;
     }
     static const int *lists[NQ];
     static int counts[NQ];
     for (int i = 0; i < NQ; i++) {
-        lists[i] = cd.ids + cd.off[i];
-        counts[i] = cd.off[i + 1] - cd.off[i];
+        lists[i] = ids + off[i];
+        counts[i] = off[i + 1] - off[i];
     }
     for (int k = 0; k < REPS; k++) {
-        c.n = 0;
         const double t0 = rs_bench_thread_now();
-        rs_surface_query_among(s, q, lists, counts, &c, &e);
+        for (int b0 = 0; b0 < NQ; b0 += RS_BLOCK) {
+            const int n = NQ - b0 < RS_BLOCK ? NQ - b0 : RS_BLOCK;
+            const rs_query b = block_of(q, b0, n);
+            c.n = 0;
+            rs_surface_query_among(s, &b, lists + b0, counts + b0, &c, &e);
+        }
         tl[k] = (rs_bench_thread_now() - t0) / NQ * 1e9;
     }
     *tree = rs_bench_median(tt, REPS);
     *lists_ns = rs_bench_median(tl, REPS);
     *build = rs_bench_median(tb, REPS);
-    *cands = (double)cd.off[NQ] / NQ;
+    *cands = (double)off[NQ] / NQ;
     rs_cands_free(&cd);
     rs_contacts_free(&c);
 }
