@@ -35,30 +35,28 @@ struct MeshTree {
     Tree tree;
 };
 
-/* Writes indices of primitives into a bounded buffer and counts all of them. */
-struct BoxOut {
-    const TriIt *begin;
+/* Traversal of the tree for a box: the primitives of every leaf whose box meets the
+ * query box, their indices into a bounded buffer, all of them counted. A primitive is
+ * not tested against the box itself: its own test would read its triangle, and the
+ * callers test each triangle exactly (its distance) from their own records. */
+struct BoxList {
+    TriIt begin;
     int *ids;
     int cap;
-    int *count;
-    BoxOut &operator*()
+    int count;
+    bool go_further() const
     {
-        return *this;
+        return true;
     }
-    BoxOut &operator++()
+    void intersection(const CGAL::Bbox_3 &, const Primitive &p)
     {
-        return *this;
+        if (count < cap)
+            ids[count] = (int)(p.id() - begin);
+        ++count;
     }
-    BoxOut operator++(int)
+    template <class Node> bool do_intersect(const CGAL::Bbox_3 &q, const Node &node) const
     {
-        return *this;
-    }
-    BoxOut &operator=(const TriIt &it)
-    {
-        if (*count < cap)
-            ids[*count] = (int)(it - *begin);
-        ++*count;
-        return *this;
+        return CGAL::do_overlap(q, node.bbox());
     }
 };
 
@@ -200,14 +198,13 @@ extern "C" int rs_cgal_tree_box(const void *tree, const double lo[3], const doub
     if (!m || m->tris.empty())
         return 0;
     const CGAL::Bbox_3 box(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
-    const TriIt begin = m->tris.begin();
-    int count = 0;
+    BoxList list{m->tris.begin(), ids, cap, 0};
     try {
-        m->tree.all_intersected_primitives(box, BoxOut{&begin, ids, cap, &count});
+        m->tree.traversal(box, list);
     } catch (...) {
         return -1;
     }
-    return count;
+    return list.count;
 }
 
 extern "C" double rs_cgal_tree_nearest(const void *tree, const double p[3])

@@ -29,8 +29,10 @@ void rs_soup_free(rs_soup *soup);
 /// memory. The tree keeps copies; xyz and tri may be freed afterwards.
 void *rs_cgal_tree_new(int nt, const double *xyz, const int *tri);
 void rs_cgal_tree_free(void *tree);
-/// The triangles whose boxes meet the box [lo, hi]: writes up to cap indices to ids and
-/// returns how many there are (call again with a larger cap when it exceeds cap).
+/// The triangles of the tree's leaves whose boxes meet the box [lo, hi]: every triangle
+/// that meets it, and a few more near it (a leaf's box holds one or two triangles; they
+/// are not tested one by one). Writes up to cap indices to ids and returns how many
+/// there are (call again with a larger cap when it exceeds cap).
 int rs_cgal_tree_box(const void *tree, const double lo[3], const double hi[3], int *ids,
                      int cap);
 

@@ -191,8 +191,9 @@ static double tri_distance2(const rs_mesh *m, int t, const double p[3])
     return best;
 }
 
-/* The triangles whose boxes meet the cube of half-width reach about p, into s->ids;
- * returns their number, -1 when out of memory. */
+/* The triangles that meet the cube of half-width reach about p, and a few more near it
+ * (rs_cgal_tree_box), into s->ids; returns their number, -1 when out of memory. Each
+ * caller tests every triangle's distance. */
 static int box_triangles(const rs_mesh *m, const double p[3], double reach, scratch *s)
 {
     const double pad = reach + 1e-9 * m->size;
