@@ -21,9 +21,13 @@
  *
  * and last the growth of each query's cost from the smallest size to the largest.
  *
- *   bench_mesh [--max N]
+ *   bench_mesh [--max N] [--rounds R]
  *
- * Each time is the median of 7 repetitions. */
+ * Each time is the median of 7 repetitions in a round, and the table gives the least of
+ * R rounds (5 by default). A round times every size in turn, so that each size meets the
+ * host's quieter moments: on a shared machine other tenants' memory traffic only ever
+ * adds time, and most to the largest meshes, whose records come from memory. The last
+ * lines give the growth from these least times and from each size's median round. */
 #define _GNU_SOURCE
 #include "bench_clock.h"
 #include "rigidsurf/surface.h"
@@ -184,17 +188,24 @@ static void write_sphere(const char *path, int ntri)
     fclose(f);
 }
 
+#define NSIZE 5 /* 10^2 .. 10^6 triangles */
+#define NCOL 6   /* tree, lists, build; the same sorted */
+
 int main(int argc, char **argv)
 {
-    int nmax = 1000000;
-    for (int i = 1; i + 1 < argc; i++)
+    int nmax = 1000000, rounds = 5;
+    for (int i = 1; i + 1 < argc; i++) {
         if (!strcmp(argv[i], "--max"))
             nmax = atoi(argv[++i]);
-    printf("# bench_mesh: %s build (%s)\n", RS_BUILD_TYPE, RS_BUILD_FLAGS);
-    printf("# %10s %10s %8s %8s %6s %10s %10s %10s %10s %10s\n", "triangles", "load s",
-           "B/tri", "hits", "cands", "tree ns", "lists ns", "build ns", "tree srt",
-           "lists srt");
-    static double dir[NQ][3], x[NQ], y[NQ], z[NQ], r[NQ];
+        else if (!strcmp(argv[i], "--rounds"))
+            rounds = atoi(argv[++i]);
+    }
+    if (rounds < 1 || rounds > 64) {
+        fprintf(stderr, "bench_mesh: --rounds takes 1 to 64\n");
+        return 1;
+    }
+    printf("# bench_mesh: %s build (%s), %d rounds\n", RS_BUILD_TYPE, RS_BUILD_FLAGS, rounds);
+    static double dir[NQ][3];
     unsigned long long seed = 88172645463325252ull;
     for (int i = 0; i < NQ; i++) {
         for (int k = 0; k < 3; k++) {
@@ -208,7 +219,7 @@ int main(int argc, char **argv)
     }
     /* the same directions in Morton order */
     static keyed order[NQ];
-    static double sdir[NQ][3], sx[NQ], sy[NQ], sz[NQ];
+    static double sdir[NQ][3];
     for (int i = 0; i < NQ; i++) {
         order[i].key = morton(dir[i]);
         order[i].i = i;
@@ -216,18 +227,21 @@ int main(int argc, char **argv)
     qsort(order, NQ, sizeof order[0], cmp_keyed);
     for (int i = 0; i < NQ; i++)
         memcpy(sdir[i], dir[order[i].i], sizeof sdir[i]);
-    rs_query q;
-    memset(&q, 0, sizeof q);
-    q.n = NQ;
-    q.slave.x = x, q.slave.y = y, q.slave.z = z, q.slave.radius = r;
-    rs_query qs = q;
-    qs.slave.x = sx, qs.slave.y = sy, qs.slave.z = sz;
-    double first[4] = {0.0}, last[4] = {0.0};
-    int nfirst = 0, nlast = 0;
-    for (int n = 100; n <= nmax; n *= 10) {
+
+    /* every size's mesh, read once */
+    static double pts[NSIZE][8][NQ]; /* x, y, z, r; sorted x, y, z, r */
+    static rs_surface surf[NSIZE];
+    static rs_query q[NSIZE], qs[NSIZE];
+    int ntri[NSIZE], hits[NSIZE];
+    double tload[NSIZE], bytes[NSIZE], cands[NSIZE], margin[NSIZE];
+    int nsize = 0;
+    for (int n = 100; n <= nmax && nsize < NSIZE; n *= 10, nsize++) {
+        const int k = nsize;
         const double h = sqrt(4.0 * 3.14159265358979323846 / n), rad = 0.5 * h;
+        double *x = pts[k][0], *y = pts[k][1], *z = pts[k][2], *r = pts[k][3];
+        double *sx = pts[k][4], *sy = pts[k][5], *sz = pts[k][6], *sr = pts[k][7];
         for (int i = 0; i < NQ; i++) {
-            r[i] = rad;
+            r[i] = sr[i] = rad;
             x[i] = (1.0 + rad) * dir[i][0];
             y[i] = (1.0 + rad) * dir[i][1];
             z[i] = (1.0 + rad) * dir[i][2];
@@ -235,58 +249,93 @@ int main(int argc, char **argv)
             sy[i] = (1.0 + rad) * sdir[i][1];
             sz[i] = (1.0 + rad) * sdir[i][2];
         }
-        q.gap_max = qs.gap_max = h;
-        q.dist_min = qs.dist_min = -rad;
+        memset(&q[k], 0, sizeof q[k]);
+        q[k].n = NQ;
+        q[k].slave.x = x, q[k].slave.y = y, q[k].slave.z = z, q[k].slave.radius = r;
+        q[k].gap_max = h;
+        q[k].dist_min = -rad;
+        qs[k] = q[k];
+        qs[k].slave.x = sx, qs[k].slave.y = sy, qs[k].slave.z = sz, qs[k].slave.radius = sr;
+        margin[k] = 0.25 * rad;
         write_sphere("bench_mesh.stl", n);
         FILE *f = fopen("bench_mesh.inp", "w");
+        if (!f) {
+            perror("bench_mesh.inp");
+            return 1;
+        }
         fputs("*SURFACE, TYPE=MESH, NAME=s, FILE=bench_mesh.stl\n", f);
         fclose(f);
-        rs_surface s;
         rs_error e;
         struct mallinfo2 m0 = mallinfo2();
-        double t0 = rs_bench_thread_now();
-        if (rs_surface_read("bench_mesh.inp", NULL, &s, &e) != RS_OK) {
+        const double t0 = rs_bench_thread_now();
+        if (rs_surface_read("bench_mesh.inp", NULL, &surf[k], &e) != RS_OK) {
             fprintf(stderr, "bench_mesh: %s\n", e.msg);
             return 1;
         }
-        const double tload = rs_bench_thread_now() - t0;
+        tload[k] = rs_bench_thread_now() - t0;
         struct mallinfo2 m1 = mallinfo2();
-        double lo[3], hi[3];
-        rs_surface_bounds(&s, lo, hi);
         rs_trimesh tm;
-        rs_surface_triangulate(&s, 1.0, 1, &tm, &e);
-        const int ntri = tm.ntri;
+        rs_surface_triangulate(&surf[k], 1.0, 1, &tm, &e);
+        ntri[k] = tm.ntri;
         rs_trimesh_free(&tm);
-        const double bytes =
-            (double)((m1.uordblks + m1.hblkhd) - (m0.uordblks + m0.hblkhd)) / ntri;
-        double tree, lists_ns, build, tree_s, lists_s, build_s;
-        int hits, hits_s;
-        double cands, cands_s;
-        time_queries(&s, &q, 0.25 * rad, &tree, &lists_ns, &build, &hits, &cands);
-        time_queries(&s, &qs, 0.25 * rad, &tree_s, &lists_s, &build_s, &hits_s, &cands_s);
-        if (hits_s != hits) {
-            fprintf(stderr, "bench_mesh: %d contacts in Morton order, %d in random order\n",
-                    hits_s, hits);
-            return 1;
-        }
-        printf("  %10d %10.3f %8.0f %8d %6.2f %10.1f %10.1f %10.1f %10.1f %10.1f\n", ntri,
-               tload, bytes, hits, cands, tree, lists_ns, build, tree_s, lists_s);
-        fflush(stdout);
-        const double row[4] = {tree, lists_ns, tree_s, lists_s};
-        if (!nfirst) {
-            memcpy(first, row, sizeof row);
-            nfirst = ntri;
-        }
-        memcpy(last, row, sizeof row);
-        nlast = ntri;
-        rs_surface_free(&s);
+        bytes[k] = (double)((m1.uordblks + m1.hblkhd) - (m0.uordblks + m0.hblkhd)) / ntri[k];
     }
-    if (nlast > nfirst)
-        printf("# from %d to %d triangles the cost grows: tree %.2f x, lists %.2f x, "
-               "sorted: tree %.2f x, lists %.2f x (target: at most 3 x)\n",
-               nfirst, nlast, last[0] / first[0], last[1] / first[1], last[2] / first[2],
-               last[3] / first[3]);
     remove("bench_mesh.stl");
     remove("bench_mesh.inp");
+
+    /* the rounds, each over every size in turn */
+    static double t[NSIZE][64][NCOL];
+    for (int round = 0; round < rounds; round++)
+        for (int k = 0; k < nsize; k++) {
+            double *row = t[k][round];
+            int hs;
+            double cs;
+            time_queries(&surf[k], &q[k], margin[k], &row[0], &row[1], &row[2], &hits[k],
+                         &cands[k]);
+            time_queries(&surf[k], &qs[k], margin[k], &row[3], &row[4], &row[5], &hs, &cs);
+            if (hs != hits[k]) {
+                fprintf(stderr,
+                        "bench_mesh: %d contacts in Morton order, %d in random order\n",
+                        hs, hits[k]);
+                return 1;
+            }
+        }
+    /* per size and column: the least time over the rounds, and the median round's */
+    double best[NSIZE][NCOL], med[NSIZE][NCOL];
+    for (int k = 0; k < nsize; k++)
+        for (int c = 0; c < NCOL; c++) {
+            double v[64];
+            best[k][c] = INFINITY;
+            for (int round = 0; round < rounds; round++) {
+                v[round] = t[k][round][c];
+                best[k][c] = fmin(best[k][c], v[round]);
+            }
+            med[k][c] = rs_bench_median(v, rounds);
+        }
+    printf("# %10s %10s %8s %8s %6s %10s %10s %10s %10s %10s\n", "triangles", "load s",
+           "B/tri", "hits", "cands", "tree ns", "lists ns", "build ns", "tree srt",
+           "lists srt");
+    for (int k = 0; k < nsize; k++)
+        printf("  %10d %10.3f %8.0f %8d %6.2f %10.1f %10.1f %10.1f %10.1f %10.1f\n", ntri[k],
+               tload[k], bytes[k], hits[k], cands[k], best[k][0], best[k][1], best[k][2],
+               best[k][3], best[k][4]);
+    if (nsize > 1) {
+        const int a = 0, b = nsize - 1;
+        printf("# the median round, lists ns: ");
+        for (int k = 0; k < nsize; k++)
+            printf("%.1f%s", med[k][1], k + 1 < nsize ? " " : "; sorted: ");
+        for (int k = 0; k < nsize; k++)
+            printf("%.1f%s", med[k][4], k + 1 < nsize ? " " : "\n");
+        printf("# from %d to %d triangles the cost grows (least times): tree %.2f x, lists "
+               "%.2f x, sorted: tree %.2f x, lists %.2f x (target: at most 3 x)\n",
+               ntri[a], ntri[b], best[b][0] / best[a][0], best[b][1] / best[a][1],
+               best[b][3] / best[a][3], best[b][4] / best[a][4]);
+        printf("# from %d to %d triangles the cost grows (median rounds): tree %.2f x, lists "
+               "%.2f x, sorted: tree %.2f x, lists %.2f x\n",
+               ntri[a], ntri[b], med[b][0] / med[a][0], med[b][1] / med[a][1],
+               med[b][3] / med[a][3], med[b][4] / med[a][4]);
+    }
+    for (int k = 0; k < nsize; k++)
+        rs_surface_free(&surf[k]);
     return 0;
 }
