@@ -37,11 +37,13 @@
 #define RS_PREFETCH_L2(a) ((void)(a))
 #endif
 
-/* Built twice, for AVX2 and for the baseline ISA; the loader picks the one the CPU runs
- * (GCC function multiversioning, x86-64). Loops written to vectorise run 4 doubles wide
- * where the CPU has AVX2. No FMA: contraction stays off (ISO C mode). */
+/* Built three times, for x86-64-v4 (AVX-512), for AVX2 and for the baseline ISA; the
+ * loader picks the one the CPU runs (GCC function multiversioning, x86-64). Loops written
+ * to vectorise run 4 or 8 doubles wide, and with AVX-512's 32 vector registers the long
+ * loops of the tracker keep more of their values in registers. No FMA: contraction stays
+ * off (ISO C mode), so every copy rounds alike. */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define RS_MULTIVERSION __attribute__((target_clones("avx2", "default")))
+#define RS_MULTIVERSION __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 #else
 #define RS_MULTIVERSION
 #endif
