@@ -68,6 +68,15 @@ static int cmp_keyed(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+/* Ends the run with the message of a failed call. */
+static void check(int rc, const char *what, const rs_error *e)
+{
+    if (rc != RS_OK) {
+        fprintf(stderr, "bench_mesh: %s: %s\n", what, e->msg);
+        exit(1);
+    }
+}
+
 /* q's spheres first .. first + n - 1, as the query of one block. */
 static rs_query block_of(const rs_query *q, int first, int n)
 {
@@ -100,7 +109,7 @@ static void time_queries(const rs_surface *s, const rs_query *q, double margin,
             const int n = NQ - b0 < RS_BLOCK ? NQ - b0 : RS_BLOCK;
             const rs_query b = block_of(q, b0, n);
             c.n = 0;
-            rs_surface_query(s, &b, &c, &e);
+            check(rs_surface_query(s, &b, &c, &e), "rs_surface_query", &e);
             *hits += c.n;
         }
         tt[k] = (rs_bench_thread_now() - t0) / NQ * 1e9;
@@ -110,7 +119,8 @@ static void time_queries(const rs_surface *s, const rs_query *q, double margin,
         for (int b0 = 0; b0 < NQ; b0 += RS_BLOCK) {
             const int n = NQ - b0 < RS_BLOCK ? NQ - b0 : RS_BLOCK;
             const rs_query b = block_of(q, b0, n);
-            rs_surface_candidates(s, &b, margin, &cd, &e);
+            check(rs_surface_candidates(s, &b, margin, &cd, &e), "rs_surface_candidates",
+                  &e);
             if (off[b0] + cd.off[n] > 16 * NQ) {
                 fprintf(stderr, "bench_mesh: more than 16 candidates a sphere\n");
                 exit(1);
@@ -133,7 +143,8 @@ static void time_queries(const rs_surface *s, const rs_query *q, double margin,
             const int n = NQ - b0 < RS_BLOCK ? NQ - b0 : RS_BLOCK;
             const rs_query b = block_of(q, b0, n);
             c.n = 0;
-            rs_surface_query_among(s, &b, lists + b0, counts + b0, &c, &e);
+            check(rs_surface_query_among(s, &b, lists + b0, counts + b0, &c, &e),
+                  "rs_surface_query_among", &e);
         }
         tl[k] = (rs_bench_thread_now() - t0) / NQ * 1e9;
     }
@@ -189,7 +200,7 @@ static void write_sphere(const char *path, int ntri)
 }
 
 #define NSIZE 5 /* 10^2 .. 10^6 triangles */
-#define NCOL 6   /* tree, lists, build; the same sorted */
+#define NCOL 6  /* tree, lists, build; the same sorted */
 
 int main(int argc, char **argv)
 {
@@ -204,7 +215,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "bench_mesh: --rounds takes 1 to 64\n");
         return 1;
     }
-    printf("# bench_mesh: %s build (%s), %d rounds\n", RS_BUILD_TYPE, RS_BUILD_FLAGS, rounds);
+    printf("# bench_mesh: %s build (%s), %d rounds\n", RS_BUILD_TYPE, RS_BUILD_FLAGS,
+           rounds);
     static double dir[NQ][3];
     unsigned long long seed = 88172645463325252ull;
     for (int i = 0; i < NQ; i++) {
@@ -278,7 +290,8 @@ int main(int argc, char **argv)
         rs_surface_triangulate(&surf[k], 1.0, 1, &tm, &e);
         ntri[k] = tm.ntri;
         rs_trimesh_free(&tm);
-        bytes[k] = (double)((m1.uordblks + m1.hblkhd) - (m0.uordblks + m0.hblkhd)) / ntri[k];
+        bytes[k] =
+            (double)((m1.uordblks + m1.hblkhd) - (m0.uordblks + m0.hblkhd)) / ntri[k];
     }
     remove("bench_mesh.stl");
     remove("bench_mesh.inp");
@@ -295,8 +308,8 @@ int main(int argc, char **argv)
             time_queries(&surf[k], &qs[k], margin[k], &row[3], &row[4], &row[5], &hs, &cs);
             if (hs != hits[k]) {
                 fprintf(stderr,
-                        "bench_mesh: %d contacts in Morton order, %d in random order\n",
-                        hs, hits[k]);
+                        "bench_mesh: %d contacts in Morton order, %d in random order\n", hs,
+                        hits[k]);
                 return 1;
             }
         }
@@ -316,9 +329,9 @@ int main(int argc, char **argv)
            "B/tri", "hits", "cands", "tree ns", "lists ns", "build ns", "tree srt",
            "lists srt");
     for (int k = 0; k < nsize; k++)
-        printf("  %10d %10.3f %8.0f %8d %6.2f %10.1f %10.1f %10.1f %10.1f %10.1f\n", ntri[k],
-               tload[k], bytes[k], hits[k], cands[k], best[k][0], best[k][1], best[k][2],
-               best[k][3], best[k][4]);
+        printf("  %10d %10.3f %8.0f %8d %6.2f %10.1f %10.1f %10.1f %10.1f %10.1f\n",
+               ntri[k], tload[k], bytes[k], hits[k], cands[k], best[k][0], best[k][1],
+               best[k][2], best[k][3], best[k][4]);
     if (nsize > 1) {
         const int a = 0, b = nsize - 1;
         printf("# the median round, lists ns: ");
@@ -330,10 +343,11 @@ int main(int argc, char **argv)
                "%.2f x, sorted: tree %.2f x, lists %.2f x (target: at most 3 x)\n",
                ntri[a], ntri[b], best[b][0] / best[a][0], best[b][1] / best[a][1],
                best[b][3] / best[a][3], best[b][4] / best[a][4]);
-        printf("# from %d to %d triangles the cost grows (median rounds): tree %.2f x, lists "
-               "%.2f x, sorted: tree %.2f x, lists %.2f x\n",
-               ntri[a], ntri[b], med[b][0] / med[a][0], med[b][1] / med[a][1],
-               med[b][3] / med[a][3], med[b][4] / med[a][4]);
+        printf(
+            "# from %d to %d triangles the cost grows (median rounds): tree %.2f x, lists "
+            "%.2f x, sorted: tree %.2f x, lists %.2f x\n",
+            ntri[a], ntri[b], med[b][0] / med[a][0], med[b][1] / med[a][1],
+            med[b][3] / med[a][3], med[b][4] / med[a][4]);
     }
     for (int k = 0; k < nsize; k++)
         rs_surface_free(&surf[k]);
