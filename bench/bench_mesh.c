@@ -241,7 +241,7 @@ int main(int argc, char **argv)
         memcpy(sdir[i], dir[order[i].i], sizeof sdir[i]);
 
     /* every size's mesh, read once */
-    static double pts[NSIZE][8][NQ]; /* x, y, z, r; sorted x, y, z, r */
+    static double pts[NSIZE][7][NQ]; /* x, y, z, r; sorted x, y, z (same r) */
     static rs_surface surf[NSIZE];
     static rs_query q[NSIZE], qs[NSIZE];
     int ntri[NSIZE], hits[NSIZE];
@@ -251,9 +251,9 @@ int main(int argc, char **argv)
         const int k = nsize;
         const double h = sqrt(4.0 * 3.14159265358979323846 / n), rad = 0.5 * h;
         double *x = pts[k][0], *y = pts[k][1], *z = pts[k][2], *r = pts[k][3];
-        double *sx = pts[k][4], *sy = pts[k][5], *sz = pts[k][6], *sr = pts[k][7];
+        double *sx = pts[k][4], *sy = pts[k][5], *sz = pts[k][6];
         for (int i = 0; i < NQ; i++) {
-            r[i] = sr[i] = rad;
+            r[i] = rad;
             x[i] = (1.0 + rad) * dir[i][0];
             y[i] = (1.0 + rad) * dir[i][1];
             z[i] = (1.0 + rad) * dir[i][2];
@@ -267,7 +267,7 @@ int main(int argc, char **argv)
         q[k].gap_max = h;
         q[k].dist_min = -rad;
         qs[k] = q[k];
-        qs[k].slave.x = sx, qs[k].slave.y = sy, qs[k].slave.z = sz, qs[k].slave.radius = sr;
+        qs[k].slave.x = sx, qs[k].slave.y = sy, qs[k].slave.z = sz; /* the same radii */
         margin[k] = 0.25 * rad;
         write_sphere("bench_mesh.stl", n);
         FILE *f = fopen("bench_mesh.inp", "w");
