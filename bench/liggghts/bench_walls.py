@@ -7,9 +7,12 @@
 1. Wall cost, cylinder. N spheres (R = 1 mm) form a monolayer on the inside of a
    cylinder of radius 50 mm about z (rings of spheres 2.2 R apart, layers 2.2 R apart,
    so spheres never touch each other), pressed on the wall by a radial body force
-   (fix addforce, 1 mN, atom-style variables), Hertz with tangential history, fix
-   nve/sphere, no gravity. Every sphere is in contact every step. Variants, same deck
-   otherwise:
+   (fix addforce, 1 mN), Hertz with tangential history, fix nve/sphere, no gravity.
+   Every sphere is in contact every step. The spheres of these beds move only along
+   their radius, so the push keeps the direction each has at the start: an atom-style
+   variable evaluated once and stored (fix store/state 0), which the push then copies
+   each step. Evaluated every step, that variable cost twice the walls, and the wall
+   cost, a difference of loop times, carried its noise. Variants, same deck otherwise:
      none   no wall, radial force 0: the spheres sit still (the baseline)
      prim   fix wall/gran ... primitive zcylinder
      ours   fix wall/rigid, REVOLUTION: a LINE at r = 50 mm
@@ -27,7 +30,9 @@
    sphere starts at V = 0.5 m/s along the hoop direction, spinning at -V/R about z
    (rolling without slip), so the whole layer turns rigidly: spheres never touch each
    other, each moves its contact along the wall by V dt per step, and LIGGGHTS rebuilds
-   its neighbour lists every ~50 steps (skin 0.5 mm), as in a real run. The baseline
+   its neighbour lists every ~50 steps (skin 0.5 mm), as in a real run. The push
+   follows each sphere around (an atom-style variable every step, with 1/r stored at
+   the start: the spheres stay on their circles). The baseline
    'none' has no wall and no outward push; a central body force m V^2 / r keeps its
    spheres on the same circles at the same speed, so it rebuilds as often as the wall
    variants (the report lists the builds). The wall cost then includes what a wall pays
@@ -150,15 +155,24 @@ def wall_deck(variant, data, steps, height, flow=False, skin=SKIN, push=True, ki
         # the same evaluation cost, in every variant).
         k = MASS * VFLOW ** 2 if variant == "none" else 0.0
         d += "variable k equal %r\n" % k
-        d += ("variable fx atom (v_f0-v_k/sqrt(x*x+y*y))*x/sqrt(x*x+y*y)\n"
-              "variable fy atom (v_f0-v_k/sqrt(x*x+y*y))*y/sqrt(x*x+y*y)\n")
+        # The spheres stay on their circles: 1/r is stored once, at the start.
+        d += ("variable ir atom 1.0/sqrt(x*x+y*y)\nfix invr all store/state 0 v_ir\n"
+              "variable fx atom (v_f0-v_k*f_invr)*x*f_invr\n"
+              "variable fy atom (v_f0-v_k*f_invr)*y*f_invr\n")
         d += ("variable vx atom -%r*y/sqrt(x*x+y*y)\nvariable vy atom %r*x/sqrt(x*x+y*y)\n"
               % (VFLOW, VFLOW))
         d += "set group all vx v_vx vy v_vy omegaz %r\n" % (-VFLOW / R)
     if kick and variant != "none":
         d += ("variable kx atom -%r*x/sqrt(x*x+y*y)\nvariable ky atom -%r*y/sqrt(x*x+y*y)\n"
               "set group all vx v_kx vy v_ky\n" % (kick, kick))
-    d += "fix push all addforce v_fx v_fy 0\n"
+    if flow:
+        d += "fix push all addforce v_fx v_fy 0\n"
+    else:
+        # These beds move only radially: the push keeps the direction it has at the start,
+        # stored once, so that its cost per step is a copy, not an evaluation of v_fx.
+        d += ("fix pushdir all store/state 0 v_fx v_fy\n"
+              "variable px atom f_pushdir[1]\nvariable py atom f_pushdir[2]\n"
+              "fix push all addforce v_px v_py 0\n")
     if variant == "prim":
         d += "fix w all wall/gran model hertz tangential history primitive type 2 zcylinder %r 0 0\n" % RC
     elif variant == "ours":
