@@ -1,0 +1,84 @@
+#!/usr/bin/python3
+"""The bouncing bed (section 1e of bench_walls.py) under its two pushes, interleaved.
+
+    push_ab.py --exe liggghts-rigidsurf [--reps R] [--seed S]
+
+bench_walls.py presses the beds that move only radially with a push stored once per
+sphere (fix store/state 0, then copied each step). Before, the push was the atom-style
+variable v_f0*x/sqrt(x*x+y*y) evaluated for every sphere at every step, which costs
+about twice the walls. The trajectories are the same; what differs is the rest of the
+step around the walls. Each repetition runs none, prim and ours under both pushes, six
+runs in an order drawn at random, and prints each wall's cost (loop time minus that
+push's 'none', µs per particle-step) and ours / prim. At the end: per push, the median
+and mean of the repetitions' ratios and the ratio of the mean costs.
+"""
+import argparse
+import os
+import random
+import statistics
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bench_walls as bw  # noqa: E402
+
+STORED = ("fix pushdir all store/state 0 v_fx v_fy\n"
+          "variable px atom f_pushdir[1]\nvariable py atom f_pushdir[2]\n"
+          "fix push all addforce v_px v_py 0\n")
+PER_STEP = "fix push all addforce v_fx v_fy 0\n"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--reps", type=int, default=10)
+    ap.add_argument("--seed", type=int, default=3, help="seed of the run order")
+    args = ap.parse_args()
+    exe = os.path.abspath(args.exe)
+    work = tempfile.mkdtemp(prefix="rs_push_ab_")
+    n = bw.N_BOUNCE
+    pts, height = bw.monolayer(n)
+    data = os.path.join(work, "mono.data")
+    bw.write_data(data, pts, height)
+    with open(os.path.join(work, "cyl.inp"), "w") as f:
+        f.write("*SURFACE, TYPE=REVOLUTION, NAME=cyl\n0, 0, 0, 0, 0, 1\n"
+                "START, %r, -1\nLINE, %r, %r\n" % (bw.RC, bw.RC, height + 1.0))
+    decks = {}
+    for v in ("none", "prim", "ours"):
+        d = bw.wall_deck(v, data, 1000, height, kick=bw.VKICK)
+        if STORED not in d:
+            sys.exit("push_ab: bench_walls.py no longer writes the stored push")
+        decks[("stored", v)] = d
+        decks[("per-step", v)] = d.replace(STORED, PER_STEP)
+    rng = random.Random(args.seed)
+    pushes = ("stored", "per-step")
+    cost = {(p, w): [] for p in pushes for w in ("prim", "ours")}
+    ratios = {p: [] for p in pushes}
+    print("bouncing bed, N = %d, 1000 steps, %d repetitions; wall cost in us per "
+          "particle-step" % (n, args.reps))
+    for rep in range(args.reps):
+        keys = list(decks)
+        rng.shuffle(keys)
+        t = {}
+        for k in keys:
+            r = bw.run_deck(exe, work, "%s_%s" % (k[0].replace("-", ""), k[1]), decks[k])
+            t[k] = r["loop"] / (r["steps"] * r["atoms"]) * 1e6
+        for p in pushes:
+            prim = t[(p, "prim")] - t[(p, "none")]
+            ours = t[(p, "ours")] - t[(p, "none")]
+            cost[(p, "prim")].append(prim)
+            cost[(p, "ours")].append(ours)
+            ratios[p].append(ours / prim)
+            print("  rep %2d  %-8s  none %.4f  prim %.4f  ours %.4f  ours/prim %.3f"
+                  % (rep, p, t[(p, "none")], prim, ours, ours / prim), flush=True)
+    for p in pushes:
+        print("%-8s push: ours/prim median %.3f, mean %.3f, ratio of the mean costs %.3f "
+              "(%d of %d repetitions at most 1.2)"
+              % (p, statistics.median(ratios[p]), statistics.mean(ratios[p]),
+                 statistics.mean(cost[(p, "ours")]) / statistics.mean(cost[(p, "prim")]),
+                 sum(x <= 1.2 for x in ratios[p]), len(ratios[p])))
+
+
+if __name__ == "__main__":
+    main()
