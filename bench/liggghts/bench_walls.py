@@ -226,16 +226,23 @@ def run_deck(exe, workdir, name, deck, np=1):
             "builds": int(builds[-1]) if builds else -1}
 
 
-def wall_costs(exe, workdir, n, variants, reps, log, flow=False, grid=(200, 10), skin=SKIN,
-               gap=None, kick=0.0, steps=None):
-    """Wall cost per particle-step of each variant. grid: the STL's NTHETA x NZ; gap:
-    spheres that far from the wall and no push (None: pressed on the wall)."""
+def write_bed(workdir, n, gap=None, name="mono.data"):
+    """The monolayer of n spheres as a data file and the REVOLUTION cylinder cyl.inp, in
+    workdir; returns the data file's path and the bed's height."""
     pts, height = monolayer(n, gap)
-    data = os.path.join(workdir, "mono_%d.data" % n)
+    data = os.path.join(workdir, name)
     write_data(data, pts, height)
     with open(os.path.join(workdir, "cyl.inp"), "w") as f:
         f.write("*SURFACE, TYPE=REVOLUTION, NAME=cyl\n0, 0, 0, 0, 0, 1\n"
                 "START, %r, -1\nLINE, %r, %r\n" % (RC, RC, height + 1.0))
+    return data, height
+
+
+def wall_costs(exe, workdir, n, variants, reps, log, flow=False, grid=(200, 10), skin=SKIN,
+               gap=None, kick=0.0, steps=None):
+    """Wall cost per particle-step of each variant. grid: the STL's NTHETA x NZ; gap:
+    spheres that far from the wall and no push (None: pressed on the wall)."""
+    data, height = write_bed(workdir, n, gap, "mono_%d.data" % n)
     if "mesh" in variants or "ours_mesh" in variants:
         subprocess.run([sys.executable, os.path.join(HERE, "make_stl.py"),
                         os.path.join(workdir, "cyl.stl"), repr(RC), "-0.002",

@@ -41,12 +41,7 @@ def main():
     exes = {"old": os.path.abspath(args.old), "new": os.path.abspath(args.new)}
     n = args.n
     work = tempfile.mkdtemp(prefix="rs_pair_ab_")
-    pts, height = bw.monolayer(n)
-    data = os.path.join(work, "mono.data")
-    bw.write_data(data, pts, height)
-    with open(os.path.join(work, "cyl.inp"), "w") as f:
-        f.write("*SURFACE, TYPE=REVOLUTION, NAME=cyl\n0, 0, 0, 0, 0, 1\n"
-                "START, %r, -1\nLINE, %r, %r\n" % (bw.RC, bw.RC, height + 1.0))
+    data, height = bw.write_bed(work, n)
     steps = 1000 if args.bounce else int(min(10000, max(100, 1.0e7 / n)))
     deck = bw.wall_deck("ours", data, steps, height, args.flow,
                         kick=bw.VKICK if args.bounce else 0.0)

@@ -38,12 +38,7 @@ def main():
     exe = os.path.abspath(args.exe)
     work = tempfile.mkdtemp(prefix="rs_push_ab_")
     n = bw.N_BOUNCE
-    pts, height = bw.monolayer(n)
-    data = os.path.join(work, "mono.data")
-    bw.write_data(data, pts, height)
-    with open(os.path.join(work, "cyl.inp"), "w") as f:
-        f.write("*SURFACE, TYPE=REVOLUTION, NAME=cyl\n0, 0, 0, 0, 0, 1\n"
-                "START, %r, -1\nLINE, %r, %r\n" % (bw.RC, bw.RC, height + 1.0))
+    data, height = bw.write_bed(work, n)
     decks = {}
     for v in ("none", "prim", "ours"):
         d = bw.wall_deck(v, data, 1000, height, kick=bw.VKICK)
