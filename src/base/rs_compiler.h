@@ -15,20 +15,11 @@
 #define RS_NOINLINE
 #endif
 
-/* Asks for the cache line at address a ahead of its use (read, kept in all levels). An
- * instruction of its own on x86-64: GCC deletes a loop whose body is __builtin_prefetch
- * alone, as a loop without effect. */
-#if defined(__GNUC__) && defined(__x86_64__)
-#define RS_PREFETCH(a) __asm__ volatile("prefetcht0 %0" : : "m"(*(const char *)(a)))
-#elif defined(__GNUC__)
-#define RS_PREFETCH(a) __builtin_prefetch((a), 0, 3)
-#else
-#define RS_PREFETCH(a) ((void)(a))
-#endif
-
-/* RS_PREFETCH into the second-level cache only: for lines asked for far ahead, many at a
- * time. The level-2 cache tracks more misses in flight than the first level, and the
- * lines do not push out what the first level holds meanwhile. */
+/* Asks for the cache line at address a ahead of its use, into the second-level cache
+ * only: for lines asked for far ahead, many at a time. The level-2 cache tracks more
+ * misses in flight than the first level, and the lines do not push out what the first
+ * level holds meanwhile. An instruction of its own on x86-64: GCC deletes a loop whose
+ * body is __builtin_prefetch alone, as a loop without effect. */
 #if defined(__GNUC__) && defined(__x86_64__)
 #define RS_PREFETCH_L2(a) __asm__ volatile("prefetcht1 %0" : : "m"(*(const char *)(a)))
 #elif defined(__GNUC__)
