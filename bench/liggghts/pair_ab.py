@@ -42,7 +42,7 @@ def main():
     n = args.n
     work = tempfile.mkdtemp(prefix="rs_pair_ab_")
     data, height = bw.write_bed(work, n)
-    steps = 1000 if args.bounce else int(min(10000, max(100, 1.0e7 / n)))
+    steps = bw.STEPS_BOUNCE if args.bounce else int(min(10000, max(100, 1.0e7 / n)))
     deck = bw.wall_deck("ours", data, steps, height, args.flow,
                         kick=bw.VKICK if args.bounce else 0.0)
     rng = random.Random(args.seed)

@@ -22,11 +22,6 @@ import tempfile
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bench_walls as bw  # noqa: E402
 
-STORED = ("fix pushdir all store/state 0 v_fx v_fy\n"
-          "variable px atom f_pushdir[1]\nvariable py atom f_pushdir[2]\n"
-          "fix push all addforce v_px v_py 0\n")
-PER_STEP = "fix push all addforce v_fx v_fy 0\n"
-
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
@@ -39,19 +34,17 @@ def main():
     work = tempfile.mkdtemp(prefix="rs_push_ab_")
     n = bw.N_BOUNCE
     data, height = bw.write_bed(work, n)
+    pushes = ("stored", "per-step")
     decks = {}
     for v in ("none", "prim", "ours"):
-        d = bw.wall_deck(v, data, 1000, height, kick=bw.VKICK)
-        if STORED not in d:
-            sys.exit("push_ab: bench_walls.py no longer writes the stored push")
-        decks[("stored", v)] = d
-        decks[("per-step", v)] = d.replace(STORED, PER_STEP)
+        for p in pushes:
+            decks[(p, v)] = bw.wall_deck(v, data, bw.STEPS_BOUNCE, height, kick=bw.VKICK,
+                                         push_every_step=p == "per-step")
     rng = random.Random(args.seed)
-    pushes = ("stored", "per-step")
     cost = {(p, w): [] for p in pushes for w in ("prim", "ours")}
     ratios = {p: [] for p in pushes}
-    print("bouncing bed, N = %d, 1000 steps, %d repetitions; wall cost in us per "
-          "particle-step" % (n, args.reps))
+    print("bouncing bed, N = %d, %d steps, %d repetitions; wall cost in us per "
+          "particle-step" % (n, bw.STEPS_BOUNCE, args.reps))
     for rep in range(args.reps):
         keys = list(decks)
         rng.shuffle(keys)
