@@ -193,8 +193,7 @@ static int keyword_line(const parser *ps, const tok *t, int nt, draft *d)
     memset(d, 0, sizeof *d);
     d->active = 1;
     d->kline = ps->line;
-    d->sides = 1;
-    d->scale = 1.0;
+    d->scale = 1.0; /* sides 0: the kind's default, set when the surface is made */
     int have_type = 0, have_name = 0, have_fillet = 0, have_sides = 0, have_extent = 0;
     int have_file = 0, have_scale = 0;
     for (int i = 1; i < nt; i++) {
@@ -610,7 +609,7 @@ static int finish_draft(parser *ps, draft *d, rs_surface *s)
     s->kind = d->kind;
     s->ops = rs_analytic_ops(d->kind);
     memcpy(s->name, d->name, sizeof s->name);
-    s->sides = d->sides;
+    s->sides = d->sides ? d->sides : 1;
     s->fillet_radius = d->fillet;
     s->bounded = d->bounded;
     s->zmin = d->zmin;

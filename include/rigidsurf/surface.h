@@ -4,7 +4,8 @@
  * - A profile is a chain of LINE, CIRCL and PARAB segments in a 2D plane (x, y). For
  *   CYLINDER that plane is the local (x, y) plane; for REVOLUTION it is (r, z).
  * - The outward normal lies to the left of travel: n2 = (-t_y, t_x). Particles live on
- *   the side n points to. One-sided unless SIDES=2.
+ *   the side n points to. A profile is one-sided unless SIDES=2; a MESH from STL, OBJ,
+ *   OFF or PLY acts on both sides unless SIDES=1, an Abaqus rigid part on one.
  * - FILLET RADIUS rounds the corners between LINE and CIRCL segments with tangent arcs;
  *   a corner that touches a PARAB stays sharp.
  * - Frames:  SEGMENTS    t1 = (0,0,-1) x n  (= travel direction), t2 = (0,0,-1)

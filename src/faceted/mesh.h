@@ -88,7 +88,9 @@ int rs_mesh_build(const struct rs_soup *soup, double scale, const double a[3],
                   size_t warncap, rs_error *err);
 void rs_mesh_free(rs_mesh *m);
 
-/// Reads a mesh file into surface s (kind MESH, its table of operations set).
+/// Reads a mesh file into surface s (kind MESH, its table of operations set). s->sides is
+/// the SIDES= asked for, 0 for the default: both sides for STL, OBJ, OFF and PLY (as
+/// LIGGGHTS's mesh walls act), one side for an Abaqus rigid part (.inp, as in Abaqus).
 int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int placed,
                          const double abc[9], const char *where, rs_error *err);
 

@@ -1129,8 +1129,10 @@ int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int plac
     s->impl = m;
     s->ops = &rs_mesh_ops;
     s->kind = RS_SURF_FACETED;
-    if (two)
+    if (two) /* no consistent orientation: both sides act, whatever was asked */
         s->sides = 2;
+    else if (s->sides == 0)
+        s->sides = inp ? 1 : 2;
     /* the placement is in the nodes: the reference configuration is global */
     const double I[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     memset(s->a, 0, sizeof s->a);

@@ -321,7 +321,7 @@ static int load_pm_sides(poly_mesh *m, const char *name, int sides, rs_surface *
     write_off(m, path);
     pm_free(m);
     snprintf(text, sizeof text, "*SURFACE, TYPE=MESH, NAME=%s, FILE=%s.off%s\n", name, name,
-             sides == 2 ? ", SIDES=2" : "");
+             sides == 2 ? ", SIDES=2" : ", SIDES=1");
     rs_error e;
     const int rc = load(text, s, &e);
     if (rc)
@@ -367,7 +367,7 @@ static int brute_force_case(const poly_mesh *pm, const char *name, int sides, do
     snprintf(path, sizeof path, "%s/%s.off", tmpdir, name);
     write_off(pm, path);
     snprintf(text, sizeof text, "*SURFACE, TYPE=MESH, NAME=%s, FILE=%s.off%s\n", name, name,
-             sides == 2 ? ", SIDES=2" : "");
+             sides == 2 ? ", SIDES=2" : ", SIDES=1");
     rs_surface s;
     rs_error e;
     if (load(text, &s, &e) != RS_OK) {
@@ -402,11 +402,13 @@ static int brute_force_case(const poly_mesh *pm, const char *name, int sides, do
             lists_shared += c3.share[i] < 1.0;
         double dir[3], l2 = 0.0;
         for (int d = 0; d < 3; d++) {
-            dir[d] = 2.0 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 - 1.0;
+            dir[d] =
+                2.0 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 - 1.0;
             l2 += dir[d] * dir[d];
         }
         const double away[2][3] = {{0.03, -0.03, 0.02},
-                                   {0.04999 * dir[0] / sqrt(l2), 0.04999 * dir[1] / sqrt(l2),
+                                   {0.04999 * dir[0] / sqrt(l2),
+                                    0.04999 * dir[1] / sqrt(l2),
                                     0.04999 * dir[2] / sqrt(l2)}};
         for (int w = 0; w < 2 && ok; w++) {
             rs_query q;
@@ -437,7 +439,8 @@ static int brute_force_case(const poly_mesh *pm, const char *name, int sides, do
             rs_contacts_free(&c2);
             rs_cands_free(&cd);
             if (!same) {
-                fprintf(stderr, "%s: point %d: candidate lists taken %s change the contacts\n",
+                fprintf(stderr,
+                        "%s: point %d: candidate lists taken %s change the contacts\n",
                         name, k, w ? "at the margin" : "0.047 away");
                 ok = 0;
             }
@@ -573,7 +576,8 @@ static void lists_keep_the_folds_of_shares(void)
         for (int side = -1; side <= 1; side += 2) {
             double u[3];
             for (int d = 0; d < 3; d++)
-                u[d] = 2.0 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 - 1.0;
+                u[d] = 2.0 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 -
+                       1.0;
             u[2] = side * (1.0 + fabs(u[2]));
             const double l = rs_norm3(u);
             double p[3], p0[3];
@@ -601,7 +605,8 @@ static void lists_keep_the_folds_of_shares(void)
             for (int k = 0; k < ct.n; k++)
                 shared += ct.share[k] < 1.0;
             if (!ok) {
-                fprintf(stderr, "node %d, side %d: the lists change the contacts\n", v, side);
+                fprintf(stderr, "node %d, side %d: the lists change the contacts\n", v,
+                        side);
                 bad++;
             }
         }
@@ -715,7 +720,8 @@ static void one_contact_outside_convex(void)
     rs_surface s;
     rs_error e;
     ENSURE(ok);
-    ENSURE(load("*SURFACE, TYPE=MESH, NAME=s, FILE=sphere1.off\n", &s, &e) == RS_OK);
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=s, FILE=sphere1.off, SIDES=1\n", &s, &e) ==
+           RS_OK);
     unsigned long long seed = 5;
     rs_contacts c;
     memset(&c, 0, sizeof c);
@@ -813,7 +819,8 @@ static void cube_edges_and_corners(void)
     write_text("cube.off", cube);
     rs_surface s;
     rs_error e;
-    ENSURE(load("*SURFACE, TYPE=MESH, NAME=cube, FILE=cube.off\n", &s, &e) == RS_OK);
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=cube, FILE=cube.off, SIDES=1\n", &s, &e) ==
+           RS_OK);
     rs_contacts c;
     memset(&c, 0, sizeof c);
     double x = 1.1, y = 0.4, z = 1.2; /* beyond the edge x = 1, z = 1 */
@@ -875,7 +882,7 @@ static void scale_and_placement(void)
     rs_surface s;
     rs_error e;
     /* a = (1,2,3); local x along global y; local y along global z: local z = global x */
-    ENSURE(load("*SURFACE, TYPE=MESH, NAME=q, FILE=quad.off, SCALE=2\n"
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=q, FILE=quad.off, SCALE=2, SIDES=1\n"
                 "1, 2, 3, 1, 3, 3, 1, 2, 4\n",
                 &s, &e) == RS_OK);
     double lo[3], hi[3];
@@ -908,7 +915,7 @@ static void pose_moves_the_mesh(void)
     pm_free(&m);
     rs_surface s;
     rs_error e;
-    ENSURE(load("*SURFACE, TYPE=MESH, NAME=t, FILE=tp.off\n", &s, &e) == RS_OK);
+    ENSURE(load("*SURFACE, TYPE=MESH, NAME=t, FILE=tp.off, SIDES=1\n", &s, &e) == RS_OK);
     rs_pose pose;
     const double ax[3] = {0.3, -0.5, 0.8};
     const double l = rs_norm3(ax);
