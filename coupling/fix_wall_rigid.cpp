@@ -48,7 +48,7 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       step_checked_(false), row_(NULL), hist_(NULL), nmax_(0), rebuild_(true),
       lookahead_(0.0), rglob_(0.0), bounds_ok_(false), list_bounds_(false), se_now_(0.0),
       ncontact_(0), out_step_(-1), out_valid_(false), kstep_(0), run_time0_(0.0),
-      pnewdt_stop_(false), routine_step_warned_(false)
+      pnewdt_stop_(false), routine_step_warned_(false), behind_(0), behind_warned_(false)
 {
     std::memset(&surf_, 0, sizeof surf_);
     std::memset(&loaded_, 0, sizeof loaded_);
@@ -590,6 +590,8 @@ void FixWallRigid::build_candidates()
     const double *radius = atom->radius;
     rs_error err;
     rs_error_clear(&err);
+    /* On a one-sided wall the query also reaches behind it, as far as in front. */
+    const bool look_behind = surf_.sides != 2 && !behind_warned_;
 
     int n = 0;
     auto flush = [&]() {
@@ -606,12 +608,15 @@ void FixWallRigid::build_candidates()
         }
         rs_query q = sphere_query(bidx_.data(), n);
         q.gap_max = tracking_ + neighbor->skin;
-        q.dist_min = -rmax;
+        q.dist_min = look_behind ? -(rmax + q.gap_max) : -rmax;
         contacts_.n = 0;
         if (rs_surface_query(&surf_, &q, &contacts_, &err) != RS_OK)
             fail_one(std::string("surface query: ") + err.msg);
-        for (int c = 0; c < contacts_.n; c++)
-            take_[contacts_.point[c]] = 1;
+        if (look_behind)
+            sort_behind(n, -rmax);
+        else
+            for (int c = 0; c < contacts_.n; c++)
+                take_[contacts_.point[c]] = 1;
         for (int k = 0; k < n; k++)
             if (take_[k])
                 cand_.push_back(bidx_[k]);
@@ -744,8 +749,11 @@ void FixWallRigid::compute(bool setup_call)
                 array_atom[i][c] = 0.0;
         refresh = true;
     }
-    if (refresh)
+    if (refresh) {
         build_candidates();
+        if (surf_.sides != 2 && !behind_warned_)
+            warn_behind();
+    }
 
     /* The candidates this step: all of them, less those whose distance bound keeps them
      * beyond the tracking thickness (a test as cheap as a primitive wall's; a particle

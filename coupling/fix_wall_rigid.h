@@ -97,6 +97,8 @@ class FixWallRigid : public Fix
     void compute(bool setup_call);
     void init_scratch();
     void build_candidates();
+    void sort_behind(int n, double dist_min); // fix_wall_rigid_sides.cpp
+    void warn_behind();
     bool wall_moved_beyond_skin() const;
     void process_block(const int *idx, int n, bool setup_call);
     void law_inputs(const int *idx, int n, int ne, bool setup_call);
@@ -315,6 +317,10 @@ class FixWallRigid : public Fix
     rs_law_requests requests_;
     bool pnewdt_stop_;
     bool routine_step_warned_; ///< the routine-stiffness step warning was printed
+    /* Particles found behind a one-sided surface on this rank's rebuilds since the last
+     * check, and whether the warning was printed (then the rebuilds look no more). */
+    long behind_;
+    bool behind_warned_;
     void report_requests();
 };
 
