@@ -9,7 +9,7 @@
  *   LINE, x1, y1
  *   CIRCL, x1, y1, xc, yc
  *   PARAB, xm, ym, x1, y1
- *   *SURFACE, TYPE=MESH, NAME=name [, FILE=part.stl] [, SCALE=s] [, SIDES=2]
+ *   *SURFACE, TYPE=MESH, NAME=name [, FILE=part.stl] [, SCALE=s] [, SIDES=1|2]
  *   ax, ay, az, bx, by, bz, cx, cy, cz                  (MESH, optional placement)
  *   *NODE, *ELEMENT, TYPE=R3D3|R3D4, *INCLUDE           (a MESH without FILE= is the
  *                                                        rigid part of this file)
