@@ -371,6 +371,38 @@ static int data_line(const parser *ps, tok *t, int nt, draft *d)
     if (!d->active)
         return perr(ps, RS_ERR_PARSE, "expected *SURFACE before data lines%s%s", NULL,
                     NULL);
+    /* values separated by blanks, not commas: a first field with a blank inside that
+     * starts with a profile word, or with a number where points are expected */
+    int w = 0;
+    while (w < t[0].len && !isspace((unsigned char)t[0].p[w]))
+        w++;
+    if (w < t[0].len) {
+        static const char *const form[][2] = {{"START", "START, x, y"},
+                                              {"LINE", "LINE, x1, y1"},
+                                              {"CIRCL", "CIRCL, x1, y1, xc, yc"},
+                                              {"PARAB", "PARAB, xm, ym, x1, y1"}};
+        const char *want = NULL;
+        tok head = {t[0].p, w};
+        normkey(&head, word, sizeof word);
+        for (int i = 0; i < 4; i++)
+            if (strcmp(word, form[i][0]) == 0)
+                want = form[i][1];
+        const char c0 = t[0].p[0];
+        if (!want && (isdigit((unsigned char)c0) || c0 == '+' || c0 == '-' || c0 == '.')) {
+            if (d->kind == RS_SURF_FACETED && !d->placed)
+                want = "ax, ay, az, bx, by, bz, cx, cy, cz";
+            else if (d->kind == RS_SURF_CYLINDER && d->ncoord == 1)
+                want = "cx, cy, cz";
+            else if (d->kind != RS_SURF_FACETED && d->kind != RS_SURF_SEGMENTS &&
+                     d->ncoord == 0)
+                want = "ax, ay, az, bx, by, bz";
+        }
+        if (want) {
+            showtok(&t[0], show, sizeof show);
+            return perr(ps, RS_ERR_PARSE, "expected commas between values: %s (found '%s')",
+                        want, show);
+        }
+    }
     if (d->kind == RS_SURF_FACETED) {
         if (d->placed)
             return perr(ps, RS_ERR_PARSE,

@@ -7,12 +7,16 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Pieces of segment g in the polyline: arcs one per 2 pi / nh of sweep, parabolas 16. */
+/* Pieces of segment g in the polyline: an arc one per 2 pi / nh of its sweep, rounded up
+ * (a sweep within 1e-9 of a whole number of pieces is that number), a parabola 16. */
 static int seg_pieces(const rs_segment *g, int nh)
 {
-    return g->type == RS_LINE    ? 1
-           : g->type == RS_PARAB ? 16
-                                 : (int)ceil(fabs(g->sweep) / (2.0 * RS_PI / nh)) + 1;
+    if (g->type == RS_LINE)
+        return 1;
+    if (g->type == RS_PARAB)
+        return 16;
+    const int n = (int)ceil(fabs(g->sweep) * nh / (2.0 * RS_PI) - 1e-9);
+    return n > 1 ? n : 1;
 }
 
 /* Profile polyline, seg_pieces pieces a segment, except that a run of LINE pieces joined

@@ -1,15 +1,9 @@
-/* rigidsurf-frames: prints the contact frame of the globally closest feature of an
- * analytic surface for each query point.
+/* rigidsurf-frames: prints the contact frame of the globally closest feature of a
+ * surface for each query point (the text of usage() says what it prints and writes).
  *
- *   rigidsurf-frames SURFACE_FILE [POINTS_FILE] [--name NAME] [--tracking D] [--vtk
- * OUT.vtk]
- *
- * Points come one per line, "x y z" ("x y" for SEGMENTS), '#' starts a comment.
- * Output, %.17g:  3D: rdisp1 xm ym zm n_x n_y n_z t1_x t1_y t1_z t2_x t2_y t2_z
- *                 2D: rdisp1 xm ym n_x n_y t1_x t1_y
  * rdisp1 = -(x_s - x_m).n is the penetration of the point (> 0 behind the surface). A
- * point farther than --tracking from the surface, or owned by no feature, prints 1e30
- * in every column. */
+ * point farther than --tracking in front of the surface (no limit by default), or owned
+ * by no feature, prints 1e30 in every column. */
 #include "rigidsurf/surface.h"
 
 #include <ctype.h>
@@ -29,10 +23,32 @@ typedef struct point_list {
     double *x, *y, *z;
 } point_list;
 
-static void usage(FILE *f)
+/* The synopsis; with full (--help) what the program prints and writes. */
+static void usage(FILE *f, int full)
 {
     fprintf(f, "usage: rigidsurf-frames SURFACE_FILE [POINTS_FILE] [--name NAME] "
-               "[--tracking D] [--vtk OUT.vtk]\n");
+               "[--tracking D]\n"
+               "                        [--vtk OUT.vtk]\n");
+    if (!full)
+        return;
+    fprintf(
+        f,
+        "For each point (\"x y z\" a line, \"x y\" for SEGMENTS, '#' starts a comment;\n"
+        "from POINTS_FILE or stdin) prints the frame of the surface's closest feature "
+        "(%%.17g):\n"
+        "  3D: rdisp1 xm ym zm n_x n_y n_z t1_x t1_y t1_z t2_x t2_y t2_z\n"
+        "  2D: rdisp1 xm ym n_x n_y t1_x t1_y\n"
+        "rdisp1 > 0 is a point behind the surface; (xm, ym, zm) is its closest point.\n"
+        "  --name NAME    the surface NAME= of the file (default: the first)\n"
+        "  --tracking D   a point more than D in front of the surface prints 1e30 in\n"
+        "                 every column (default: no limit, every point gets a frame;\n"
+        "                 a point behind it gets one at any depth)\n"
+        "  --vtk OUT.vtk  also writes a legacy VTK polydata file: the surface's\n"
+        "                 triangles (an arc a node per 5.625 degrees, 64 nodes around a\n"
+        "                 REVOLUTION, a profile without EXTENT extruded to +-max(1, its\n"
+        "                 largest coordinate)), and a vertex at the closest point of\n"
+        "                 each point that got a frame, with the vectors n, t1, t2 as\n"
+        "                 point data (zero on the surface's nodes)\n");
 }
 
 static int push_point(point_list *p, double x, double y, double z)
@@ -249,7 +265,7 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            usage(stdout);
+            usage(stdout, 1);
             return 0;
         } else if (!strcmp(a, "--name") || !strcmp(a, "--tracking") ||
                    !strcmp(a, "--vtk")) {
@@ -276,7 +292,7 @@ int main(int argc, char **argv)
             }
         } else if (a[0] == '-' && a[1] == '-') {
             fprintf(stderr, "rigidsurf-frames: unknown option '%s'\n", a);
-            usage(stderr);
+            usage(stderr, 0);
             return 2;
         } else if (!surface_file) {
             surface_file = a;
@@ -284,12 +300,12 @@ int main(int argc, char **argv)
             points_file = a;
         } else {
             fprintf(stderr, "rigidsurf-frames: unexpected argument '%s'\n", a);
-            usage(stderr);
+            usage(stderr, 0);
             return 2;
         }
     }
     if (!surface_file) {
-        usage(stderr);
+        usage(stderr, 0);
         return 2;
     }
 

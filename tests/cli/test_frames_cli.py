@@ -94,6 +94,11 @@ r3 = rows(out)
 check("tracking_beyond_prints_maxval",
       code == 0 and len(r3) == 2 and all(v == 1e30 for v in r3[0]) and close(r3[1][:1], [0.7 - R]), str(r3))
 
+# Without --tracking there is no limit: a point 5 in front of the floor gets its frame.
+code, out, err = run([seg], "1 5\n")
+check("tracking_default_no_limit", code == 0 and close(rows(out)[0], [-5, 1, 0, 0, 1, 1, 0]),
+      out + err)
+
 # Several surfaces in one file, chosen by name; points from a file.
 multi = write("multi.inp", "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, 0, 0\nLINE, 1, 0\n"
               "*SURFACE, TYPE=SEGMENTS, NAME=b\nSTART, 0, 1\nLINE, 0, 0\n")
@@ -108,6 +113,18 @@ vtk = os.path.join(TMP, "f.vtk")
 code, out, err = run([drum, "--vtk", vtk], "0.5 0 0\n")
 text = open(vtk).read() if os.path.exists(vtk) else ""
 check("vtk_written", code == 0 and "DATASET POLYDATA" in text and "VECTORS t2 double" in text, err)
+
+# The VTK holds the surface's nodes (the drum's two profile nodes in rings of 64) and a
+# vertex at the closest point of each point that got a frame (not the one beyond
+# --tracking), with n there.
+vtk = os.path.join(TMP, "f2.vtk")
+code, out, err = run([drum, "--tracking", "0.1", "--vtk", vtk], "0 0 0\n0.7 0 0.5\n")
+text = open(vtk).read() if os.path.exists(vtk) else ""
+tail = text.split("VECTORS n double\n")[-1].split("\n")
+check("vtk_surface_nodes_and_a_vertex_per_frame",
+      code == 0 and "POINTS 129 double" in text and "VERTICES 1 2\n1 128\n" in text
+      and len(tail) > 128 and close([float(v) for v in tail[128].split()], [-1, 0, 0]),
+      err + text[:200])
 
 # MESH: a unit cube of quads in an OFF file next to the surface file. Above a face, the
 # face's normal and the FACETED frame (n = +z: t1 = x, t2 = y); beyond an edge, the

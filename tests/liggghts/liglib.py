@@ -233,10 +233,11 @@ def compare_frames(fa, fb, fields_scales):
 
 
 def sphere_wall_deck(wall, atoms, steps, gravity, integrator, box, tag, dt,
-                     extra_props=""):
-    """One deck of a wall test: the header, the atoms, gravity -z if asked, the wall
-    line(s), the integrator and a dump every 5 steps to TAG.dump."""
-    d = header(box, dt, extra_props=extra_props)
+                     extra_props="", head=None):
+    """One deck of a wall test: the header (head: more arguments of header()), the atoms,
+    gravity -z if asked, the wall line(s), the integrator and a dump every 5 steps to
+    TAG.dump."""
+    d = header(box, dt, extra_props=extra_props, **(head or {}))
     d += atoms
     if gravity:
         d += "fix grav all gravity 9.81 vector 0 0 -1\n"
@@ -248,12 +249,12 @@ def sphere_wall_deck(wall, atoms, steps, gravity, integrator, box, tag, dt,
 
 
 def compare_walls(s, name, ours, ref, atoms, steps, gravity, integrator, box, touched,
-                  dt, scales, tol, extra_props="", ref_tag="ref"):
+                  dt, scales, tol, extra_props="", ref_tag="ref", head=None):
     """Runs the same deck with our wall and with LIGGGHTS's and checks that the reference
     touched (touched(frames)) and that every dumped field agrees to tol relative."""
     for wall, tag in ((ours, name + "_rigid"), (ref, name + "_" + ref_tag)):
         s.run(tag, sphere_wall_deck(wall, atoms, steps, gravity, integrator, box, tag, dt,
-                                    extra_props))
+                                    extra_props, head))
     fa = read_dump(s.path(name + "_rigid.dump"))
     fb = read_dump(s.path(name + "_" + ref_tag + ".dump"))
     s.ck.check(name + ": the reference run made contact", touched(fb),

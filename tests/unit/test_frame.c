@@ -215,6 +215,48 @@ static void test_frame_revolution_axis_is_finite_and_deterministic(void)
     rs_surface_free(&s);
 }
 
+/* A REVOLUTION's local x, the direction e_r takes on its axis, is the global axis least
+ * aligned with the symmetry axis (the first of x, y, z on a tie), made normal to it: for
+ * an axis along z or y, global x; along x, global y. A point on the axis of a disc facing
+ * +z_local has t2 = z_local x e_r, t1 = t2 x n. */
+static void test_frame_revolution_local_x_on_the_axis(void)
+{
+    static const struct {
+        double axis[3], ex[3];
+    } CASE[] = {{{0, 0, 1}, {1, 0, 0}},
+                {{0, 2, 0}, {1, 0, 0}},
+                {{3, 0, 0}, {0, 1, 0}},
+                {{0, 0, -1}, {1, 0, 0}},
+                {{1, 1, 1}, {2, -1, -1}}};
+    for (size_t i = 0; i < sizeof CASE / sizeof CASE[0]; i++) {
+        char txt[200];
+        const double *b = CASE[i].axis;
+        snprintf(txt, sizeof txt,
+                 "*SURFACE, TYPE=REVOLUTION, NAME=d\n0, 0, 0, %g, %g, %g\n"
+                 "START, 0, 0\nLINE, 1, 0\n",
+                 b[0], b[1], b[2]);
+        rs_surface s;
+        ENSURE(parse(txt, &s) == 0);
+        double ez[3] = {b[0], b[1], b[2]},
+               ex[3] = {CASE[i].ex[0], CASE[i].ex[1], CASE[i].ex[2]};
+        unit(ez);
+        unit(ex);
+        double x = 0.5 * ez[0], y = 0.5 * ez[1], z = 0.5 * ez[2], t2[3], t1[3];
+        rs_cross3(ez, ex, t2);
+        rs_cross3(t2, ez, t1); /* n = +z_local */
+        rs_query q = {1, {&x, &y, &z, NULL}, NULL, INFINITY, -INFINITY};
+        rs_contacts c = {0};
+        ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0 && c.n == 1);
+        for (int d = 0; d < 3; d++) {
+            ENSURE_SMALL(s.ex[d] - ex[d], 1e-15);
+            ENSURE_SMALL(c.t1[d][0] - t1[d], 1e-15);
+            ENSURE_SMALL(c.t2[d][0] - t2[d], 1e-15);
+        }
+        rs_contacts_free(&c);
+        rs_surface_free(&s);
+    }
+}
+
 /* Under a pose x = R X + T the contacts of x are the rotated contacts of X. */
 static void pose_check(const char *txt, int planar)
 {
@@ -397,6 +439,7 @@ int main(void)
     RS_RUN(test_frame_cylinder_t1_is_generator);
     RS_RUN(test_frame_revolution_t2_is_hoop);
     RS_RUN(test_frame_revolution_axis_is_finite_and_deterministic);
+    RS_RUN(test_frame_revolution_local_x_on_the_axis);
     RS_RUN(test_frame_turns_with_the_master_segments);
     RS_RUN(test_frame_turns_with_the_master_cylinder);
     RS_RUN(test_frame_turns_with_the_master_revolution);

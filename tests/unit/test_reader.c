@@ -41,6 +41,21 @@ static void test_reader_keywords_case_comments_and_names(void)
     ENSURE(strstr(e.msg, "nope") != NULL);
 }
 
+/* CYLINDER axes: x = (b - a)/|b - a|, the generator z = c - a made normal to x (c need
+ * not lie on the generator through a), y = z x x. */
+static void test_reader_cylinder_c_is_made_normal_to_x(void)
+{
+    rs_surface s;
+    rs_error e;
+    ENSURE(rs_surface_parse("*SURFACE, TYPE=CYLINDER, NAME=c\n1, 1, 1, 1, 3, 1\n"
+                            "1, 6, -1\nSTART, 0, 0\nLINE, 1, 0\n",
+                            "axes.inp", NULL, &s, &e) == RS_OK);
+    const double ex[3] = {0, 1, 0}, ez[3] = {0, 0, -1}, ey[3] = {1, 0, 0};
+    for (int d = 0; d < 3; d++)
+        ENSURE(s.ex[d] == ex[d] && s.ey[d] == ey[d] && s.ez[d] == ez[d]);
+    rs_surface_free(&s);
+}
+
 /* Each malformed input: code, and the message names ORIGIN:LINE. */
 typedef struct bad_case {
     const char *what;
@@ -67,6 +82,18 @@ static const bad_case BAD[] = {
     {"missing TYPE", "*SURFACE, NAME=a\nSTART, 0, 0\n", RS_ERR_PARSE, 1, "TYPE"},
     {"unknown profile line", "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, 0, 0\nARC, 1, 0\n",
      RS_ERR_PARSE, 3, "expected START, LINE, CIRCL or PARAB"},
+    {"profile values without commas",
+     "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART 0.015 0.0\nLINE, 1, 0\n", RS_ERR_PARSE, 2,
+     "expected commas between values: START, x, y (found 'START 0.015 0.0')"},
+    {"a comma missing after the word",
+     "*SURFACE, TYPE=SEGMENTS, NAME=a\nSTART, 0, 0\ncircl 0, 1, 0, 0\n", RS_ERR_PARSE, 3,
+     "expected commas between values: CIRCL, x1, y1, xc, yc"},
+    {"points without commas",
+     "*SURFACE, TYPE=REVOLUTION, NAME=a\n0 0 0 0 0 1\nSTART, 1, 0\nLINE, 1, 1\n",
+     RS_ERR_PARSE, 2, "expected commas between values: ax, ay, az, bx, by, bz"},
+    {"point c without commas",
+     "*SURFACE, TYPE=CYLINDER, NAME=a\n0, 0, 0, 1, 0, 0\n0 -1 0\nSTART, 0, 0\n",
+     RS_ERR_PARSE, 3, "expected commas between values: cx, cy, cz"},
     {"missing START", "*SURFACE, TYPE=SEGMENTS, NAME=a\nLINE, 1, 0\n", RS_ERR_PARSE, 2,
      "expected START"},
     {"START not first",
@@ -378,6 +405,7 @@ static void test_reader_fuzz_never_crashes(void)
 int main(void)
 {
     RS_RUN(test_reader_keywords_case_comments_and_names);
+    RS_RUN(test_reader_cylinder_c_is_made_normal_to_x);
     RS_RUN(test_reader_bad_input_codes_and_lines);
     RS_RUN(test_reader_missing_file_names_the_path);
     RS_RUN(test_reader_directory_is_named);

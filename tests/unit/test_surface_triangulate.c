@@ -2,6 +2,7 @@
  * triangle gives the outward normal (the side the particles live on); a run of
  * collinear LINE pieces shows as one piece. */
 #include "rigidsurf/surface.h"
+#include "rigidsurf/vec.h"
 #include "rs_test.h"
 
 #include <math.h>
@@ -137,6 +138,48 @@ static void test_surface_triangulate_collinear_run_is_one_piece(void)
     }
 }
 
+/* An arc is drawn with one piece per 360 / nhoop degrees of its sweep, rounded up: a
+ * SEGMENTS profile of pieces P shows as 2 P triangles (its extrusion along z). */
+static int triangles_of(const char *text, int nhoop)
+{
+    rs_surface s;
+    rs_error e;
+    rs_trimesh m;
+    if (rs_surface_parse(text, "tri", NULL, &s, &e) != 0)
+        return -1;
+    int nt = rs_surface_triangulate(&s, 1.0, nhoop, &m, &e) == 0 ? m.ntri : -1;
+    rs_trimesh_free(&m);
+    rs_surface_free(&s);
+    return nt;
+}
+
+static void test_surface_triangulate_arc_pieces_per_sweep(void)
+{
+    /* sweep (degrees), points around the full turn, pieces = ceil(sweep / (360 / nh)) */
+    static const struct {
+        double deg;
+        int nh, pieces;
+    } CASE[] = {{35.0, 72, 7}, {90.0, 72, 18},  {3.0, 72, 1},
+                {5.5, 72, 2},  {170.0, 24, 12}, {45.0, 64, 8}};
+    for (size_t i = 0; i < sizeof CASE / sizeof CASE[0]; i++) {
+        const double th = CASE[i].deg * RS_PI / 180.0;
+        char text[256];
+        snprintf(text, sizeof text,
+                 "*SURFACE, TYPE=SEGMENTS, NAME=arc\nSTART, 1, 0\n"
+                 "CIRCL, %.17g, %.17g, 0, 0\n",
+                 cos(th), sin(th));
+        ENSURE(triangles_of(text, CASE[i].nh) == 2 * CASE[i].pieces);
+    }
+    /* a fillet of 35 degrees between two LINEs: 1 + 7 + 1 pieces at 5 degrees a node */
+    const double th = 35.0 * RS_PI / 180.0;
+    char text[256];
+    snprintf(text, sizeof text,
+             "*SURFACE, TYPE=SEGMENTS, NAME=f, FILLET RADIUS=0.1\nSTART, -1, 0\n"
+             "LINE, 0, 0\nLINE, %.17g, %.17g\n",
+             cos(th), sin(th));
+    ENSURE(triangles_of(text, 72) == 2 * 9);
+}
+
 int main(void)
 {
     RS_RUN(test_surface_triangulate_segments_outward);
@@ -145,5 +188,6 @@ int main(void)
     RS_RUN(test_surface_triangulate_revolution_outward);
     RS_RUN(test_surface_triangulate_bad_arguments);
     RS_RUN(test_surface_triangulate_collinear_run_is_one_piece);
+    RS_RUN(test_surface_triangulate_arc_pieces_per_sweep);
     return rs_test_summary();
 }
