@@ -477,7 +477,7 @@ int FixWallRigid::parse_surface(int narg, char **arg, int iarg)
             else if (k == "b")
                 b = point("b x y z (on the local x axis)", pb);
             else if (k == "c")
-                c = point("c x y z (on the generator)", pc);
+                c = point("c x y z (off the local x axis, on the generator's side)", pc);
             else if (k == "extent")
                 extent = num("extent zmin zmax"), extent += ", " + num("extent zmin zmax");
             else if (k == "fillet")
