@@ -36,9 +36,9 @@ extern char **environ;
 
 #define RS_PATH 4096
 
-enum { FORM_NONE = 0, FORM_FIXED = 1, FORM_FREE = 2 };
+enum { FORM_NONE = 0, FORM_FIXED = RS_FORM_FIXED, FORM_FREE = RS_FORM_FREE };
 
-static int source_form(const char *path)
+int rs_law_source_form(const char *path)
 {
     if (!path)
         return FORM_NONE;
@@ -59,7 +59,7 @@ static int source_form(const char *path)
 
 int rs_law_is_source(const char *path)
 {
-    return source_form(path) != FORM_NONE;
+    return rs_law_source_form(path) != FORM_NONE;
 }
 
 static int is_file(const char *path)
@@ -364,7 +364,7 @@ static int prepare(const char *src, int *form, char *libdir, char *incdir, char 
 {
     if (!src || !src[0])
         return rs_error_set(err, RS_ERR_ARG, "user routine: no source file given");
-    *form = source_form(src);
+    *form = rs_law_source_form(src);
     if (*form == FORM_NONE)
         return rs_error_set(err, RS_ERR_ARG,
                             "%s: not a Fortran source (expected .f, .for, .ftn, .f77, .F, "

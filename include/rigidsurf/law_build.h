@@ -29,6 +29,13 @@ extern "C" {
 /// fixed form; .f90 .f95 .f03 .f08 .F90 free form), else 0.
 int rs_law_is_source(const char *path);
 
+/// Source forms (rs_law_source_form).
+enum { RS_FORM_FIXED = 1, RS_FORM_FREE = 2 };
+
+/// The source form path's extension names: RS_FORM_FIXED, RS_FORM_FREE, or 0 when it
+/// is not a Fortran source.
+int rs_law_source_form(const char *path);
+
 /// Compiles src into the shared library out. On a compile error, err names the file
 /// and holds the compiler's first error; the whole compiler output is in out.log.
 /// verbose != 0 prints the compiler command on stdout.
