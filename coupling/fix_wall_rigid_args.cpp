@@ -1,6 +1,7 @@
 /* fix wall/rigid: its arguments (docs/fix_wall_rigid.md, "Syntax") and the error
  * messages that name them. */
 #include "fix_wall_rigid.h"
+#include "rigidsurf/law_build.h"
 #include "rigidsurf/vec.h"
 
 #include "domain.h"
@@ -630,6 +631,15 @@ int FixWallRigid::parse_law(int narg, char **arg, int iarg)
         fail(std::string("keyword 'law': ") + err.msg);
     loaded_ok_ = true;
     law_ = &loaded_;
+    /* A routine built from source: the compiler's warnings, as one line on rank 0. */
+    const rs_build_warnings *w = rs_law_warnings(&loaded_);
+    if (w && w->count > 0 && comm->me == 0) {
+        std::ostringstream o;
+        o << "fix wall/rigid: law " << loaded_.name << ": the Fortran compiler gave "
+          << w->count << (w->count == 1 ? " warning" : " warnings")
+          << "; the first: " << w->first << " (all of them: " << w->log << ")";
+        error->warning(FLERR, o.str().c_str());
+    }
     return iarg;
 }
 

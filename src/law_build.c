@@ -36,9 +36,9 @@ extern char **environ;
 
 #define RS_PATH 4096
 
-enum { FORM_NONE = 0, FORM_FIXED = 1, FORM_FREE = 2 };
+enum { FORM_NONE = 0, FORM_FIXED = RS_FORM_FIXED, FORM_FREE = RS_FORM_FREE };
 
-static int source_form(const char *path)
+int rs_law_source_form(const char *path)
 {
     if (!path)
         return FORM_NONE;
@@ -59,7 +59,7 @@ static int source_form(const char *path)
 
 int rs_law_is_source(const char *path)
 {
-    return source_form(path) != FORM_NONE;
+    return rs_law_source_form(path) != FORM_NONE;
 }
 
 static int is_file(const char *path)
@@ -268,6 +268,47 @@ static void first_error(const char *log, char *out, size_t size)
     free(text);
 }
 
+/* A warning: gfortran's "Warning: text" line (its location on a line before), or a
+ * "...: Warning: text" or "...: warning: text" line (f951's, gcc's, the linker's). */
+static int is_warning(const char *line)
+{
+    return strncmp(line, "Warning:", 8) == 0 || strstr(line, ": Warning:") ||
+           strstr(line, ": warning:");
+}
+
+void rs_law_build_read_warnings(const char *log, rs_build_warnings *w)
+{
+    if (!w)
+        return;
+    memset(w, 0, sizeof *w);
+    if (!log)
+        return;
+    snprintf(w->log, sizeof w->log, "%s", log);
+    size_t n = 0;
+    char *text = read_all(log, &n);
+    if (!text)
+        return;
+    const char *where = NULL; /* the last "FILE:LINE:COL:" line */
+    for (char *line = text; line && *line;) {
+        char *next = strchr(line, '\n');
+        if (next)
+            *next++ = '\0';
+        const size_t len = strlen(line);
+        if (is_warning(line)) {
+            if (++w->count == 1) {
+                const int located = strncmp(line, "Warning:", 8) == 0 && where;
+                snprintf(w->first, sizeof w->first, "%s%s%s", located ? where : "",
+                         located ? " " : "", line);
+            }
+        } else if (len > 1 && line[0] != ' ' && line[len - 1] == ':' &&
+                   strchr(line, ':') < line + len - 1) {
+            where = line;
+        }
+        line = next;
+    }
+    free(text);
+}
+
 /* Runs the command with stdout and stderr into the open file logfd; the exit status, or
  * -1 with errno. */
 static int run_logged(const build_cmd *c, int logfd)
@@ -364,7 +405,7 @@ static int prepare(const char *src, int *form, char *libdir, char *incdir, char 
 {
     if (!src || !src[0])
         return rs_error_set(err, RS_ERR_ARG, "user routine: no source file given");
-    *form = source_form(src);
+    *form = rs_law_source_form(src);
     if (*form == FORM_NONE)
         return rs_error_set(err, RS_ERR_ARG,
                             "%s: not a Fortran source (expected .f, .for, .ftn, .f77, .F, "

@@ -8,6 +8,7 @@
 #define RIGIDSURF_LAW_FORTRAN_H
 
 #include "rigidsurf/law.h"
+#include "rigidsurf/law_build.h"
 
 #include <stddef.h>
 
@@ -97,6 +98,8 @@ typedef struct rs_loaded_law {
     rs_fric_fn fric;
     const rs_law *normal; ///< UINTER/FRIC: law run first for the normal response
     int own_nsv;          ///< adapter slots (normal law's + own)
+    int from_source;      ///< 1 when built from a Fortran source (then warnings is set)
+    rs_build_warnings warnings; ///< the compiler's warnings of that build
 } rs_loaded_law;
 
 /* Block functions of the loaded kinds (law->update), in law_fortran.c. */

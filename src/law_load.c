@@ -1,10 +1,13 @@
 /* Run-time loading of user laws with dlopen: C block laws, Fortran VUINTER, and the
  * point-wise Fortran UINTER and FRIC routines wrapped as block laws. A Fortran source
- * (rs_law_is_source) is built first, through the cache of law_build.c. Failures name
- * the library and the missing symbol with the dynamic loader's own message. */
+ * (rs_law_is_source) is built first, through the cache of law_build.c; then its
+ * SUBROUTINE statement is checked against the argument lists the adapters call
+ * (law_signature.c), and an older-list UINTER gets its adapter. Failures name the
+ * library and the missing symbol with the dynamic loader's own message. */
 #define _POSIX_C_SOURCE 200809L
 
 #include "law_fortran.h"
+#include "law_signature.h"
 #include "rigidsurf/law.h"
 #include "rigidsurf/law_build.h"
 
@@ -24,15 +27,24 @@ static void loaded_destroy(rs_law *law)
     law->ctx = NULL;
 }
 
-static int open_library(const char *lib, rs_loaded_law **out, rs_error *err)
+/* Opens lib. A Fortran source is built first, and the SUBROUTINE statement of routine
+ * (VUINTER, UINTER, FRIC; NULL for a C law) is checked: the list it matches goes to
+ * *list (0 for a library, whose list cannot be read). */
+static int open_library(const char *lib, const char *routine, rs_loaded_law **out,
+                        rs_arglist *list, rs_error *err)
 {
     *out = NULL;
+    if (list)
+        *list = (rs_arglist)0;
     if (!lib || !lib[0])
         return rs_error_set(err, RS_ERR_ARG, "law library: no path given");
     char built[4096];
     const char *path = lib;
-    if (rs_law_is_source(lib)) {
+    const int source = rs_law_is_source(lib);
+    if (source) {
         int rc = rs_law_build_cached(lib, built, sizeof built, err);
+        if (!rc && routine)
+            rc = rs_law_source_list(lib, routine, list, err);
         if (rc)
             return rc;
         path = built;
@@ -40,6 +52,12 @@ static int open_library(const char *lib, rs_loaded_law **out, rs_error *err)
     rs_loaded_law *ld = (rs_loaded_law *)calloc(1, sizeof *ld);
     if (!ld)
         return rs_error_set(err, RS_ERR_NOMEM, "law library %s: out of memory", lib);
+    if (source) {
+        char log[sizeof built + 8];
+        snprintf(log, sizeof log, "%s.log", built);
+        ld->from_source = 1;
+        rs_law_build_read_warnings(log, &ld->warnings);
+    }
     dlerror();
     ld->handle = dlopen(path, RTLD_NOW | RTLD_LOCAL);
     if (!ld->handle) {
@@ -107,11 +125,12 @@ static int fail_close(rs_loaded_law *ld, int code)
 }
 
 /* Opens lib and finds the first of names in it (*ld, *sym); on failure nothing is left
- * open. */
-static int open_with_symbol(const char *lib, const char *const *names, int count,
-                            rs_loaded_law **ld, void **sym, rs_error *err)
+ * open. routine and list as for open_library. */
+static int open_with_symbol(const char *lib, const char *routine, const char *const *names,
+                            int count, rs_loaded_law **ld, void **sym, rs_arglist *list,
+                            rs_error *err)
 {
-    int rc = open_library(lib, ld, err);
+    int rc = open_library(lib, routine, ld, list, err);
     if (rc)
         return rc;
     *sym = find_symbol(*ld, lib, names, count, NULL, err);
@@ -128,7 +147,7 @@ int rs_law_load_c(const char *lib, const char *symbol, rs_law *out, rs_error *er
     rs_loaded_law *ld;
     void *sym;
     const char *names[1] = {symbol};
-    int rc = open_with_symbol(lib, names, 1, &ld, &sym, err);
+    int rc = open_with_symbol(lib, NULL, names, 1, &ld, &sym, NULL, err);
     if (rc)
         return rc;
     ld->kind = RS_LOADED_C;
@@ -172,7 +191,8 @@ int rs_law_load_vuinter(const char *lib, rs_law *out, rs_error *err)
     rs_loaded_law *ld;
     void *sym;
     static const char *const names[2] = {"vuinter_", "vuinter"};
-    int rc = open_with_symbol(lib, names, 2, &ld, &sym, err);
+    rs_arglist list;
+    int rc = open_with_symbol(lib, "vuinter", names, 2, &ld, &sym, &list, err);
     if (rc)
         return rc;
     ld->kind = RS_LOADED_VUINTER;
@@ -214,9 +234,15 @@ static int load_uinter_kind(const char *lib, const rs_law *normal, rs_law *out,
     rs_loaded_law *ld;
     void *sym;
     static const char *const names[2] = {"uinter_", "uinter"};
-    rc = open_with_symbol(lib, names, 2, &ld, &sym, err);
+    rs_arglist list;
+    rc = open_with_symbol(lib, "uinter", names, 2, &ld, &sym, &list, err);
     if (rc)
         return rc;
+    /* a source's own list decides the adapter */
+    if (list == RS_ARGS_UINTER)
+        kind = RS_LOADED_UINTER;
+    else if (list == RS_ARGS_UINTER_OLDER)
+        kind = RS_LOADED_UINTER_V6;
     ld->kind = kind;
     if (kind == RS_LOADED_UINTER)
         ld->uinter = (rs_uinter_fn)sym;
@@ -255,7 +281,8 @@ int rs_law_load_fric(const char *lib, const rs_law *normal, rs_law *out, rs_erro
     rs_loaded_law *ld;
     void *sym;
     static const char *const names[2] = {"fric_", "fric"};
-    rc = open_with_symbol(lib, names, 2, &ld, &sym, err);
+    rs_arglist list;
+    rc = open_with_symbol(lib, "fric", names, 2, &ld, &sym, &list, err);
     if (rc)
         return rc;
     ld->kind = RS_LOADED_FRIC;
@@ -267,6 +294,14 @@ int rs_law_load_fric(const char *lib, const rs_law *normal, rs_law *out, rs_erro
     out->init = rs_law_adapter_init;
     out->update = rs_law_fric_update;
     return RS_OK;
+}
+
+const rs_build_warnings *rs_law_warnings(const rs_law *law)
+{
+    if (!law || !law->ctx || law->destroy != loaded_destroy)
+        return NULL;
+    const rs_loaded_law *ld = (const rs_loaded_law *)law->ctx;
+    return ld->from_source ? &ld->warnings : NULL;
 }
 
 int rs_law_takes_facets(const rs_law *law)

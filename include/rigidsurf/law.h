@@ -287,6 +287,10 @@ void rs_law_block_set_name(char dst[RS_LAW_NAMELEN], const char *s);
 int rs_law_load_c(const char *lib, const char *symbol, rs_law *out, rs_error *err);
 
 /// Loads a Fortran VUINTER (symbol vuinter_, built against vaba_param.inc) as a law.
+/// For these loaders lib may be a Fortran source (rs_law_is_source): it is built
+/// (rs_law_build_cached), then its SUBROUTINE statement's argument count is checked
+/// against the lists the adapter calls; another count is RS_ERR_ARG naming the file,
+/// the line and the counts (docs/abaqus.md, "Argument lists").
 int rs_law_load_vuinter(const char *lib, rs_law *out, rs_error *err);
 
 /// 1 when law reads a faceted master's facets (the fac_ fields of its block: a loaded
@@ -296,13 +300,14 @@ int rs_law_takes_facets(const rs_law *law);
 /// Loads a Fortran UINTER (point-wise, symbol uinter_) as a block law. normal (may be
 /// NULL) supplies the normal response when the routine leaves it to the engine.
 /// The argument list is Abaqus's current one (DVISCOUS, DSTRUCTURAL after DDSDDR, FREQR
-/// after DTIME). For the UINTER and FRIC adapters props are the normal law's first, then
-/// the routine's; out->nstatev counts the normal law's and the adapter's slots, and the
-/// caller adds the routine's NSTATV (which sit first in each contact's statev).
+/// after DTIME); a source with the older list is called with that one. For the UINTER and
+/// FRIC adapters props are the normal law's first, then the routine's; out->nstatev counts
+/// the normal law's and the adapter's slots, and the caller adds the routine's NSTATV
+/// (which sit first in each contact's statev).
 int rs_law_load_uinter(const char *lib, const rs_law *normal, rs_law *out, rs_error *err);
 
-/// As rs_law_load_uinter, for a UINTER with the older argument list (no DVISCOUS,
-/// DSTRUCTURAL, FREQR).
+/// As rs_law_load_uinter, for a library whose UINTER has the older argument list (no
+/// DVISCOUS, DSTRUCTURAL, FREQR); a source is called with the list it has.
 int rs_law_load_uinter_v6(const char *lib, const rs_law *normal, rs_law *out,
                           rs_error *err);
 

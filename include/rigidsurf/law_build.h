@@ -17,6 +17,7 @@
 #ifndef RIGIDSURF_LAW_BUILD_H
 #define RIGIDSURF_LAW_BUILD_H
 
+#include "rigidsurf/law.h"
 #include "rigidsurf/types.h"
 
 #include <stddef.h>
@@ -28,6 +29,30 @@ extern "C" {
 /// 1 if path names a Fortran source by its extension (.f .for .ftn .f77 .F .FOR .fpp
 /// fixed form; .f90 .f95 .f03 .f08 .F90 free form), else 0.
 int rs_law_is_source(const char *path);
+
+/// Source forms (rs_law_source_form).
+enum { RS_FORM_FIXED = 1, RS_FORM_FREE = 2 };
+
+/// The source form path's extension names: RS_FORM_FIXED, RS_FORM_FREE, or 0 when it
+/// is not a Fortran source.
+int rs_law_source_form(const char *path);
+
+/// What the compiler said about a routine it built: its warnings, read from its whole
+/// output (the log kept beside the library).
+typedef struct rs_build_warnings {
+    int count;       ///< warnings in the output (gfortran's "Warning:" lines and others')
+    char first[400]; ///< the first on one line, "FILE:LINE:COL: Warning: text"; "" if none
+    char log[4096];  ///< the log's path
+} rs_build_warnings;
+
+/// Counts the warnings in the compiler output log and keeps the first. A log that
+/// cannot be read has none.
+void rs_law_build_read_warnings(const char *log, rs_build_warnings *w);
+
+/// The compiler's warnings for a law that rs_law_load_vuinter, rs_law_load_uinter or
+/// rs_law_load_fric built from a Fortran source (also when the build was found in the
+/// cache); NULL for any other law.
+const rs_build_warnings *rs_law_warnings(const rs_law *law);
 
 /// Compiles src into the shared library out. On a compile error, err names the file
 /// and holds the compiler's first error; the whole compiler output is in out.log.

@@ -6,11 +6,34 @@
  *
  * Without -o the library is lib<stem>.so in the working directory. -v prints the
  * compiler command. The compiler's whole output goes to LIB.so.log; a failed build
- * prints its first error and exits with status 1. */
+ * prints its first error and exits with status 1. A build the compiler warned about
+ * prints the compiler's output on stderr, as `abaqus make` shows it, and a line with
+ * the count of warnings. */
 #include "rigidsurf/law_build.h"
 
 #include <stdio.h>
 #include <string.h>
+
+/* The compiler's output, as it printed it, and the count of its warnings. */
+static void print_warnings(const char *src, const char *out)
+{
+    char log[1100];
+    snprintf(log, sizeof log, "%s.log", out);
+    rs_build_warnings w;
+    rs_law_build_read_warnings(log, &w);
+    if (w.count == 0)
+        return;
+    FILE *f = fopen(log, "r");
+    if (f) {
+        char buf[4096];
+        size_t n;
+        while ((n = fread(buf, 1, sizeof buf, f)) > 0)
+            fwrite(buf, 1, n, stderr);
+        fclose(f);
+    }
+    fprintf(stderr, "rigidsurf-build-law: %s: %d %s from the compiler (whole output: %s)\n",
+            src, w.count, w.count == 1 ? "warning" : "warnings", log);
+}
 
 static void usage(FILE *f)
 {
@@ -68,6 +91,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "rigidsurf-build-law: %s\n", err.msg);
         return 1;
     }
+    print_warnings(src, out);
     printf("%s\n", out);
     return 0;
 }

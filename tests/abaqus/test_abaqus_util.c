@@ -543,8 +543,18 @@ static void build_failures_say_why(void)
     ENSURE(strstr(err.msg, "absent.f: cannot read") != NULL);
 
     char good[300];
+    /* Abaqus/Explicit's 49 arguments: the loader checks the list */
     source_file(src_dir, "good.f",
-                "      SUBROUTINE VUINTER(X)\n      X = 1.0D0\n      END\n", good);
+                "      SUBROUTINE VUINTER(sfd, scd, spd, svd, stress, fluxSlv, fluxMst,\n"
+                "     1 sed, statev, kStep, kInc, nFacNod, nSlvNod, nMstNod, nSurfDir,\n"
+                "     2 nDir, nStateVar, nProps, nTemp, nPred, numDefTfv, jSlvUid,\n"
+                "     3 jMstUid, jConMstid, timStep, timGlb, dTimCur, surfInt, surfSlv,\n"
+                "     4 surfMst, rdisp, drdisp, drot, stiffDflt, condDflt, shape,\n"
+                "     5 coordSlv, coordMst, alocaldir, props, areaSlv, tempSlv,\n"
+                "     6 dtempSlv, preDefSlv, dpreDefSlv, tempMst, dtempMst, preDefMst,\n"
+                "     7 dpreDefMst)\n"
+                "      X = 1.0D0\n      END\n",
+                good);
     setenv("RIGIDSURF_FC", "/nonexistent/gfortran", 1);
     ENSURE(rs_law_load_vuinter(good, &law, &err) == RS_ERR_IO);
     ENSURE(strstr(err.msg, "/nonexistent/gfortran") != NULL);

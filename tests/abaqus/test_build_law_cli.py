@@ -1,5 +1,6 @@
 """rigidsurf-build-law: builds a VUINTER written as for Abaqus into a library that
-exports vuinter_ and links librigidsurf_abaqus; its usage and compile errors.
+exports vuinter_ and links librigidsurf_abaqus; its usage and compile errors; the
+compiler's warnings printed as the compiler gave them, with their count.
 
     test_build_law_cli.py PATH/rigidsurf-build-law PATH/vuinter_util.f
 """
@@ -61,6 +62,27 @@ try:
     check("and names file, line and message", "broken.f:3:" in err and "Error" in err, err)
     check("and leaves no library", not os.path.exists(os.path.join(tmp, "libbroken.so")))
     check("and keeps the compiler output", os.path.isfile(os.path.join(tmp, "libbroken.so.log")))
+    # warnings: line 5, a REAL DO variable (a deleted feature); line 8, a REAL index
+    with open(os.path.join(tmp, "warns.f"), "w") as f:
+        f.write("      SUBROUTINE VUINTER(STRESS, PROPS)\n      INCLUDE 'VABA_PARAM.INC'\n"
+                "      DIMENSION PROPS(3)\n      S = 0.D0\n      DO R = 1, 3\n"
+                "        S = S + R\n      END DO\n      STRESS = PROPS(S / 6.D0)\n"
+                "      END\n")
+    rc, out, err = run(["warns.f"], tmp)
+    check("a build with warnings succeeds",
+          rc == 0 and os.path.isfile(os.path.join(tmp, "libwarns.so")), err)
+    check("and prints the compiler's warnings as it gave them",
+          "warns.f:5:" in err and "Warning: Deleted feature: Loop variable" in err
+          and "warns.f:8:" in err and "Warning: Legacy Extension: REAL array index" in err
+          and "DO R = 1, 3" in err, err)
+    check("and their count and the log",
+          "warns.f: 2 warnings from the compiler (whole output: libwarns.so.log)" in err, err)
+    check("stdout holds the library only", out == "libwarns.so\n", out)
+    with open(os.path.join(tmp, "clean.f"), "w") as f:
+        f.write("      SUBROUTINE VUINTER(X)\n      X = 1.0D0\n      END\n")
+    rc, out, err = run(["clean.f"], tmp)
+    check("a build without warnings prints the library only",
+          rc == 0 and err == "" and out == "libclean.so\n", out + err)
     # usage errors
     for args, what in (([], "no file"), (["-o"], "-o without a name"),
                        (["--bogus", "mylaw.f"], "an unknown option"),
