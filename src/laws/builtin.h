@@ -96,33 +96,31 @@ static inline void rs_law_keep_shear(const rs_law_block *b, double *sv, const do
 /// update, s is reset to -ft / kt; otherwise ft -= gt vt. ft is the force on the
 /// particle. *slip_work = mu |fn| times the slip beyond the elastic limit (0 without
 /// update); *damp_power = gt |vt|^2 while sticking. Operation order follows LIGGGHTS so
-/// a plane contact matches it bit for bit.
+/// a plane contact matches it bit for bit. Every formula is evaluated and the branch is
+/// a select at the end, so that a block loop that inlines it vectorises (hertz.c); a
+/// capped force divides by kt.
 static inline void rs_law_tangential_history(double kt, double gt, double mu, double fn,
                                              const double vt[2], double s[2], int update,
                                              double ft[2], double *slip_work,
                                              double *damp_power)
 {
-    const double shrmag = sqrt(s[0] * s[0] + s[1] * s[1]);
-    ft[0] = -(kt * s[0]);
-    ft[1] = -(kt * s[1]);
+    const double s0 = s[0], s1 = s[1];
+    const double shrmag = sqrt(s0 * s0 + s1 * s1);
+    const double f0 = -(kt * s0), f1 = -(kt * s1);
     const double ft_shear = kt * shrmag;
     const double ft_friction = mu * fabs(fn);
-    *slip_work = 0.0;
-    *damp_power = 0.0;
-    if (ft_shear > ft_friction) {
-        const double ratio = ft_friction / ft_shear;
-        ft[0] *= ratio;
-        ft[1] *= ratio;
-        if (update) {
-            s[0] = -ft[0] / kt;
-            s[1] = -ft[1] / kt;
-            *slip_work = ft_friction * (shrmag - ft_friction / kt);
-        }
-    } else {
-        ft[0] -= gt * vt[0];
-        ft[1] -= gt * vt[1];
-        *damp_power = gt * (vt[0] * vt[0] + vt[1] * vt[1]);
-    }
+    const int cap = ft_shear > ft_friction;
+    const double ratio = ft_friction / (cap ? ft_shear : 1.0);
+    const double fc0 = f0 * ratio, fc1 = f1 * ratio;
+    const double fd0 = f0 - gt * vt[0], fd1 = f1 - gt * vt[1];
+    ft[0] = cap ? fc0 : fd0;
+    ft[1] = cap ? fc1 : fd1;
+    s[0] = cap && update ? -fc0 / kt : s0;
+    s[1] = cap && update ? -fc1 / kt : s1;
+    /* the slip beyond the elastic limit ft_friction / kt = ratio shrmag */
+    *slip_work = cap && update ? ft_friction * (shrmag - ratio * shrmag) : 0.0;
+    const double damp = gt * (vt[0] * vt[0] + vt[1] * vt[1]);
+    *damp_power = cap ? 0.0 : damp;
 }
 
 #endif

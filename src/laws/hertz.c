@@ -66,8 +66,9 @@ static int rs_hertz_init(const rs_law *law, const double *p, int nprops, rs_erro
  * evaluates every formula in the order above and selects at the end. A contact that is
  * leaving (r_MaxVal) or open (rdisp(1) <= 0) gets zero outputs, and an open one forgets
  * its shear except on a setup call; that is rs_law_no_force, rs_law_advance_slip,
- * rs_law_tangential_history, rs_law_put_force and rs_law_keep_shear (builtin.h) as one
- * pass. nd and update are constants in each inlined copy. */
+ * rs_law_put_force and rs_law_keep_shear (builtin.h) as one pass around the shared
+ * tangential model, rs_law_tangential_history. nd and update are constants in each
+ * inlined copy. */
 RS_INLINE void hertz_block(int n, const int nsv, double dt, const double *restrict rd,
                            const double *restrict drd, const double *restrict dr,
                            const double *restrict vr, const double *restrict rr,
@@ -110,22 +111,11 @@ RS_INLINE void hertz_block(int n, const int nsv, double dt, const double *restri
                 s1 = 0.0;
             }
         }
-        const double shrmag = sqrt(s0 * s0 + s1 * s1);
-        const double f0 = -(kt * s0), f1 = -(kt * s1);
-        const double ft_shear = kt * shrmag;
-        const double ft_friction = mu * fabs(Fn);
-        const int cap = ft_shear > ft_friction;
-        const double ratio = ft_friction / (cap ? ft_shear : 1.0);
-        const double fc0 = f0 * ratio, fc1 = f1 * ratio;
-        const double fd0 = f0 - gammat * vt0, fd1 = f1 - gammat * vt1;
-        const double ft0 = cap ? fc0 : fd0, ft1 = cap ? fc1 : fd1;
-        const double sn0 = cap && update ? -fc0 / kt : s0;
-        const double sn1 = cap && update ? -fc1 / kt : s1;
-        /* the slip beyond the elastic limit ft_friction / kt = ratio shrmag */
-        const double slip_work =
-            cap && update ? ft_friction * (shrmag - ratio * shrmag) : 0.0;
-        const double damp = gammat * (vt0 * vt0 + vt1 * vt1);
-        const double damp_power = cap ? 0.0 : damp;
+        const double vt[2] = {vt0, vt1};
+        double sn[2] = {s0, s1}, ft[2], slip_work, damp_power;
+        rs_law_tangential_history(kt, gammat, mu, Fn, vt, sn, update, ft, &slip_work,
+                                  &damp_power);
+        const double ft0 = ft[0], ft1 = ft[1], sn0 = sn[0], sn1 = sn[1];
 
         st[nd * c] = live ? Fn * per_area : 0.0;
         st[nd * c + 1] = live ? -ft0 * per_area : 0.0;
