@@ -6,7 +6,8 @@ Tutorials (liggghts-doc, Tutorials_public), each run twice: by stock `liggghts` 
 written, and by `liggghts-rigidsurf` with every `fix mesh/surface` + `fix wall/gran ...
 mesh` (+ `fix move/mesh`) wall replaced by one `fix wall/rigid ... surface inline mesh`
 line with the default sides (both, as LIGGGHTS's mesh walls). Each runs until both beds
-are at rest, or in steady flow, and they are compared there. Every deck prints its atom
+are at rest, or in steady flow, and they are compared there. The environment variable
+RS_TUTORIAL names one tutorial to run alone (CTest runs each as a test of its own). Every deck prints its atom
 count, kinetic energy and mean x velocity every 1000 steps (`TUT` lines), from which:
 
 - meshGran: 400 spheres (R = 5 mm) stream onto a CAD chute (STL in mm: scale 0.001,
@@ -201,9 +202,16 @@ def body(s):
     if not s.ck.check("stock tutorials present", os.path.isdir(ROOT), ROOT,
                       "install liggghts-doc (tools/setup-deps does)"):
         return
-    for case in (meshgran, movingmeshgran, conveyor, chute_wear):
-        c = case()
+    # RS_TUTORIAL names one tutorial (CTest runs each as a test of its own); unset, all
+    only = os.environ.get("RS_TUTORIAL")
+    cases = [case() for case in (meshgran, movingmeshgran, conveyor, chute_wear)]
+    if only and not s.ck.check("tutorial %s known" % only,
+                               any(c["name"] == only for c in cases)):
+        return
+    for c in cases:
         name = c["name"]
+        if only and name != only:
+            continue
         src_dir = os.path.join(ROOT, name)
         out_ref, a, ta = run(s, name, "liggghts", REFERENCE, src_dir, c["ref"])
         out, b, tb = run(s, name, "rigidsurf", s.exe, src_dir, c["ours"])
