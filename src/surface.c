@@ -8,7 +8,7 @@
 
 int rs_surface_ndir(const rs_surface *s)
 {
-    return s->ops->ndir;
+    return s && s->ops ? s->ops->ndir : 0;
 }
 
 /* The distance from x to the line through y0 along unit u. */
@@ -209,16 +209,25 @@ int rs_surface_facet_index(const rs_surface *s, int f)
 
 int rs_surface_adjacent(const rs_surface *s, int fa, int fb)
 {
+    if (!s || !s->ops || !s->ops->adjacent)
+        return 0;
     return s->ops->adjacent(s, fa, fb);
 }
 
 void rs_surface_bounds(const rs_surface *s, double lo[3], double hi[3])
 {
+    if (!s || !s->ops || !s->ops->bounds) {
+        for (int d = 0; d < 3; d++)
+            lo[d] = hi[d] = 0.0;
+        return;
+    }
     s->ops->bounds(s, lo, hi);
 }
 
 int rs_surface_spin_axis(const rs_surface *s, double origin[3], double axis[3])
 {
+    if (!s || !s->ops || !s->ops->spin_axis)
+        return 0;
     return s->ops->spin_axis(s, origin, axis);
 }
 

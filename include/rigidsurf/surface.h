@@ -171,7 +171,8 @@ typedef struct rs_surface {
                        ///< open or non-manifold edges), empty when nothing
 } rs_surface;
 
-/// Number of local directions: 2 for SEGMENTS, 3 otherwise.
+/// Number of local directions: 2 for SEGMENTS, 3 otherwise, 0 for a surface without a
+/// kind (zeroed or freed).
 int rs_surface_ndir(const rs_surface *s);
 
 /// The slaves of a query block (SoA, global coordinates, current configuration): points,
@@ -262,7 +263,8 @@ int rs_surface_query_among(const rs_surface *s, const rs_query *q, const int *co
 /// Frees the lists' arrays and zeroes c.
 void rs_cands_free(rs_cands *c);
 
-/// 1 when history may pass from feature fa to feature fb (see rs_surface_ops).
+/// 1 when history may pass from feature fa to feature fb (see rs_surface_ops); 0 for a
+/// surface without a kind.
 int rs_surface_adjacent(const rs_surface *s, int fa, int fb);
 
 /// The facet under a contact (rs_surface_ops.facet): its node count (0 for a kind without
@@ -286,11 +288,11 @@ int rs_surface_facet_area(const rs_surface *s, int k, double *area, double n[3])
 int rs_surface_facet_index(const rs_surface *s, int f);
 
 /// Axis-aligned bounds of the surface in its reference configuration (+-INFINITY where
-/// it is unbounded).
+/// it is unbounded; an empty box at the origin for a surface without a kind).
 void rs_surface_bounds(const rs_surface *s, double lo[3], double hi[3]);
 
 /// 1 with origin and unit axis when the surface is invariant under rotation about that
-/// axis (reference configuration), 0 otherwise.
+/// axis (reference configuration), 0 otherwise (and for a surface without a kind).
 int rs_surface_spin_axis(const rs_surface *s, double origin[3], double axis[3]);
 
 /// Reads surface NAME (NULL: the first) from an Abaqus-style keyword file.

@@ -188,11 +188,44 @@ static void test_each_kind_has_its_table(void)
     }
 }
 
+/* A surface without a kind (zeroed, or freed by rs_surface_free) answers every operation
+ * of the dispatch with an error or a neutral value: no local directions, no hand-over, an
+ * empty box at the origin, no spin axis. */
+static void test_a_surface_without_kind_answers_neutrally(void)
+{
+    rs_surface s;
+    memset(&s, 0, sizeof s);
+    for (int freed = 0; freed < 2; freed++) {
+        if (freed) {
+            surface_named("rev", &s);
+            rs_surface_free(&s);
+        }
+        ENSURE(rs_surface_ndir(&s) == 0);
+        const int f = RS_FEATURE(RS_FEAT_FACE, 0);
+        ENSURE(rs_surface_adjacent(&s, f, f) == 0);
+        double lo[3] = {1, 1, 1}, hi[3] = {-1, -1, -1}, o[3], ax[3];
+        rs_surface_bounds(&s, lo, hi);
+        for (int d = 0; d < 3; d++)
+            ENSURE(lo[d] == 0.0 && hi[d] == 0.0);
+        ENSURE(rs_surface_spin_axis(&s, o, ax) == 0);
+        rs_trimesh m;
+        rs_error err;
+        ENSURE(rs_surface_triangulate(&s, 1.0, 8, &m, &err) == RS_ERR_ARG);
+        rs_contacts c;
+        memset(&c, 0, sizeof c);
+        const double x = 0.0;
+        const rs_query q = {1, {&x, &x, &x, NULL}, NULL, 1.0, -INFINITY};
+        ENSURE(rs_surface_query(&s, &q, &c, &err) == RS_ERR_ARG);
+    }
+    ENSURE(rs_surface_ndir(NULL) == 0 && rs_surface_spin_axis(NULL, NULL, NULL) == 0);
+}
+
 int main(void)
 {
     RS_RUN(test_bounds_contain_the_surface);
     RS_RUN(test_bounds_closed_forms);
     RS_RUN(test_spin_axis_of_a_revolution);
     RS_RUN(test_each_kind_has_its_table);
+    RS_RUN(test_a_surface_without_kind_answers_neutrally);
     return rs_test_summary();
 }
