@@ -220,6 +220,27 @@ static void test_a_surface_without_kind_answers_neutrally(void)
     ENSURE(rs_surface_ndir(NULL) == 0 && rs_surface_spin_axis(NULL, NULL, NULL) == 0);
 }
 
+/* The proximity cache is made once, when the surface is read: a query of an analytic
+ * surface without one is an error, not a cache built and freed at every query. */
+static void test_query_without_proximity_cache_is_an_error(void)
+{
+    rs_surface s;
+    surface_named("rev", &s);
+    void *pc = s.impl;
+    s.impl = NULL;
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    const double x = 0.1, y = 0.2, z = 0.3, r = 0.05;
+    const rs_query q = {1, {&x, &y, &z, &r}, NULL, 1.0, -INFINITY};
+    rs_error err;
+    ENSURE(rs_surface_query(&s, &q, &c, &err) == RS_ERR_ARG);
+    ENSURE(strstr(err.msg, "proximity cache") != NULL && c.n == 0);
+    s.impl = pc;
+    ENSURE(rs_surface_query(&s, &q, &c, &err) == RS_OK);
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+}
+
 int main(void)
 {
     RS_RUN(test_bounds_contain_the_surface);
@@ -227,5 +248,6 @@ int main(void)
     RS_RUN(test_spin_axis_of_a_revolution);
     RS_RUN(test_each_kind_has_its_table);
     RS_RUN(test_a_surface_without_kind_answers_neutrally);
+    RS_RUN(test_query_without_proximity_cache_is_an_error);
     return rs_test_summary();
 }
