@@ -78,7 +78,7 @@ void rs_contacts_patch_shares(rs_contacts *c, int a, int m, double R)
 {
     if (m > RS_SHARE_MAX)
         m = RS_SHARE_MAX;
-    const double *restrict v = c->share + a;
+    const double *v = c->share + a; /* written below through c: no restrict */
     double rad[RS_SHARE_MAX], w[RS_SHARE_MAX];
     for (int i = 0; i < m; i++) {
         const double d = c->dist[a + i];

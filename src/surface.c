@@ -91,8 +91,8 @@ static void group_shares(rs_contacts *c, int a, int m, const double P[3], double
 static void contact_shares(const rs_query *q, rs_contacts *c, int k0)
 {
     const int n = c->n;
-    const int *restrict pt = c->point;
-    double *restrict sh = c->share;
+    const int *pt = c->point;
+    double *sh = c->share; /* group_shares writes them through c too: no restrict */
     int multi = 0;
     for (int k = k0; k < n; k++)
         sh[k] = 1.0;
