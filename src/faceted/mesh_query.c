@@ -116,8 +116,9 @@ typedef struct scratch {
 } scratch;
 
 /* Appends a hit to s, its array grown as needed; -1 when out of memory. Hits are written
- * and read field by field: a copy of the whole struct would load it in pieces wider than
- * the stores that wrote it, and wait for them. */
+ * field by field, and mesh_closest_among reads them back so: a load of the whole struct
+ * just after these stores would read it in pieces wider than the stores, and wait for
+ * them. Only the filter behind a one-sided mesh (point_hits) copies whole hits. */
 static int put_hit(scratch *s, int feature, int tri, const double x[3], const double n[3],
                    double dist)
 {
