@@ -552,7 +552,7 @@ void FixWallRigid::init_scratch()
     blk_.tempMst = temp_mst_;
     blk_.dtempMst = dtemp_mst_;
     blk_.wall_type = wall_type_;
-    blk_.analytic_master = surf_.kind != RS_SURF_FACETED;
+    blk_.analytic_master = !rs_surface_has_facets(&surf_);
 }
 
 /* A query of atoms idx[0 .. n) as spheres, gathered into the block scratch, against the

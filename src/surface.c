@@ -168,6 +168,11 @@ int rs_surface_query_among(const rs_surface *s, const rs_query *q, const int *co
     return rc;
 }
 
+int rs_surface_has_facets(const rs_surface *s)
+{
+    return s && s->ops && s->ops->facet && s->ops->facet_count;
+}
+
 int rs_surface_facet(const rs_surface *s, int f, const double xm[3], int nodes[4],
                      double xyz[12], double shape[4])
 {
@@ -187,17 +192,17 @@ int rs_surface_facet_size(const rs_surface *s, int *nnode)
 
 int rs_surface_facet_count(const rs_surface *s)
 {
-    if (!s || !s->ops || !s->ops->facet_area)
+    if (!rs_surface_has_facets(s))
         return 0;
-    return s->ops->facet_area(s, -1, NULL, NULL);
+    return s->ops->facet_count(s);
 }
 
 int rs_surface_facet_area(const rs_surface *s, int k, double *area, double n[3])
 {
-    if (!s || !s->ops || !s->ops->facet_area || k < 0 || k >= rs_surface_facet_count(s))
+    if (!rs_surface_has_facets(s) || !s->ops->facet_area || k < 0 ||
+        k >= rs_surface_facet_count(s))
         return -1;
-    s->ops->facet_area(s, k, area, n);
-    return 0;
+    return s->ops->facet_area(s, k, area, n);
 }
 
 int rs_surface_facet_index(const rs_surface *s, int f)

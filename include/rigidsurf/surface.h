@@ -144,12 +144,14 @@ typedef struct rs_surface_ops {
                  double xyz[12], double shape[4]);
     /// With facet: the most nodes a facet has (3, or 4 with quads); *nnode, the nodes.
     int (*facet_size)(const struct rs_surface *s, int *nnode);
-    /// With facet: the facets' count, and for k >= 0 facet k's area and unit normal in the
-    /// reference configuration (k < 0: the count only).
+    /// With facet: facet k's (0 <= k < facet_count) area and unit normal in the reference
+    /// configuration; returns 0.
     int (*facet_area)(const struct rs_surface *s, int k, double *area, double n[3]);
     /// With facet: the index (0 .. count - 1) of the facet under a contact on feature f
     /// (an edge's or a vertex's: that of its lowest-numbered triangle), -1 for none.
     int (*facet_index)(const struct rs_surface *s, int f);
+    /// With facet: the number of facets.
+    int (*facet_count)(const struct rs_surface *s);
 } rs_surface_ops;
 
 typedef struct rs_surface {
@@ -266,6 +268,10 @@ void rs_cands_free(rs_cands *c);
 /// 1 when history may pass from feature fa to feature fb (see rs_surface_ops); 0 for a
 /// surface without a kind.
 int rs_surface_adjacent(const rs_surface *s, int fa, int fb);
+
+/// 1 when the surface's kind has facets (rs_surface_ops.facet and facet_count: a faceted
+/// master, whose facets' nodes a VUINTER sees), else 0 (the analytic kinds).
+int rs_surface_has_facets(const rs_surface *s);
 
 /// The facet under a contact (rs_surface_ops.facet): its node count (0 for a kind without
 /// facets or a feature that names none), its nodes' user numbers, their reference

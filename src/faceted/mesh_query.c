@@ -913,14 +913,18 @@ static int mesh_facet_index(const rs_surface *s, int f)
     return facet_element(s->impl, f);
 }
 
+static int mesh_facet_count(const rs_surface *s)
+{
+    const rs_mesh *m = s->impl;
+    return m ? m->nel : 0;
+}
+
 /* Area and normal of element k: the sum of its triangles' (a planar quad's two). */
 static int mesh_facet_area(const rs_surface *s, int k, double *area, double n[3])
 {
     const rs_mesh *m = s->impl;
-    if (!m)
-        return 0;
-    if (k < 0 || k >= m->nel)
-        return m->nel;
+    if (!m || k < 0 || k >= m->nel)
+        return -1;
     double a = 0.0;
     for (int t = m->el_t0[k]; t < m->el_t0[k + 1]; t++) {
         const double *p0 = m->xyz + 3 * (size_t)m->tri[3 * t],
@@ -939,7 +943,7 @@ static int mesh_facet_area(const rs_surface *s, int k, double *area, double n[3]
     n[0] = tn[0];
     n[1] = tn[1];
     n[2] = tn[2];
-    return m->nel;
+    return 0;
 }
 
 static int mesh_facet(const rs_surface *s, int f, const double xm[3], int nodes[4],
@@ -992,7 +996,8 @@ const rs_surface_ops rs_mesh_ops = {.name = "MESH",
                                     .facet = mesh_facet,
                                     .facet_size = mesh_facet_size,
                                     .facet_area = mesh_facet_area,
-                                    .facet_index = mesh_facet_index};
+                                    .facet_index = mesh_facet_index,
+                                    .facet_count = mesh_facet_count};
 
 /* STL checks the reader leaves out: an ASCII STL (it starts with "solid" and reads as
  * text) ends with "endsolid", so a file cut short is an error and not a smaller mesh; a

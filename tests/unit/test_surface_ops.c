@@ -241,6 +241,57 @@ static void test_query_without_proximity_cache_is_an_error(void)
     rs_surface_free(&s);
 }
 
+/* The capability of facets is the table's, whatever the kind's number: a second faceted
+ * kind (here a fixture of two facets) has facets, each counted by facet_count and read by
+ * facet_area; the analytic kinds have none. */
+static int two_facet(const rs_surface *s, int f, const double xm[3], int nodes[4],
+                     double xyz[12], double shape[4])
+{
+    (void)s, (void)xm, (void)xyz, (void)shape;
+    nodes[0] = nodes[1] = nodes[2] = 1;
+    return f >= 0 ? 3 : 0;
+}
+
+static int two_count(const rs_surface *s)
+{
+    (void)s;
+    return 2;
+}
+
+static int two_area(const rs_surface *s, int k, double *area, double n[3])
+{
+    (void)s;
+    *area = k + 1.0;
+    n[0] = n[1] = 0.0;
+    n[2] = 1.0;
+    return 0;
+}
+
+static void test_facets_are_a_capability_of_the_table(void)
+{
+    static const rs_surface_ops two = {.name = "TWO",
+                                       .ndir = 3,
+                                       .facet = two_facet,
+                                       .facet_area = two_area,
+                                       .facet_count = two_count};
+    rs_surface s;
+    memset(&s, 0, sizeof s);
+    s.ops = &two;
+    s.kind = RS_SURF_SEGMENTS;
+    ENSURE(rs_surface_has_facets(&s) && rs_surface_facet_count(&s) == 2);
+    double a = 0.0, n[3];
+    ENSURE(rs_surface_facet_area(&s, 1, &a, n) == 0 && a == 2.0 && n[2] == 1.0);
+    ENSURE(rs_surface_facet_area(&s, 2, &a, n) == -1 &&
+           rs_surface_facet_area(&s, -1, &a, n) == -1);
+    const char *names[3] = {"seg", "cyl", "rev"};
+    for (int i = 0; i < 3; i++) {
+        surface_named(names[i], &s);
+        ENSURE(!rs_surface_has_facets(&s) && rs_surface_facet_count(&s) == 0);
+        rs_surface_free(&s);
+    }
+    ENSURE(!rs_surface_has_facets(&s) && !rs_surface_has_facets(NULL));
+}
+
 int main(void)
 {
     RS_RUN(test_bounds_contain_the_surface);
@@ -249,5 +300,6 @@ int main(void)
     RS_RUN(test_each_kind_has_its_table);
     RS_RUN(test_a_surface_without_kind_answers_neutrally);
     RS_RUN(test_query_without_proximity_cache_is_an_error);
+    RS_RUN(test_facets_are_a_capability_of_the_table);
     return rs_test_summary();
 }
