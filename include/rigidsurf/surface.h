@@ -152,6 +152,9 @@ typedef struct rs_surface_ops {
     int (*facet_index)(const struct rs_surface *s, int f);
     /// With facet: the number of facets.
     int (*facet_count)(const struct rs_surface *s);
+    /// How a surface file describes the kind: its parameters, data lines and the making
+    /// of its surface (private to the geometry's reader; NULL: no surface file names it).
+    const struct rs_surface_syntax *syntax;
 } rs_surface_ops;
 
 typedef struct rs_surface {
@@ -231,6 +234,10 @@ int rs_contacts_reserve(rs_contacts *c, int cap, rs_error *err);
 /// tangent planes (radii a = sqrt(R^2 - dist^2)) meet, D <= a_i + a_j for feet D apart,
 /// else ((a_i + a_j) / D)^16. The others get share 1.
 void rs_contacts_patch_shares(rs_contacts *c, int a, int m, double R);
+/// The shares of contacts k0 .. c->n - 1 of the spheres of q from the fold lines of their
+/// tangent planes (docs/conventions.md, "Shares at concave folds"), for a kind whose
+/// closest operation does not set them (rs_surface_ops.shares = 0).
+void rs_contacts_fold_shares(const rs_query *q, rs_contacts *c, int k0);
 /// Frees the arrays and zeroes c.
 void rs_contacts_free(rs_contacts *c);
 

@@ -98,6 +98,8 @@ int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int plac
 /// the query (mesh_query.c), the candidate lists (mesh_candidates.c), the facets
 /// (mesh_facets.c).
 extern const rs_surface_ops rs_mesh_ops;
+/// The MESH surface in a surface file (mesh_file.c, surface_file.h).
+extern const struct rs_surface_syntax rs_mesh_syntax;
 int rs_mesh_closest(const rs_surface *s, const rs_query *q, rs_contacts *out,
                     rs_error *err);
 int rs_mesh_closest_among(const rs_surface *s, const rs_query *q, const int *const *cand,

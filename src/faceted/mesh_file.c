@@ -1,11 +1,13 @@
 /* The MESH kind's files: a mesh file (STL, OBJ, OFF, PLY through CGAL, or an Abaqus rigid
- * part) read, checked, placed and built into a surface (rs_mesh_surface_load). */
+ * part) read, checked, placed and built into a surface (rs_mesh_surface_load), and the
+ * MESH surface in a surface file (rs_mesh_syntax: FILE=, SCALE=, its placement line). */
 #define _POSIX_C_SOURCE 200809L /* stat */
 
 #include "abaqus_part.h"
 #include "cgal_mesh.h"
 #include "mesh.h"
 #include "rigidsurf/vec.h"
+#include "surface_file.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -163,3 +165,65 @@ int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int plac
     memcpy(s->ez, I[2], sizeof s->ez);
     return RS_OK;
 }
+
+/* FILE= names the mesh, unless the surface file itself holds its elements (*NODE,
+ * *ELEMENT). */
+static int mesh_head(const parser *ps, draft *d, int have_file)
+{
+    if (!have_file && !ps->from_file)
+        return rs_sf_error(ps, RS_ERR_PARSE, "expected FILE= on *SURFACE, TYPE=MESH%s%s",
+                           NULL, NULL);
+    d->self = !have_file; /* the *NODE and *ELEMENT lines of this file */
+    return RS_OK;
+}
+
+/* A MESH's one data line: its placement a, b, c. */
+static int mesh_line(const parser *ps, tok *t, int nt, draft *d)
+{
+    if (d->placed)
+        return rs_sf_error(ps, RS_ERR_PARSE,
+                           "a MESH takes one data line, its placement a, b, c (found a "
+                           "second)%s%s",
+                           NULL, NULL);
+    if (nt != 9) {
+        char cnt[16];
+        snprintf(cnt, sizeof cnt, "%d", nt);
+        return rs_sf_error(
+            ps, RS_ERR_PARSE,
+            "expected the placement a, b, c (9 numbers: ax, ay, az, bx, by, bz, "
+            "cx, cy, cz), found %s values%s",
+            cnt, NULL);
+    }
+    int rc = rs_sf_numbers(ps, t, nt, d->abc);
+    if (rc)
+        return rc;
+    d->placed = 1;
+    return RS_OK;
+}
+
+/* A MESH: its FILE is relative to the folder of the surface file. */
+static int mesh_build(parser *ps, draft *d, rs_surface *s)
+{
+    char path[8192], where[400];
+    const char *slash = strrchr(ps->origin, '/');
+    if (d->self)
+        snprintf(path, sizeof path, "%s", ps->origin);
+    else if (d->file[0] != '/' && slash && ps->from_file)
+        snprintf(path, sizeof path, "%.*s/%s", (int)(slash - ps->origin), ps->origin,
+                 d->file);
+    else
+        snprintf(path, sizeof path, "%s", d->file);
+    snprintf(where, sizeof where, "%s:%d", ps->origin, d->kline);
+    memcpy(s->name, d->name, sizeof s->name);
+    s->sides = d->sides;
+    int rc = rs_mesh_surface_load(s, path, d->scale, d->placed, d->abc, where, ps->err);
+    if (rc) {
+        if (s->ops && s->ops->free)
+            s->ops->free(s);
+        memset(s, 0, sizeof *s);
+    }
+    return rc;
+}
+
+const rs_surface_syntax rs_mesh_syntax = {RS_SURF_FACETED, RS_SF_FILE, mesh_head, mesh_line,
+                                          mesh_build};

@@ -126,4 +126,5 @@ const rs_surface_ops rs_mesh_ops = {.name = "MESH",
                                     .facet_size = rs_mesh_facet_size,
                                     .facet_area = rs_mesh_facet_area,
                                     .facet_index = rs_mesh_facet_index,
-                                    .facet_count = rs_mesh_facet_count};
+                                    .facet_count = rs_mesh_facet_count,
+                                    .syntax = &rs_mesh_syntax};
