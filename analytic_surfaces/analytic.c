@@ -3,6 +3,7 @@
  * The closest features are in query.c and closest.c, the display triangulation in
  * triangulate.c. */
 #include "profile.h"
+#include "surface_file.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -127,16 +128,19 @@ void rs_analytic_free(rs_surface *s)
 
 /* The analytic kinds search their profile at every query and have no facets: the
  * optional operations stay NULL. */
-#define ANALYTIC_OPS(kind, nd, conv)                                                       \
+#define ANALYTIC_OPS(kind, nd, conv, sx)                                                   \
     {                                                                                      \
         .name = kind, .ndir = nd, .frame = conv, .closest = rs_analytic_closest,           \
         .adjacent = analytic_adjacent, .bounds = analytic_bounds,                          \
         .spin_axis = analytic_spin_axis, .triangulate = rs_analytic_triangulate,           \
-        .free = rs_analytic_free                                                           \
+        .free = rs_analytic_free, .syntax = sx                                             \
     }
-static const rs_surface_ops segments_ops = ANALYTIC_OPS("SEGMENTS", 2, RS_FRAME_TRAVEL);
-static const rs_surface_ops cylinder_ops = ANALYTIC_OPS("CYLINDER", 3, RS_FRAME_GENERATOR);
-static const rs_surface_ops revolution_ops = ANALYTIC_OPS("REVOLUTION", 3, RS_FRAME_TRAVEL);
+static const rs_surface_ops segments_ops =
+    ANALYTIC_OPS("SEGMENTS", 2, RS_FRAME_TRAVEL, &rs_segments_syntax);
+static const rs_surface_ops cylinder_ops =
+    ANALYTIC_OPS("CYLINDER", 3, RS_FRAME_GENERATOR, &rs_cylinder_syntax);
+static const rs_surface_ops revolution_ops =
+    ANALYTIC_OPS("REVOLUTION", 3, RS_FRAME_TRAVEL, &rs_revolution_syntax);
 
 const rs_surface_ops *rs_analytic_ops(rs_surface_kind kind)
 {

@@ -73,38 +73,3 @@ void rs_cands_free(rs_cands *c)
     free(c->near);
     memset(c, 0, sizeof *c);
 }
-
-void rs_contacts_patch_shares(rs_contacts *c, int a, int m, double R)
-{
-    if (m > RS_SHARE_MAX)
-        m = RS_SHARE_MAX;
-    const double *restrict v = c->share + a;
-    double rad[RS_SHARE_MAX], w[RS_SHARE_MAX];
-    for (int i = 0; i < m; i++) {
-        const double d = c->dist[a + i];
-        rad[i] = d > 0.0 && d < R ? sqrt((R - d) * (R + d)) : 0.0;
-    }
-    for (int i = 0; i < m; i++) {
-        w[i] = 1.0;
-        if (!(rad[i] > 0.0))
-            continue;
-        double den = v[i];
-        for (int j = 0; j < m; j++) {
-            if (j == i || !(rad[j] > 0.0))
-                continue;
-            const double as = rad[i] + rad[j];
-            const double dx[3] = {c->xm[0][a + i] - c->xm[0][a + j],
-                                  c->xm[1][a + i] - c->xm[1][a + j],
-                                  c->xm[2][a + i] - c->xm[2][a + j]};
-            const double D2 = rs_dot3(dx, dx);
-            double cp = 1.0;
-            if (D2 > as * as) {
-                const double q2 = as * as / D2, q4 = q2 * q2, q8 = q4 * q4;
-                cp = q8 * q8;
-            }
-            den += cp * v[j];
-        }
-        w[i] = v[i] / den;
-    }
-    memcpy(c->share + a, w, (size_t)m * sizeof *w);
-}

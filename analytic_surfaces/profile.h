@@ -230,6 +230,10 @@ void rs_pscratch_free(rs_pscratch *sc);
 /// Bytes of scratch a profile needs.
 size_t rs_pscratch_bytes(const rs_pcache *pc);
 
+/// Candidate contact of CIRCL or PARAB segment q at point (px, py), before the side and
+/// distance filters: 1 when the segment owns the point (curves.c).
+int rs_pseg_curve(const rs_pcache *pc, const rs_pseg *q, double px, double py, rs_hit2 *h);
+
 /// Contacts of point (px, py) whose distance lies in [dlo, dhi] (dhi = gap_max + radius,
 /// dlo = dist_min), in profile order (vertex k before segment k). Returns the count;
 /// the hits are in sc->hits. -1: out of memory for a larger scratch.

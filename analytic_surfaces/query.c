@@ -343,18 +343,13 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
     if (!q->slave.x || !q->slave.y || (kind != RS_SURF_SEGMENTS && !q->slave.z))
         return rs_error_set(err, RS_ERR_ARG, "rs_surface_query: missing coordinates");
 
-    rs_pcache *own = NULL;
     const rs_pcache *pc = s->impl;
-    if (!pc) {
-        int rc = rs_pcache_build(s, &own, err);
-        if (rc)
-            return rc;
-        pc = own;
-    }
+    if (!pc) /* made when the surface is read (rs_pcache_build) */
+        return rs_error_set(err, RS_ERR_ARG, "surface '%s' has no proximity cache",
+                            s->name);
     double stack[2048];
     rs_pscratch sc;
     if (rs_pscratch_init(&sc, pc, stack, sizeof stack)) {
-        free(own);
         return rs_error_set(err, RS_ERR_NOMEM, "out of memory for the query scratch");
     }
 
@@ -456,6 +451,5 @@ done:
     if (extra.cap)
         rs_contacts_free(&extra);
     rs_pscratch_free(&sc);
-    free(own);
     return rc;
 }

@@ -326,7 +326,7 @@ void FixWallRigid::parse(int narg, char **arg)
     if (rc != RS_OK)
         fail(std::string("keyword 'surface': ") + err.msg);
     surf_ok_ = true;
-    if (wear_ && surf_.kind != RS_SURF_FACETED)
+    if (wear_ && !rs_surface_has_facets(&surf_))
         fail("keyword 'wear' needs a mesh surface (TYPE=MESH or 'surface inline mesh'): "
              "the wear is kept per facet");
     if (surf_.warning[0] && comm->me == 0)

@@ -183,7 +183,7 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     rs_law_requests req;
     rs_law_requests_clear(&req);
     b.requests = &req;
-    if (surf_.kind == RS_SURF_FACETED && rs_law_takes_facets(law_) &&
+    if (rs_surface_has_facets(&surf_) && rs_law_takes_facets(law_) &&
         rs_cblock_facets(&cb_, &tout_, &surf_, &motion_.pose, &err) != RS_OK)
         fail_one(err.msg);
     if (rs_cblock_call(&cb_, law_, &b, &tout_, &err) != RS_OK)

@@ -39,7 +39,7 @@ static double finnie(double sg, double cg)
 
 void FixWallRigid::init_facets()
 {
-    facets_ = surf_.kind == RS_SURF_FACETED && (vtk_every_ > 0 || wear_);
+    facets_ = rs_surface_has_facets(&surf_) && (vtk_every_ > 0 || wear_);
     if (!facets_)
         return;
     const int nf = rs_surface_facet_count(&surf_);

@@ -210,14 +210,23 @@ void rs_cblock_inputs(rs_contact_block *cb, const rs_track_out *o,
 /* Room for the facets of n contacts (and one slice's arrays). */
 static int facet_room(rs_contact_block *cb, int n, rs_error *err)
 {
-    if (!cb->sl_hash) {
-        cb->sl_conn = malloc(4 * RS_BLOCK * sizeof(int));
-        cb->sl_uid = malloc(4 * RS_BLOCK * sizeof(int));
-        cb->sl_xyz = malloc(12 * RS_BLOCK * sizeof(double));
-        cb->sl_hash = malloc(RS_FACET_HASH * sizeof(int));
-        if (!cb->sl_conn || !cb->sl_uid || !cb->sl_xyz || !cb->sl_hash)
+    if (!cb->sl_hash) { /* all four or none, so that a later call starts afresh */
+        int *conn = malloc(4 * RS_BLOCK * sizeof(int));
+        int *uid = malloc(4 * RS_BLOCK * sizeof(int));
+        double *sxyz = malloc(12 * RS_BLOCK * sizeof(double));
+        int *hash = malloc(RS_FACET_HASH * sizeof(int));
+        if (!conn || !uid || !sxyz || !hash) {
+            free(conn);
+            free(uid);
+            free(sxyz);
+            free(hash);
             return rs_error_set(err, RS_ERR_NOMEM,
                                 "contact block: out of memory for facets");
+        }
+        cb->sl_conn = conn;
+        cb->sl_uid = uid;
+        cb->sl_xyz = sxyz;
+        cb->sl_hash = hash;
     }
     if (n <= cb->fac_cap)
         return RS_OK;

@@ -167,7 +167,7 @@ static int call_law(rs_driver *d, int nd, rs_error *err)
     rs_law_block_init(&b);
     b.kStep = 1;
     b.kInc = d->inc + 1;
-    b.analytic_master = d->surface->kind != RS_SURF_FACETED;
+    b.analytic_master = !rs_surface_has_facets(d->surface);
     b.nDir = nd;
     b.nSurfDir = nd - 1;
     b.nStateVar = ns;

@@ -1,9 +1,10 @@
 /* rigidsurf: a standalone explicit driver.
  *
  * Integrates a set of slave nodes (point masses, or spheres with a radius) against one
- * analytic rigid master with the explicit central-difference scheme, and calls an
- * interface law through rs_law_call on the blocks of the tracker, as Abaqus/Explicit
- * does for VUINTER. It reproduces the Abaqus VUINTER verification cases without LIGGGHTS.
+ * rigid master of any kind (analytic or faceted) with the explicit central-difference
+ * scheme, and calls an interface law through rs_law_call on the blocks of the tracker,
+ * as Abaqus/Explicit does for VUINTER. It reproduces the Abaqus VUINTER verification cases
+ * without LIGGGHTS.
  *
  * Increment k (time t_k = k dt) of rs_driver_step:
  *  1. The master moves to t_k (rs_motion_advance; not on the first increment).

@@ -144,12 +144,17 @@ typedef struct rs_surface_ops {
                  double xyz[12], double shape[4]);
     /// With facet: the most nodes a facet has (3, or 4 with quads); *nnode, the nodes.
     int (*facet_size)(const struct rs_surface *s, int *nnode);
-    /// With facet: the facets' count, and for k >= 0 facet k's area and unit normal in the
-    /// reference configuration (k < 0: the count only).
+    /// With facet: facet k's (0 <= k < facet_count) area and unit normal in the reference
+    /// configuration; returns 0.
     int (*facet_area)(const struct rs_surface *s, int k, double *area, double n[3]);
     /// With facet: the index (0 .. count - 1) of the facet under a contact on feature f
     /// (an edge's or a vertex's: that of its lowest-numbered triangle), -1 for none.
     int (*facet_index)(const struct rs_surface *s, int f);
+    /// With facet: the number of facets.
+    int (*facet_count)(const struct rs_surface *s);
+    /// How a surface file describes the kind: its parameters, data lines and the making
+    /// of its surface (private to the geometry's reader; NULL: no surface file names it).
+    const struct rs_surface_syntax *syntax;
 } rs_surface_ops;
 
 typedef struct rs_surface {
@@ -171,7 +176,8 @@ typedef struct rs_surface {
                        ///< open or non-manifold edges), empty when nothing
 } rs_surface;
 
-/// Number of local directions: 2 for SEGMENTS, 3 otherwise.
+/// Number of local directions: 2 for SEGMENTS, 3 otherwise, 0 for a surface without a
+/// kind (zeroed or freed).
 int rs_surface_ndir(const rs_surface *s);
 
 /// The slaves of a query block (SoA, global coordinates, current configuration): points,
@@ -228,6 +234,10 @@ int rs_contacts_reserve(rs_contacts *c, int cap, rs_error *err);
 /// tangent planes (radii a = sqrt(R^2 - dist^2)) meet, D <= a_i + a_j for feet D apart,
 /// else ((a_i + a_j) / D)^16. The others get share 1.
 void rs_contacts_patch_shares(rs_contacts *c, int a, int m, double R);
+/// The shares of contacts k0 .. c->n - 1 of the spheres of q from the fold lines of their
+/// tangent planes (docs/conventions.md, "Shares at concave folds"), for a kind whose
+/// closest operation does not set them (rs_surface_ops.shares = 0).
+void rs_contacts_fold_shares(const rs_query *q, rs_contacts *c, int k0);
 /// Frees the arrays and zeroes c.
 void rs_contacts_free(rs_contacts *c);
 
@@ -262,8 +272,13 @@ int rs_surface_query_among(const rs_surface *s, const rs_query *q, const int *co
 /// Frees the lists' arrays and zeroes c.
 void rs_cands_free(rs_cands *c);
 
-/// 1 when history may pass from feature fa to feature fb (see rs_surface_ops).
+/// 1 when history may pass from feature fa to feature fb (see rs_surface_ops); 0 for a
+/// surface without a kind.
 int rs_surface_adjacent(const rs_surface *s, int fa, int fb);
+
+/// 1 when the surface's kind has facets (rs_surface_ops.facet and facet_count: a faceted
+/// master, whose facets' nodes a VUINTER sees), else 0 (the analytic kinds).
+int rs_surface_has_facets(const rs_surface *s);
 
 /// The facet under a contact (rs_surface_ops.facet): its node count (0 for a kind without
 /// facets or a feature that names none), its nodes' user numbers, their reference
@@ -286,11 +301,11 @@ int rs_surface_facet_area(const rs_surface *s, int k, double *area, double n[3])
 int rs_surface_facet_index(const rs_surface *s, int f);
 
 /// Axis-aligned bounds of the surface in its reference configuration (+-INFINITY where
-/// it is unbounded).
+/// it is unbounded; an empty box at the origin for a surface without a kind).
 void rs_surface_bounds(const rs_surface *s, double lo[3], double hi[3]);
 
 /// 1 with origin and unit axis when the surface is invariant under rotation about that
-/// axis (reference configuration), 0 otherwise.
+/// axis (reference configuration), 0 otherwise (and for a surface without a kind).
 int rs_surface_spin_axis(const rs_surface *s, double origin[3], double axis[3]);
 
 /// Reads surface NAME (NULL: the first) from an Abaqus-style keyword file.

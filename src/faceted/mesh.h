@@ -94,7 +94,23 @@ void rs_mesh_free(rs_mesh *m);
 int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int placed,
                          const double abc[9], const char *where, rs_error *err);
 
-/// The MESH kind's table.
+/// The MESH kind's table (mesh_ops.c) and the operations it lists from the other files:
+/// the query (mesh_query.c), the candidate lists (mesh_candidates.c), the facets
+/// (mesh_facets.c).
 extern const rs_surface_ops rs_mesh_ops;
+/// The MESH surface in a surface file (mesh_file.c, surface_file.h).
+extern const struct rs_surface_syntax rs_mesh_syntax;
+int rs_mesh_closest(const rs_surface *s, const rs_query *q, rs_contacts *out,
+                    rs_error *err);
+int rs_mesh_closest_among(const rs_surface *s, const rs_query *q, const int *const *cand,
+                          const int *ncand, rs_contacts *out, rs_error *err);
+int rs_mesh_candidates(const rs_surface *s, const rs_query *q, double extra, rs_cands *c,
+                       rs_error *err);
+int rs_mesh_facet(const rs_surface *s, int f, const double xm[3], int nodes[4],
+                  double xyz[12], double shape[4]);
+int rs_mesh_facet_size(const rs_surface *s, int *nnode);
+int rs_mesh_facet_count(const rs_surface *s);
+int rs_mesh_facet_area(const rs_surface *s, int k, double *area, double n[3]);
+int rs_mesh_facet_index(const rs_surface *s, int f);
 
 #endif

@@ -188,11 +188,118 @@ static void test_each_kind_has_its_table(void)
     }
 }
 
+/* A surface without a kind (zeroed, or freed by rs_surface_free) answers every operation
+ * of the dispatch with an error or a neutral value: no local directions, no hand-over, an
+ * empty box at the origin, no spin axis. */
+static void test_a_surface_without_kind_answers_neutrally(void)
+{
+    rs_surface s;
+    memset(&s, 0, sizeof s);
+    for (int freed = 0; freed < 2; freed++) {
+        if (freed) {
+            surface_named("rev", &s);
+            rs_surface_free(&s);
+        }
+        ENSURE(rs_surface_ndir(&s) == 0);
+        const int f = RS_FEATURE(RS_FEAT_FACE, 0);
+        ENSURE(rs_surface_adjacent(&s, f, f) == 0);
+        double lo[3] = {1, 1, 1}, hi[3] = {-1, -1, -1}, o[3], ax[3];
+        rs_surface_bounds(&s, lo, hi);
+        for (int d = 0; d < 3; d++)
+            ENSURE(lo[d] == 0.0 && hi[d] == 0.0);
+        ENSURE(rs_surface_spin_axis(&s, o, ax) == 0);
+        rs_trimesh m;
+        rs_error err;
+        ENSURE(rs_surface_triangulate(&s, 1.0, 8, &m, &err) == RS_ERR_ARG);
+        rs_contacts c;
+        memset(&c, 0, sizeof c);
+        const double x = 0.0;
+        const rs_query q = {1, {&x, &x, &x, NULL}, NULL, 1.0, -INFINITY};
+        ENSURE(rs_surface_query(&s, &q, &c, &err) == RS_ERR_ARG);
+    }
+    ENSURE(rs_surface_ndir(NULL) == 0 && rs_surface_spin_axis(NULL, NULL, NULL) == 0);
+}
+
+/* The proximity cache is made once, when the surface is read: a query of an analytic
+ * surface without one is an error, not a cache built and freed at every query. */
+static void test_query_without_proximity_cache_is_an_error(void)
+{
+    rs_surface s;
+    surface_named("rev", &s);
+    void *pc = s.impl;
+    s.impl = NULL;
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    const double x = 0.1, y = 0.2, z = 0.3, r = 0.05;
+    const rs_query q = {1, {&x, &y, &z, &r}, NULL, 1.0, -INFINITY};
+    rs_error err;
+    ENSURE(rs_surface_query(&s, &q, &c, &err) == RS_ERR_ARG);
+    ENSURE(strstr(err.msg, "proximity cache") != NULL && c.n == 0);
+    s.impl = pc;
+    ENSURE(rs_surface_query(&s, &q, &c, &err) == RS_OK);
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+}
+
+/* The capability of facets is the table's, whatever the kind's number: a second faceted
+ * kind (here a fixture of two facets) has facets, each counted by facet_count and read by
+ * facet_area; the analytic kinds have none. */
+static int two_facet(const rs_surface *s, int f, const double xm[3], int nodes[4],
+                     double xyz[12], double shape[4])
+{
+    (void)s, (void)xm, (void)xyz, (void)shape;
+    nodes[0] = nodes[1] = nodes[2] = 1;
+    return f >= 0 ? 3 : 0;
+}
+
+static int two_count(const rs_surface *s)
+{
+    (void)s;
+    return 2;
+}
+
+static int two_area(const rs_surface *s, int k, double *area, double n[3])
+{
+    (void)s;
+    *area = k + 1.0;
+    n[0] = n[1] = 0.0;
+    n[2] = 1.0;
+    return 0;
+}
+
+static void test_facets_are_a_capability_of_the_table(void)
+{
+    static const rs_surface_ops two = {.name = "TWO",
+                                       .ndir = 3,
+                                       .facet = two_facet,
+                                       .facet_area = two_area,
+                                       .facet_count = two_count};
+    rs_surface s;
+    memset(&s, 0, sizeof s);
+    s.ops = &two;
+    s.kind = RS_SURF_SEGMENTS;
+    ENSURE(rs_surface_has_facets(&s) && rs_surface_facet_count(&s) == 2);
+    double a = 0.0, n[3];
+    ENSURE(rs_surface_facet_area(&s, 1, &a, n) == 0 && a == 2.0 && n[2] == 1.0);
+    ENSURE(rs_surface_facet_area(&s, 2, &a, n) == -1 &&
+           rs_surface_facet_area(&s, -1, &a, n) == -1);
+    const char *names[3] = {"seg", "cyl", "rev"};
+    for (int i = 0; i < 3; i++) {
+        surface_named(names[i], &s);
+        ENSURE(!rs_surface_has_facets(&s) && rs_surface_facet_count(&s) == 0);
+        rs_surface_free(&s);
+    }
+    ENSURE(!rs_surface_has_facets(&s) && !rs_surface_has_facets(NULL));
+}
+
 int main(void)
 {
     RS_RUN(test_bounds_contain_the_surface);
     RS_RUN(test_bounds_closed_forms);
     RS_RUN(test_spin_axis_of_a_revolution);
     RS_RUN(test_each_kind_has_its_table);
+    RS_RUN(test_a_surface_without_kind_answers_neutrally);
+    RS_RUN(test_query_without_proximity_cache_is_an_error);
+    RS_RUN(test_facets_are_a_capability_of_the_table);
     return rs_test_summary();
 }
