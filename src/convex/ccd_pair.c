@@ -74,8 +74,24 @@ static void set_contact(rs_convex_contact *out, double depth, const double n[3],
                                      : RS_CONVEX_APART;
 }
 
-/* libccd's MPR on the cores (full = 0) or the rounded shapes (full = 1): 0 with depth,
- * normal and witness points of the rounded shapes, -1 when MPR finds no overlap. */
+/* b moved by s: the core of b, translated (a copy of b with its origin moved). */
+static void moved(const rs_cvx *b, const double s[3], rs_cvx *m, double tri[9])
+{
+    *m = *b;
+    for (int k = 0; k < 3; k++)
+        m->x[k] += s[k];
+    if (!b->shape) {
+        for (int i = 0; i < 9; i++)
+            tri[i] = b->tri[i] + s[i % 3];
+        m->tri = tri;
+    }
+}
+
+/* libccd's MPR on the cores (full = 0) or the rounded shapes (full = 1), then its depth
+ * and normal made exact where the contact is flat and witness points found: b is moved
+ * by (depth + margin) along MPR's normal, GJK gives the small gap left and its closest
+ * points, and the depth is the move less that gap along GJK's normal. Returns 0, or -1
+ * when MPR finds no overlap. */
 static int mpr(const rs_cvx *a, const rs_cvx *b, int full, double gap_max,
                rs_convex_contact *out)
 {
@@ -87,7 +103,8 @@ static int mpr(const rs_cvx *a, const rs_cvx *b, int full, double gap_max,
     ccd.center2 = ccd_center;
     ccd.max_iterations = 500;
     /* MPR's tolerance is a length: the portal's progress along its normal */
-    ccd.mpr_tolerance = 1e-14 * (a->size + b->size + a->radius + b->radius);
+    const double scale = a->size + b->size + a->radius + b->radius;
+    ccd.mpr_tolerance = 1e-14 * scale;
     ccd.epa_tolerance = ccd.mpr_tolerance;
     ccd.dist_tolerance = ccd.mpr_tolerance;
     const ccd_obj oa = {a, full}, ob = {b, full};
@@ -95,18 +112,55 @@ static int mpr(const rs_cvx *a, const rs_cvx *b, int full, double gap_max,
     ccd_vec3_t dir, pos;
     if (ccdMPRPenetration(&oa, &ob, &ccd, &depth, &dir, &pos) != 0)
         return -1;
-    double n[3] = {dir.v[0], dir.v[1], dir.v[2]}, pa[3], pb[3];
+    double n[3] = {dir.v[0], dir.v[1], dir.v[2]};
     const double nn = rs_norm3(n);
     if (!(nn > 0.0) || !isfinite(depth))
         return -1;
-    const double ra = full ? 0.0 : a->radius, rb = full ? 0.0 : b->radius;
-    for (int k = 0; k < 3; k++) {
+    const double rr = a->radius + b->radius;
+    double pa[3], pb[3], tri[9];
+    for (int k = 0; k < 3; k++)
         n[k] /= nn;
-        /* libccd's pos lies midway between the witness points */
-        pa[k] = pos.v[k] + (0.5 * depth + ra) * n[k];
-        pb[k] = pos.v[k] - (0.5 * depth + rb) * n[k];
+    /* up to four rounds: each moves b along the last normal, so that an oblique first
+     * normal (MPR follows the ray between the centres) turns to the contact's */
+    int found = 0;
+    double d = depth + (full ? 0.0 : rr);
+    for (int round = 0; round < 4; round++) {
+        const double move = d - rr + 1e-2 * scale + 0.01 * fabs(d);
+        double sh[3], m[3];
+        for (int k = 0; k < 3; k++)
+            sh[k] = move * n[k];
+        rs_cvx mb;
+        moved(b, sh, &mb, tri);
+        rs_gjk g;
+        rs_gjk_distance(a, &mb, INFINITY, &g);
+        if (g.overlap || !(g.dist > 0.0))
+            break;
+        for (int k = 0; k < 3; k++)
+            m[k] = (g.pb[k] - g.pa[k]) / g.dist;
+        d = move * rs_dot3(n, m) - g.dist + rr;
+        for (int k = 0; k < 3; k++) {
+            pa[k] = g.pa[k] + a->radius * m[k];
+            pb[k] = pa[k] - d * m[k];
+        }
+        const double turn = fabs(m[0] - n[0]) + fabs(m[1] - n[1]) + fabs(m[2] - n[2]);
+        memcpy(n, m, sizeof n);
+        found = 1;
+        if (turn <= 1e-13)
+            break;
     }
-    set_contact(out, depth + ra + rb, n, pa, pb, gap_max);
+    if (found) {
+        set_contact(out, d, n, pa, pb, gap_max);
+        return 0;
+    }
+    /* MPR's own answer (libccd's pos mixes the centres in): the witness on a is its
+     * support along the normal */
+    const double dd = full ? depth : depth + rr;
+    ccd_support(&oa, &dir, &pos);
+    for (int k = 0; k < 3; k++) {
+        pa[k] = pos.v[k] + (full ? 0.0 : a->radius * n[k]);
+        pb[k] = pa[k] - dd * n[k];
+    }
+    set_contact(out, dd, n, pa, pb, gap_max);
     return 0;
 }
 
