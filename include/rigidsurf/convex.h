@@ -114,11 +114,13 @@ typedef struct rs_mass_props {
 /// formulas; a polyhedron by the divergence theorem over its hull's triangles; a rounded
 /// box or polyhedron exactly, as the core plus a slab on each face, a cylindrical wedge
 /// on each edge and a spherical sector at each vertex; a rounded cylinder or cone
-/// exactly, as a solid of revolution of the rounded profile (polygon, edge strips and
-/// corner sectors, integrated by Gauss rules that are exact for them); a rounded
-/// ellipsoid by the offset-surface formula dV = (1 + k1 t)(1 + k2 t) dA dt, integrated
-/// with 48 Gauss-Legendre points in the polar angle and 96 in azimuth (relative error
-/// below 1e-12 for axis ratios up to 10). RS_ERR_ARG for a bad density or a user shape.
+/// as a solid of revolution of the rounded profile (polygon and edge strips by a Gauss
+/// rule exact for them, corner sectors with 24 Gauss points in their angle); a rounded
+/// ellipsoid as the ellipsoid plus its offset shell, dV = (1 + k1 t)(1 + k2 t) dA dt over
+/// the surface (curvatures k1, k2) and t in [0, r], integrated with 48 Gauss-Legendre
+/// points in the polar angle, 96 equal steps in azimuth and 3 Gauss points in t (exact in
+/// t; 1e-13 for equal semi-axes, Monte Carlo-checked otherwise). RS_ERR_ARG for a bad
+/// density or a user shape.
 int rs_shape_mass_props(const rs_shape *s, double density, rs_mass_props *mp,
                         rs_error *err);
 
@@ -162,11 +164,13 @@ typedef struct rs_convex_contact {
     double pb[3];     ///< witness point on b's surface: pb - pa = -depth normal
 } rs_convex_contact;
 
-/// The contact of bodies a and b. Their cores (the shapes less their rounding) are
-/// apart: the gap is their distance (GJK) less the roundings, exact for rounded points
-/// and segments. Their cores overlap: the depth is libccd's MPR depth of the cores plus
-/// the roundings. gap_max >= 0 (length) bounds the gaps that are resolved. RS_ERR_ARG
-/// for a NULL or non-finite argument; RS_ERR_NOMEM.
+/// The contact of bodies a and b (each body's origin inside its shape). Their cores (the
+/// shapes less their rounding) are apart: the gap is their distance (GJK) less the
+/// roundings, exact for rounded points and segments. Their cores overlap: libccd's MPR
+/// depth and normal (of the cores plus the roundings, or of the rounded shapes when a
+/// core has no volume), corrected by GJK with b moved apart along the normal: exact on
+/// flat contacts. gap_max >= 0 (length) bounds the gaps that are resolved. RS_ERR_ARG for
+/// a NULL or non-finite argument or a quaternion that is not unit.
 int rs_convex_pair(const rs_body *a, const rs_body *b, double gap_max,
                    rs_convex_contact *out, rs_error *err);
 /// The contact of body a and the triangle tri (three world points, 9 values) as a thin

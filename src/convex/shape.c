@@ -130,6 +130,10 @@ int rs_shape_make_polyhedron(rs_shape *s, const double *xyz, int n, double round
                             "polyhedron: %s", msg);
     rs_moments m;
     rs_polytope_moments(s->verts, s->tris, s->nt, rounding, &m);
+    if (!(m.v > 0.0)) {
+        rs_shape_free(s);
+        return rs_error_set(err, RS_ERR_NOMEM, "polyhedron: out of memory");
+    }
     for (int k = 0; k < 3; k++)
         s->shift[k] = m.s[k] / m.v;
     for (int i = 0; i < s->nv; i++)
