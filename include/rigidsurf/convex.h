@@ -1,0 +1,184 @@
+/* rigidsurf: convex slaves. A convex slave is a rigid body whose shape is given in its
+ * body frame by a support function: a built-in shape (sphere, ellipsoid, box, cylinder,
+ * capsule, cone, the convex hull of a point set) or the user's own, each optionally
+ * rounded by a radius (a Minkowski sum with a sphere). Pairs of convex shapes, and a
+ * convex shape against a triangle, are answered through libccd (docs/conventions.md,
+ * "Convex bodies").
+ *
+ * Frames. A shape is described in its body frame. Every built-in shape has its centre
+ * of mass (uniform density, rounding included) at the body frame's origin; the
+ * symmetric ones have their axes along the body axes (a cylinder, capsule or cone along
+ * body z). A body's pose maps the body frame to the world: x_world = x + R(q) x_body. */
+#ifndef RIGIDSURF_CONVEX_H
+#define RIGIDSURF_CONVEX_H
+
+#include "rigidsurf/types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// The kinds of shape.
+typedef enum rs_shape_kind {
+    RS_SHAPE_SPHERE = 0,     ///< dim[0] = radius (a point rounded by the radius)
+    RS_SHAPE_ELLIPSOID = 1,  ///< dim = semi-axes a, b, c along body x, y, z
+    RS_SHAPE_BOX = 2,        ///< dim = half-extents along body x, y, z
+    RS_SHAPE_CYLINDER = 3,   ///< dim[0] = radius, dim[1] = half-height along body z
+    RS_SHAPE_CAPSULE = 4,    ///< dim[0] = radius, dim[1] = half-length of the axis segment
+    RS_SHAPE_CONE = 5,       ///< dim[0] = base radius, dim[1] = height; apex towards +z
+    RS_SHAPE_POLYHEDRON = 6, ///< the convex hull of a point set
+    RS_SHAPE_USER = 7        ///< the user's support function
+} rs_shape_kind;
+
+/// A support function: writes to out the point of the shape farthest along dir (any
+/// length, not zero), both in the shape's body frame. The shape is convex and bounded.
+typedef void (*rs_support_fn)(const void *obj, const double dir[3], double out[3]);
+
+/// A convex shape in its body frame (a tagged struct; make it with rs_shape_make_*).
+typedef struct rs_shape {
+    rs_shape_kind kind;
+    double dim[3];   ///< the kind's dimensions (length), as rs_shape_kind lists them
+    double rounding; ///< rounding radius r >= 0 (length): the shape is core + ball(r)
+    double shift[3]; ///< the body frame's origin in the frame the shape was described
+                     ///< in (length): body point = described point - shift. Zero but
+                     ///< for a rounded cone and a polyhedron
+    int nv;          ///< polyhedron: number of hull vertices
+    int nt;          ///< polyhedron: number of hull triangles
+    double *verts;   ///< polyhedron: hull vertices (3 * nv), body frame
+    int *tris;       ///< polyhedron: triangles (3 * nt), counter-clockwise from outside
+    const void *obj; ///< user: the object passed to support
+    rs_support_fn support; ///< user: the support function of the core (without rounding)
+} rs_shape;
+
+/// A sphere of the given radius: a point rounded by radius + rounding. RS_ERR_ARG for a
+/// radius that is not finite and > 0 or a rounding that is not finite and >= 0.
+int rs_shape_make_sphere(rs_shape *s, double radius, double rounding, rs_error *err);
+/// An ellipsoid of semi-axes a, b, c (along body x, y, z), rounded by rounding.
+/// RS_ERR_ARG for non-finite or non-positive semi-axes, or a negative rounding.
+int rs_shape_make_ellipsoid(rs_shape *s, double a, double b, double c, double rounding,
+                            rs_error *err);
+/// A box of half-extents hx, hy, hz, rounded by rounding (edges and corners become
+/// quarter-cylinders and sphere octants). Errors as rs_shape_make_ellipsoid.
+int rs_shape_make_box(rs_shape *s, double hx, double hy, double hz, double rounding,
+                      rs_error *err);
+/// A circular cylinder of the given radius, its axis along body z from -half_height to
+/// +half_height, rounded by rounding (a tablet). Errors as rs_shape_make_ellipsoid.
+int rs_shape_make_cylinder(rs_shape *s, double radius, double half_height, double rounding,
+                           rs_error *err);
+/// A capsule: the segment from (0, 0, -half_length) to (0, 0, +half_length) rounded by
+/// radius + rounding. Errors as rs_shape_make_ellipsoid.
+int rs_shape_make_capsule(rs_shape *s, double radius, double half_length, double rounding,
+                          rs_error *err);
+/// A right circular cone of base radius and height along body z, apex towards +z,
+/// rounded by rounding. Described with its core's centroid at the origin (base at
+/// z = -height/4, apex at z = 3 height/4); the body origin is the rounded solid's
+/// centre of mass, shift = (0, 0, its z in that description). Errors as
+/// rs_shape_make_ellipsoid.
+int rs_shape_make_cone(rs_shape *s, double radius, double height, double rounding,
+                       rs_error *err);
+/// The convex hull of n points xyz (3 * n), built once with CGAL, rounded by rounding.
+/// The body frame is the points' frame moved to the rounded hull's centre of mass
+/// (axes kept): a body point is an input point less shift. RS_ERR_GEOMETRY for fewer
+/// than four points that are not coplanar; RS_ERR_ARG for a non-finite coordinate or a
+/// bad rounding; RS_ERR_NOMEM. Free with rs_shape_free.
+int rs_shape_make_polyhedron(rs_shape *s, const double *xyz, int n, double rounding,
+                             rs_error *err);
+/// The user's convex shape: support (not NULL) gives its core in the body frame,
+/// obj is passed to it and must outlive the shape, rounding is added around it. It has
+/// no mass properties of its own (rs_shape_mass_props refuses it).
+int rs_shape_make_user(rs_shape *s, const void *obj, rs_support_fn support, double rounding,
+                       rs_error *err);
+/// Frees a polyhedron's arrays (nothing for the other kinds); s may be NULL.
+void rs_shape_free(rs_shape *s);
+
+/// The support point of the shape along dir (body frame, any non-zero length), rounding
+/// included: s(d) = s_core(d) + r d / |d|. A zero dir is taken as +z.
+void rs_shape_support(const rs_shape *s, const double dir[3], double out[3]);
+/// The shape's axis-aligned bounding box in the body frame (exact: the supports along
+/// the six axis directions).
+void rs_shape_bounds(const rs_shape *s, double lo[3], double hi[3]);
+
+/// Mass properties of a uniform solid.
+typedef struct rs_mass_props {
+    double volume;     ///< length^3
+    double mass;       ///< density * volume
+    double com[3];     ///< centre of mass, body frame (zero for the built-in shapes)
+    double inertia[9]; ///< inertia tensor about com in body axes, row-major (mass length^2)
+    double principal[3]; ///< principal moments, the eigenvalues of inertia
+    double axes[9];      ///< row-major rotation whose column k is the axis of principal[k]
+                         ///< in the body frame; the identity when inertia is diagonal
+} rs_mass_props;
+
+/// Mass properties of the shape at the given density (mass / length^3, finite > 0), in
+/// closed form: sphere, ellipsoid, box, cylinder, capsule and cone by the textbook
+/// formulas; a polyhedron by the divergence theorem over its hull's triangles; a rounded
+/// box or polyhedron exactly, as the core plus a slab on each face, a cylindrical wedge
+/// on each edge and a spherical sector at each vertex; a rounded cylinder or cone
+/// as a solid of revolution of the rounded profile (polygon and edge strips by a Gauss
+/// rule exact for them, corner sectors with 24 Gauss points in their angle); a rounded
+/// ellipsoid as the ellipsoid plus its offset shell, dV = (1 + k1 t)(1 + k2 t) dA dt over
+/// the surface (curvatures k1, k2) and t in [0, r], integrated with 48 Gauss-Legendre
+/// points in the polar angle, 96 equal steps in azimuth and 3 Gauss points in t (exact in
+/// t; 1e-13 for equal semi-axes, Monte Carlo-checked otherwise). RS_ERR_ARG for a bad
+/// density or a user shape.
+int rs_shape_mass_props(const rs_shape *s, double density, rs_mass_props *mp,
+                        rs_error *err);
+
+/// A rigid body: pose, mass and shape.
+typedef struct rs_body {
+    double x[3];           ///< centre of mass (the body frame's origin), world (length)
+    double q[4];           ///< orientation, unit quaternion in the order (w, x, y, z):
+                           ///< x_world = x + R(q) x_body
+    double mass;           ///< mass
+    double inertia[3];     ///< principal moments of inertia (mass length^2)
+    double axes[9];        ///< principal axes in the body frame (columns, row-major); the
+                           ///< identity for every built-in shape but a polyhedron
+    const rs_shape *shape; ///< body-frame shape, not owned
+} rs_body;
+
+/// Sets a body: its shape, pose and, for density > 0, mass and inertia from
+/// rs_shape_mass_props (density 0 leaves them zero for the caller to set, as a user
+/// shape needs). q must be unit to 1e-12 (|q| - 1); it is not normalised here.
+/// RS_ERR_ARG for a non-finite x or q, a q that is not unit, or a bad density.
+int rs_body_init(rs_body *b, const rs_shape *shape, double density, const double x[3],
+                 const double q[4], rs_error *err);
+/// The rotation matrix R(q) (row-major) of the body's quaternion.
+void rs_body_rotation(const rs_body *b, double R[9]);
+/// The support point of the body along the world direction dir, in the world.
+void rs_body_support(const rs_body *b, const double dir[3], double out[3]);
+
+/// What a pair query found.
+typedef enum rs_convex_state {
+    RS_CONVEX_APART = 0,  ///< farther apart than gap_max: only depth < -gap_max is known
+    RS_CONVEX_NEAR = 1,   ///< a gap in [0, gap_max]: depth = -gap
+    RS_CONVEX_OVERLAP = 2 ///< the shapes overlap: depth > 0
+} rs_convex_state;
+
+/// The contact of two convex shapes a and b (world frame).
+typedef struct rs_convex_contact {
+    int state;        ///< rs_convex_state
+    double depth;     ///< penetration (length): > 0 overlap, < 0 gap, as rdisp(1)
+    double normal[3]; ///< unit normal from a towards b: moving b by depth along it
+                      ///< makes them touch
+    double pa[3];     ///< witness point on a's surface
+    double pb[3];     ///< witness point on b's surface: pb - pa = -depth normal
+} rs_convex_contact;
+
+/// The contact of bodies a and b (each body's origin inside its shape). Their cores (the
+/// shapes less their rounding) are apart: the gap is their distance (GJK) less the
+/// roundings, exact for rounded points and segments. Their cores overlap: libccd's MPR
+/// depth and normal (of the cores plus the roundings, or of the rounded shapes when a
+/// core has no volume), corrected by GJK with b moved apart along the normal: exact on
+/// flat contacts. gap_max >= 0 (length) bounds the gaps that are resolved. RS_ERR_ARG for
+/// a NULL or non-finite argument or a quaternion that is not unit.
+int rs_convex_pair(const rs_body *a, const rs_body *b, double gap_max,
+                   rs_convex_contact *out, rs_error *err);
+/// The contact of body a and the triangle tri (three world points, 9 values) as a thin
+/// convex shape: b is the triangle, so normal points from a towards the triangle.
+int rs_convex_triangle(const rs_body *a, const double tri[9], double gap_max,
+                       rs_convex_contact *out, rs_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

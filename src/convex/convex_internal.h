@@ -1,0 +1,31 @@
+/* Private parts of the convex shapes shared by their files: the core's support (the
+ * shape less its rounding), the moments of a solid, and the rounded solids' moments. */
+#ifndef RS_CONVEX_INTERNAL_H
+#define RS_CONVEX_INTERNAL_H
+
+#include "rigidsurf/convex.h"
+
+/// The core's support along d (body frame, no rounding); d need not be unit, zero is +z.
+void rs_shape_core_support(const rs_shape *s, const double d[3], double out[3]);
+/// The rounding around the core: the shape's rounding, plus the radius of a sphere or
+/// a capsule (whose cores are a point and a segment).
+double rs_shape_core_radius(const rs_shape *s);
+
+/// Volume moments of a solid about the frame's origin: v = int dV, s = int x dV,
+/// ss = int x x^T dV (row-major).
+typedef struct rs_moments {
+    double v;
+    double s[3];
+    double ss[9];
+} rs_moments;
+
+/// The moments of the convex polytope (vertices v, outward triangles t) rounded by
+/// r >= 0, exactly: core, face slabs, edge wedges and vertex sectors.
+void rs_polytope_moments(const double *v, const int *t, int nt, double r, rs_moments *m);
+/// The moments of the rounded polygon prof (n (rho, z) vertices, counter-clockwise,
+/// one edge on the axis rho = 0) revolved about body z, rounded by r >= 0.
+void rs_revolved_moments(const double *prof, int n, double r, rs_moments *m);
+/// The moments of the ellipsoid of semi-axes a, b, c rounded by r >= 0.
+void rs_ellipsoid_moments(double a, double b, double c, double r, rs_moments *m);
+
+#endif

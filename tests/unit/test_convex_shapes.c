@@ -1,0 +1,381 @@
+/* Convex shapes (convex.h): supports against brute force over sampled surfaces, the
+ * ellipsoid's closed-form support, the rounding's Minkowski identity, bounds, the body's
+ * world support through an independent rotation, and every bad shape named. */
+#include "rigidsurf/convex.h"
+#include "rigidsurf/motion.h"
+#include "rigidsurf/vec.h"
+#include "rs_test.h"
+#include "rs_test_geom.h"
+
+#include <stdlib.h>
+
+enum { NS = 200000 };
+static double pts[3 * NS];
+
+static void rand_dir(double d[3])
+{
+    do {
+        for (int k = 0; k < 3; k++)
+            d[k] = 2.0 * urand() - 1.0;
+    } while (rs_dot3(d, d) > 1.0 || rs_dot3(d, d) < 1e-4);
+    unit(d);
+}
+
+/* Points on the surface of each built-in core (built-in frames; the cone's core with
+ * its centroid at the origin). Returns how many. */
+static int sample(const rs_shape *s)
+{
+    const double *h = s->dim;
+    int n = 0;
+    const int nu = 400, nw = 400;
+    for (int i = 0; i < nu; i++)
+        for (int j = 0; j < nw; j++) {
+            const double u = RS_PI * (i + 0.5) / nu, w = 2.0 * RS_PI * j / nw;
+            const double c[3] = {sin(u) * cos(w), sin(u) * sin(w), cos(u)};
+            double *p = pts + 3 * n++;
+            switch (s->kind) {
+            case RS_SHAPE_ELLIPSOID:
+                for (int k = 0; k < 3; k++)
+                    p[k] = h[k] * c[k];
+                break;
+            case RS_SHAPE_SPHERE:
+                for (int k = 0; k < 3; k++)
+                    p[k] = h[0] * c[k];
+                break;
+            case RS_SHAPE_CAPSULE: /* two half-spheres and the mantle */
+                for (int k = 0; k < 3; k++)
+                    p[k] = h[0] * c[k];
+                p[2] += c[2] >= 0.0 ? h[1] : -h[1];
+                break;
+            case RS_SHAPE_CYLINDER: /* the two rims */
+                p[0] = h[0] * cos(w);
+                p[1] = h[0] * sin(w);
+                p[2] = (i & 1) ? h[1] : -h[1];
+                break;
+            case RS_SHAPE_CONE: /* rim and apex */
+                p[0] = h[0] * cos(w);
+                p[1] = h[0] * sin(w);
+                p[2] = -0.25 * h[1];
+                if (i == 0 && j == 0) {
+                    p[0] = p[1] = 0.0;
+                    p[2] = 0.75 * h[1];
+                }
+                break;
+            case RS_SHAPE_BOX:
+                for (int k = 0; k < 3; k++)
+                    p[k] = ((i * nw + j) >> k & 1) ? h[k] : -h[k];
+                break;
+            default:
+                break;
+            }
+        }
+    return n;
+}
+
+/* support(d).d equals the largest d.p over the samples, to the sampling error tol */
+static int check_support(const rs_shape *s, double tol)
+{
+    const int n = sample(s);
+    for (int t = 0; t < 300; t++) {
+        double d[3], sp[3];
+        rand_dir(d);
+        rs_shape_support(s, d, sp);
+        double best = -INFINITY;
+        for (int i = 0; i < n; i++)
+            best = fmax(best, rs_dot3(pts + 3 * i, d));
+        const double h = rs_dot3(sp, d);
+        if (!(h >= best - 1e-12 && h - best <= tol)) {
+            fprintf(stderr, "kind %d: support %.17g, samples %.17g\n", (int)s->kind, h,
+                    best);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static void test_support_brute_force(void)
+{
+    rs_shape s;
+    ENSURE(rs_shape_make_ellipsoid(&s, 1.0, 2.0, 0.5, 0.0, NULL) == RS_OK);
+    ENSURE(check_support(&s, 2e-4));
+    ENSURE(rs_shape_make_sphere(&s, 0.7, 0.0, NULL) == RS_OK);
+    ENSURE(check_support(&s, 2e-4));
+    ENSURE(rs_shape_make_box(&s, 1.0, 0.3, 2.0, 0.0, NULL) == RS_OK);
+    ENSURE(check_support(&s, 1e-14));
+    ENSURE(rs_shape_make_cylinder(&s, 0.8, 1.5, 0.0, NULL) == RS_OK);
+    ENSURE(check_support(&s, 1e-4));
+    ENSURE(rs_shape_make_capsule(&s, 0.4, 1.0, 0.0, NULL) == RS_OK);
+    ENSURE(check_support(&s, 1e-4));
+    ENSURE(rs_shape_make_cone(&s, 0.6, 2.0, 0.0, NULL) == RS_OK);
+    ENSURE(check_support(&s, 1e-4));
+}
+
+/* The ellipsoid's support is the point whose normal is d: x_i = a_i^2 d_i / |A d|, and
+ * it lies on the surface. */
+static void test_support_ellipsoid_closed_form(void)
+{
+    rs_shape s;
+    const double a[3] = {3.0, 0.5, 1.25};
+    ENSURE(rs_shape_make_ellipsoid(&s, a[0], a[1], a[2], 0.0, NULL) == RS_OK);
+    for (int t = 0; t < 1000; t++) {
+        double d[3], p[3];
+        rand_dir(d);
+        rs_shape_support(&s, d, p);
+        const double ad = sqrt(a[0] * a[0] * d[0] * d[0] + a[1] * a[1] * d[1] * d[1] +
+                               a[2] * a[2] * d[2] * d[2]);
+        double on = 0.0;
+        for (int k = 0; k < 3; k++) {
+            ENSURE_NEAR(p[k], a[k] * a[k] * d[k] / ad, 1e-14);
+            on += p[k] * p[k] / (a[k] * a[k]);
+        }
+        ENSURE_NEAR(on, 1.0, 1e-14);
+    }
+}
+
+/* A support point lies on its shape: inside every bound and on one face or surface. */
+static void test_support_on_shape(void)
+{
+    rs_shape box, cyl, cone;
+    ENSURE(rs_shape_make_box(&box, 1.0, 0.3, 2.0, 0.0, NULL) == RS_OK);
+    ENSURE(rs_shape_make_cylinder(&cyl, 0.8, 1.5, 0.0, NULL) == RS_OK);
+    ENSURE(rs_shape_make_cone(&cone, 0.6, 2.0, 0.0, NULL) == RS_OK);
+    for (int t = 0; t < 1000; t++) {
+        double d[3], p[3];
+        rand_dir(d);
+        rs_shape_support(&box, d, p);
+        for (int k = 0; k < 3; k++)
+            ENSURE_NEAR(fabs(p[k]), box.dim[k], 0.0); /* a corner */
+        rs_shape_support(&cyl, d, p);
+        ENSURE_NEAR(hypot(p[0], p[1]), 0.8, 1e-15);
+        ENSURE_NEAR(fabs(p[2]), 1.5, 0.0);
+        rs_shape_support(&cone, d, p);
+        const double rho = hypot(p[0], p[1]);
+        ENSURE((fabs(rho - 0.6) < 1e-15 && p[2] == -0.5) || (rho == 0.0 && p[2] == 1.5));
+    }
+}
+
+/* Rounding is a Minkowski sum with a ball: s_r(d) = s_0(d) + r d / |d|, for every kind,
+ * and a sphere and a capsule are a point and a segment rounded by their radius. */
+static void test_rounding_minkowski(void)
+{
+    const double r = 0.3;
+    rs_shape a[6], b[6];
+    ENSURE(rs_shape_make_ellipsoid(&a[0], 1.0, 2.0, 0.5, 0.0, NULL) == RS_OK);
+    ENSURE(rs_shape_make_ellipsoid(&b[0], 1.0, 2.0, 0.5, r, NULL) == RS_OK);
+    ENSURE(rs_shape_make_box(&a[1], 1.0, 0.3, 2.0, 0.0, NULL) == RS_OK);
+    ENSURE(rs_shape_make_box(&b[1], 1.0, 0.3, 2.0, r, NULL) == RS_OK);
+    ENSURE(rs_shape_make_cylinder(&a[2], 0.8, 1.5, 0.0, NULL) == RS_OK);
+    ENSURE(rs_shape_make_cylinder(&b[2], 0.8, 1.5, r, NULL) == RS_OK);
+    ENSURE(rs_shape_make_capsule(&a[3], 0.4, 1.0, 0.0, NULL) == RS_OK);
+    ENSURE(rs_shape_make_capsule(&b[3], 0.4, 1.0, r, NULL) == RS_OK);
+    ENSURE(rs_shape_make_sphere(&a[4], 0.4, 0.0, NULL) == RS_OK);
+    ENSURE(rs_shape_make_sphere(&b[4], 0.4, r, NULL) == RS_OK);
+    ENSURE(rs_shape_make_cone(&a[5], 0.6, 2.0, 0.0, NULL) == RS_OK);
+    ENSURE(rs_shape_make_cone(&b[5], 0.6, 2.0, r, NULL) == RS_OK);
+    for (int t = 0; t < 500; t++) {
+        double d[3], p[3], q[3];
+        rand_dir(d);
+        for (int i = 0; i < 6; i++) {
+            rs_shape_support(&a[i], d, p);
+            rs_shape_support(&b[i], d, q);
+            for (int k = 0; k < 3; k++) /* the rounded cone sits shifted in its frame */
+                ENSURE_NEAR(q[k] + b[i].shift[k], p[k] + a[i].shift[k] + r * d[k], 1e-14);
+        }
+        /* a sphere: the radius along d; a capsule: an end centre plus the radius */
+        rs_shape_support(&a[4], d, p);
+        for (int k = 0; k < 3; k++)
+            ENSURE_NEAR(p[k], 0.4 * d[k], 1e-15);
+        rs_shape_support(&a[3], d, p);
+        ENSURE_NEAR(p[2], (d[2] >= 0.0 ? 1.0 : -1.0) + 0.4 * d[2], 1e-15);
+    }
+}
+
+/* The polyhedron: support(d).d is the largest d.p over all the input points (interior
+ * ones included), and the support is one of them (shifted to the body frame). */
+static void test_support_polyhedron(void)
+{
+    enum { N = 500 };
+    double xyz[3 * N];
+    for (int i = 0; i < N; i++) {
+        double d[3];
+        rand_dir(d);
+        const double r = (i % 3) ? 1.0 : 0.5 * urand();
+        for (int k = 0; k < 3; k++)
+            xyz[3 * i + k] = r * d[k] * (k == 2 ? 0.5 : 1.0) + (k == 0 ? 3.0 : 0.0);
+    }
+    rs_shape s;
+    rs_error err;
+    ENSURE(rs_shape_make_polyhedron(&s, xyz, N, 0.0, &err) == RS_OK);
+    ENSURE(s.nv >= 4 && s.nv <= N && s.nt == 2 * s.nv - 4);
+    for (int t = 0; t < 500; t++) {
+        double d[3], p[3];
+        rand_dir(d);
+        rs_shape_support(&s, d, p);
+        double best = -INFINITY, dmin = INFINITY;
+        for (int i = 0; i < N; i++) {
+            double q[3];
+            for (int k = 0; k < 3; k++)
+                q[k] = xyz[3 * i + k] - s.shift[k];
+            best = fmax(best, rs_dot3(q, d));
+            dmin = fmin(dmin, fabs(q[0] - p[0]) + fabs(q[1] - p[1]) + fabs(q[2] - p[2]));
+        }
+        ENSURE_NEAR(rs_dot3(p, d), best, 1e-14);
+        ENSURE_SMALL(dmin, 1e-14);
+    }
+    rs_shape_free(&s);
+}
+
+/* A user's support: a box given through a callback behaves as the built-in box. */
+static void box_support(const void *obj, const double d[3], double out[3])
+{
+    const double *h = obj;
+    for (int k = 0; k < 3; k++)
+        out[k] = d[k] < 0.0 ? -h[k] : h[k];
+}
+
+static void test_user_shape(void)
+{
+    static const double h[3] = {1.0, 0.3, 2.0};
+    rs_shape u, b;
+    ENSURE(rs_shape_make_user(&u, h, box_support, 0.2, NULL) == RS_OK);
+    ENSURE(rs_shape_make_box(&b, 1.0, 0.3, 2.0, 0.2, NULL) == RS_OK);
+    for (int t = 0; t < 200; t++) {
+        double d[3], p[3], q[3];
+        rand_dir(d);
+        rs_shape_support(&u, d, p);
+        rs_shape_support(&b, d, q);
+        for (int k = 0; k < 3; k++)
+            ENSURE_NEAR(p[k], q[k], 1e-15);
+    }
+    rs_mass_props mp;
+    rs_error err;
+    ENSURE(rs_shape_mass_props(&u, 1.0, &mp, &err) == RS_ERR_ARG);
+    ENSURE(strstr(err.msg, "user shape"));
+}
+
+/* Bounds: a rounded box's box, a cylinder's, an ellipsoid's semi-axes plus rounding. */
+static void test_bounds(void)
+{
+    rs_shape s;
+    double lo[3], hi[3];
+    ENSURE(rs_shape_make_box(&s, 1.0, 0.3, 2.0, 0.1, NULL) == RS_OK);
+    rs_shape_bounds(&s, lo, hi);
+    ENSURE_NEAR(hi[0], 1.1, 1e-15);
+    ENSURE_NEAR(lo[1], -0.4, 1e-15);
+    ENSURE_NEAR(hi[2], 2.1, 1e-15);
+    ENSURE(rs_shape_make_ellipsoid(&s, 1.0, 2.0, 0.5, 0.25, NULL) == RS_OK);
+    rs_shape_bounds(&s, lo, hi);
+    ENSURE_NEAR(hi[0], 1.25, 1e-15);
+    ENSURE_NEAR(lo[1], -2.25, 1e-15);
+    ENSURE_NEAR(hi[2], 0.75, 1e-15);
+    ENSURE(rs_shape_make_cone(&s, 0.6, 2.0, 0.0, NULL) == RS_OK);
+    rs_shape_bounds(&s, lo, hi);
+    ENSURE_NEAR(lo[2], -0.5, 1e-15);
+    ENSURE_NEAR(hi[2], 1.5, 1e-15);
+    ENSURE_NEAR(hi[0], 0.6, 1e-15);
+}
+
+/* The body's support in the world: x + R s(R^T d), R from the quaternion
+ * (cos(a/2), sin(a/2) axis) compared with Rodrigues' matrix for the same rotation. */
+static void test_body_support_world(void)
+{
+    rs_shape s;
+    ENSURE(rs_shape_make_box(&s, 1.0, 0.3, 2.0, 0.1, NULL) == RS_OK);
+    double axis[3] = {1.0, -2.0, 0.5};
+    unit(axis);
+    const double ang = 0.7, x[3] = {1.0, 2.0, -3.0};
+    const double q[4] = {cos(0.5 * ang), sin(0.5 * ang) * axis[0], sin(0.5 * ang) * axis[1],
+                         sin(0.5 * ang) * axis[2]};
+    rs_body b;
+    rs_error err;
+    ENSURE(rs_body_init(&b, &s, 2.0, x, q, &err) == RS_OK);
+    double R[9], Rb[9];
+    rs_rotation_matrix(axis, ang, R);
+    rs_body_rotation(&b, Rb);
+    for (int k = 0; k < 9; k++)
+        ENSURE_NEAR(Rb[k], R[k], 1e-15);
+    for (int t = 0; t < 100; t++) {
+        double d[3], db[3], p[3], w[3];
+        rand_dir(d);
+        for (int i = 0; i < 3; i++)
+            db[i] = R[i] * d[0] + R[3 + i] * d[1] + R[6 + i] * d[2];
+        rs_shape_support(&s, db, p);
+        rs_body_support(&b, d, w);
+        for (int i = 0; i < 3; i++)
+            ENSURE_NEAR(w[i],
+                        x[i] + R[3 * i] * p[0] + R[3 * i + 1] * p[1] + R[3 * i + 2] * p[2],
+                        1e-14);
+    }
+}
+
+#define ENSURE_ERR(call, want, text)                                                       \
+    do {                                                                                   \
+        rs_error e_;                                                                       \
+        rs_error_clear(&e_);                                                               \
+        ENSURE((call) == (want));                                                          \
+        ENSURE(e_.code == (want));                                                         \
+        if (!strstr(e_.msg, text)) {                                                       \
+            fprintf(stderr, "message '%s' lacks '%s'\n", e_.msg, text);                    \
+            ENSURE(0);                                                                     \
+        }                                                                                  \
+    } while (0)
+
+/* Bad shapes, each with its message. */
+static void test_bad_shapes(void)
+{
+    rs_shape s;
+    ENSURE_ERR(rs_shape_make_sphere(&s, NAN, 0.0, &e_), RS_ERR_ARG, "sphere radius = nan");
+    ENSURE_ERR(rs_shape_make_sphere(&s, 0.0, 0.0, &e_), RS_ERR_ARG,
+               "expected a finite number > 0");
+    ENSURE_ERR(rs_shape_make_ellipsoid(&s, 1.0, -2.0, 1.0, 0.0, &e_), RS_ERR_ARG,
+               "ellipsoid semi-axis b = -2");
+    ENSURE_ERR(rs_shape_make_box(&s, 1.0, 1.0, INFINITY, 0.0, &e_), RS_ERR_ARG,
+               "box half-extent z = inf");
+    ENSURE_ERR(rs_shape_make_cylinder(&s, 1.0, 0.0, 0.0, &e_), RS_ERR_ARG,
+               "cylinder half-height = 0");
+    ENSURE_ERR(rs_shape_make_capsule(&s, -1.0, 1.0, 0.0, &e_), RS_ERR_ARG,
+               "capsule radius = -1");
+    ENSURE_ERR(rs_shape_make_cone(&s, 1.0, NAN, 0.0, &e_), RS_ERR_ARG, "cone height = nan");
+    ENSURE_ERR(rs_shape_make_box(&s, 1.0, 1.0, 1.0, -0.1, &e_), RS_ERR_ARG,
+               "rounding radius = -0.1 (expected a finite number >= 0)");
+    ENSURE_ERR(rs_shape_make_user(&s, NULL, NULL, 0.0, &e_), RS_ERR_ARG,
+               "no support function");
+    /* points in one plane, too few points, a non-finite point */
+    const double flat[15] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0.5, 0.2, 0};
+    ENSURE_ERR(rs_shape_make_polyhedron(&s, flat, 5, 0.0, &e_), RS_ERR_GEOMETRY,
+               "lie in one plane (expected at least 4 that are not coplanar)");
+    const double three[9] = {0, 0, 0, 1, 0, 0, 0, 1, 1};
+    ENSURE_ERR(rs_shape_make_polyhedron(&s, three, 3, 0.0, &e_), RS_ERR_GEOMETRY,
+               "3 points (expected at least 4");
+    const double line[12] = {0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3};
+    ENSURE_ERR(rs_shape_make_polyhedron(&s, line, 4, 0.0, &e_), RS_ERR_GEOMETRY,
+               "one plane");
+    const double bad[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, NAN};
+    ENSURE_ERR(rs_shape_make_polyhedron(&s, bad, 4, 0.0, &e_), RS_ERR_ARG,
+               "point 4 is not finite");
+    /* a quaternion that is not unit to 1e-12, a bad density */
+    rs_body b;
+    ENSURE(rs_shape_make_sphere(&s, 1.0, 0.0, NULL) == RS_OK);
+    const double x[3] = {0, 0, 0}, q[4] = {1.0 + 1e-11, 0, 0, 0}, q1[4] = {1.0, 0, 0, 0};
+    ENSURE_ERR(rs_body_init(&b, &s, 1.0, x, q, &e_), RS_ERR_ARG,
+               "expected a unit quaternion to 1e-12");
+    const double qn[4] = {0.6, 0.8 + 5e-13, 0, 0};
+    ENSURE(rs_body_init(&b, &s, 1.0, x, qn, NULL) == RS_OK);
+    ENSURE_ERR(rs_body_init(&b, &s, -1.0, x, q1, &e_), RS_ERR_ARG, "density = -1");
+    ENSURE_ERR(rs_shape_mass_props(&s, 0.0, &(rs_mass_props){0}, &e_), RS_ERR_ARG,
+               "density = 0");
+}
+
+int main(void)
+{
+    RS_RUN(test_support_brute_force);
+    RS_RUN(test_support_ellipsoid_closed_form);
+    RS_RUN(test_support_on_shape);
+    RS_RUN(test_rounding_minkowski);
+    RS_RUN(test_support_polyhedron);
+    RS_RUN(test_user_shape);
+    RS_RUN(test_bounds);
+    RS_RUN(test_body_support_world);
+    RS_RUN(test_bad_shapes);
+    return rs_test_summary();
+}
