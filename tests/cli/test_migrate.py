@@ -5,6 +5,7 @@ must keep byte for byte, its reports (each names its line) and its exit status.
 
 Usage: test_migrate.py PATH/TO/rigidsurf-migrate
 """
+import difflib
 import importlib.util
 import math
 import os
@@ -214,6 +215,20 @@ check("a line it cannot read is kept and reported", rc == 3 and out == "fix a al
       "model hertz\n" and "LINE 1: fix a:" in err, err)
 rc, out, err = run("")
 check("an empty deck: exit 0, nothing out", rc == 0 and out == "", err)
+
+# ---- the output shown in docs/migration.md is the tool's ---------------------------------
+TUT = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public"
+doc = open(os.path.join(HERE, "..", "..", "docs", "migration.md")).read()
+m = re.search(r"<!-- migrate-output: (\S+) .*?-->\n```\n(.*?)```\n", doc, re.S)
+if check("docs/migration.md shows the tool's output for a deck", m is not None) and \
+        os.path.isfile(os.path.join(TUT, m.group(1))):
+    deck = os.path.join(TUT, m.group(1))
+    p = subprocess.run([EXE, deck], capture_output=True, text=True, timeout=60)
+    name = os.path.basename(deck)
+    diff = "".join(difflib.unified_diff(open(deck).read().splitlines(True),
+                                        p.stdout.splitlines(True), name, name + ".rigid", n=0))
+    check("the doc's shown output equals the tool's", m.group(2) == p.stderr + diff,
+          "\n--- tool\n%s%s" % (p.stderr, diff))
 p = subprocess.run([EXE], capture_output=True, text=True)
 check("no argument: usage, exit 2", p.returncode == 2 and "usage" in p.stderr, p.stderr)
 
