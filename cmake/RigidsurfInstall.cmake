@@ -1,5 +1,6 @@
 # Installation, in one place (included once at the end of the top-level CMakeLists.txt):
-#   bin/                     liggghts-rigidsurf, rigidsurf-frames, rigidsurf-build-law
+#   bin/                     liggghts-rigidsurf, rigidsurf-frames, rigidsurf-build-law,
+#                            rigidsurf-migrate
 #   lib/                     librigidsurf.a, librigidsurf_abaqus.so,
 #                            cmake/rigidsurf/ (find_package(rigidsurf CONFIG):
 #                            rigidsurf::rigidsurf), pkgconfig/rigidsurf.pc
@@ -80,6 +81,8 @@ endforeach()
 
 # ---- Programs -------------------------------------------------------------------------
 install(TARGETS ${RS_INSTALL_PROGRAMS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(PROGRAMS ${PROJECT_SOURCE_DIR}/src/cli/rigidsurf_migrate.py
+  DESTINATION ${CMAKE_INSTALL_BINDIR} RENAME rigidsurf-migrate)
 
 # ---- Docs and examples ------------------------------------------------------------------
 # README.md beside docs/ and examples/, so that its relative links hold.

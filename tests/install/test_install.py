@@ -304,6 +304,11 @@ def check_layout(ck, a, prefix):
                  "docs/architecture.md", "examples/README.md", "examples/user_law/myvuinter.f",
                  "examples/surfaces/drum.inp"):
         ck.check("installed %s/%s" % (a.docdir, name), os.path.isfile(os.path.join(doc, name)))
+    path = os.path.join(binp, "rigidsurf-migrate")
+    if ck.check("installed %s/rigidsurf-migrate" % a.bindir, os.access(path, os.X_OK)):
+        p = subprocess.run([path, "--help"], capture_output=True, text=True, env=clean_env())
+        ck.check("rigidsurf-migrate runs and prints its usage",
+                 p.returncode == 2 and "usage: rigidsurf-migrate" in p.stderr, p.stderr)
     for prog in ("liggghts-rigidsurf", "rigidsurf-frames", "rigidsurf-build-law"):
         path = os.path.join(binp, prog)
         if not ck.check("installed %s/%s" % (a.bindir, prog), os.access(path, os.X_OK)):

@@ -298,3 +298,62 @@ def check_rejected(ck, name, line, want, rc, out):
 
 def isfinite_all(vals):
     return all(math.isfinite(v) for v in vals)
+
+
+# Stock tutorials run whole ---------------------------------------------------------------
+
+TUTORIALS = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public"
+STOCK_LIGGGHTS = "/usr/bin/liggghts"
+# The bed at the end of a deck: count, centre of mass, kinetic energy, mass.
+BED = ('variable cx equal xcm(all,x)\nvariable cy equal xcm(all,y)\n'
+       'variable cz equal xcm(all,z)\nvariable n equal count(all)\nvariable m equal mass(all)\n'
+       'variable ke equal ke\nprint "BED ${n} ${cx} ${cy} ${cz} ${ke} ${m}"\n')
+# Every 1000 steps: count, kinetic energy and mean x velocity (`TUT` lines).
+MONITOR = ('variable tn equal count(all)\nvariable tke equal ke\nvariable tvx equal vcm(all,x)\n'
+           'fix tprint all print 1000 "TUT $(step) ${tn} ${tke} ${tvx}"\n')
+
+
+def no_dumps(text):
+    """A tutorial without its dumps, with MONITOR after create_box (or read_data)."""
+    out = []
+    for l in text.splitlines():
+        if not l.strip().startswith("dump"):
+            out.append(l)
+        if l.strip().startswith(("create_box", "read_data")):
+            out.append(MONITOR)
+    return "\n".join(out) + "\n"
+
+
+def run_tutorial(s, name, tag, exe, src_dir, deck, timeout=1200):
+    """Runs deck as in.test in a copy of the tutorial's folder. Returns (output, the
+    last BED values or None, {step: [count, KE, mean vx]} of the TUT lines, CPU s)."""
+    import resource
+    import time
+    d = os.path.join(s.dir, name + "_" + tag)
+    shutil.copytree(src_dir, d)
+    with open(os.path.join(d, "in.test"), "w") as f:
+        f.write(deck)
+    t0, c0 = time.time(), resource.getrusage(resource.RUSAGE_CHILDREN)
+    env = dict(os.environ)
+    env.update(MPI_ENV)
+    p = subprocess.run([exe, "-in", "in.test", "-log", "log." + tag], cwd=d, env=env,
+                       capture_output=True, text=True, errors="replace", timeout=timeout)
+    c1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = c1.ru_utime + c1.ru_stime - c0.ru_utime - c0.ru_stime
+    out = p.stdout + p.stderr
+    s.ck.check("%s %s: the run ends without error" % (name, tag), p.returncode == 0,
+               "exit %d, %.0f s, CPU %.0f s" % (p.returncode, time.time() - t0, cpu),
+               "\n".join(out.splitlines()[-8:]))
+    bed = [l.split()[1:] for l in out.splitlines() if l.startswith("BED ")]
+    tut = {}
+    for l in out.splitlines():
+        t = l.split()
+        if len(t) == 5 and t[0] == "TUT":
+            tut[int(t[1])] = [float(v) for v in t[2:]]
+    return out, ([float(v) for v in bed[-1]] if bed else None), tut, cpu
+
+
+def window(tut, lo, hi, col):
+    """The values of column col of the TUT lines of steps lo..hi, and their mean."""
+    vals = [v[col] for st, v in tut.items() if lo <= st <= hi]
+    return vals, (sum(vals) / len(vals) if vals else float("nan"))

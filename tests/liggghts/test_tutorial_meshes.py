@@ -43,20 +43,14 @@ over its facets of the VTK's `wear`) within 10% of the stock run's (the beds' pa
 part, as any two DEM runs do). Each run's wall-clock and CPU time is printed.
 """
 import os
-import resource
-import shutil
-import subprocess
-import time
 
 import liglib as L
 
-ROOT = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public"
-REFERENCE = "/usr/bin/liggghts"
-BED = ('variable cx equal xcm(all,x)\nvariable cy equal xcm(all,y)\n'
-       'variable cz equal xcm(all,z)\nvariable n equal count(all)\nvariable m equal mass(all)\n'
-       'variable ke equal ke\nprint "BED ${n} ${cx} ${cy} ${cz} ${ke} ${m}"\n')
-MONITOR = ('variable tn equal count(all)\nvariable tke equal ke\nvariable tvx equal vcm(all,x)\n'
-           'fix tprint all print 1000 "TUT $(step) ${tn} ${tke} ${tvx}"\n')
+ROOT = L.TUTORIALS
+REFERENCE = L.STOCK_LIGGGHTS
+BED = L.BED
+no_dumps = L.no_dumps
+window = L.window
 
 
 def edit(text, pairs):
@@ -65,17 +59,6 @@ def edit(text, pairs):
             raise SystemExit("tutorial text changed: %r not found" % a)
         text = text.replace(a, b)
     return text
-
-
-def no_dumps(text):
-    """The tutorial without its dumps, with MONITOR after create_box."""
-    out = []
-    for l in text.splitlines():
-        if not l.strip().startswith("dump"):
-            out.append(l)
-        if l.strip().startswith("create_box"):
-            out.append(MONITOR)
-    return "\n".join(out) + "\n"
 
 
 def meshgran():
@@ -170,32 +153,7 @@ def total_wear(path):
 
 
 def run(s, name, tag, exe, src_dir, deck):
-    d = os.path.join(s.dir, name + "_" + tag)
-    shutil.copytree(src_dir, d)
-    with open(os.path.join(d, "in.test"), "w") as f:
-        f.write(deck)
-    t0, c0 = time.time(), resource.getrusage(resource.RUSAGE_CHILDREN)
-    p = subprocess.run([exe, "-in", "in.test", "-log", "log." + tag], cwd=d,
-                       capture_output=True, text=True, errors="replace", timeout=1200)
-    c1 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    out = p.stdout + p.stderr
-    s.ck.check("%s %s: the run ends without error" % (name, tag), p.returncode == 0,
-               "exit %d, %.0f s, CPU %.0f s" % (p.returncode, time.time() - t0,
-                                                c1.ru_utime + c1.ru_stime - c0.ru_utime
-                                                - c0.ru_stime),
-               "\n".join(out.splitlines()[-8:]))
-    bed = [l.split()[1:] for l in out.splitlines() if l.startswith("BED ")]
-    tut = {}
-    for l in out.splitlines():
-        t = l.split()
-        if len(t) == 5 and t[0] == "TUT":
-            tut[int(t[1])] = [float(v) for v in t[2:]]
-    return out, ([float(v) for v in bed[-1]] if bed else None), tut
-
-
-def window(tut, lo, hi, col):
-    vals = [v[col] for st, v in tut.items() if lo <= st <= hi]
-    return vals, (sum(vals) / len(vals) if vals else float("nan"))
+    return L.run_tutorial(s, name, tag, exe, src_dir, deck)[:3]
 
 
 def body(s):
