@@ -208,6 +208,40 @@ def disc_z(radius, z0=0.0, name="disc"):
             f"START, 0, {z0!r}\nLINE, {radius!r}, {z0!r}\n")
 
 
+def stl_text(tris, name="part"):
+    """An ASCII STL of triangles ((x, y, z) x 3 each), wound as given."""
+    out = ["solid %s" % name]
+    for t in tris:
+        out.append(" facet normal 0 0 0\n  outer loop")
+        out += ["   vertex %.17g %.17g %.17g" % tuple(p) for p in t]
+        out.append("  endloop\n endfacet")
+    out.append("endsolid %s" % name)
+    return "\n".join(out) + "\n"
+
+
+def cube_triangles(h, outward=True):
+    """The cube [-h, h]^3 as 12 triangles whose right-hand normals point outward (or
+    inward)."""
+    tris = []
+    for axis in range(3):
+        u, v = (axis + 1) % 3, (axis + 2) % 3
+        for sgn in (-1.0, 1.0):
+            quad = []
+            for su, sv in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+                p = [0.0, 0.0, 0.0]
+                p[axis], p[u], p[v] = sgn * h, su * h, sv * h
+                quad.append(tuple(p))
+            a, b, c, d = quad
+            for t in ((a, b, c), (a, c, d)):
+                e1 = [t[1][k] - t[0][k] for k in range(3)]
+                e2 = [t[2][k] - t[0][k] for k in range(3)]
+                n_axis = e1[u] * e2[v] - e1[v] * e2[u]
+                if n_axis * (sgn if outward else -sgn) < 0:
+                    t = (t[0], t[2], t[1])
+                tris.append(t)
+    return tris
+
+
 def rel_diff(a, b, scale):
     """|a - b| relative to max(|a|, |b|, scale): scale keeps values near zero honest."""
     if a == b:

@@ -81,17 +81,6 @@ LATE = STEPS * 3 // 4    # the late mean: the last quarter
 
 # --- STL ----------------------------------------------------------------------------
 
-def stl(tris, name="part"):
-    out = ["solid %s" % name]
-    for a, b, c in tris:
-        out.append(" facet normal 0 0 0\n  outer loop")
-        for p in (a, b, c):
-            out.append("   vertex %.17g %.17g %.17g" % tuple(p))
-        out.append("  endloop\n endfacet")
-    out.append("endsolid %s" % name)
-    return "\n".join(out) + "\n"
-
-
 def cross(a, b):
     return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
@@ -106,26 +95,6 @@ def dot(a, b):
 
 def normal(t):
     return cross(sub(t[1], t[0]), sub(t[2], t[0]))
-
-
-def cube(h, outward=True):
-    """The cube [-h, h]^3 as 12 triangles, right-hand normals outward (or inward)."""
-    tris = []
-    for axis in range(3):
-        for sgn in (-1.0, 1.0):
-            u, v = (axis + 1) % 3, (axis + 2) % 3
-            quad = []
-            for su, sv in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
-                p = [0.0, 0.0, 0.0]
-                p[axis], p[u], p[v] = sgn * h, su * h, sv * h
-                quad.append(tuple(p))
-            a, b, c, d = quad
-            for t in ((a, b, c), (a, c, d)):
-                want = sgn if outward else -sgn
-                if normal(t)[axis] * want < 0:
-                    t = (t[0], t[2], t[1])
-                tris.append(t)
-    return tris
 
 
 # The sheet: the plane through (0, 0, Z0) with normal N (up, tilted in x and y), over
@@ -323,9 +292,10 @@ def judge(s, case, res, walls):
 
 
 def body(s):
-    s.write("cube.stl", stl(cube(HALF), "cube"))
-    s.write("shell.stl", stl(cube(HALF + THICK) + cube(HALF, outward=False), "shell"))
-    s.write("sheet.stl", stl(sheet(), "sheet"))
+    s.write("cube.stl", L.stl_text(L.cube_triangles(HALF), "cube"))
+    s.write("shell.stl", L.stl_text(L.cube_triangles(HALF + THICK) +
+                                      L.cube_triangles(HALF, outward=False), "shell"))
+    s.write("sheet.stl", L.stl_text(sheet(), "sheet"))
     for case, walls in (("cube", ["default"]), ("shell", ["default", "sides1"]),
                         ("sheet", ["default"]), ("sheet_front", ["sides1"])):
         res = run_case(s, case, walls)

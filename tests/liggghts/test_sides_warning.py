@@ -61,37 +61,6 @@ def hopper_spheres():
     return near + far
 
 
-def cube_tris(h):
-    """The cube [-h, h]^3 as 12 triangles, right-hand normals outward."""
-    tris = []
-    for axis in range(3):
-        for sgn in (-1.0, 1.0):
-            u, v = (axis + 1) % 3, (axis + 2) % 3
-            quad = []
-            for su, sv in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
-                p = [0.0, 0.0, 0.0]
-                p[axis], p[u], p[v] = sgn * h, su * h, sv * h
-                quad.append(tuple(p))
-            a, b, c, d = quad
-            for t in ((a, b, c), (a, c, d)):
-                e1 = [t[1][k] - t[0][k] for k in range(3)]
-                e2 = [t[2][k] - t[0][k] for k in range(3)]
-                n = e1[(axis + 1) % 3] * e2[(axis + 2) % 3] - e1[(axis + 2) % 3] * e2[(axis + 1) % 3]
-                if n * sgn < 0:
-                    t = (t[0], t[2], t[1])
-                tris.append(t)
-    return tris
-
-
-def stl(tris):
-    out = ["solid cube"]
-    for t in tris:
-        out.append(" facet normal 0 0 0\n  outer loop")
-        out += ["   vertex %.17g %.17g %.17g" % p for p in t]
-        out.append("  endloop\n endfacet")
-    return "\n".join(out + ["endsolid cube"]) + "\n"
-
-
 def cube_spheres():
     g = HALF - R - 0.0005
     near = [(0.0, 0.0, -g), (0.02, 0.0, -g), (g, 0.02, 0.01), (0.0, -g, 0.02)]
@@ -132,7 +101,7 @@ def body(s):
     ck = s.ck
     s.write("hopper_wrong.inp", hopper(False))
     s.write("hopper_right.inp", hopper(True))
-    s.write("cube.stl", stl(cube_tris(HALF)))
+    s.write("cube.stl", L.stl_text(L.cube_triangles(HALF), "cube"))
     reach = R + SKIN
 
     hs = hopper_spheres()
