@@ -26,6 +26,7 @@ passed = failed = 0
 
 
 def check(name, cond, detail=""):
+    """Counts and prints one check; returns cond."""
     global passed, failed
     if cond:
         passed += 1
@@ -33,6 +34,7 @@ def check(name, cond, detail=""):
     else:
         failed += 1
         print("FAIL " + name + (": " + detail if detail else ""))
+    return cond
 
 
 def run(deck):
