@@ -582,7 +582,7 @@ void FixWallRigid::compute(bool setup_call)
     }
     if (refresh) {
         build_candidates();
-        if (surf_.sides != 2 && !behind_warned_)
+        if (looks_behind())
             warn_behind();
     }
 

@@ -99,6 +99,11 @@ class FixWallRigid : public Fix
     void build_candidates();
     void sort_behind(int n, double dist_min); // fix_wall_rigid_sides.cpp
     void warn_behind();
+    /// The rebuilds look behind the surface: it is one-sided and has not warned yet.
+    bool looks_behind() const
+    {
+        return surf_.sides != 2 && !behind_warned_;
+    }
     bool wall_moved_beyond_skin() const;
     void process_block(const int *idx, int n, bool setup_call);
     void law_inputs(const int *idx, int n, int ne, bool setup_call);

@@ -53,7 +53,7 @@ void FixWallRigid::build_candidates()
     rs_error err;
     rs_error_clear(&err);
     /* On a one-sided wall the query also reaches behind it, as far as in front. */
-    const bool look_behind = surf_.sides != 2 && !behind_warned_;
+    const bool look_behind = looks_behind();
 
     int n = 0;
     auto flush = [&]() {
