@@ -5,6 +5,7 @@
  * law and scatter: fix_wall_rigid_block.cpp; per-atom state, exchange and restart:
  * fix_wall_rigid_state.cpp; outputs: fix_wall_rigid_output.cpp. */
 #include "fix_wall_rigid.h"
+#include "liggghts_law.h"
 #include "rigidsurf/vec.h"
 
 #include "atom.h"
@@ -39,7 +40,7 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg), surf_ok_(false), ndir_(3), moving_(false), belt_(false),
       ivar_omega_(-1), rot_by_period_(false), period_(0.0), phi_at_build_(0.0),
       spin_invariant_(false), law_kind_(LAW_BUILTIN), law_(NULL), loaded_ok_(false),
-      props_given_(false), hertz_(false), hooke_(false), nstatev_(0), statev_given_(false),
+      props_given_(false), hertz_(false), hooke_(false), lig_(NULL), nstatev_(0), statev_given_(false),
       wall_type_(1), capacity_(4), tracking_(0.0), tracking_given_(false),
       area_mode_(AREA_NODE), area_const_(1.0), temp_given_(false), temp_wall_(0.0),
       dtemp_wall_(0.0), capacity_wall_(0.0), heat_wall_(0.0), heat_step_(0.0),
@@ -52,6 +53,7 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
 {
     std::memset(&surf_, 0, sizeof surf_);
     std::memset(&loaded_, 0, sizeof loaded_);
+    std::memset(&lig_desc_, 0, sizeof lig_desc_);
     std::memset(&contacts_, 0, sizeof contacts_);
     std::memset(&cands_, 0, sizeof cands_);
     std::memset(&tout_, 0, sizeof tout_);
@@ -126,6 +128,7 @@ FixWallRigid::~FixWallRigid()
     rs_trimesh_free(&vtk_mesh_);
     if (loaded_ok_)
         rs_law_unload(&loaded_);
+    delete lig_;
     if (surf_ok_)
         rs_surface_free(&surf_);
 }
@@ -164,7 +167,11 @@ void FixWallRigid::init()
         fail("run_style respa is not supported; use verlet");
     /* Default tracking: the law's reach (0 for a law of touching contacts), else the
      * neighbor skin. */
-    if (!tracking_given_) {
+    if (lig_)
+        lig_->init();
+    if (!tracking_given_ && lig_) {
+        tracking_ = liggghts_reach();
+    } else if (!tracking_given_) {
         const double *pv = props_.empty() ? NULL : props_.data();
         const double reach = law_->reach ? law_->reach(law_, pv, (int)props_.size()) : -1.0;
         tracking_ = reach >= 0.0 ? reach : neighbor->skin;

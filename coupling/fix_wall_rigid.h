@@ -72,7 +72,7 @@ class FixWallRigid : public Fix
      * wall temperature, 14 heat into the wall. */
     static const int kNout = 14;
     enum AreaMode { AREA_NODE, AREA_PROJECTED, AREA_CONSTANT };
-    enum LawKind { LAW_BUILTIN, LAW_LOADED };
+    enum LawKind { LAW_BUILTIN, LAW_LOADED, LAW_LIGGGHTS };
 
     /* input */
     void parse(int narg, char **arg);
@@ -107,6 +107,8 @@ class FixWallRigid : public Fix
     bool wall_moved_beyond_skin() const;
     void process_block(const int *idx, int n, bool setup_call);
     void law_inputs(const int *idx, int n, int ne, bool setup_call);
+    void liggghts_block(const int *idx, int n, int ne, bool setup_call);
+    double liggghts_reach() const;
     template <int ND, bool LEAVE, bool UNITA>
     void scatter(const int *idx, int n, int ne, bool setup_call);
     void write_vtk();
@@ -199,6 +201,9 @@ class FixWallRigid : public Fix
     std::vector<double> props_;
     bool props_given_;
     bool hertz_, hooke_;
+    /* law liggghts: LIGGGHTS's contact model, and the descriptor law_ points to */
+    class LiggghtsLaw *lig_;
+    rs_law lig_desc_;
     /// Properties per particle type from LIGGGHTS's material properties (hertz or hooke
     /// without props).
     bool material_props() const

@@ -1,6 +1,7 @@
 /* fix wall/rigid: its arguments (docs/fix_wall_rigid.md, "Syntax") and the error
  * messages that name them. */
 #include "fix_wall_rigid.h"
+#include "liggghts_law.h"
 #include "rigidsurf/law_build.h"
 #include "rigidsurf/vec.h"
 
@@ -335,7 +336,29 @@ void FixWallRigid::parse(int narg, char **arg)
 
     /* State variables. */
     const int law_nsv = law_->nstatev;
-    if (law_kind_ == LAW_BUILTIN) {
+    if (law_kind_ == LAW_LIGGGHTS) {
+        /* LIGGGHTS's model: its history, material properties and force; the interface
+         * keywords of stress laws do not apply. */
+        if (statev_given_ && user_statev != law_nsv) {
+            std::ostringstream o;
+            o << "law liggghts " << lig_->description() << " keeps " << law_nsv
+              << " history values per contact; 'statev " << user_statev
+              << "' does not match";
+            fail(o.str());
+        }
+        if (props_given_)
+            fail("law liggghts reads its material properties from fix property/global "
+                 "(youngsModulus, poissonsRatio, ...), as fix wall/gran does; 'props' "
+                 "does not apply");
+        if (area_mode_ != AREA_NODE)
+            fail("law liggghts gives a force, not a stress; 'area' does not apply");
+        if (temp_given_ || !predef_names_.empty())
+            fail("law liggghts conducts no heat and reads no predefined fields; "
+                 "'temperature' and 'predef' apply to the interface laws");
+        if (curvature_given)
+            fail("keyword 'curvature' applies to law hertz only");
+        nstatev_ = law_nsv;
+    } else if (law_kind_ == LAW_BUILTIN) {
         if (statev_given_ && user_statev != law_nsv) {
             std::ostringstream o;
             o << "law '" << law_->name << "' has " << law_nsv
@@ -362,6 +385,8 @@ void FixWallRigid::parse(int narg, char **arg)
     }
 
     /* Properties. */
+    if (law_kind_ == LAW_LIGGGHTS)
+        return;
     if (curvature_given && !hertz_)
         fail("keyword 'curvature' applies to law hertz only");
     if (hertz_) {
@@ -590,6 +615,19 @@ int FixWallRigid::parse_law(int narg, char **arg, int iarg)
         return NULL;
     };
     int rc = RS_OK;
+    if (law_name_ == "liggghts") {
+        /* LIGGGHTS's own words, up to the next keyword of wall/rigid */
+        std::vector<std::string> words;
+        while (iarg < narg && !is_keyword(arg[iarg]))
+            words.push_back(arg[iarg++]);
+        lig_ = new LiggghtsLaw(lmp, id, words);
+        lig_desc_.name = "liggghts";
+        lig_desc_.nprops = 0;
+        lig_desc_.nstatev = lig_->nhistory();
+        law_ = &lig_desc_;
+        law_kind_ = LAW_LIGGGHTS;
+        return iarg;
+    }
     if (law_name_ == "user") {
         const char *lib = lib_arg("a shared library and a symbol: user LIB.so SYMBOL");
         const char *sym = lib_arg("a symbol after the library: user LIB.so SYMBOL");

@@ -147,6 +147,18 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     }
     /* Stress of the previous increment in this increment's basis, and the law state. */
     rs_track_load(&tracker_, &tout_, cb_.stress, ns ? cb_.statev : NULL);
+    if (lig_) {
+        liggghts_block(idx, n, ne, setup_call);
+        if (facets_)
+            facet_pass(idx, ne, setup_call);
+        if (setup_call) {
+            for (int k = 0; k < n; k++)
+                unpack_atom(idx[k], &saved_rows_[(size_t)k * as]);
+            return;
+        }
+        rs_track_commit(&tracker_, &tout_, cb_.stress, ns ? cb_.statev : NULL);
+        return;
+    }
     law_inputs(idx, n, ne, setup_call);
 
     /* The law, in slices of at most RS_BLOCK contacts. */
