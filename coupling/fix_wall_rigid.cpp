@@ -143,6 +143,8 @@ int FixWallRigid::setmask()
     mask |= POST_FORCE;
     if (moving_)
         mask |= INITIAL_INTEGRATE;
+    if (servo_.on)
+        mask |= FINAL_INTEGRATE;
     if (vtk_every_ > 0)
         mask |= END_OF_STEP;
     return mask;
@@ -200,13 +202,15 @@ void FixWallRigid::init()
     bool translates = !var_vel_[0].empty() || !var_vel_[1].empty() || !var_vel_[2].empty();
     for (int d = 0; d < 3; d++)
         translates = translates || motion_.vel[d] != 0.0;
-    const bool still = !moving_ || (spin_invariant_ && !translates);
+    const bool still = !moving_ || (spin_invariant_ && !translates && !servo_.on);
     bounds_ok_ = still && !rs_surface_has_candidates(&surf_);
     list_bounds_ = still && rs_surface_has_candidates(&surf_);
     lookahead_ = bounds_ok_ ? neighbor->skin : 0.0;
     if (material_props())
         init_material_props();
     init_variables();
+    if (servo_.on)
+        init_servo();
     init_heat();
     init_predef();
     if (vtk_every_ > 0 && !vtk_mesh_ok_)

@@ -44,6 +44,7 @@ class FixWallRigid : public Fix
     void pre_neighbor();
     void post_force(int);
     void end_of_step();
+    void final_integrate();
     void post_run();
 
     double compute_vector(int);
@@ -222,6 +223,24 @@ class FixWallRigid : public Fix
     AreaMode area_mode_;
     double area_const_;
     rs_tracker tracker_;
+
+    /* servo: the wall's rate set so that its force (torque) along an axis reaches a
+     * target, with LIGGGHTS's mesh/surface/stress/servo controller
+     * (fix_wall_rigid_servo.cpp) */
+    struct Servo {
+        bool on = false, torque = false, auto_mode = false;
+        double com[3] = {0.0, 0.0, 0.0}, axis[3] = {0.0, 0.0, 1.0};
+        double target = 0.0; // target_val
+        std::string target_var;
+        int ivar = -1;
+        double vmax = 0.0, kp = 1e-2, ki = 0.0, kd = 0.0, ratio = 0.0;
+        double sp = 0.0;                   // set point: -target
+        double op_max = 0.0, op_min = 0.0; // largest rate; the auto mode's slow rate
+        double sum_err = 0.0, old_pv = 0.0;
+    } servo_;
+    int parse_servo(int narg, char **arg, int iarg);
+    void init_servo();
+    double servo_reach();
 
     /* heat */
     bool temp_given_;

@@ -108,7 +108,8 @@ bool FixWallRigid::is_keyword(const char *s) const
     static const char *const kw[] = {
         "surface",  "name", "law",       "props",  "type",        "statev",
         "tracking", "area", "contacts",  "move",   "rotate",      "temperature",
-        "predef",   "vtk",  "curvature", "pnewdt", "surface_vel", "wear"};
+        "predef",   "vtk",  "curvature", "pnewdt", "surface_vel", "wear",
+        "servo"};
     for (const char *k : kw)
         if (std::strcmp(s, k) == 0)
             return true;
@@ -223,7 +224,15 @@ void FixWallRigid::parse(int narg, char **arg)
                 fail(o.str());
             }
             iarg += 2;
+        } else if (std::strcmp(kw, "servo") == 0) {
+            if (moving_ || servo_.on)
+                fail("keyword 'servo' moves the wall itself; it takes no 'move' or "
+                     "'rotate' and is given once");
+            iarg = parse_servo(narg, arg, iarg + 1);
         } else if (std::strcmp(kw, "move") == 0 || std::strcmp(kw, "rotate") == 0) {
+            if (servo_.on)
+                fail("keyword 'servo' moves the wall itself; it takes no 'move' or "
+                     "'rotate'");
             iarg = parse_motion(narg, arg, iarg);
         } else if (std::strcmp(kw, "wear") == 0) {
             need(1, "'finnie' or 'off'");
@@ -302,8 +311,8 @@ void FixWallRigid::parse(int narg, char **arg)
             fail(
                 std::string("unknown keyword '") + kw +
                 "'; expected surface, name, law, props, type, statev, tracking, area, "
-                "contacts, move, rotate, surface_vel, temperature, predef, vtk, curvature, "
-                "wear or pnewdt");
+                "contacts, move, rotate, servo, surface_vel, temperature, predef, vtk, "
+                "curvature, wear or pnewdt");
         }
     }
 

@@ -19,10 +19,11 @@ namespace
 {
 
 /* Restart layout version (global record). */
-/* 4: a slot ends with the contact's sed, fluxSlv and fluxMst; 3: each atom's record
+/* 6: the record ends with the servo's controller state (integral of the error, last
+ * process value); 4: a slot ends with the contact's sed, fluxSlv and fluxMst; 3: each atom's record
  * starts with the capacity it was written with (the capacity grows during a run); 2:
  * directory in the row, slots after it */
-const double kRestartVersion = 5.0;
+const double kRestartVersion = 6.0;
 
 } // namespace
 
@@ -99,11 +100,13 @@ void FixWallRigid::write_restart(FILE *fp)
     wear[0] = nwear;
     if (nwear)
         MPI_Allreduce(wear_el_.data(), wear.data() + 1, nwear, MPI_DOUBLE, MPI_SUM, world);
+    const double servo[2] = {servo_.sum_err, servo_.old_pv};
     if (comm->me == 0) {
-        int size = (RST_COUNT + 1 + nwear) * sizeof(double);
+        int size = (RST_COUNT + 1 + nwear + 2) * sizeof(double);
         std::fwrite(&size, sizeof(int), 1, fp);
         std::fwrite(list, sizeof(double), RST_COUNT, fp);
         std::fwrite(wear.data(), sizeof(double), (size_t)nwear + 1, fp);
+        std::fwrite(servo, sizeof(double), 2, fp);
     }
 }
 
@@ -170,6 +173,15 @@ void FixWallRigid::restart(char *buf)
         if (root)
             for (int k = 0; k < nf; k++)
                 wear_el_[k] = list[RST_COUNT + 1 + k];
+    }
+    /* the servo's controller and the rate it set (the same on every rank) */
+    const double *servo = list + RST_COUNT + 1 + std::max(nwear, 0);
+    if (servo_.on) {
+        servo_.sum_err = servo[0];
+        servo_.old_pv = servo[1];
+        for (int d = 0; d < 3; d++)
+            motion_.vel[d] = list[RST_VEL + d];
+        motion_.omega = list[RST_OMEGA];
     }
 }
 
