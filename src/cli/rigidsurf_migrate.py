@@ -9,8 +9,10 @@ Rewrites the walls of a LIGGGHTS deck into `fix wall/rigid` (docs/migration.md):
   `mesh/surface/stress`, `mesh/surface/planar`) lines becomes one `fix wall/rigid` per
   mesh, each with the ID of its mesh fix, at the place of the `wall/gran` line; the
   mesh lines go;
-- `fix move/mesh` (linear, linear/variable, rotate, rotate/variable) and the `unfix`
-  of it become `variable` lines that set the wall's rates (`v_rs_MESH_vx` ...);
+- `fix move/mesh` (linear, linear/variable, wiggle, viblin, rotate, rotate/variable,
+  riggle, vibrot) and the `unfix` of it become `variable` lines that set the wall's
+  rates (`v_rs_MESH_vx` ...; rigidsurf_migrate_motion.py);
+- `shear` of a primitive wall along a plane or a cylinder's axis becomes `surface_vel`;
 - `dump mesh/gran/VTK` of one migrated mesh becomes the wall's `vtk FILE N`.
 
 Every other line is copied byte for byte, comments included. What the tool cannot

@@ -20,8 +20,8 @@ the steps' dt; the migrated wall moves by its rate variable evaluated at the sam
 v(time - t0) dt, the same formula, time - t0 = k dt equal to that sum to rounding
 (k eps t), so the two walls' displacements agree to the rounding of their sums: each
 of the MOVE = 10^4 steps rounds the plate's coordinates (0.1 m) by eps, 2e-17 m, so
-2e-13 m at the end, 4e-11 of R. The plate is a plane in both (two flat triangles; no facetting of a curved
-surface), and a static mesh wall of wall/rigid equals LIGGGHTS's to 1e-9 relative
+2e-13 m at the end, 4e-11 of R. The plate is a plane in both (two flat triangles; no
+facetting of a curved surface), and a static mesh wall of wall/rigid equals LIGGGHTS's to 1e-9 relative
 (test_mesh_wall). A sphere riding on the plate follows a wall-position error delta
 with its contact spring, so its own error is of the order of delta plus the contact
 model's 1e-9 relative: TOL = 1e-8 relative (positions against R, velocities against
