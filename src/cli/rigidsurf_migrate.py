@@ -9,8 +9,10 @@ Rewrites the walls of a LIGGGHTS deck into `fix wall/rigid` (docs/migration.md):
   `mesh/surface/stress`, `mesh/surface/planar`) lines becomes one `fix wall/rigid` per
   mesh, each with the ID of its mesh fix, at the place of the `wall/gran` line; the
   mesh lines go;
-- `fix move/mesh` (linear, linear/variable, rotate, rotate/variable) and the `unfix`
-  of it become `variable` lines that set the wall's rates (`v_rs_MESH_vx` ...);
+- `fix move/mesh` (linear, linear/variable, wiggle, viblin, rotate, rotate/variable,
+  riggle, vibrot) and the `unfix` of it become `variable` lines that set the wall's
+  rates (`v_rs_MESH_vx` ...; rigidsurf_migrate_motion.py);
+- `shear` of a primitive wall along a plane or a cylinder's axis becomes `surface_vel`;
 - `dump mesh/gran/VTK` of one migrated mesh becomes the wall's `vtk FILE N`.
 
 Every other line is copied byte for byte, comments included. What the tool cannot
@@ -19,8 +21,15 @@ translate it keeps as written and says so on stderr, with the line number. Exit 
 to a wall could not be kept), 2 on a usage or read error.
 """
 import math
+import os
 import re
 import sys
+
+# The motion module lies beside this file (source and build trees) or, installed, in
+# share/rigidsurf.
+_HERE = os.path.dirname(os.path.realpath(__file__))
+sys.path[:0] = [_HERE, os.path.join(_HERE, "..", "share", "rigidsurf")]
+import rigidsurf_migrate_motion as motion  # noqa: E402
 
 EXIT_KEPT = 3
 LAWS = {"hertz": "hertz", "hooke": "hooke"}
@@ -166,6 +175,28 @@ def compose_placement(ops):
     ex = [R[i][0] for i in range(3)]
     ey = [R[i][1] for i in range(3)]
     return s, t, [a + e for a, e in zip(t, ex)], [a + e for a, e in zip(t, ey)]
+
+
+# ---- primitive walls ------------------------------------------------------------------
+
+def shear(shape, dim, v):
+    """wall/gran's `shear DIM V` of a primitive wall as wall/rigid's surface_vel, or why
+    not. LIGGGHTS (fix_wall_gran.cpp) gives every contact the wall velocity V along DIM
+    when DIM is the cylinder's axis or the wall is a plane (the wall does not move, its
+    material slides); along a plane's tangent, or a cylinder's axis, that is surface_vel
+    V e_DIM. Along a plane's normal it is a velocity into the wall, and for a cylinder
+    with DIM across its axis LIGGGHTS turns it into (V e_axis) x r of the particle's
+    centre: neither has a wall/rigid counterpart."""
+    if dim not in ("x", "y", "z") or shape is None:
+        return ("wall/gran keyword 'shear %s' has no wall/rigid counterpart (it needs a "
+                "primitive wall and x, y or z)" % dim)
+    if shape.endswith("plane") and shape[0] == dim:
+        return ("shear %s of %s is a velocity along the plane's normal: wall/rigid's "
+                "surface_vel slides in the tangent plane only" % (dim, shape))
+    if shape.endswith("cylinder") and shape[0] != dim:
+        return ("shear %s of %s is LIGGGHTS's spin (%s e_%s) x r about the axis, at the "
+                "particle's centre: wall/rigid has no counterpart" % (dim, shape, v, shape[0]))
+    return [v if d == dim else "0" for d in "xyz"]
 
 
 # ---- the tool ------------------------------------------------------------------------
@@ -334,6 +365,13 @@ class Migration:
                     wall["reasons"].append("its temperature conducts heat under fix "
                                            "heat/gran; law hertz and hooke exchange no heat")
                 k += 2
+            elif key == "shear" and k + 2 < len(rest):
+                vel = shear(wall.get("shape"), rest[k + 1], rest[k + 2])
+                if isinstance(vel, str):
+                    wall["reasons"].append(vel)
+                else:
+                    opts["surface_vel"] = vel
+                k += 3
             elif key in ("store_force", "store_force_contact", "store_force_contact_stress") \
                     and k + 1 < len(rest) and rest[k + 1] == "no":
                 k += 2
@@ -376,121 +414,8 @@ class Migration:
 
     # -- pass 2: motion, in deck order -------------------------------------------------
     def motion(self):
-        """Follows every fix move/mesh of the meshes in deck order: which rates each sets
-        and unsets, and the displacement a later rotation's origin needs."""
-        num, dt, step = Numbers(), None, 0.0
-        st = {mid: dict(active={}, wall=False, D=[0.0, 0.0, 0.0], rot=None, lin_used=False,
-                        lin_since_rot=False, assigned=set(), pre_wall=set(), moves=[],
-                        unfixes=[])
-              for mid in self.meshes}
-        self.motion_state = st
-        for i, c in enumerate(self.cmds):
-            w = c.words
-            if not w:
-                continue
-            if w[0] == "variable":
-                num.define(w)
-            elif w[0] == "timestep" and len(w) > 1:
-                dt = num.value(w[1])
-            elif w[0] in FLOW:
-                step = None
-            elif w[0] == "run" and len(w) > 1:
-                n = num.value(w[1])
-                upto = "upto" in w[2:]
-                nsteps = None if n is None or (upto and step is None) else \
-                    (n - step if upto else n)
-                step = None if nsteps is None or step is None else step + nsteps
-                for mid, s in st.items():
-                    if not s["active"]:
-                        continue
-                    m = self.meshes[mid]
-                    if not s["wall"]:
-                        m["reasons"].append("LINE %d runs while it moves and before its wall "
-                                            "exists" % c.lineno)
-                    for kind, vals, _ in s["active"].values():
-                        if kind != "linear":
-                            continue
-                        if nsteps is None or dt is None or None in vals:
-                            s["D"] = None
-                        elif s["D"] is not None:
-                            s["D"] = [d + v * nsteps * dt for d, v in zip(s["D"], vals)]
-            elif w[0] == "unfix" and len(w) > 1:
-                for s in st.values():
-                    if w[1] in s["active"]:
-                        kind = s["active"].pop(w[1])[0]
-                        s["unfixes"].append((i, ["vx", "vy", "vz"] if kind == "linear"
-                                             else ["om"]))
-            elif w[0] == "fix" and len(w) >= 4 and w[3] == "wall/gran" and "mesh" in w:
-                for mid in w[w.index("mesh"):]:
-                    if mid in st:
-                        st[mid]["wall"] = True
-                        st[mid]["pre_wall"] = set(st[mid]["assigned"])
-            elif w[0] == "fix" and len(w) >= 7 and w[3] == "move/mesh" and w[4] == "mesh" \
-                    and w[5] in st:
-                self.move(i, c, num, st[w[5]], self.meshes[w[5]])
-
-    def move(self, i, c, num, s, m):
-        w, style, a = c.words, c.words[6], c.words[7:]
-        fid = w[1]
-        kinds = [k for k, _, _ in s["active"].values()]
-        if style in ("linear", "linear/variable") and len(a) == 3:
-            if style == "linear":
-                rates, vals = a, [num.value(x) for x in a]
-            else:
-                rates = [x if x.startswith("v_") else "v_" + x for x in a]
-                vals = [None] * 3
-            if kinds:
-                m["reasons"].append("LINE %d moves it while another move/mesh does"
-                                    % c.lineno)
-            s["active"][fid] = ("linear", vals, c)
-            s["lin_used"] = True
-            if s["rot"] is not None:
-                s["lin_since_rot"] = True
-            s["moves"].append((i, dict(zip(("vx", "vy", "vz"), rates))))
-            s["assigned"] |= {"vx", "vy", "vz"}
-            return
-        if style in ("rotate", "rotate/variable"):
-            ok = len(a) == 10 and a[0] == "origin" and a[4] == "axis" and \
-                a[8] == ("period" if style == "rotate" else "omega")
-            if not ok:
-                m["reasons"].append("LINE %d: move/mesh %s arguments not understood"
-                                    % (c.lineno, style))
-                return
-            if kinds:
-                m["reasons"].append("LINE %d turns it while another move/mesh moves it"
-                                    % c.lineno)
-            origin, axis = [num.value(x) for x in a[1:4]], [num.value(x) for x in a[5:8]]
-            if s["rot"] is None:
-                if s["lin_used"]:
-                    if s["D"] is None or None in origin:
-                        m["reasons"].append(
-                            "LINE %d turns it about a point after a translation the tool "
-                            "cannot compute (it needs the steps run and the rates)"
-                            % c.lineno)
-                        return
-                    o = [fmt(p - d) for p, d in zip(origin, s["D"])]
-                else:
-                    o = a[1:4]
-                s["rot"] = (o, a[5:8], origin, axis)
-            elif s["lin_since_rot"] or origin != s["rot"][2] or axis != s["rot"][3] \
-                    or None in origin + axis:
-                m["reasons"].append("LINE %d turns it about another axis, or after it moved "
-                                    "on since its first rotation: one wall/rigid has one "
-                                    "rotation axis fixed in it" % c.lineno)
-            if style == "rotate":
-                rate = "2*PI/(%s)" % a[9]
-            else:
-                rate = a[9] if a[9].startswith("v_") else "v_" + a[9]
-            s["active"][fid] = ("rotate", None, c)
-            s["moves"].append((i, {"om": rate}))
-            s["assigned"] |= {"om"}
-            return
-        if style in ("linear", "linear/variable"):
-            m["reasons"].append("LINE %d: move/mesh %s arguments not understood"
-                                % (c.lineno, style))
-        else:
-            m["reasons"].append("LINE %d: move/mesh %s has no wall/rigid motion yet"
-                                % (c.lineno, style))
+        """Every fix move/mesh of the meshes, in deck order (rigidsurf_migrate_motion)."""
+        motion.follow(self, Numbers, FLOW, fmt)
 
     # -- pass 3: who else names a mesh or a wall ----------------------------------------
     def uses(self):
@@ -619,12 +544,7 @@ class Migration:
                 m = self.meshes[mid]
                 self.out[m["index"]] = []
                 lines += self.mesh_wall(wall, m)
-                s = self.motion_state[mid]
-                for i, rates in s["moves"]:
-                    self.out[i] = ["variable rs_%s_%s equal %s" % (mid, k, v)
-                                   for k, v in rates.items()]
-                for i, kind in s["unfixes"]:
-                    self.out[i] = ["variable rs_%s_%s equal 0" % (mid, k) for k in kind]
+                self.out.update(self.motion_state[mid]["lines"])
             self.out[wall["index"]] = lines
             for i, c in enumerate(self.cmds):
                 if c.words[:2] == ["unfix", wall["id"]]:

@@ -170,12 +170,12 @@ check("the mesh wall takes its mesh's ID and placement, and the motion as rates"
 BAD = """region reg block 0 1 0 1 0 1 units box
 create_box 1 reg
 fix w1 all wall/gran model hertz tangential history rolling_friction cdt primitive type 1 zplane 0
-fix w2 all wall/gran model hertz tangential history primitive type 1 zplane 1 shear x 1.0
+fix w2 all wall/gran model hertz tangential history primitive type 1 zplane 1 shear z 1.0
 fix s1 all mesh/surface/stress/servo file a.stl type 1 com 0 0 0 ctrlPV force axis 0 0 1 target_val 10 vel_max 1
 fix w3 all wall/gran model hertz tangential history mesh n_meshes 1 meshes s1
 fix m2 all mesh/surface/stress file b.stl type 1
 fix w4 all wall/gran model hooke tangential history mesh n_meshes 1 meshes m2
-fix wig all move/mesh mesh m2 wiggle amplitude 0.1 0 0 period 0.1
+fix wig all move/mesh mesh m2 vibrot origin 0 0 0 axis 0 0 1 order 2 amplitude 0.1 phase 0 period 0.1
 fix ok all wall/gran model hertz tangential history primitive type 1 xcylinder 0.5 0.5 0.5
 fix f all ave/time 1 1 1 f_w1
 """
@@ -191,10 +191,12 @@ check("the rolling-friction wall is reported with its model words and kept as wr
       "LINE 3: fix w1: model words 'model hertz tangential history rolling_friction cdt' "
       "have no wall/rigid law yet" in err and "LINE 3: fix w1: the wall is kept as "
       "LIGGGHTS's" in err and lines[2] + "\n" in out, err)
-check("shear, the servo and wiggle are reported and their walls kept",
-      "LINE 4: fix w2: wall/gran keyword 'shear x'" in err and "LINE 6: fix w3:" in err and
+check("shear along a plane's normal, the servo and a vibrot it cannot read are reported "
+      "and their walls kept",
+      "LINE 4: fix w2: shear z of zplane is a velocity along the plane's normal" in err and
+      "LINE 6: fix w3:" in err and
       "mesh/surface/stress/servo" in err and "LINE 8: fix w4: mesh m2 (LINE 7): LINE 9: "
-      "move/mesh wiggle has no wall/rigid motion yet" in err and
+      "move/mesh vibrot arguments not understood" in err and
       all(l + "\n" in out for l in lines[3:9]), err)
 check("the other wall is translated, the rest kept", "fix ok all wall/rigid surface inline "
       "revolution origin 0 0.5 0.5 axis 1 0 0" in out.replace(" &\n    ", " ") and
@@ -217,6 +219,158 @@ check("a line it cannot read is kept and reported", rc == 3 and out == "fix a al
       "model hertz\n" and "LINE 1: fix a:" in err, err)
 rc, out, err = run("")
 check("an empty deck: exit 0, nothing out", rc == 0 and out == "", err)
+
+# ---- oscillating move/mesh: the rates against LIGGGHTS's mesh movers ---------------------
+# LIGGGHTS's mesh velocities (src/mesh_mover_linear.cpp, mesh_mover_rotation.cpp) at
+# dTAbs, the time since the move fix was made; a rotation's in rad/time about the unit
+# axis.
+def lig_wiggle(amp, period, t):
+    w = 2 * math.pi / period
+    return [a * w * math.cos(w * t) for a in amp]
+
+
+def lig_vib(amps, phases, periods, t):
+    return -sum(a * (2 * math.pi / p) * math.sin(2 * math.pi / p * t + f)
+                for a, f, p in zip(amps, phases, periods))
+
+
+def lig_viblin(axis, amps, phases, periods, t):
+    n = math.sqrt(sum(x * x for x in axis))
+    return [x / n * lig_vib(amps, phases, periods, t) for x in axis]
+
+
+def lig_riggle(period, amp_deg, t):
+    w = 2 * math.pi / period
+    return math.radians(amp_deg) * w * math.cos(w * t)
+
+
+DT, T_A = 1e-4, 500
+OSC = """region reg block -1 1 -1 1 -1 1 units box
+create_box 1 reg
+timestep 1e-4
+fix m all mesh/surface file p.stl type 1
+fix w all wall/gran model hertz tangential history mesh n_meshes 1 meshes m
+run 500
+fix a all move/mesh mesh m wiggle amplitude 0.1 -0.2 0 period 0.3
+fix b all move/mesh mesh m viblin axis 1 2 2 order 2 amplitude 0.01 0.02 phase 0.5 -1 period 0.1 0.07
+run 1000
+unfix a
+run 100
+unfix b
+fix r all move/mesh mesh m riggle origin 0.1 0.2 0.3 axis 0 0 1 period 0.2 amplitude 5
+run 100
+unfix r
+fix r2 all move/mesh mesh m vibrot origin 0.1 0.2 0.3 axis 0 0 1 order 2 amplitude 0.1 0.05 phase 0.3 0 period 0.2 0.1
+run 100
+"""
+WIG = ((0.1, -0.2, 0.0), 0.3)
+VIB = ((1, 2, 2), (0.01, 0.02), (0.5, -1), (0.1, 0.07))
+VROT = ((0.1, 0.05), (0.3, 0), (0.2, 0.1))
+# the motions of each run: (t0 of each active fix, as a function of the step)
+RUNS = [
+    (500, lambda st: ([0, 0, 0], 0.0)),
+    (1000, lambda st: ([x + y for x, y in zip(lig_wiggle(*WIG, (st - 500) * DT),
+                                               lig_viblin(*VIB, (st - 500) * DT))], 0.0)),
+    (100, lambda st: (lig_viblin(*VIB, (st - 500) * DT), 0.0)),
+    (100, lambda st: ([0, 0, 0], lig_riggle(0.2, 5, (st - 1600) * DT))),
+    (100, lambda st: ([0, 0, 0], lig_vib(*VROT, (st - 1700) * DT))),
+]
+
+
+def evaluate(expr, env, time):
+    """An equal-style formula of the migrated deck (numbers, PI, time, v_ names, + - * /
+    ^, sin, cos) as LIGGGHTS computes it."""
+    t = re.sub(r"\bv_(\w+)", lambda m: "(%r)" % evaluate(env[m.group(1)], env, time), expr)
+    t = t.replace("PI", "pi").replace("^", "**")
+    return eval(t, {"__builtins__": {}}, {"pi": math.pi, "time": time, "sin": math.sin,
+                                          "cos": math.cos, "sqrt": math.sqrt})
+
+
+rc, out, err = run(OSC)
+check("wiggle, viblin, riggle and vibrot translate: exit 0", rc == 0, err)
+flat = out.replace(" &\n    ", " ")
+env, step, worst, snaps = {}, 0, 0.0, 0
+for line in flat.splitlines():
+    w = line.split()
+    if w[:1] == ["variable"] and w[2] == "equal":
+        # $(time) is the time where the line stands, as LIGGGHTS substitutes it
+        env[w[1]] = " ".join(w[3:]).replace("$(time)", repr(step * DT))
+    elif w[:1] == ["run"]:
+        n, want = RUNS[snaps]
+        for st in range(step + 1, step + int(w[1]) + 1, 7):
+            v, om = want(st)
+            got = [evaluate("v_rs_m_%s" % k, env, st * DT) for k in ("vx", "vy", "vz")]
+            got_om = evaluate("v_rs_m_om", env, st * DT)
+            worst = max([worst, abs(got_om - om)] + [abs(p - q) for p, q in zip(got, v)])
+        step += int(w[1])
+        snaps += 1
+check("each run's rates are LIGGGHTS's mesh velocities at the time since each move fix "
+      "was made (superposed wiggle + viblin, then viblin, riggle, vibrot; every 7th step)",
+      snaps == len(RUNS) and worst < 1e-12, "%d runs, worst %.3g" % (snaps, worst))
+check("the time origins are set where the move fixes stand",
+      [l for l in flat.splitlines() if l.endswith("$(time)")] ==
+      ["variable rs_%s_t0 equal $(time)" % f for f in ("a", "b", "r", "r2")] and
+      flat.index("rs_b_t0") > flat.index("rs_a_t0") > flat.index("\nrun 500"), flat)
+# the rotation's origin: LIGGGHTS's fixed point, less the translation so far, summed as
+# LIGGGHTS moves the mesh (v(k dt) dt at the k-th step)
+D = [0.0, 0.0, 0.0]
+for k in range(1, 1101):
+    v = lig_viblin(*VIB, k * DT)
+    if k <= 1000:
+        v = [x + y for x, y in zip(v, lig_wiggle(*WIG, k * DT))]
+    D = [d + x * DT for d, x in zip(D, v)]
+mo = re.search(r"rotate origin (\S+) (\S+) (\S+) axis 0 0 1 omega v_rs_m_om", flat)
+check("riggle and vibrot turn the wall about LIGGGHTS's fixed point less the translation "
+      "before them", mo is not None and
+      close([float(x) for x in mo.groups()], [p - d for p, d in zip((0.1, 0.2, 0.3), D)],
+            1e-10), "%s vs %r" % (mo and mo.groups(), [p - d for p, d in
+                                                        zip((0.1, 0.2, 0.3), D)]))
+
+# what one wall/rigid cannot do: said with the line, the wall kept
+CANNOT = {
+    "a rotation while a translation runs":
+    ("fix a all move/mesh mesh m wiggle amplitude 0 0 0.1 period 0.3\n"
+     "fix r all move/mesh mesh m riggle origin 0 0 0 axis 0 0 1 period 0.2 amplitude 5\n",
+     "LINE 8 turns it while another move/mesh moves or turns it"),
+    "a translation while a rotation runs":
+    ("fix r all move/mesh mesh m riggle origin 0 0 0 axis 0 0 1 period 0.2 amplitude 5\n"
+     "fix a all move/mesh mesh m linear 0 0 1\n",
+     "LINE 8 moves it while another move/mesh turns it"),
+    "two rotation axes":
+    ("fix r all move/mesh mesh m riggle origin 0 0 0 axis 0 0 1 period 0.2 amplitude 5\n"
+     "run 10\nunfix r\n"
+     "fix r2 all move/mesh mesh m vibrot origin 0 0 0 axis 1 0 0 order 1 amplitude 0.1 "
+     "phase 0 period 0.2\n", "LINE 10 turns it about another axis"),
+    "the time origin in a restart file":
+    ("read_restart a.restart\n"
+     "fix a all move/mesh mesh m wiggle amplitude 0 0 0.1 period 0.3\n",
+     "LINE 8: move/mesh wiggle after read_restart (LINE 7)"),
+    "a viblin without its periods":
+    ("fix a all move/mesh mesh m viblin axis 0 0 1 order 2 amplitude 0.1 0.2 phase 0 0\n",
+     "LINE 7: move/mesh viblin arguments not understood"),
+}
+head = "\n".join(OSC.splitlines()[:6]) + "\n"
+for name, (tail, want) in CANNOT.items():
+    deck = head + tail + "run 10\n"
+    rc, out, err = run(deck)
+    check("reported: " + name, rc == 3 and "LINE 5: fix w: mesh m (LINE 4): " + want in err
+          and "LINE 5: fix w: the wall is kept as LIGGGHTS's" in err and out == deck, err)
+
+# wall/gran shear of primitive walls: in the tangent plane it is surface_vel
+SHEAR = {"zplane 0 shear x 0.5": "surface_vel 0.5 0 0",
+         "xplane 0 shear y -1": "surface_vel 0 -1 0",
+         "zcylinder 0.5 0 0 shear z 2": "surface_vel 0 0 2",
+         "zplane 0 shear z 0.5": "shear z of zplane is a velocity along the plane's normal",
+         "zcylinder 0.5 0 0 shear x 2": "shear x of zcylinder is LIGGGHTS's spin"}
+for args, want in SHEAR.items():
+    deck = "fix w all wall/gran model hertz tangential history primitive type 1 %s\n" % args
+    rc, out, err = run(deck)
+    if want.startswith("surface_vel"):
+        check("shear: %s is %s" % (args, want), rc == 0 and want in out.replace(" &\n    ", " "),
+              out + err)
+    else:
+        check("shear: %s is reported, the wall kept" % args,
+              rc == 3 and "LINE 1: fix w: " + want in err and out == deck, err)
 
 # ---- the output shown in docs/migration.md is the tool's ---------------------------------
 TUT = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public"

@@ -309,6 +309,17 @@ def check_layout(ck, a, prefix):
         p = subprocess.run([path, "--help"], capture_output=True, text=True, env=clean_env())
         ck.check("rigidsurf-migrate runs and prints its usage",
                  p.returncode == 2 and "usage: rigidsurf-migrate" in p.stderr, p.stderr)
+        # a motion, through the module installed in share/rigidsurf
+        deck = os.path.join(os.path.dirname(os.path.normpath(prefix)), "in.wiggle")
+        with open(deck, "w") as f:
+            f.write("fix p all mesh/surface file p.stl type 1\n"
+                    "fix w all wall/gran model hertz tangential history mesh n_meshes 1 "
+                    "meshes p\n"
+                    "fix s all move/mesh mesh p wiggle amplitude 0 0 1e-3 period 0.1\n")
+        p = subprocess.run([path, deck], capture_output=True, text=True, env=clean_env())
+        ck.check("rigidsurf-migrate translates a move/mesh wiggle (its module installed)",
+                 p.returncode == 0 and "variable rs_s_t0 equal $(time)" in p.stdout,
+                 p.stderr)
     for prog in ("liggghts-rigidsurf", "rigidsurf-frames", "rigidsurf-build-law"):
         path = os.path.join(binp, prog)
         if not ck.check("installed %s/%s" % (a.bindir, prog), os.access(path, os.X_OK)):
