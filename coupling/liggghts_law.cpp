@@ -61,6 +61,15 @@ LiggghtsLaw::LiggghtsLaw(LAMMPS *lmp, const std::string &fix_id,
         store[k].push_back('\0');
         argv.push_back(store[k].data());
     }
+    /* A surface model other than the default reads what only LIGGGHTS's own walls keep:
+     * multicontact the expanded radii of fix multicontact/halfspace, superquadric the
+     * particles' shapes. */
+    for (size_t k = 0; k + 1 < words.size(); k++)
+        if (words[k] == "surface" && words[k + 1] != "default")
+            lmp->error->all(FLERR, (where + "'surface " + words[k + 1] +
+                                    "' needs LIGGGHTS's own walls (fix wall/gran); law "
+                                    "liggghts takes the default surface model")
+                                       .c_str());
     if (words.empty() || words[0] != "model")
         lmp->error->all(FLERR, (where + "expects LIGGGHTS's model words, 'model NORMAL "
                                         "[tangential T] [cohesion C] [rolling_friction R] "

@@ -33,6 +33,11 @@ import rigidsurf_migrate_motion as motion  # noqa: E402
 
 EXIT_KEPT = 3
 LAWS = {"hertz": "hertz", "hooke": "hooke"}
+# fix wall/gran's own keywords after the wall style (not contact-model settings)
+WALL_KEYWORDS = ("temperature", "shear", "store_force", "store_force_contact",
+                 "store_force_contact_every", "store_force_contact_stress",
+                 "contact_area", "track_energy", "compute_wall_gran_local",
+                 "sum_normal_force", "primitive", "mesh", "type", "n_meshes", "meshes")
 MESH_STYLES = ("mesh/surface", "mesh/surface/stress", "mesh/surface/planar")
 MESH_FILE_EXT = (".stl", ".obj", ".off", ".ply")
 HEAT_FIXES = re.compile(r"^heat/gran")
@@ -333,14 +338,23 @@ class Migration:
             wall["reasons"].append("the old wall/gran arguments ('%s ...') have no wall/rigid "
                                    "law yet" % " ".join(w[4:8]))
         else:
-            ok = words.get("tangential", "history") == "history" and \
+            plain = words.get("tangential", "history") == "history" and \
                 words.get("cohesion", "off") == "off" and \
                 words.get("rolling_friction", "off") == "off" and \
                 words.get("surface", "default") == "default"
-            law = LAWS.get(words.get("model", "hertz")) if ok else None
-            if law is None:
-                wall["reasons"].append("model words '%s' have no wall/rigid law yet"
-                                       % " ".join(model))
+            law = LAWS.get(words.get("model", "hertz")) if plain else None
+            surface = words.get("surface", "default")
+            if surface != "default":
+                wall["reasons"].append(
+                    "model words '%s': surface %s needs LIGGGHTS's own wall (%s); law "
+                    "liggghts takes the default surface model only" % (
+                        " ".join(model), surface,
+                        "the expanded radii of fix multicontact/halfspace"
+                        if surface == "multicontact" else "superquadric particles"))
+            elif law is None:
+                # any other combination: LIGGGHTS's own model through law liggghts
+                law = " ".join(["liggghts"] + (model if "model" in words
+                                                else ["model", "hertz"] + model))
         wall["law"] = law
         rest = w[k:]
         if rest[:1] == ["primitive"]:
@@ -374,6 +388,14 @@ class Migration:
                 k += 3
             elif key in ("store_force", "store_force_contact", "store_force_contact_stress") \
                     and k + 1 < len(rest) and rest[k + 1] == "no":
+                k += 2
+            elif k + 1 < len(rest) and wall["law"] and rest[k] not in WALL_KEYWORDS:
+                # a setting of the contact model (tangential_damping off, limitForce on,
+                # ...): LIGGGHTS's model takes it through law liggghts
+                law = wall["law"]
+                if not law.startswith("liggghts"):
+                    law = "liggghts model %s tangential history" % law
+                wall["law"] = law + " " + " ".join(rest[k:k + 2])
                 k += 2
             else:
                 wall["reasons"].append("wall/gran keyword '%s' has no wall/rigid counterpart "
@@ -490,7 +512,7 @@ class Migration:
             surf = (["revolution", "origin"] + origin + ["axis"] + axis +
                     ["sides", "2", "profile", "START", R, mL, "LINE", R, L, "end"])
         words = ["fix", wall["id"], wall["group"], "wall/rigid", "surface", "inline"] + \
-            surf + ["law", wall["law"], "type", wall["type"]]
+            surf + ["law"] + wall["law"].split() + ["type", wall["type"]]
         for key, vals in wall["opts"].items():
             words += [key] + vals
         return lines + [wrap(words)]
@@ -505,7 +527,7 @@ class Migration:
         if a is not None and [fmt(x) for x in a + b + c] != \
                 ["0", "0", "0", "1", "0", "0", "0", "1", "0"]:
             words += ["place"] + [fmt(x) for x in a + b + c]
-        words += ["law", wall["law"], "type", m["type"]]
+        words += ["law"] + wall["law"].split() + ["type", m["type"]]
         for key, vals in m["opts"].items():
             words += [key] + vals
         if m["wear"] == "finnie":

@@ -187,10 +187,12 @@ check("every report names its line, and that line is the wall's", reps and all(
     re.match(r"LINE (\d+): fix (\S+): ", l) and
     (" %s " % re.match(r"LINE (\d+): fix (\S+): ", l).group(2)) in
     lines[int(re.match(r"LINE (\d+)", l).group(1)) - 1] for l in reps), err)
-check("the rolling-friction wall is reported with its model words and kept as written",
-      "LINE 3: fix w1: model words 'model hertz tangential history rolling_friction cdt' "
-      "have no wall/rigid law yet" in err and "LINE 3: fix w1: the wall is kept as "
-      "LIGGGHTS's" in err and lines[2] + "\n" in out, err)
+check("the rolling-friction wall becomes law liggghts with its model words",
+      "fix w1 all wall/rigid surface inline cylinder a 0 0 0 b 1 0 0 c 0 -1 0 sides 2 "
+      "profile START" in out.replace(" &\n    ", " ") and
+      "law liggghts model hertz tangential history rolling_friction cdt type 1" in
+      out.replace(" &\n    ", " ") and "LINE 3: fix w1:" not in err and
+      lines[2] + "\n" not in out, out + err)
 check("shear along a plane's normal, the servo and a vibrot it cannot read are reported "
       "and their walls kept",
       "LINE 4: fix w2: shear z of zplane is a velocity along the plane's normal" in err and
@@ -201,8 +203,25 @@ check("shear along a plane's normal, the servo and a vibrot it cannot read are r
 check("the other wall is translated, the rest kept", "fix ok all wall/rigid surface inline "
       "revolution origin 0 0.5 0.5 axis 1 0 0" in out.replace(" &\n    ", " ") and
       lines[10] + "\n" in out, out)
-check("the summary says how many walls", "rigidsurf-migrate: 1 of 5 wall/gran fixes "
+check("the summary says how many walls", "rigidsurf-migrate: 2 of 5 wall/gran fixes "
       "translated" in err, err)
+
+SET = """region reg block 0 1 0 1 0 1 units box
+create_box 1 reg
+fix w all wall/gran model hooke tangential history primitive type 1 zplane 0 tangential_damping off
+fix c all wall/gran model hertz tangential history cohesion sjkr primitive type 1 zplane 1
+fix m all wall/gran model hertz tangential history surface multicontact primitive type 1 zplane 2
+"""
+rc, out, err = run(SET)
+flat = out.replace(" &\n    ", " ")
+check("a model setting turns law hooke into law liggghts with the setting",
+      "law liggghts model hooke tangential history tangential_damping off type 1" in flat,
+      out + err)
+check("cohesion becomes law liggghts", "law liggghts model hertz tangential history "
+      "cohesion sjkr type 1" in flat, out)
+check("a surface model is reported and its wall kept",
+      rc == 3 and "LINE 5: fix m: model words" in err and "surface multicontact needs "
+      "LIGGGHTS's own wall" in err and SET.splitlines()[4] + "\n" in out, err)
 
 REF = """region reg block 0 1 0 1 0 1 units box
 create_box 1 reg

@@ -63,7 +63,7 @@ PARTS = {"beds": ["newModels", "heatTransfer_1", "heatTransfer_2"],
 KEPT = {
     "hydrogel_multicontact": ("hydrogel_multicontact", "in.hydrogel_multicontact",
                               "model words 'model hertz tangential history surface multicontact'"
-                              " have no wall/rigid law yet"),
+                              ": surface multicontact needs LIGGGHTS's own wall"),
 }
 # Decks not run: (folder, deck, why, the report the tool must give or None).
 MONOLAYER = ("a monolayer rolling on the floor without rolling friction: %s, not at rest "
