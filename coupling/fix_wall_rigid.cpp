@@ -95,7 +95,9 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
     extlist = new int[kNout];
     for (int d = 0; d < kNout; d++)
         extlist[d] = 1;
-    extlist[12] = 0; // wall temperature is intensive
+    for (int d = 12; d < kNout; d++)
+        if (d != 13)
+            extlist[d] = 0; // wall temperature, the wall's displacement: intensive
 
     peratom_flag = 1;
     size_peratom_cols = 6;

@@ -70,8 +70,9 @@ class FixWallRigid : public Fix
   private:
     /* Global vector: 1-3 force on the wall, 4-6 moment on the wall about the surface
      * origin, 7 touching contacts, 8 ALLSE, 9 ALLFD, 10 ALLPD, 11 ALLVD, 12 ALLCD, 13
-     * wall temperature, 14 heat into the wall. */
-    static const int kNout = 14;
+     * wall temperature, 14 heat into the wall, 15-17 the wall's translation since the
+     * fix was defined, 18 its rotation angle about the rotation axis. */
+    static const int kNout = 18;
     enum AreaMode { AREA_NODE, AREA_PROJECTED, AREA_CONSTANT };
     enum LawKind { LAW_BUILTIN, LAW_LOADED, LAW_LIGGGHTS };
 

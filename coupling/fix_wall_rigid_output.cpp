@@ -107,6 +107,9 @@ double FixWallRigid::compute_vector(int n)
             out_[d] = all[d];
         out_[12] = temp_wall_;
         out_[13] = all[12];
+        for (int d = 0; d < 3; d++)
+            out_[14 + d] = motion_.disp[d];
+        out_[17] = motion_.phi;
         out_valid_ = true;
         out_step_ = update->ntimestep;
     }
