@@ -38,7 +38,11 @@ WALL_KEYWORDS = ("temperature", "shear", "store_force", "store_force_contact",
                  "store_force_contact_every", "store_force_contact_stress",
                  "contact_area", "track_energy", "compute_wall_gran_local",
                  "sum_normal_force", "primitive", "mesh", "type", "n_meshes", "meshes")
-MESH_STYLES = ("mesh/surface", "mesh/surface/stress", "mesh/surface/planar")
+MESH_STYLES = ("mesh/surface", "mesh/surface/stress", "mesh/surface/planar",
+               "mesh/surface/stress/servo")
+# the servo's words and how many values each takes (LIGGGHTS's mesh module servo)
+SERVO_WORDS = {"com": 3, "ctrlPV": 1, "axis": 3, "target_val": 1, "vel_max": 1, "kp": 1,
+               "ki": 1, "kd": 1, "mode": 1, "ratio": 1}
 MESH_FILE_EXT = (".stl", ".obj", ".off", ".ply")
 HEAT_FIXES = re.compile(r"^heat/gran")
 FLOW = ("jump", "label", "next", "include", "if", "loop")
@@ -291,6 +295,12 @@ class Migration:
                 elif key == "reference_point" and m["stress"]:
                     m["refpoint"] = w[k + 1:k + 4]
                     k += 4
+                elif key in SERVO_WORDS and w[3] == "mesh/surface/stress/servo":
+                    n = SERVO_WORDS[key]
+                    if len(w) < k + 1 + n:
+                        raise IndexError
+                    m.setdefault("servo", []).extend(w[k:k + 1 + n])
+                    k += 1 + n
                 else:
                     m["reasons"].append("mesh/surface keyword '%s' has no wall/rigid "
                                         "counterpart yet" % key)
@@ -534,6 +544,8 @@ class Migration:
             words += ["wear", "finnie"]
         if m.get("vtk"):
             words += ["vtk"] + m["vtk"]
+        if m.get("servo"):
+            words += ["servo"] + m["servo"]
         pre = []
         if s["lin_used"]:
             words += ["move", "linear"] + ["v_rs_%s_%s" % (m["id"], k) for k in ("vx", "vy",
@@ -619,7 +631,19 @@ class Migration:
                         ref0 = m["refpoint"] is None or \
                             all(self.num.value(x) == 0 for x in m["refpoint"])
                         n = int(idx) if idx else 0
-                        if not (1 <= n <= 3 or (4 <= n <= 6 and ref0)):
+                        if m.get("servo"):
+                            sv = m["servo"]
+                            com = sv[sv.index("com") + 1:sv.index("com") + 4]
+                            a = (m.get("placement") or (1.0, [0, 0, 0]))[1] or [0, 0, 0]
+                            # LIGGGHTS's servo gives the torque about com, which moves
+                            # with the wall: the same moment where com is the origin
+                            ref0 = all(self.num.value(x) == float(y)
+                                       for x, y in zip(com, a))
+                        if m.get("servo") and 7 <= n <= 9:
+                            self.report(c, None, "%s: the servo's centre; wall/rigid %s "
+                                        "offers its translation as f_%s[%d] (add com)"
+                                        % (mt.group(0), fid, fid, n + 8))
+                        elif not (1 <= n <= 3 or (4 <= n <= 6 and ref0)):
                             self.report(c, None, "%s: wall/rigid %s offers the force "
                                         "(f_%s[1-3]) and the moment about the mesh's placed "
                                         "origin (f_%s[4-6]) of mesh/surface/stress; this "

@@ -193,17 +193,20 @@ check("the rolling-friction wall becomes law liggghts with its model words",
       "law liggghts model hertz tangential history rolling_friction cdt type 1" in
       out.replace(" &\n    ", " ") and "LINE 3: fix w1:" not in err and
       lines[2] + "\n" not in out, out + err)
-check("shear along a plane's normal, the servo and a vibrot it cannot read are reported "
-      "and their walls kept",
+check("shear along a plane's normal and a vibrot it cannot read are reported and their "
+      "walls kept",
       "LINE 4: fix w2: shear z of zplane is a velocity along the plane's normal" in err and
-      "LINE 6: fix w3:" in err and
-      "mesh/surface/stress/servo" in err and "LINE 8: fix w4: mesh m2 (LINE 7): LINE 9: "
+      "LINE 8: fix w4: mesh m2 (LINE 7): LINE 9: "
       "move/mesh vibrot arguments not understood" in err and
-      all(l + "\n" in out for l in lines[3:9]), err)
+      all(l + "\n" in out for l in [lines[3]] + lines[6:9]), err)
+check("the servo mesh becomes a wall/rigid with the servo's words",
+      "LINE 6: fix w3:" not in err and "fix s1 all wall/rigid surface inline mesh a.stl law "
+      "hertz type 1 servo com 0 0 0 ctrlPV force axis 0 0 1 target_val 10 vel_max 1" in
+      out.replace(" &\n    ", " ") and lines[4] + "\n" not in out, out + err)
 check("the other wall is translated, the rest kept", "fix ok all wall/rigid surface inline "
       "revolution origin 0 0.5 0.5 axis 1 0 0" in out.replace(" &\n    ", " ") and
       lines[10] + "\n" in out, out)
-check("the summary says how many walls", "rigidsurf-migrate: 2 of 5 wall/gran fixes "
+check("the summary says how many walls", "rigidsurf-migrate: 3 of 5 wall/gran fixes "
       "translated" in err, err)
 
 SET = """region reg block 0 1 0 1 0 1 units box
@@ -222,6 +225,20 @@ check("cohesion becomes law liggghts", "law liggghts model hertz tangential hist
 check("a surface model is reported and its wall kept",
       rc == 3 and "LINE 5: fix m: model words" in err and "surface multicontact needs "
       "LIGGGHTS's own wall" in err and SET.splitlines()[4] + "\n" in out, err)
+
+SERVO = """region reg block 0 1 0 1 0 1 units box
+create_box 1 reg
+fix s all mesh/surface/stress/servo file a.stl type 1 com 0 0 0.5 ctrlPV force axis 0 0 1 target_val -2 vel_max 0.1 kp 0.5 ki 0.1
+fix w all wall/gran model hertz tangential history mesh n_meshes 1 meshes s
+fix f all ave/time 1 1 1 f_s[3] f_s[6] f_s[9]
+"""
+rc, out, err = run(SERVO)
+check("a servo's force is kept, its torque about com (not the origin) and its centre are "
+      "named, with the translation's place",
+      rc == 3 and "servo com 0 0 0.5 ctrlPV force axis 0 0 1 target_val -2 vel_max 0.1 kp "
+      "0.5 ki 0.1" in out.replace(" &\n    ", " ") and "f_s[3]" not in err and
+      "LINE 5: f_s[6]" in err and "LINE 5: f_s[9]: the servo's centre" in err and
+      "f_s[17]" in err, out + err)
 
 REF = """region reg block 0 1 0 1 0 1 units box
 create_box 1 reg
