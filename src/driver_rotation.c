@@ -92,8 +92,8 @@ static void free_flow(double q[4], double pi[3], const double inertia[3], int k,
     pi[b] = -s * pa + c * pb;
 }
 
-void rs_rotation_step(double q[4], double w[3], const double inertia[3], const double tau[3],
-                      double dt)
+void rs_rotation_step(double q[4], double w[3], const double inertia[3],
+                      const double tau[3], double dt)
 {
     if (!(inertia[0] > 0.0 && inertia[1] > 0.0 && inertia[2] > 0.0)) {
         turn_world(q, w, dt); /* a prescribed spin */

@@ -52,7 +52,8 @@ static int assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_part
                     return rs_error_set(err, RS_ERR_HISTORY,
                                         "rs_track_update: particle %d holds feature %d in "
                                         "history slots %d and %d of surface '%s'",
-                                        p->id ? p->id[i] : i, fe[j], q, j, s ? s->name : "");
+                                        p->id ? p->id[i] : i, fe[j], q, j,
+                                        s ? s->name : "");
             active |= (uint64_t)1 << j;
         } else if (RS_DIR_IS_LEAVING(d[j])) {
             d[j] = RS_DIR_EMPTY;

@@ -84,27 +84,27 @@ typedef struct rs_driver {
     char surfInt[RS_LAW_NAMELEN], surfSlv[RS_LAW_NAMELEN]; ///< names passed to the law
 
     /* Node data (SoA, n each), allocated and zeroed by rs_driver_init. */
-    double *x, *y, *z;     ///< positions (z unused for SEGMENTS)
-    double *vx, *vy, *vz;  ///< velocities, v_{k-1/2} between increments
-    double *radius;        ///< sphere radius, 0 for a point node
-    double *mass;          ///< mass (default 1)
-    double *area;          ///< areaSlv (default 1)
-    double *fext;          ///< applied force (3, n)
-    double *vpres;         ///< prescribed velocity (3, n)
-    unsigned char *fixed;  ///< (3, n): 1 = component prescribed by vpres
-    double *temp;          ///< temperature
-    double *heatcap;       ///< heat capacity C (energy per kelvin); 0: fixed temperature
-    double *fcon;          ///< contact force of the last increment (3, n)
-    double *q;             ///< orientation (4, n): unit quaternion (w, x, y, z), body to
-                           ///< world, x_world = x + R(q) x_body; at t_k (default 1, 0, 0, 0)
-    double *wx, *wy, *wz;  ///< angular velocity in the world frame (rad per time unit),
-                           ///< w_{k-1/2} between increments, as v
-    double *inertia;       ///< principal moments of inertia (3, n) about the body axes
-                           ///< (mass length^2); 0 (default): the node keeps its w
-    double *text;          ///< applied torque (3, n), world frame
-    double *tcon;          ///< contact torque of the last increment (3, n), world frame,
-                           ///< about the node's position
-    double tmaster;        ///< master temperature
+    double *x, *y, *z;    ///< positions (z unused for SEGMENTS)
+    double *vx, *vy, *vz; ///< velocities, v_{k-1/2} between increments
+    double *radius;       ///< sphere radius, 0 for a point node
+    double *mass;         ///< mass (default 1)
+    double *area;         ///< areaSlv (default 1)
+    double *fext;         ///< applied force (3, n)
+    double *vpres;        ///< prescribed velocity (3, n)
+    unsigned char *fixed; ///< (3, n): 1 = component prescribed by vpres
+    double *temp;         ///< temperature
+    double *heatcap;      ///< heat capacity C (energy per kelvin); 0: fixed temperature
+    double *fcon;         ///< contact force of the last increment (3, n)
+    double *q;            ///< orientation (4, n): unit quaternion (w, x, y, z), body to
+                          ///< world, x_world = x + R(q) x_body; at t_k (default 1, 0, 0, 0)
+    double *wx, *wy, *wz; ///< angular velocity in the world frame (rad per time unit),
+                          ///< w_{k-1/2} between increments, as v
+    double *inertia;      ///< principal moments of inertia (3, n) about the body axes
+                          ///< (mass length^2); 0 (default): the node keeps its w
+    double *text;         ///< applied torque (3, n), world frame
+    double *tcon;         ///< contact torque of the last increment (3, n), world frame,
+                          ///< about the node's position
+    double tmaster;       ///< master temperature
     double heatcap_master; ///< master heat capacity; 0: fixed temperature
 
     rs_driver_bc_fn bc; ///< optional, see rs_driver_bc_fn
@@ -150,8 +150,8 @@ int rs_driver_step(rs_driver *d, rs_error *err);
 /// become q at t_{k+1} and w at t_{k+1/2}, under the world-frame torque tau of t_k.
 /// inertia: principal moments about the body axes; unless all three are > 0, w is kept
 /// and q turns with it.
-void rs_rotation_step(double q[4], double w[3], const double inertia[3], const double tau[3],
-                      double dt);
+void rs_rotation_step(double q[4], double w[3], const double inertia[3],
+                      const double tau[3], double dt);
 
 /// Rotational kinetic energy w . L / 2 of a body with orientation q, world-frame angular
 /// velocity w and principal moments inertia.

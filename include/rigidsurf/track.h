@@ -49,9 +49,9 @@ extern "C" {
 #define RS_H_STATEV 12 ///< law state variables (nstatev)
 #define RS_HIST_SIZE(nstatev) (12 + (nstatev))
 
-#define RS_DIR_EMPTY 0.0                         ///< a free slot (zeroed memory)
-#define RS_DIR_LIVE(f) ((double)(f) + 1.0)       ///< the slot holds feature f (f >= 0)
-#define RS_DIR_LEAVING(f) (-1.0 - (double)(f))   ///< feature f emitted as gone this call
+#define RS_DIR_EMPTY 0.0                       ///< a free slot (zeroed memory)
+#define RS_DIR_LIVE(f) ((double)(f) + 1.0)     ///< the slot holds feature f (f >= 0)
+#define RS_DIR_LEAVING(f) (-1.0 - (double)(f)) ///< feature f emitted as gone this call
 #define RS_DIR_IS_LIVE(d) ((d) > 0.0)
 #define RS_DIR_IS_LEAVING(d) ((d) < 0.0)
 /// The feature id of a live or leaving entry.

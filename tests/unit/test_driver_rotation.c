@@ -66,9 +66,9 @@ static int free_body(rs_driver *d, rs_surface *s, const double I[3], const doubl
 }
 
 /* The torque-free asymmetric top, I = (1, 2, 3), w0 off the principal axes (body frame
- * (1, 0.8, 0.6)), dt = 1e-3 (|w| dt = 1.4e-3), 1e5 increments (about 20 turns): the world-frame angular momentum
- * stays to 1e-9 of itself, the kinetic energy to 1e-6, |q| = 1 to 1e-12 at every
- * increment; ALLKE is that energy. */
+ * (1, 0.8, 0.6)), dt = 1e-3 (|w| dt = 1.4e-3), 1e5 increments (about 20 turns): the
+ * world-frame angular momentum stays to 1e-9 of itself, the kinetic energy to 1e-6, |q| = 1
+ * to 1e-12 at every increment; ALLKE is that energy. */
 static void test_free_asymmetric_top_conserves_momentum_energy_and_unit_quaternion(void)
 {
     const double I[3] = {1.0, 2.0, 3.0}, q0[4] = {0.9, 0.1, -0.3, 0.2}, dt = 1e-3;
@@ -83,8 +83,8 @@ static void test_free_asymmetric_top_conserves_momentum_energy_and_unit_quaterni
     ENSURE(free_body(&d, &s, I, q0, w0, dt));
     double wb[3], L0[3], L[3];
     body_state(&d, 0, wb, L0);
-    const double E0 = 0.5 * (I[0] * wb[0] * wb[0] + I[1] * wb[1] * wb[1] +
-                             I[2] * wb[2] * wb[2]);
+    const double E0 =
+        0.5 * (I[0] * wb[0] * wb[0] + I[1] * wb[1] * wb[1] + I[2] * wb[2] * wb[2]);
     const double L0n = sqrt(L0[0] * L0[0] + L0[1] * L0[1] + L0[2] * L0[2]);
     /* off the axes: each body component carries a good part of the energy */
     for (int a = 0; a < 3; a++)
@@ -93,12 +93,13 @@ static void test_free_asymmetric_top_conserves_momentum_energy_and_unit_quaterni
     for (int k = 0; k < 100000; k++) {
         ENSURE(rs_driver_step(&d, &err) == RS_OK);
         body_state(&d, 0, wb, L);
-        const double E = 0.5 * (I[0] * wb[0] * wb[0] + I[1] * wb[1] * wb[1] +
-                                I[2] * wb[2] * wb[2]);
+        const double E =
+            0.5 * (I[0] * wb[0] * wb[0] + I[1] * wb[1] * wb[1] + I[2] * wb[2] * wb[2]);
         const double *q = d.q;
         const double qq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-        dL = fmax(dL, sqrt((L[0] - L0[0]) * (L[0] - L0[0]) + (L[1] - L0[1]) * (L[1] - L0[1]) +
-                           (L[2] - L0[2]) * (L[2] - L0[2])));
+        dL = fmax(dL,
+                  sqrt((L[0] - L0[0]) * (L[0] - L0[0]) + (L[1] - L0[1]) * (L[1] - L0[1]) +
+                       (L[2] - L0[2]) * (L[2] - L0[2])));
         dE = fmax(dE, fabs(E - E0));
         dq = fmax(dq, fabs(qq - 1.0));
         dwb3 = fmax(dwb3, fabs(wb[2] - wb0[2]));

@@ -37,8 +37,8 @@ static void plist_init(plist *l)
 
 /* The contact of centre x with the plane through the origin with unit normal n and
  * tangents t1, t2 = n x t1. */
-static void add_plane(plist *l, int point, int feature, const double x[3], const double n[3],
-                      const double t1[3])
+static void add_plane(plist *l, int point, int feature, const double x[3],
+                      const double n[3], const double t1[3])
 {
     const int k = l->c.n++;
     double t2[3];
@@ -74,8 +74,8 @@ static int zblock_init(zblock *b, int cap)
         b->id[i] = 4711 + i;
         b->r[i] = 0.01;
     }
-    b->p = (rs_particles){NP,   b->x,  b->y,  b->z,   b->vx,   b->vy, b->vz, NULL,
-                          NULL, NULL,  b->r,  b->id,  b->dir,  b->hist, 0};
+    b->p = (rs_particles){NP,   b->x, b->y, b->z,  b->vx,  b->vy,   b->vz, NULL,
+                          NULL, NULL, b->r, b->id, b->dir, b->hist, 0};
     return ok;
 }
 
@@ -90,8 +90,8 @@ static void zblock_free(zblock *b)
 /* Entry e of o is a new contact of a sphere with velocity v against the plane (n, t1):
  * drot = I, rdisp(2:3) = drdisp(2:3) = (v.t1, v.t2) dt, drdisp(1) = -v.n dt, rdisp(1) =
  * R - dist, and its slot's stress and statev zero. */
-static int is_new_contact(const rs_track_out *o, int e, const double v[3], const double n[3],
-                          const double t1[3], double pen, double dt)
+static int is_new_contact(const rs_track_out *o, int e, const double v[3],
+                          const double n[3], const double t1[3], double pen, double dt)
 {
     double t2[3];
     rs_cross3(n, t1, t2);
