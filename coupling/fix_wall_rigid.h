@@ -352,6 +352,9 @@ class FixWallRigid : public Fix
     long behind_;
     bool behind_warned_;
     void report_requests();
+    /* The layout version of the restart file this fix read its global record from (0:
+     * none); unpack_restart converts the per-atom records of an older version. */
+    double restart_version_ = 0.0;
 };
 
 } // namespace LAMMPS_NS

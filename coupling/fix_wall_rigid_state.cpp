@@ -19,11 +19,15 @@ namespace
 {
 
 /* Restart layout version (global record). */
-/* 6: the record ends with the servo's controller state (integral of the error, last
- * process value); 4: a slot ends with the contact's sed, fluxSlv and fluxMst; 3: each atom's record
- * starts with the capacity it was written with (the capacity grows during a run); 2:
- * directory in the row, slots after it */
+/* 6: directory entries are RS_DIR_LIVE(f) = f + 1, empty 0, leaving -(f + 1) (5: f, -1
+ * and -2 - f, so an entry of 5 is one less: read and converted), and the global record
+ * ends with the servo's controller state (integral of the error, last process value;
+ * absent in 5); 4: a slot ends with the contact's sed, fluxSlv and fluxMst; 3: each
+ * atom's record starts with the capacity it was written with (the capacity grows during
+ * a run); 2: directory in the row, slots after it */
 const double kRestartVersion = 6.0;
+/* The oldest version read: 5, its directories converted (unpack_restart). */
+const double kRestartOldest = 5.0;
 
 } // namespace
 
@@ -113,8 +117,16 @@ void FixWallRigid::write_restart(FILE *fp)
 void FixWallRigid::restart(char *buf)
 {
     const double *list = reinterpret_cast<const double *>(buf);
-    if (list[RST_VERSION] != kRestartVersion)
-        fail("the restart file holds wall/rigid data of another layout version");
+    const double version = list[RST_VERSION];
+    if (!(version >= kRestartOldest && version <= kRestartVersion) ||
+        version != (double)(int)version) {
+        std::ostringstream o;
+        o << "the restart file holds wall/rigid data of layout version " << version
+          << "; this build reads versions " << kRestartOldest << " to " << kRestartVersion
+          << " (write the restart file again with a matching build)";
+        fail(o.str());
+    }
+    restart_version_ = version;
     if ((int)list[RST_NSTATEV] != nstatev_ ||
         (int)list[RST_NPRED] != (int)predef_names_.size()) {
         std::ostringstream o;
@@ -174,11 +186,12 @@ void FixWallRigid::restart(char *buf)
             for (int k = 0; k < nf; k++)
                 wear_el_[k] = list[RST_COUNT + 1 + k];
     }
-    /* the servo's controller and the rate it set (the same on every rank) */
+    /* the servo's controller (from version 6) and the rate it set, the same on every
+     * rank */
     const double *servo = list + RST_COUNT + 1 + std::max(nwear, 0);
     if (servo_.on) {
-        servo_.sum_err = servo[0];
-        servo_.old_pv = servo[1];
+        servo_.sum_err = version >= 6.0 ? servo[0] : 0.0;
+        servo_.old_pv = version >= 6.0 ? servo[1] : 0.0;
         for (int d = 0; d < 3; d++)
             motion_.vel[d] = list[RST_VEL + d];
         motion_.omega = list[RST_OMEGA];
@@ -357,7 +370,15 @@ void FixWallRigid::unpack_restart(int nlocal, int nth)
     }
     if (cin > capacity_ && !grow_capacity(cin))
         fail_one("the restart file has more contact slots per atom than this fix can hold");
+    if (restart_version_ == 0.0)
+        fail_one("the restart file holds wall/rigid history per atom but no global record "
+                 "with its layout version");
     unpack_sized(nlocal, rec);
+    /* version 5: a directory entry was the feature f (empty -1, leaving -2 - f), one less
+     * than RS_DIR_LIVE(f) (RS_DIR_EMPTY, RS_DIR_LEAVING(f)) */
+    if (restart_version_ < 6.0)
+        for (int j = 0; j < cin; j++)
+            row_[nlocal][j] += 1.0;
 }
 
 int FixWallRigid::size_restart(int nlocal)

@@ -43,6 +43,13 @@ int rs_driver_init(rs_driver *d, const rs_surface *s, int n, rs_error *err)
     d->temp = zalloc(un, sizeof(double), &ok);
     d->heatcap = zalloc(un, sizeof(double), &ok);
     d->fcon = zalloc(3 * un, sizeof(double), &ok);
+    d->q = zalloc(4 * un, sizeof(double), &ok);
+    d->wx = zalloc(un, sizeof(double), &ok);
+    d->wy = zalloc(un, sizeof(double), &ok);
+    d->wz = zalloc(un, sizeof(double), &ok);
+    d->inertia = zalloc(3 * un, sizeof(double), &ok);
+    d->text = zalloc(3 * un, sizeof(double), &ok);
+    d->tcon = zalloc(3 * un, sizeof(double), &ok);
     d->temp_prev = zalloc(un, sizeof(double), &ok);
     d->dtemp = zalloc(un, sizeof(double), &ok);
     d->id = zalloc(un, sizeof(int), &ok);
@@ -56,6 +63,7 @@ int rs_driver_init(rs_driver *d, const rs_surface *s, int n, rs_error *err)
         d->mass[i] = 1.0;
         d->area[i] = 1.0;
         d->id[i] = i + 1;
+        d->q[4 * i] = 1.0;
     }
     return RS_OK;
 }
@@ -237,6 +245,9 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     p.vx = d->vx;
     p.vy = d->vy;
     p.vz = d->vz;
+    p.wx = d->wx;
+    p.wy = d->wy;
+    p.wz = d->wz;
     p.radius = d->radius;
     p.id = d->id;
     p.dir = d->dir_ptr;
@@ -264,8 +275,9 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     }
     rs_track_commit(&d->tracker, &d->trk, cb->stress, d->nstatev ? cb->statev : NULL);
 
-    /* contact forces, heat and energies */
+    /* contact forces and torques, heat and energies */
     memset(d->fcon, 0, 3 * (size_t)n * sizeof(double));
+    memset(d->tcon, 0, 3 * (size_t)n * sizeof(double));
     double *qslv = d->temp_prev; /* reused below after the old temperatures are saved */
     double qmst = 0.0, se = 0.0;
     rs_driver_energy *en = &d->energy;
@@ -275,12 +287,19 @@ int rs_driver_step(rs_driver *d, rs_error *err)
         const int i = d->trk.point[e];
         const double a = d->area[i] * d->trk.share[e]; /* the contact's share of it */
         const double *al = d->trk.alocaldir + (size_t)e * nd * nd;
+        double f[3] = {0.0, 0.0, 0.0}, r[3] = {0.0, 0.0, 0.0};
+        const double xi[3] = {d->x[i], d->y[i], d->z[i]};
         for (int c = 0; c < nd; ++c) {
-            double f = RS_A2(cb->stress, nd, 0, e) * al[c];
+            double fc = RS_A2(cb->stress, nd, 0, e) * al[c];
             for (int j = 1; j < nd; ++j)
-                f -= RS_A2(cb->stress, nd, j, e) * al[j * nd + c];
-            d->fcon[3 * i + c] += a * f;
+                fc -= RS_A2(cb->stress, nd, j, e) * al[j * nd + c];
+            f[c] = a * fc;
+            d->fcon[3 * i + c] += f[c];
+            r[c] = RS_A2(d->trk.coordslv, nd, c, e) - xi[c];
         }
+        d->tcon[3 * i] += r[1] * f[2] - r[2] * f[1];
+        d->tcon[3 * i + 1] += r[2] * f[0] - r[0] * f[2];
+        d->tcon[3 * i + 2] += r[0] * f[1] - r[1] * f[0];
         qslv[i] += a * cb->flux_slv[e];
         qmst += a * cb->flux_mst[e];
         se += a * cb->sed[e];
@@ -306,6 +325,14 @@ int rs_driver_step(rs_driver *d, rs_error *err)
             x[c][i] += d->dt * vc;
             ke += 0.5 * d->mass[i] * vc * vc;
         }
+        double w[3] = {d->wx[i], d->wy[i], d->wz[i]}, tau[3];
+        for (int c = 0; c < 3; ++c)
+            tau[c] = d->tcon[3 * i + c] + d->text[3 * i + c];
+        rs_rotation_step(d->q + 4 * i, w, d->inertia + 3 * i, tau, d->dt);
+        d->wx[i] = w[0];
+        d->wy[i] = w[1];
+        d->wz[i] = w[2];
+        ke += rs_rotation_energy(d->q + 4 * i, w, d->inertia + 3 * i);
     }
     en->allke = ke;
 
@@ -345,6 +372,13 @@ void rs_driver_free(rs_driver *d)
     free(d->temp);
     free(d->heatcap);
     free(d->fcon);
+    free(d->q);
+    free(d->wx);
+    free(d->wy);
+    free(d->wz);
+    free(d->inertia);
+    free(d->text);
+    free(d->tcon);
     free(d->temp_prev);
     free(d->id);
     free(d->hist_ptr);

@@ -12,61 +12,12 @@
 
 #include "rs_compiler.h"
 #include "rs_v4.h"
+#include "track_out.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-
-void rs_track_out_free(rs_track_out *o)
-{
-    free(o->point);
-    free(o->feature);
-    free(o->slot);
-    free(o->dir);
-    free(o->rdisp);
-    free(o->drdisp);
-    free(o->drot);
-    free(o->alocaldir);
-    free(o->coordslv);
-    free(o->coordmst);
-    free(o->vrel);
-    free(o->curv);
-    free(o->share);
-    memset(o, 0, sizeof *o);
-}
-
-static int grow(void **p, size_t bytes)
-{
-    void *q = realloc(*p, bytes);
-    if (!q)
-        return 0;
-    *p = q;
-    return 1;
-}
-
-/* Arrays are sized for ndir = 3 so a change of ndir never needs a reallocation. */
-static int out_reserve(rs_track_out *o, int n, rs_error *err)
-{
-    if (n <= o->cap)
-        return RS_OK;
-    size_t c = (size_t)n, d = sizeof(double);
-    int ok = grow((void **)&o->point, c * sizeof(int)) &&
-             grow((void **)&o->feature, c * sizeof(int)) &&
-             grow((void **)&o->slot, c * sizeof(double *)) &&
-             grow((void **)&o->dir, c * sizeof(double *)) &&
-             grow((void **)&o->rdisp, 3 * c * d) && grow((void **)&o->drdisp, 3 * c * d) &&
-             grow((void **)&o->drot, 4 * c * d) &&
-             grow((void **)&o->alocaldir, 9 * c * d) &&
-             grow((void **)&o->coordslv, 3 * c * d) &&
-             grow((void **)&o->coordmst, 3 * c * d) && grow((void **)&o->vrel, 3 * c * d) &&
-             grow((void **)&o->curv, 2 * c * d) && grow((void **)&o->share, c * d);
-    if (!ok)
-        return rs_error_set(err, RS_ERR_NOMEM,
-                            "rs_track_update: out of memory for %d contacts", n);
-    o->cap = n;
-    return RS_OK;
-}
 
 /* Below this value of 1 + a.b the normal has turned by ~180 deg and a.b x stops defining
  * an axis; the minimal rotation is then the half turn about the carried t1. */
@@ -91,11 +42,19 @@ static int assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_part
     uint64_t active = 0, used = 0;
 
     /* One look at the directory: live features (fe[j] is valid where active has bit
-     * j); slots left leaving by an uncommitted call are freed (they were emitted once). */
+     * j), each in one slot only; slots left leaving by an uncommitted call are freed
+     * (they were emitted once). */
     for (int j = 0; j < cap; j++) {
-        if (d[j] >= 0.0) {
+        if (RS_DIR_IS_LIVE(d[j])) {
+            fe[j] = RS_DIR_FEATURE(d[j]);
+            for (int q = 0; q < j; q++)
+                if ((active >> q & 1u) && fe[q] == fe[j])
+                    return rs_error_set(err, RS_ERR_HISTORY,
+                                        "rs_track_update: particle %d holds feature %d in "
+                                        "history slots %d and %d of surface '%s'",
+                                        p->id ? p->id[i] : i, fe[j], q, j,
+                                        s ? s->name : "");
             active |= (uint64_t)1 << j;
-            fe[j] = (int)d[j];
         } else if (RS_DIR_IS_LEAVING(d[j])) {
             d[j] = RS_DIR_EMPTY;
         }
@@ -170,13 +129,14 @@ full:
 }
 
 /* Pass 1 for the common case, from the directory d alone: a particle with at most one
- * contact within the tracking thickness (feature f, or f < 0 for none) whose slot
- * already holds it, and no other slot in use. Returns that slot's index, cap for no
- * contact and no slot in use, or -1, having written nothing, for every other case (new
- * contacts, handovers, leaving slots), which assign_slots handles. */
+ * contact within the tracking thickness (entry f = RS_DIR_LIVE(feature), or RS_DIR_EMPTY
+ * for none) whose slot already holds it, and no other slot in use. Returns that slot's
+ * index, cap for no contact and no slot in use, or -1, having written nothing, for every
+ * other case (new contacts, handovers, leaving slots, a feature held twice), which
+ * assign_slots handles. */
 static RS_NOINLINE int find_fast(const double *d, int cap, double f)
 {
-    /* Directory entries and f are whole numbers or -1 as doubles, never -0 or NaN, so
+    /* Directory entries and f are whole numbers as doubles, never -0 or NaN, so
      * equality is equality of the bit patterns (integer compares). */
     const double empty = RS_DIR_EMPTY;
     uint64_t fb, eb;
@@ -186,12 +146,13 @@ static RS_NOINLINE int find_fast(const double *d, int cap, double f)
     for (int j = 0; j < cap; j++) {
         uint64_t u;
         memcpy(&u, d + j, sizeof u);
-        if (u == fb)
-            js = j;
-        else if (u != eb)
+        if (u == eb)
+            continue;
+        if (u != fb || js < cap)
             return -1;
+        js = j;
     }
-    return f >= 0.0 ? (js < cap ? js : -1) : cap;
+    return RS_DIR_IS_LIVE(f) ? (js < cap ? js : -1) : cap;
 }
 
 /* 1 when a directory of capacity 4 holds f in slot 0 and the other slots are free (bit
@@ -210,12 +171,12 @@ RS_INLINE int dir_usual4(const double *d, double f)
 }
 
 /* find_fast for capacity 4, first testing the usual directory at once: the contact (f
- * >= 0) in slot 0 and the other slots free, or no contact (f = RS_DIR_EMPTY) and every
+ * live) in slot 0 and the other slots free, or no contact (f = RS_DIR_EMPTY) and every
  * slot free. */
 RS_INLINE int find_fast4(const double *d, double f)
 {
     if (dir_usual4(d, f))
-        return f >= 0.0 ? 0 : 4;
+        return RS_DIR_IS_LIVE(f) ? 0 : 4;
     return find_fast(d, 4, f);
 }
 
@@ -235,9 +196,9 @@ RS_INLINE int pass1_fast(int i, int np, int *kp, int nc, const int *restrict cpo
         const int has = k < nc && cpoint[k] == i;
         if ((k + has < nc && cpoint[k + has] == i) || !hist[i] || !dir[i])
             break;
-        double f = -1.0;
+        double f = RS_DIR_EMPTY;
         if (has && !(cdist[k] - (prad ? prad[i] : 0.0) > tracking))
-            f = (double)cfeat[k];
+            f = RS_DIR_LIVE(cfeat[k]);
         const int js = cap == 4 ? find_fast4(dir[i], f) : find_fast(dir[i], cap, f);
         if (js < 0)
             break;
@@ -269,7 +230,7 @@ pass1_dense(int i, int np, const int *restrict cfeat, const double *restrict cdi
         for (; i < np; i++) {
             double *h = hist[i], *d = dir[i];
             if (!h || !d || cdist[i] - prad[i] > tracking ||
-                !dir_usual4(d, (double)cfeat[i]))
+                !dir_usual4(d, RS_DIR_LIVE(cfeat[i])))
                 break;
             opoint[e] = i;
             oslot[e] = h;
@@ -280,8 +241,9 @@ pass1_dense(int i, int np, const int *restrict cfeat, const double *restrict cdi
         double *h = hist[i], *d = dir[i];
         if (!h || !d)
             break;
-        const double f =
-            cdist[i] - (prad ? prad[i] : 0.0) > tracking ? -1.0 : (double)cfeat[i];
+        const double f = cdist[i] - (prad ? prad[i] : 0.0) > tracking
+                             ? RS_DIR_EMPTY
+                             : RS_DIR_LIVE(cfeat[i]);
         const int js = cap == 4 ? find_fast4(d, f) : find_fast(d, cap, f);
         if (js < 0)
             break;
@@ -361,7 +323,7 @@ _Static_assert(RS_H_N == 0 && RS_H_T1 == 3 && RS_H_SLIP == 6 && RS_H_RDISP1 == 8
 RS_INLINE void run_gather1(track_run *restrict r, int j, const rs_track_out *o, int e)
 {
     const double *h = o->slot[e];
-    r->live[j] = *o->dir[e] >= 0.0;
+    r->live[j] = RS_DIR_IS_LIVE(*o->dir[e]);
     r->on0[j] = h[RS_H_N];
     r->on1[j] = h[RS_H_N + 1];
     r->on2[j] = h[RS_H_N + 2];
@@ -385,7 +347,7 @@ RS_INLINE void run_gather(track_run *restrict r, int m, const rs_track_out *o, i
                       r->so1 + j, r->so2 + j);
         for (int l = 0; l < 4; l++) {
             r->rdo[j + l] = h[l][RS_H_RDISP1];
-            r->live[j + l] = *o->dir[e0 + j + l] >= 0.0;
+            r->live[j + l] = RS_DIR_IS_LIVE(*o->dir[e0 + j + l]);
         }
     }
     for (; j < m; j++)
@@ -613,7 +575,7 @@ RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *t
             for (int b = 0; b < 3 + tr->nstatev; b++)
                 h[RS_H_STRESS + b] = 0.0;
         h[RS_H_RDISP1] = r->rd1[j];
-        *o->dir[e] = c->feature[k];
+        *o->dir[e] = RS_DIR_LIVE(c->feature[k]);
     }
     int *restrict op = o->point + e0, *restrict of = o->feature + e0;
     for (j = 0; j < m; j++) {
@@ -647,10 +609,10 @@ static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
             vr[b] -= u[b];
     }
 
-    const double f = *o->dir[e];
+    const int f = RS_DIR_FEATURE(*o->dir[e]);
     *o->dir[e] = RS_DIR_LEAVING(f);
     o->point[e] = i;
-    o->feature[e] = (int)f;
+    o->feature[e] = f;
     for (int b = 0; b < nd; b++) {
         RS_A2(o->rdisp, nd, b, e) = RS_MAXVAL;
         RS_A2(o->drdisp, nd, b, e) = RS_MAXVAL;
@@ -729,7 +691,7 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
                             "rs_track_update: nstatev = %d, expected 0 to %d", tr->nstatev,
                             RS_MAX_STATEV);
     const int nc = c ? c->n : 0;
-    int rc = out_reserve(out, nc + p->n * tr->capacity, err);
+    int rc = rs_track_out_reserve(out, nc + p->n * tr->capacity, err);
     if (rc)
         return rc;
 

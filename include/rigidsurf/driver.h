@@ -8,20 +8,32 @@
  *
  * Increment k (time t_k = k dt) of rs_driver_step:
  *  1. The master moves to t_k (rs_motion_advance; not on the first increment).
- *  2. Query and tracker at the positions x_k with the velocities v_{k-1/2} (the slip
- *     increment of the tracker is then exactly the displacement x_k - x_{k-1}).
+ *  2. Query and tracker at the positions x_k with the velocities v_{k-1/2} and angular
+ *     velocities w_{k-1/2} (without spin, the slip increment of the tracker is then
+ *     exactly the displacement x_k - x_{k-1}).
  *  3. The law, in blocks of at most RS_BLOCK contacts. On entry stress is the previous
  *     increment's, its shear rotated by drot (law.h). Temperatures are those at t_k.
  *  4. Contact force on node i: F = areaSlv (s1 n - s2 t1 - s3 t2) summed over its
- *     contacts (docs/conventions.md, "Stress, flux, energy signs").
+ *     contacts, and contact torque (x_cp - x) x F about its centre, x_cp the contact
+ *     point (docs/conventions.md, "Stress, flux, energy signs").
  *  5. v_{k+1/2} = v_{k-1/2} + dt (F + f_ext) / m for free components; prescribed
  *     components take vpres. x_{k+1} = x_k + dt v_{k+1/2}.
+ *     Rotation (rs_rotation_step): the torque kicks the angular momentum, L_{k+1/2} =
+ *     L_{k-1/2} + dt (T + t_ext), and the body turns freely over dt from q_k to q_{k+1}
+ *     by the NO_SQUISH splitting (Miller et al., J. Chem. Phys. 116, 8649 (2002)): exact
+ *     rotations about the body's principal axes in the order 3, 2, 1, 2, 3 (half, half,
+ *     whole, half, half), which keep L and |q| to rounding and the energy to O(dt^2)
+ *     without drift. An isotropic body (a sphere) turns exactly about w, which then
+ *     changes only by the kicks. A node whose moments of inertia are not all > 0 (the
+ *     default) keeps the angular velocity it is given (a prescribed spin, zero by
+ *     default), and its orientation turns with it.
  *  6. Heat (forward Euler): T_i += dt sum(areaSlv fluxSlv) / C_i for nodes with a heat
  *     capacity C_i > 0; the master's temperature likewise with sum(areaSlv fluxMst) and
  *     its capacity (0: fixed temperature).
  * Energy totals (per the Abaqus output names) are areaSlv-weighted sums over contacts:
  * ALLSE = sum(sed A) at the current increment; ALLFD, ALLPD, ALLVD, ALLCD accumulate
- * sfd, spd, svd, scd times A. ALLKE = sum(m |v_{k+1/2}|^2 / 2). */
+ * sfd, spd, svd, scd times A. ALLKE = sum(m |v_{k+1/2}|^2 / 2) plus, for nodes with
+ * inertia, the rotational sum(w_{k+1/2} . L_{k+1/2} / 2). */
 #ifndef RIGIDSURF_DRIVER_H
 #define RIGIDSURF_DRIVER_H
 
@@ -72,18 +84,27 @@ typedef struct rs_driver {
     char surfInt[RS_LAW_NAMELEN], surfSlv[RS_LAW_NAMELEN]; ///< names passed to the law
 
     /* Node data (SoA, n each), allocated and zeroed by rs_driver_init. */
-    double *x, *y, *z;     ///< positions (z unused for SEGMENTS)
-    double *vx, *vy, *vz;  ///< velocities, v_{k-1/2} between increments
-    double *radius;        ///< sphere radius, 0 for a point node
-    double *mass;          ///< mass (default 1)
-    double *area;          ///< areaSlv (default 1)
-    double *fext;          ///< applied force (3, n)
-    double *vpres;         ///< prescribed velocity (3, n)
-    unsigned char *fixed;  ///< (3, n): 1 = component prescribed by vpres
-    double *temp;          ///< temperature
-    double *heatcap;       ///< heat capacity C (energy per kelvin); 0: fixed temperature
-    double *fcon;          ///< contact force of the last increment (3, n)
-    double tmaster;        ///< master temperature
+    double *x, *y, *z;    ///< positions (z unused for SEGMENTS)
+    double *vx, *vy, *vz; ///< velocities, v_{k-1/2} between increments
+    double *radius;       ///< sphere radius, 0 for a point node
+    double *mass;         ///< mass (default 1)
+    double *area;         ///< areaSlv (default 1)
+    double *fext;         ///< applied force (3, n)
+    double *vpres;        ///< prescribed velocity (3, n)
+    unsigned char *fixed; ///< (3, n): 1 = component prescribed by vpres
+    double *temp;         ///< temperature
+    double *heatcap;      ///< heat capacity C (energy per kelvin); 0: fixed temperature
+    double *fcon;         ///< contact force of the last increment (3, n)
+    double *q;            ///< orientation (4, n): unit quaternion (w, x, y, z), body to
+                          ///< world, x_world = x + R(q) x_body; at t_k (default 1, 0, 0, 0)
+    double *wx, *wy, *wz; ///< angular velocity in the world frame (rad per time unit),
+                          ///< w_{k-1/2} between increments, as v
+    double *inertia;      ///< principal moments of inertia (3, n) about the body axes
+                          ///< (mass length^2); 0 (default): the node keeps its w
+    double *text;         ///< applied torque (3, n), world frame
+    double *tcon;         ///< contact torque of the last increment (3, n), world frame,
+                          ///< about the node's position
+    double tmaster;       ///< master temperature
     double heatcap_master; ///< master heat capacity; 0: fixed temperature
 
     rs_driver_bc_fn bc; ///< optional, see rs_driver_bc_fn
@@ -123,6 +144,18 @@ int rs_driver_set_law(rs_driver *d, const rs_law *law, const double *props, int 
 /// One increment (see the file comment). Returns the first error of the query, the
 /// tracker, the law or the boundary-condition callback.
 int rs_driver_step(rs_driver *d, rs_error *err);
+
+/// One increment of a rigid body's rotation (the file comment, step 5): the orientation q
+/// (w, x, y, z; body to world) at t_k and the world-frame angular velocity w at t_{k-1/2}
+/// become q at t_{k+1} and w at t_{k+1/2}, under the world-frame torque tau of t_k.
+/// inertia: principal moments about the body axes; unless all three are > 0, w is kept
+/// and q turns with it.
+void rs_rotation_step(double q[4], double w[3], const double inertia[3],
+                      const double tau[3], double dt);
+
+/// Rotational kinetic energy w . L / 2 of a body with orientation q, world-frame angular
+/// velocity w and principal moments inertia.
+double rs_rotation_energy(const double q[4], const double w[3], const double inertia[3]);
 
 /// Frees everything rs_driver_init and the increments allocated, and zeroes d.
 void rs_driver_free(rs_driver *d);

@@ -31,9 +31,11 @@ extern "C" {
 
 /* History of one particle, in two parts the caller owns (plain doubles, so an engine can
  * migrate and restart them):
- * - its directory: `capacity` doubles, entry j for slot j: the feature id (>= 0) of the
- *   contact the slot holds, RS_DIR_EMPTY when the slot is free, RS_DIR_LEAVING(f) while
- *   the contact of feature f is emitted once more as gone (rs_track_commit frees it);
+ * - its directory: `capacity` doubles, entry j for slot j: RS_DIR_LIVE(f) = f + 1 (>= 1)
+ *   for the contact of feature f the slot holds, RS_DIR_EMPTY (0) when the slot is free,
+ *   RS_DIR_LEAVING(f) = -(f + 1) (<= -1) while the contact of feature f is emitted once
+ *   more as gone (rs_track_commit frees it). Zeroed memory is an empty directory. A
+ *   feature may be held by one slot only: two are an error (RS_ERR_HISTORY);
  * - its slots: `capacity` of RS_HIST_SIZE(nstatev) doubles, slot j at hist + j * stride
  *   (rs_particles.slot_stride). Slots may be contiguous per particle, or slot j of every
  *   particle may sit in one array, so that a particle with one contact touches its
@@ -47,9 +49,13 @@ extern "C" {
 #define RS_H_STATEV 12 ///< law state variables (nstatev)
 #define RS_HIST_SIZE(nstatev) (12 + (nstatev))
 
-#define RS_DIR_EMPTY (-1.0)                    ///< a free slot
-#define RS_DIR_LEAVING(f) (-2.0 - (double)(f)) ///< feature f emitted as gone this call
-#define RS_DIR_IS_LEAVING(d) ((d) <= -2.0)
+#define RS_DIR_EMPTY 0.0                       ///< a free slot (zeroed memory)
+#define RS_DIR_LIVE(f) ((double)(f) + 1.0)     ///< the slot holds feature f (f >= 0)
+#define RS_DIR_LEAVING(f) (-1.0 - (double)(f)) ///< feature f emitted as gone this call
+#define RS_DIR_IS_LIVE(d) ((d) > 0.0)
+#define RS_DIR_IS_LEAVING(d) ((d) < 0.0)
+/// The feature id of a live or leaving entry.
+#define RS_DIR_FEATURE(d) ((d) > 0.0 ? (int)(d)-1 : (int)(-(d)) - 1)
 
 /// Largest per-particle capacity rs_track_update accepts.
 #define RS_TRACK_MAX_CAPACITY 64
@@ -102,7 +108,8 @@ void rs_track_out_free(rs_track_out *o);
 /// tr->tracking) to history, and fills out (out->n is reset). dt is the increment,
 /// m the master's motion after its advance (m->dQ is the increment's rotation), NULL
 /// for a fixed master. Returns RS_ERR_CAPACITY naming the particle when it has more
-/// contacts than slots.
+/// contacts than slots, and RS_ERR_HISTORY naming the particle and the feature when its
+/// directory holds one feature in two slots (history storage corrupted or not cleared).
 int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *m,
                     double dt, const rs_particles *p, const rs_contacts *c,
                     rs_track_out *out, rs_error *err);

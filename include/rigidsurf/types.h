@@ -28,7 +28,8 @@ enum rs_status {
     RS_ERR_NOMEM = 5,     ///< allocation failed
     RS_ERR_NOTFOUND = 6,  ///< named surface, law or symbol not found
     RS_ERR_NONFINITE = 7, ///< a law produced NaN or Inf
-    RS_ERR_CAPACITY = 8   ///< per-particle contact capacity exceeded
+    RS_ERR_CAPACITY = 8,  ///< per-particle contact capacity exceeded
+    RS_ERR_HISTORY = 9    ///< contact history inconsistent (a feature in two slots)
 };
 
 /// Error record filled by failing calls. The library never prints and never exits.

@@ -17,12 +17,19 @@ concave corner between the turning mantle and the bottom cap of a closed drum ho
 contacts (mantle and cap, so two history slots) at the restart point; the restarted run
 is again identical to the continuous one.
 
+Fourth case, the restart layout version: the first case's file made into one of layout
+version 5 (whose directory entries were the feature f, empty -1, where version 6 writes
+f + 1, empty 0) is read and converted, so the restarted run is again identical; a file
+of an unknown version (4) is refused with a message naming the versions read.
+
 Third case, for slots that grew during the run and a turning mesh: a sphere settling
 into the apex of a 12-facet STL cone (MESH) that turns about its axis holds 12 contacts
 at the restart point, so its fix grew from 4 slots; the restarted fix starts with 4
 again and takes 12 from the file.
 """
 import math
+import shutil
+import struct
 
 import liglib as L
 
@@ -94,6 +101,7 @@ def body(s):
         check_identical(s, tag)
     corner_case(s)
     pocket_case(s)
+    version_case(s)
 
 
 def restart_case(s, tag, atoms, lines, ncontacts, what):
@@ -160,6 +168,51 @@ def corner_case(s):
                 "fix i all nve/sphere\nvariable nc equal f_w[7]\n")
 
     restart_case(s, "corner", atoms(), lines(), 2, "two contacts (two slots)")
+
+
+def version_case(s):
+    """ours.restart as version 5 (converted on reading) and as version 4 (refused)."""
+    with open(s.path("ours.restart"), "rb") as f:
+        data = bytearray(f.read())
+    cap = 4.0
+    head = struct.pack("<2d", 6.0, cap)
+    at = [k for k in range(len(data)) if data.startswith(head, k)]
+    nstatev, npred = struct.unpack_from("<2d", data, at[0] + 16) if at else (-1, -1)
+    s.ck.check("version: one wall/rigid global record of version 6 in the file",
+               len(at) == 1 and nstatev >= 0 and npred == 0, "at %s" % at)
+    if len(at) != 1:
+        return
+    # each atom's record: its length + 1, the capacity, then the directory (row first)
+    atom_size = (cap + 1 + npred) + cap * (12 + nstatev + 3)
+    rec = struct.pack("<2d", 2.0 + atom_size, cap)
+    recs = [k for k in range(len(data)) if data.startswith(rec, k)]
+    old = bytearray(data)
+    struct.pack_into("<d", old, at[0], 5.0)
+    dirs = []
+    for k in recs:
+        d = list(struct.unpack_from("<4d", data, k + 16))
+        dirs.append(d)
+        struct.pack_into("<4d", old, k + 16, *[e - 1.0 for e in d])
+    s.ck.check("version: three atom records, each with one live slot of the drum",
+               len(recs) == 3 and all(sum(e >= 1.0 for e in d) == 1 and
+                                      sum(e == 0.0 for e in d) == 3 for d in dirs),
+               "directories %s" % dirs)
+    with open(s.path("v5.restart"), "wb") as f:
+        f.write(old)
+    struct.pack_into("<d", old, at[0], 4.0)
+    with open(s.path("v4.restart"), "wb") as f:
+        f.write(old)
+    setup = "group g1 id 1\ngroup g2 id 2 3\n" + setup_lines(WALL)
+    second = restarted_deck("v5.restart", setup)
+    second += L.dump_lines("d", N, "v5_restarted.dump") + "run %d\n" % N
+    s.run("v5_restarted", second)
+    shutil.copy(s.path("ours_full.dump"), s.path("v5_full.dump"))
+    check_identical(s, "v5")
+    rc, out = s.run("v4_restarted", restarted_deck("v4.restart", setup) + "run 10\n",
+                    expect_ok=False)
+    s.ck.check("version: a file of layout version 4 is refused, naming what is read",
+               rc != 0 and "layout version 4;" in out and "versions 5 to 6" in out,
+               [l for l in out.splitlines() if "ERROR" in l][-1:].__repr__())
 
 
 if __name__ == "__main__":

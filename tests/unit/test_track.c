@@ -712,7 +712,7 @@ static void test_history_handover_across_smooth_junction(void)
         if (!sharp) {
             ENSURE(fx.o.n == 1);
             ENSURE(fx.o.slot[0] == slot && fx.o.feature[0] == fb);
-            ENSURE(*fx.o.dir[0] == fb);
+            ENSURE(*fx.o.dir[0] == RS_DIR_LIVE(fb));
             ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 1, 0), 4 * 0.2 * dt, 1e-15);
             ENSURE_NEAR(RS_A2(fx.o.rdisp, 3, 2, 0), 4 * 0.1 * dt, 1e-15);
             ENSURE(slot[RS_H_STRESS] == 5 && slot[RS_H_STRESS + 2] == 7);
