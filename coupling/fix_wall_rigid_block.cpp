@@ -154,6 +154,17 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         if (setup_call) {
             for (int k = 0; k < n; k++)
                 unpack_atom(idx[k], &saved_rows_[(size_t)k * as]);
+            /* LIGGGHTS's walls keep what the model writes into a contact's history in
+             * the setup call of a run (shearupdate 0). Most models write nothing then;
+             * rolling_friction luding adds its torque increment regardless. A contact
+             * that existed before the call (its slot is still in the directory) keeps
+             * the model's values, as on wall/gran. */
+            if (ns)
+                for (int e = 0; e < ne; e++)
+                    if (!leaving_[e] && *tout_.dir[e] != RS_DIR_EMPTY &&
+                        !RS_DIR_IS_LEAVING(*tout_.dir[e]))
+                        std::memcpy(tout_.slot[e] + RS_H_STATEV, cb_.statev + (size_t)e * ns,
+                                    sizeof(double) * ns);
             return;
         }
         rs_track_commit(&tracker_, &tout_, cb_.stress, ns ? cb_.statev : NULL);
