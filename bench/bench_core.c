@@ -58,7 +58,7 @@ static void *xmalloc(size_t bytes)
 
 static void cloud_make(cloud *c, int n, const rs_tracker *tr)
 {
-    const int hs = RS_HIST_SIZE(tr->nstatev);
+    const int hs = rs_track_slot_size(tr);
     double **cols[] = {&c->x,  &c->y,  &c->z,  &c->vx, &c->vy,
                        &c->vz, &c->wx, &c->wy, &c->wz, &c->r};
     c->n = n;
@@ -273,7 +273,8 @@ int main(int argc, char **argv)
         pipe pp;
         memset(&pp, 0, sizeof pp);
         pp.still = still;
-        pp.tr = (rs_tracker){4, 0, 3, 0.1 * RAD};
+        /* the slot of earlier figures: the stress kept, no energies */
+        pp.tr = (rs_tracker){4, 0, 3, 0.1 * RAD, RS_DROP_ENERGY};
         drum_text(nsegs[is], text, sizeof text);
         if (rs_surface_parse(text, "bench_core", NULL, &pp.s, &err)) {
             fprintf(stderr, "bench_core: %s\n", err.msg);

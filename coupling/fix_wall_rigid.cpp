@@ -40,13 +40,13 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg), surf_ok_(false), ndir_(3), moving_(false), belt_(false),
       ivar_omega_(-1), rot_by_period_(false), period_(0.0), phi_at_build_(0.0),
       spin_invariant_(false), law_kind_(LAW_BUILTIN), law_(NULL), loaded_ok_(false),
-      props_given_(false), hertz_(false), hooke_(false), lig_(NULL), nstatev_(0), statev_given_(false),
-      wall_type_(1), capacity_(4), tracking_(0.0), tracking_given_(false),
-      area_mode_(AREA_NODE), area_const_(1.0), temp_given_(false), temp_wall_(0.0),
-      dtemp_wall_(0.0), capacity_wall_(0.0), heat_wall_(0.0), heat_step_(0.0),
-      fix_temp_(NULL), fix_heatflux_(NULL), fix_heatcap_(NULL), vtk_every_(0),
-      vtk_mesh_ok_(false), wear_(false), facets_(false), stress_step_(false), nfacet_(0),
-      step_checked_(false), row_(NULL), hist_(NULL), nmax_(0), rebuild_(true),
+      props_given_(false), hertz_(false), hooke_(false), lig_(NULL), nstatev_(0),
+      statev_given_(false), wall_type_(1), capacity_(4), tracking_(0.0),
+      tracking_given_(false), area_mode_(AREA_NODE), area_const_(1.0), temp_given_(false),
+      temp_wall_(0.0), dtemp_wall_(0.0), capacity_wall_(0.0), heat_wall_(0.0),
+      heat_step_(0.0), fix_temp_(NULL), fix_heatflux_(NULL), fix_heatcap_(NULL),
+      vtk_every_(0), vtk_mesh_ok_(false), wear_(false), facets_(false), stress_step_(false),
+      nfacet_(0), step_checked_(false), row_(NULL), hist_(NULL), nmax_(0), rebuild_(true),
       lookahead_(0.0), rglob_(0.0), bounds_ok_(false), list_bounds_(false), se_now_(0.0),
       ncontact_(0), out_step_(-1), out_valid_(false), kstep_(0), run_time0_(0.0),
       pnewdt_stop_(false), routine_step_warned_(false), behind_(0), behind_warned_(false)
@@ -78,6 +78,7 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
     ndir_ = rs_surface_ndir(&surf_);
     tracker_.capacity = capacity_;
     tracker_.nstatev = nstatev_;
+    tracker_.drop = rs_law_drops(law_);
     tracker_.ndir = ndir_;
     tracker_.tracking = tracking_;
     temp_mst_[0] = temp_wall_;
@@ -512,7 +513,7 @@ void FixWallRigid::init_scratch()
         a->resize(np);
     btype_.resize(np);
     bpred_.resize(np * npred), bdpred_.resize(np * npred);
-    leaving_.resize(nc), c_sedp_.resize(nc);
+    leaving_.resize(nc);
     nleave_ = 0;
     ident_ = false;
     cb_.area_mode = area_mode_ == AREA_CONSTANT    ? RS_AREA_CONSTANT

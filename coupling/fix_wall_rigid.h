@@ -126,17 +126,11 @@ class FixWallRigid : public Fix
     /* per-atom row layout (doubles): tracker directory (capacity), previous temperature
      * (1), previous predefined fields (npred). The slots are in hist_, slot-major: atom
      * i's slot j at hist_ + (j * nmax_ + i) * slot_size(), so an atom with one contact
-     * touches its row and the dense slot-0 array only. A slot is the tracker's
-     * (RS_HIST_SIZE(nstatev)) followed by the contact's sed, fluxSlv and fluxMst of its
-     * last increment (kSlotExtra), which the law gets on entry. */
-    static const int kSlotExtra = 3;
-    int hist_size() const
-    {
-        return RS_HIST_SIZE(nstatev_);
-    }
+     * touches its row and the dense slot-0 array only. A slot is the tracker's, laid out
+     * for the law (rs_track_slot_size: what the law reads of the contact's last call). */
     int slot_size() const
     {
-        return hist_size() + kSlotExtra;
+        return rs_track_slot_size(&tracker_);
     }
     int tprev_offset() const
     {
@@ -317,11 +311,10 @@ class FixWallRigid : public Fix
     std::vector<int> deepest_;
     std::vector<double> area_w_; // the block's areas times shares, when shared
     const double *scatter_area_ =
-        nullptr;                   // the areas the scatter applies: cb_.area or area_w_
-    std::vector<double *> c_sedp_; // each contact's sed, fluxSlv, fluxMst in its slot
-    int nleave_;                   // leaving contacts of the block
-    bool ident_;                   // contact e is particle e's only contact, for all e
-    rs_law_block blk_;             // the law block's fields that stay for the run
+        nullptr;       // the areas the scatter applies: cb_.area or area_w_
+    int nleave_;       // leaving contacts of the block
+    bool ident_;       // contact e is particle e's only contact, for all e
+    rs_law_block blk_; // the law block's fields that stay for the run
     /* per particle of a block: mass, type, heat capacity, temperature and its
      * increment, predefined fields and their increments (npred per particle) */
     std::vector<double> bmass_, bheat_, btemp_, bdtemp_, bpred_, bdpred_;

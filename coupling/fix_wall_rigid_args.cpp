@@ -105,11 +105,11 @@ int FixWallRigid::integer(const char *keyword, const char *what, const char *s)
 
 bool FixWallRigid::is_keyword(const char *s) const
 {
-    static const char *const kw[] = {
-        "surface",  "name", "law",       "props",  "type",        "statev",
-        "tracking", "area", "contacts",  "move",   "rotate",      "temperature",
-        "predef",   "vtk",  "curvature", "pnewdt", "surface_vel", "wear",
-        "servo"};
+    static const char *const kw[] = {"surface",     "name",   "law",       "props",
+                                     "type",        "statev", "tracking",  "area",
+                                     "contacts",    "move",   "rotate",    "temperature",
+                                     "predef",      "vtk",    "curvature", "pnewdt",
+                                     "surface_vel", "wear",   "servo"};
     for (const char *k : kw)
         if (std::strcmp(s, k) == 0)
             return true;
@@ -308,11 +308,10 @@ void FixWallRigid::parse(int narg, char **arg)
                      arg[iarg + 1] + "'");
             iarg += 2;
         } else {
-            fail(
-                std::string("unknown keyword '") + kw +
-                "'; expected surface, name, law, props, type, statev, tracking, area, "
-                "contacts, move, rotate, servo, surface_vel, temperature, predef, vtk, "
-                "curvature, wear or pnewdt");
+            fail(std::string("unknown keyword '") + kw +
+                 "'; expected surface, name, law, props, type, statev, tracking, area, "
+                 "contacts, move, rotate, servo, surface_vel, temperature, predef, vtk, "
+                 "curvature, wear or pnewdt");
         }
     }
 
@@ -633,6 +632,8 @@ int FixWallRigid::parse_law(int narg, char **arg, int iarg)
         lig_desc_.name = "liggghts";
         lig_desc_.nprops = 0;
         lig_desc_.nstatev = lig_->nhistory();
+        /* the model reads its own history only */
+        lig_desc_.skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY;
         law_ = &lig_desc_;
         law_kind_ = LAW_LIGGGHTS;
         return iarg;

@@ -163,8 +163,8 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
                 for (int e = 0; e < ne; e++)
                     if (!leaving_[e] && *tout_.dir[e] != RS_DIR_EMPTY &&
                         !RS_DIR_IS_LEAVING(*tout_.dir[e]))
-                        std::memcpy(tout_.slot[e] + RS_H_STATEV, cb_.statev + (size_t)e * ns,
-                                    sizeof(double) * ns);
+                        std::memcpy(tout_.slot[e] + rs_track_statev_at(&tracker_),
+                                    cb_.statev + (size_t)e * ns, sizeof(double) * ns);
             return;
         }
         rs_track_commit(&tracker_, &tout_, cb_.stress, ns ? cb_.statev : NULL);
@@ -263,6 +263,7 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
             unpack_atom(idx[k], &saved_rows_[(size_t)k * as]);
         return;
     }
+    rs_track_commit_energy(&tracker_, &tout_, cb_.sed, cb_.flux_slv, cb_.flux_mst);
     rs_track_commit(&tracker_, &tout_, cb_.stress, ns ? cb_.statev : NULL);
 }
 
@@ -354,23 +355,14 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call)
     }
     rs_cblock_inputs(&cb_, &tout_, &p, update->dt);
 
-    /* sed, fluxSlv and fluxMst of the last increment follow the tracker's slot */
-    const int sed0 = hist_size();
+    /* sed, fluxSlv and fluxMst of the last increment, from the tracker's slot */
+    rs_track_load_energy(&tracker_, &tout_, cb_.sed, cb_.flux_slv, cb_.flux_mst);
     const int *__restrict pt = tout_.point;
     double *const *__restrict dir = tout_.dir;
-    double *const *__restrict slot = tout_.slot;
-    double **__restrict sedp = c_sedp_.data();
-    double *__restrict sed = cb_.sed;
-    double *__restrict fslv = cb_.flux_slv, *__restrict fmst = cb_.flux_mst;
     char *__restrict leaving = leaving_.data();
     int nleave = 0;
     bool ident = true;
     for (int e = 0; e < ne; e++) {
-        double *sp = slot[e] + sed0;
-        sedp[e] = sp;
-        sed[e] = sp[0];
-        fslv[e] = sp[1];
-        fmst[e] = sp[2];
         const char lv = RS_DIR_IS_LEAVING(*dir[e]);
         leaving[e] = lv;
         nleave += lv;
@@ -465,15 +457,11 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
         const double *__restrict sfd = cb_.sfd, *__restrict spd = cb_.spd,
                                  *__restrict svd = cb_.svd, *__restrict scd = cb_.scd,
                                  *__restrict fmst = cb_.flux_mst;
-        double *const *__restrict sedp = c_sedp_.data();
         double d0 = diss_[0], d1 = diss_[1], d2 = diss_[2], d3 = diss_[3];
         double heat = heat_step_;
-        const double *__restrict fslv_e = cb_.flux_slv;
         for (int e = 0; e < ne; e++) {
-            if (LEAVE && leaving[e]) {
-                sedp[e][0] = sedp[e][1] = sedp[e][2] = 0.0;
+            if (LEAVE && leaving[e])
                 continue;
-            }
             const double A = UNITA ? 1.0 : area[e];
             se += sed[e] * A;
             d0 += sfd[e] * A;
@@ -481,9 +469,6 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
             d2 += svd[e] * A;
             d3 += scd[e] * A;
             heat += fmst[e] * A;
-            sedp[e][0] = sed[e];
-            sedp[e][1] = fslv_e[e];
-            sedp[e][2] = fmst[e];
         }
         diss_[0] = d0, diss_[1] = d1, diss_[2] = d2, diss_[3] = d3;
         heat_step_ = heat;

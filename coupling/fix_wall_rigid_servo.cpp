@@ -51,7 +51,8 @@ int FixWallRigid::parse_servo(int narg, char **arg, int iarg)
                 fail("keyword 'servo ctrlPV' expects 'force' or 'torque'");
             const std::string pv = arg[iarg++];
             if (pv != "force" && pv != "torque")
-                fail("keyword 'servo ctrlPV' expects 'force' or 'torque', got '" + pv + "'");
+                fail("keyword 'servo ctrlPV' expects 'force' or 'torque', got '" + pv +
+                     "'");
             s.torque = pv == "torque";
             have_pv = true;
         } else if (kw == "axis") {
@@ -127,16 +128,15 @@ void FixWallRigid::init_servo()
     if (!s.target_var.empty()) {
         s.ivar = input->variable->find(const_cast<char *>(s.target_var.c_str()));
         if (s.ivar < 0 || !input->variable->equalstyle(s.ivar))
-            fail("servo target_val: v_" + s.target_var +
-                 " is not an equal-style variable");
+            fail("servo target_val: v_" + s.target_var + " is not an equal-style variable");
     } else {
         s.sp = -s.target; // the particles' force on the wall opposes the target
     }
     const double dt = update->dt;
     if (s.vmax >= neighbor->skin / (2.0 * dt)) {
         std::ostringstream o;
-        o << "servo vel_max " << s.vmax << " must stay below skin / (2 dt) = "
-          << neighbor->skin / (2.0 * dt);
+        o << "servo vel_max " << s.vmax
+          << " must stay below skin / (2 dt) = " << neighbor->skin / (2.0 * dt);
         fail(o.str());
     }
     double rmin = 1e300;
@@ -204,7 +204,8 @@ void FixWallRigid::final_integrate()
         else if (std::fabs(err) >= hi)
             k = s.op_min;
         else
-            k = scale * s.op_min + (1.0 - scale) * s.op_min * (std::fabs(err) - lo) / (hi - lo);
+            k = scale * s.op_min +
+                (1.0 - scale) * s.op_min * (std::fabs(err) - lo) / (hi - lo);
         op = -k * err;
         const double cap = ncontact > 0 ? s.op_min : s.op_max;
         if (std::fabs(op) > cap && op != 0.0)

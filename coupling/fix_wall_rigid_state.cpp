@@ -36,10 +36,7 @@ void FixWallRigid::clear_row(int i)
     double *r = row_[i];
     double *h = slot0(i);
     const ptrdiff_t stride = slot_stride();
-    rs_track_clear(&tracker_, r, h, stride);
-    for (int j = 0; j < capacity_; j++)
-        for (int x = 0; x < kSlotExtra; x++)
-            h[j * stride + hist_size() + x] = 0.0; /* sed, fluxSlv, fluxMst */
+    rs_track_clear(&tracker_, r, h, stride); /* the whole slot, its energies included */
     r[tprev_offset()] = NAN;
     for (size_t p = 0; p < predef_names_.size(); p++)
         r[pred_offset() + (int)p] = NAN;
@@ -360,8 +357,34 @@ void FixWallRigid::unpack_restart(int nlocal, int nth)
     const int n = static_cast<int>(extra[nlocal][m]) - 1;
     const double *rec = &extra[nlocal][m + 1];
     const int cin = (int)rec[0];
-    const int want = 1 + row_size() - capacity_ + cin * (1 + slot_size());
-    if (cin < 1 || n != want) {
+    const int rest = row_size() - capacity_;
+    const int want = 1 + rest + cin * (1 + slot_size());
+    /* A record written with every field of the contact's last call kept (files before
+     * the slots followed the law, or a law that reads them all): the fields this law
+     * does not read are left out. */
+    const int full = RS_HIST_SIZE(nstatev_);
+    std::vector<double> compact;
+    if (cin >= 1 && n != want && n == 1 + rest + cin * (1 + full)) {
+        const int hs = slot_size(), sv0 = rs_track_statev_at(&tracker_);
+        compact.assign(rec, rec + 1 + cin + rest);
+        for (int j = 0; j < cin; j++) {
+            const double *src = rec + 1 + cin + rest + (size_t)j * full;
+            std::vector<double> slot((size_t)hs, 0.0);
+            for (int b = 0; b <= RS_H_RDISP1; b++)
+                slot[b] = src[b];
+            if (!(tracker_.drop & RS_DROP_STRESS))
+                for (int b = 0; b < 3; b++)
+                    slot[RS_H_STRESS + b] = src[RS_H_STRESS + b];
+            for (int b = 0; b < nstatev_; b++)
+                slot[sv0 + b] = src[RS_H_STATEV + b];
+            if (!(tracker_.drop & RS_DROP_ENERGY))
+                for (int b = 0; b < 3; b++)
+                    slot[rs_track_energy_at(&tracker_) + b] =
+                        src[RS_H_STATEV + nstatev_ + b];
+            compact.insert(compact.end(), slot.begin(), slot.end());
+        }
+        rec = compact.data();
+    } else if (cin < 1 || n != want) {
         std::ostringstream o;
         o << "restart file has " << n << " history values per atom for " << cin
           << " contact slots; this fix needs " << want

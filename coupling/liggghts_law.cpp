@@ -18,7 +18,7 @@ namespace LCM = LIGGGHTS::ContactModels;
 
 /* LIGGGHTS's combination chosen at run time: each submodel behind its base class. */
 struct LiggghtsLaw::Model {
-    LCM::ContactModel<LCM::GranStyle<> > cm;
+    LCM::ContactModel<LCM::GranStyle<>> cm;
     Model(LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *h, int64_t hash)
         : cm(lmp, h, true /* a wall */, hash)
     {
@@ -53,7 +53,7 @@ LiggghtsLaw::LiggghtsLaw(LAMMPS *lmp, const std::string &fix_id,
     /* LIGGGHTS's selector consumes 'model X [tangential Y] [cohesion Z]
      * [rolling_friction W] [surface S]' and leaves the settings. It steps past a pair
      * only when more words follow, so the list ends with a word of no meaning. */
-    std::vector<std::vector<char> > store(words.size() + 1);
+    std::vector<std::vector<char>> store(words.size() + 1);
     std::vector<char *> argv;
     for (size_t k = 0; k <= words.size(); k++) {
         const std::string w = k < words.size() ? words[k] : std::string("end");

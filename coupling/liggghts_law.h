@@ -24,17 +24,17 @@ namespace LAMMPS_NS
 
 /// One contact of a sphere with the wall, as LIGGGHTS's walls describe it.
 struct LiggghtsContact {
-    int i;                  ///< local atom index
-    double radius;          ///< sphere radius
-    double overlap;         ///< penetration (> 0 touching; < 0 apart)
-    const double *normal;   ///< unit normal from the wall toward the centre
-    double *v;              ///< the sphere's velocity
-    double *omega;          ///< the sphere's angular velocity
-    double vwall[3];        ///< the wall material's velocity at the master point
-    double *history;        ///< the model's history values (LiggghtsLaw::nhistory())
-    int itype, jtype;       ///< particle type, wall type
-    double mass;            ///< the sphere's mass
-    bool update_history;    ///< false in a setup call (LIGGGHTS's shearupdate)
+    int i;                ///< local atom index
+    double radius;        ///< sphere radius
+    double overlap;       ///< penetration (> 0 touching; < 0 apart)
+    const double *normal; ///< unit normal from the wall toward the centre
+    double *v;            ///< the sphere's velocity
+    double *omega;        ///< the sphere's angular velocity
+    double vwall[3];      ///< the wall material's velocity at the master point
+    double *history;      ///< the model's history values (LiggghtsLaw::nhistory())
+    int itype, jtype;     ///< particle type, wall type
+    double mass;          ///< the sphere's mass
+    bool update_history;  ///< false in a setup call (LIGGGHTS's shearupdate)
 };
 
 class LiggghtsLaw final : public LIGGGHTS::IContactHistorySetup
@@ -43,7 +43,8 @@ class LiggghtsLaw final : public LIGGGHTS::IContactHistorySetup
     /// words: the model words and settings, e.g. {"model", "hertz", "tangential",
     /// "history", "rolling_friction", "epsd2"}. Errors go through lmp->error (the
     /// message names the fix by fix_id).
-    LiggghtsLaw(LAMMPS *lmp, const std::string &fix_id, const std::vector<std::string> &words);
+    LiggghtsLaw(LAMMPS *lmp, const std::string &fix_id,
+                const std::vector<std::string> &words);
     virtual ~LiggghtsLaw();
 
     /// Connects the model to the material properties (fix property/global), as

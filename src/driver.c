@@ -97,23 +97,22 @@ int rs_driver_set_law(rs_driver *d, const rs_law *law, const double *props, int 
     return RS_OK;
 }
 
-/* Doubles after the tracker's slot: the contact's sed, fluxSlv and fluxMst of its last
- * increment, which the law gets on entry. */
-#define SLOT_EXTRA 3
-
+/* A slot as the tracker lays it out for the law (track.h): what the law reads of the
+ * contact's last call, the energies included. */
 static ptrdiff_t slot_stride(const rs_driver *d)
 {
-    return RS_HIST_SIZE(d->nstatev) + SLOT_EXTRA;
+    return rs_track_slot_size(&d->tracker);
 }
 
 /* History storage, allocated on the first increment (capacity and nstatev are known):
- * per node its directory (capacity), then its slots, each the tracker's and SLOT_EXTRA. */
+ * per node its directory (capacity), then its slots. */
 static int alloc_history(rs_driver *d, rs_error *err)
 {
     d->tracker.capacity = d->capacity;
     d->tracker.nstatev = d->nstatev;
     d->tracker.ndir = rs_surface_ndir(d->surface);
     d->tracker.tracking = d->tracking;
+    d->tracker.drop = rs_law_drops(d->law);
     const ptrdiff_t stride = slot_stride(d);
     size_t per = (size_t)d->capacity * (size_t)(1 + stride);
     d->hist = (double *)calloc((size_t)d->n * per, sizeof(double));
@@ -160,13 +159,7 @@ static int call_law(rs_driver *d, int nd, rs_error *err)
                                   .temp = d->temp,
                                   .dtemp = d->dtemp};
     rs_cblock_inputs(&d->cb, &d->trk, &p, d->dt);
-    const int hs = RS_HIST_SIZE(ns);
-    for (int e = 0; e < d->trk.n; ++e) {
-        const double *x = d->trk.slot[e] + hs;
-        d->cb.sed[e] = x[0];
-        d->cb.flux_slv[e] = x[1];
-        d->cb.flux_mst[e] = x[2];
-    }
+    rs_track_load_energy(&d->tracker, &d->trk, d->cb.sed, d->cb.flux_slv, d->cb.flux_mst);
 
     /* One Abaqus step per driver; its increments count from 1, the call at t_k being
      * increment k + 1 from t_k to t_k + dt. */
@@ -265,14 +258,7 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     if (rc)
         return rc;
     const rs_contact_block *cb = &d->cb;
-    const int hs = RS_HIST_SIZE(d->nstatev);
-    for (int e = 0; e < d->trk.n; ++e) {
-        double *x = d->trk.slot[e] + hs;
-        const int gone = RS_DIR_IS_LEAVING(*d->trk.dir[e]);
-        x[0] = gone ? 0.0 : cb->sed[e];
-        x[1] = gone ? 0.0 : cb->flux_slv[e];
-        x[2] = gone ? 0.0 : cb->flux_mst[e];
-    }
+    rs_track_commit_energy(&d->tracker, &d->trk, cb->sed, cb->flux_slv, cb->flux_mst);
     rs_track_commit(&d->tracker, &d->trk, cb->stress, d->nstatev ? cb->statev : NULL);
 
     /* contact forces and torques, heat and energies */

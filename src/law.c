@@ -1,6 +1,7 @@
 /* rigidsurf: calling interface laws: property checks, the guarded block call, default
  * stiffness and conductance, and block defaults (Abaqus VUINTER conventions). */
 #include "rigidsurf/law.h"
+#include "rigidsurf/track.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -315,4 +316,14 @@ void rs_law_requests_merge(rs_law_requests *dst, const rs_law_requests *src)
         dst->step_min = src->step_min;
         dst->step_what = src->step_what;
     }
+}
+
+unsigned rs_law_drops(const rs_law *law)
+{
+    unsigned drop = 0;
+    if (law && (law->skips & RS_LAW_SKIPS_STRESS))
+        drop |= RS_DROP_STRESS;
+    if (law && (law->skips & RS_LAW_SKIPS_ENERGY))
+        drop |= RS_DROP_ENERGY;
+    return drop;
 }

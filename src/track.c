@@ -550,6 +550,7 @@ RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *t
     const double *n0 = c->nrm[0] + k0, *n1 = c->nrm[1] + k0, *n2 = c->nrm[2] + k0;
     const double *a0 = c->t1[0] + k0, *a1 = c->t1[1] + k0, *a2 = c->t1[2] + k0;
     double *const *slot = o->slot + e0;
+    const int hs = rs_track_slot_size(tr);
     int j = 0;
     for (; j + 4 <= m; j += 4) {
         double *const *h = slot + j;
@@ -572,8 +573,8 @@ RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *t
         const int k = k0 + j, e = e0 + j;
         double *h = slot[j];
         if (r->live[j] == 0.0)
-            for (int b = 0; b < 3 + tr->nstatev; b++)
-                h[RS_H_STRESS + b] = 0.0;
+            for (int b = RS_H_RDISP1 + 1; b < hs; b++)
+                h[b] = 0.0;
         h[RS_H_RDISP1] = r->rd1[j];
         *o->dir[e] = RS_DIR_LIVE(c->feature[k]);
     }
@@ -703,7 +704,7 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
      * they name points 0..n-1 in block order (checked here, not in a separate pass). */
     int ne = 0, k = 0;
     const int np = p->n, cap = tr->capacity;
-    const ptrdiff_t stride = p->slot_stride ? p->slot_stride : RS_HIST_SIZE(tr->nstatev);
+    const ptrdiff_t stride = p->slot_stride ? p->slot_stride : rs_track_slot_size(tr);
     const double tracking = tr->tracking, *prad = p->radius;
     const int *cpoint = c ? c->point : NULL, *cfeat = c ? c->feature : NULL;
     const double *cdist = c ? c->dist : NULL;

@@ -63,8 +63,10 @@ RS_MULTIVERSION
 void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress,
                    double *statev)
 {
-    const int nd = out->ndir, ns = tr->nstatev, n = out->n;
-    if (stress && nd == 2) {
+    const int nd = out->ndir, ns = tr->nstatev, n = out->n, sv0 = rs_track_statev_at(tr);
+    if (stress && (tr->drop & RS_DROP_STRESS)) {
+        memset(stress, 0, (size_t)nd * (size_t)n * sizeof *stress);
+    } else if (stress && nd == 2) {
         for (int e = 0; e < n; e++) {
             const double *h = out->slot[e];
             stress[2 * e] = h[RS_H_STRESS];
@@ -86,25 +88,29 @@ void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress
     }
     if (statev && ns > 0)
         for (int e = 0; e < n; e++)
-            RS_STATEV_COPY(ns, statev + (size_t)ns * e, out->slot[e] + RS_H_STATEV)
+            RS_STATEV_COPY(ns, statev + (size_t)ns * e, out->slot[e] + sv0)
 }
 
 void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stress,
                      const double *statev)
 {
     const int nd = out->ndir, ns = tr->nstatev, anyleave = out->nleave > 0;
-    if (!anyleave && stress && nd == 3) {
+    const int sv0 = rs_track_statev_at(tr);
+    if (tr->drop & RS_DROP_STRESS)
+        stress = NULL;
+    if (!anyleave && nd == 3 && (stress || (statev && ns > 0))) {
         /* The usual call: every entry live, stress(3, n). */
-        for (int e = 0; e < out->n; e++) {
-            double *h = out->slot[e];
-            const double *se = stress + (size_t)3 * e;
-            h[RS_H_STRESS] = se[0];
-            h[RS_H_STRESS + 1] = se[1];
-            h[RS_H_STRESS + 2] = se[2];
-        }
+        if (stress)
+            for (int e = 0; e < out->n; e++) {
+                double *h = out->slot[e];
+                const double *se = stress + (size_t)3 * e;
+                h[RS_H_STRESS] = se[0];
+                h[RS_H_STRESS + 1] = se[1];
+                h[RS_H_STRESS + 2] = se[2];
+            }
         if (statev && ns > 0)
             for (int e = 0; e < out->n; e++)
-                RS_STATEV_COPY(ns, out->slot[e] + RS_H_STATEV, statev + (size_t)ns * e)
+                RS_STATEV_COPY(ns, out->slot[e] + sv0, statev + (size_t)ns * e)
         return;
     }
     for (int e = 0; e < out->n; e++) {
@@ -120,13 +126,48 @@ void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stre
             h[RS_H_STRESS + 2] = nd == 3 ? se[2] : 0.0;
         }
         if (statev && ns > 0)
-            RS_STATEV_COPY(ns, h + RS_H_STATEV, statev + (size_t)ns * e)
+            RS_STATEV_COPY(ns, h + sv0, statev + (size_t)ns * e)
+    }
+}
+
+void rs_track_load_energy(const rs_tracker *tr, const rs_track_out *out, double *sed,
+                          double *flux_slv, double *flux_mst)
+{
+    const int n = out->n;
+    if (tr->drop & RS_DROP_ENERGY) {
+        memset(sed, 0, (size_t)n * sizeof *sed);
+        memset(flux_slv, 0, (size_t)n * sizeof *flux_slv);
+        memset(flux_mst, 0, (size_t)n * sizeof *flux_mst);
+        return;
+    }
+    const int en = rs_track_energy_at(tr);
+    for (int e = 0; e < n; e++) {
+        const double *h = out->slot[e] + en;
+        sed[e] = h[0];
+        flux_slv[e] = h[1];
+        flux_mst[e] = h[2];
+    }
+}
+
+void rs_track_commit_energy(const rs_tracker *tr, const rs_track_out *out,
+                            const double *sed, const double *flux_slv,
+                            const double *flux_mst)
+{
+    if (tr->drop & RS_DROP_ENERGY)
+        return;
+    const int en = rs_track_energy_at(tr);
+    for (int e = 0; e < out->n; e++) {
+        double *h = out->slot[e] + en;
+        const int live = !RS_DIR_IS_LEAVING(*out->dir[e]);
+        h[0] = live ? sed[e] : 0.0;
+        h[1] = live ? flux_slv[e] : 0.0;
+        h[2] = live ? flux_mst[e] : 0.0;
     }
 }
 
 void rs_track_clear(const rs_tracker *tr, double *dir, double *hist, ptrdiff_t stride)
 {
-    const int hs = RS_HIST_SIZE(tr->nstatev);
+    const int hs = rs_track_slot_size(tr);
     for (int j = 0; j < tr->capacity; j++) {
         dir[j] = RS_DIR_EMPTY;
         memset(hist + j * (stride ? stride : hs), 0, (size_t)hs * sizeof *hist);

@@ -212,7 +212,19 @@ struct rs_law {
     void (*destroy)(rs_law *law);  ///< optional: releases ctx
     rs_law_critical_step_fn critical_step; ///< optional: the time-step check
     rs_law_reach_fn reach;                 ///< optional: the default tracking thickness
+    unsigned skips; ///< RS_LAW_SKIPS_ flags: inputs the law never reads (0: it reads all)
 };
+
+/* What a law declares it does not read on entry, so that the contact's history need not
+ * keep it (the tracker's slot layout follows, rs_law_drops): the stress of the last call
+ * (the law computes its stress from its own state variables), and the sed, fluxSlv and
+ * fluxMst of the last call. A law that skips one gets zeros there. Loaded laws read
+ * everything. */
+#define RS_LAW_SKIPS_STRESS 1u
+#define RS_LAW_SKIPS_ENERGY 2u
+
+/// The tracker's RS_DROP_ flags for law (track.h): what its contacts' slots need not keep.
+unsigned rs_law_drops(const rs_law *law);
 
 /* Registry of built-in laws (props in order; statev count; src/laws/ documents each):
  *   bonded_interface  gap_cutoff E nu yield_stress hardening thickness conductivity; 3

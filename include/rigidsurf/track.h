@@ -36,18 +36,31 @@ extern "C" {
  *   RS_DIR_LEAVING(f) = -(f + 1) (<= -1) while the contact of feature f is emitted once
  *   more as gone (rs_track_commit frees it). Zeroed memory is an empty directory. A
  *   feature may be held by one slot only: two are an error (RS_ERR_HISTORY);
- * - its slots: `capacity` of RS_HIST_SIZE(nstatev) doubles, slot j at hist + j * stride
- *   (rs_particles.slot_stride). Slots may be contiguous per particle, or slot j of every
- *   particle may sit in one array, so that a particle with one contact touches its
+ * - its slots: `capacity` of rs_track_slot_size(tracker) doubles, slot j at hist + j *
+ *   stride (rs_particles.slot_stride). Slots may be contiguous per particle, or slot j of
+ *   every particle may sit in one array, so that a particle with one contact touches its
  *   directory and one slot only.
+ * A slot is the tracker's own fields (n, t1, slip, rdisp1), then what the law reads of
+ * the contact's last call: its stress (3), its state variables (nstatev), its sed,
+ * fluxSlv and fluxMst (3). A law that does not read the stress or the energies on entry
+ * says so (rs_law.skips); the tracker then drops them (rs_tracker.drop) and the slot is
+ * shorter. With nothing dropped the offsets are the RS_H_ constants and the size
+ * RS_HIST_SIZE(nstatev); in general rs_track_statev_at, rs_track_energy_at and
+ * rs_track_slot_size give them.
  * A slot's frame is n and t1; t2 = n x t1 (every 3D frame is right-handed). */
 #define RS_H_N 0       ///< normal at the last call (3)
 #define RS_H_T1 3      ///< t1 at the last call (3)
 #define RS_H_SLIP 6    ///< accumulated slip in (t1, t2) (2)
 #define RS_H_RDISP1 8  ///< rdisp(1) at the last call
 #define RS_H_STRESS 9  ///< stress(1:3) returned by the law at the last call (3)
-#define RS_H_STATEV 12 ///< law state variables (nstatev)
-#define RS_HIST_SIZE(nstatev) (12 + (nstatev))
+#define RS_H_STATEV 12 ///< law state variables (nstatev), with the stress kept
+#define RS_HIST_SIZE(nstatev) (15 + (nstatev)) ///< a slot that keeps everything
+
+/// What a tracker does not keep in its slots (rs_tracker.drop): the stress of the last
+/// call (the law's stress on entry is then zero), the sed, fluxSlv and fluxMst of the
+/// last call (zero on entry).
+#define RS_DROP_STRESS 1u
+#define RS_DROP_ENERGY 2u
 
 #define RS_DIR_EMPTY 0.0                       ///< a free slot (zeroed memory)
 #define RS_DIR_LIVE(f) ((double)(f) + 1.0)     ///< the slot holds feature f (f >= 0)
@@ -65,7 +78,24 @@ typedef struct rs_tracker {
     int nstatev;     ///< law state variables per contact
     int ndir;        ///< 2 (SEGMENTS) or 3
     double tracking; ///< contacts are kept while gap <= tracking
+    unsigned drop;   ///< RS_DROP_ flags: what the slots do not keep (0: everything)
 } rs_tracker;
+
+/// The offset of the state variables in a slot.
+static inline int rs_track_statev_at(const rs_tracker *tr)
+{
+    return RS_H_RDISP1 + 1 + ((tr->drop & RS_DROP_STRESS) ? 0 : 3);
+}
+/// The offset of sed, fluxSlv, fluxMst in a slot (meaningful unless RS_DROP_ENERGY).
+static inline int rs_track_energy_at(const rs_tracker *tr)
+{
+    return rs_track_statev_at(tr) + tr->nstatev;
+}
+/// Doubles of one slot.
+static inline int rs_track_slot_size(const rs_tracker *tr)
+{
+    return rs_track_energy_at(tr) + ((tr->drop & RS_DROP_ENERGY) ? 0 : 3);
+}
 
 /// A block of particles (SoA). The query points of the same block are their centres.
 typedef struct rs_particles {
@@ -125,6 +155,17 @@ void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress
 /// live contacts (either may be NULL), and frees the slots of leaving contacts.
 void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stress,
                      const double *statev);
+
+/// The sed, fluxSlv and fluxMst of each entry's last call, from its slot (zeros for a
+/// new contact, and for every contact when the tracker drops them), before the law call.
+void rs_track_load_energy(const rs_tracker *tr, const rs_track_out *out, double *sed,
+                          double *flux_slv, double *flux_mst);
+
+/// Keeps the live entries' sed, fluxSlv and fluxMst in their slots for the next call
+/// (nothing when the tracker drops them). Called before rs_track_commit.
+void rs_track_commit_energy(const rs_tracker *tr, const rs_track_out *out,
+                            const double *sed, const double *flux_slv,
+                            const double *flux_mst);
 
 /// Marks every slot of one particle empty and zeroes the slots (stride as in
 /// rs_particles.slot_stride; 0: contiguous).

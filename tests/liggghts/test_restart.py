@@ -28,6 +28,7 @@ at the restart point, so its fix grew from 4 slots; the restarted fix starts wit
 again and takes 12 from the file.
 """
 import math
+import os
 import shutil
 import struct
 
@@ -102,6 +103,33 @@ def body(s):
     corner_case(s)
     pocket_case(s)
     version_case(s)
+    layout_case(s)
+
+
+def layout_case(s):
+    """A restart file whose slots keep every field (written with hertz as a loaded C law,
+    which declares nothing it skips: 17 doubles a slot) read by law hertz, whose slots
+    keep what it reads (11: no stress, no energies). The restarted run equals the
+    continuous one of law hertz bit for bit, so the tracker's fields and the shear history
+    came through the change of layout."""
+    lib = os.environ.get("RS_HERTZ_ALL", "")
+    if not s.ck.check("layout: the hertz_all law library is built", os.path.isfile(lib), lib):
+        return
+    props = "props 5e7 0.3 2e8 0.25 0.7 0.4 0"
+    rot = "rotate origin 0 0 0 axis 0 0 1 omega 6"
+    ours = "fix w all wall/rigid surface drum.inp law hertz %s type 2 %s" % (props, rot)
+    user = ("fix w all wall/rigid surface drum.inp law user %s hertz_all statev 2 %s "
+            "type 2 %s" % (lib, props, rot))
+    full = deck_atoms() + setup_lines(ours) + "run %d\n" % N
+    full += L.dump_lines("d", N, "layout_full.dump") + "run %d\n" % N
+    s.run("layout_full", full)
+    s.run("layout_first", deck_atoms() + setup_lines(user) +
+          "run %d\nwrite_restart layout.restart\n" % N)
+    second = restarted_deck("layout.restart",
+                            "group g1 id 1\ngroup g2 id 2 3\n" + setup_lines(ours))
+    second += L.dump_lines("d", N, "layout_restarted.dump") + "run %d\n" % N
+    s.run("layout_restarted", second)
+    check_identical(s, "layout")
 
 
 def restart_case(s, tag, atoms, lines, ncontacts, what):
@@ -182,8 +210,10 @@ def version_case(s):
                len(at) == 1 and nstatev >= 0 and npred == 0, "at %s" % at)
     if len(at) != 1:
         return
-    # each atom's record: its length + 1, the capacity, then the directory (row first)
-    atom_size = (cap + 1 + npred) + cap * (12 + nstatev + 3)
+    # each atom's record: its length + 1, the capacity, then the directory (row first);
+    # a hertz slot keeps n, t1, slip, rdisp1 and the state variables (hertz reads neither
+    # its last stress nor its energies: rs_law.skips)
+    atom_size = (cap + 1 + npred) + cap * (9 + nstatev)
     rec = struct.pack("<2d", 2.0 + atom_size, cap)
     recs = [k for k in range(len(data)) if data.startswith(rec, k)]
     old = bytearray(data)

@@ -141,7 +141,7 @@ static void add_drum(clist *l, int point, int feature, const double x[3], const 
 
 static rs_tracker tracker(int ndir)
 {
-    rs_tracker tr = {CAP, NS, ndir, 1e-3};
+    rs_tracker tr = {CAP, NS, ndir, 1e-3, 0};
     return tr;
 }
 

@@ -124,7 +124,7 @@ static void test_zeroed_directory_is_empty(void)
     for (int cap = 3; cap <= 4; cap++) {
         zblock b;
         ENSURE(zblock_init(&b, cap));
-        rs_tracker tr = {cap, NS, 3, 1e-3};
+        rs_tracker tr = {cap, NS, 3, 1e-3, 0};
         rs_track_out o;
         memset(&o, 0, sizeof o);
         rs_error err;
@@ -208,7 +208,7 @@ static void test_feature_in_two_slots_is_error(void)
         for (int which = 0; which < 3; which++) {
             zblock b;
             ENSURE(zblock_init(&b, cap));
-            rs_tracker tr = {cap, NS, 3, 1e-3};
+            rs_tracker tr = {cap, NS, 3, 1e-3, 0};
             rs_track_out o;
             memset(&o, 0, sizeof o);
             rs_error err;

@@ -49,7 +49,7 @@ static void one_init(one *o, const rs_tracker *tr, double radius)
  * query and frame, drot = I to 1e-12 and no slip accumulates. */
 static void test_drot_identity_rigid_motion_through_revolution_query(void)
 {
-    rs_tracker tr = {4, 0, 3, 1e-3};
+    rs_tracker tr = {4, 0, 3, 1e-3, 0};
     rs_surface s;
     rs_contacts c = {0};
     rs_track_out out = {0};
@@ -139,7 +139,7 @@ static void path_point(double sc, double d, double *r, double *z, double *tr, do
  * v . t1 = u and slip = (N - 1) u dt after N calls (the first opens the contact). */
 static void test_history_handover_across_fillet(void)
 {
-    rs_tracker tr = {4, 0, 3, 1e-3};
+    rs_tracker tr = {4, 0, 3, 1e-3, 0};
     rs_surface s;
     rs_contacts c = {0};
     rs_track_out out = {0};

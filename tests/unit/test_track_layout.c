@@ -1,0 +1,208 @@
+/* The slot layout follows what the law reads (track.h, rs_tracker.drop; law.h,
+ * rs_law.skips): a tracker that drops the stress and the energies of the last call
+ * keeps the same kinematics and state variables as one that keeps everything, gives the
+ * law zeros where it dropped, and keeps what it keeps from one call to the next. The
+ * reference is the same tracker with nothing dropped, on the same contacts. */
+#include "rigidsurf/law.h"
+#include "rigidsurf/track.h"
+#include "rigidsurf/vec.h"
+#include "rs_test.h"
+
+#include <stdlib.h>
+
+#define NS 2
+#define MAXC 4
+
+/* Two spheres on the floor z = 0 (feature 0) and against the wall x = 0 (feature 1),
+ * with their history in calloc'd slots of the tracker's size. */
+typedef struct scene {
+    rs_tracker tr;
+    double x[2], y[2], z[2], vx[2], vy[2], vz[2], r[2];
+    int id[2];
+    double *dir[2], *hist[2];
+    rs_particles p;
+    int point[MAXC], feature[MAXC];
+    double xm[3][MAXC], nrm[3][MAXC], t1[3][MAXC], t2[3][MAXC], dist[MAXC], curv[2][MAXC];
+    rs_contacts c;
+    rs_track_out out;
+} scene;
+
+static void scene_init(scene *s, unsigned drop)
+{
+    memset(s, 0, sizeof *s);
+    s->tr = (rs_tracker){2, NS, 3, 1e-3, drop};
+    const int hs = rs_track_slot_size(&s->tr);
+    for (int i = 0; i < 2; i++) {
+        s->dir[i] = calloc(2, sizeof(double));
+        s->hist[i] = calloc((size_t)2 * hs, sizeof(double));
+        s->id[i] = 1 + i;
+        s->r[i] = 0.01;
+        s->x[i] = 0.0099 + 0.02 * i;
+        s->y[i] = 0.0;
+        s->z[i] = 0.0098;
+        s->vx[i] = -0.1 - 0.05 * i;
+        s->vy[i] = 0.3;
+        s->vz[i] = -0.2;
+    }
+    s->p = (rs_particles){2,    s->x, s->y, s->z,  s->vx,  s->vy,   s->vz, NULL,
+                          NULL, NULL, s->r, s->id, s->dir, s->hist, 0};
+    s->c.cap = MAXC;
+    s->c.point = s->point;
+    s->c.feature = s->feature;
+    for (int d = 0; d < 3; d++) {
+        s->c.xm[d] = s->xm[d];
+        s->c.nrm[d] = s->nrm[d];
+        s->c.t1[d] = s->t1[d];
+        s->c.t2[d] = s->t2[d];
+    }
+    s->c.dist = s->dist;
+    s->c.curv[0] = s->curv[0];
+    s->c.curv[1] = s->curv[1];
+}
+
+static void scene_free(scene *s)
+{
+    for (int i = 0; i < 2; i++) {
+        free(s->dir[i]);
+        free(s->hist[i]);
+    }
+    rs_track_out_free(&s->out);
+}
+
+static void add_plane(scene *s, int point, int feature, const double n[3],
+                      const double t1[3])
+{
+    const int k = s->c.n++;
+    const double x[3] = {s->x[point], s->y[point], s->z[point]};
+    double t2[3];
+    rs_cross3(n, t1, t2);
+    const double dist = rs_dot3(x, n);
+    s->point[k] = point;
+    s->feature[k] = feature;
+    for (int d = 0; d < 3; d++) {
+        s->xm[d][k] = x[d] - dist * n[d];
+        s->nrm[d][k] = n[d];
+        s->t1[d][k] = t1[d];
+        s->t2[d][k] = t2[d];
+    }
+    s->dist[k] = dist;
+}
+
+/* One call: the contacts of both spheres, the tracker, a stand-in law (stress, statev,
+ * energies from the kinematics) and the commit. stress_in, sed_in: what the law got. */
+static int step(scene *s, double dt, double *stress_in, double *statev_out, double *sed_in)
+{
+    const double nf[3] = {0, 0, 1}, af[3] = {1, 0, 0}, nw[3] = {1, 0, 0}, aw[3] = {0, 1, 0};
+    s->c.n = 0;
+    add_plane(s, 0, RS_FEATURE(RS_FEAT_FACE, 0), nf, af);
+    add_plane(s, 0, RS_FEATURE(RS_FEAT_FACE, 1), nw, aw);
+    add_plane(s, 1, RS_FEATURE(RS_FEAT_FACE, 0), nf, af);
+    rs_error err;
+    rs_error_clear(&err);
+    if (rs_track_update(&s->tr, NULL, NULL, dt, &s->p, &s->c, &s->out, &err) != RS_OK)
+        return -1;
+    const int n = s->out.n;
+    double stress[3 * MAXC], statev[NS * MAXC], sed[MAXC], fs[MAXC], fm[MAXC];
+    rs_track_load(&s->tr, &s->out, stress, statev);
+    rs_track_load_energy(&s->tr, &s->out, sed, fs, fm);
+    for (int e = 0; e < n; e++) {
+        for (int d = 0; d < 3; d++)
+            stress_in[3 * e + d] = stress[3 * e + d];
+        sed_in[e] = sed[e] + fs[e] + fm[e];
+        /* the stand-in law: its state accumulates the slip; stress and energies follow */
+        statev[NS * e] += RS_A2(s->out.drdisp, 3, 1, e);
+        statev[NS * e + 1] += RS_A2(s->out.drdisp, 3, 2, e);
+        stress[3 * e] = 1e3 * RS_A2(s->out.rdisp, 3, 0, e);
+        stress[3 * e + 1] = 2e3 * statev[NS * e];
+        stress[3 * e + 2] = 2e3 * statev[NS * e + 1];
+        sed[e] = 5.0 + e, fs[e] = 0.25 * e, fm[e] = -0.5;
+        for (int b = 0; b < NS; b++)
+            statev_out[NS * e + b] = statev[NS * e + b];
+    }
+    rs_track_commit_energy(&s->tr, &s->out, sed, fs, fm);
+    rs_track_commit(&s->tr, &s->out, stress, statev);
+    for (int i = 0; i < 2; i++) {
+        s->x[i] += s->vx[i] * dt;
+        s->y[i] += s->vy[i] * dt;
+        s->z[i] += s->vz[i] * dt * 0.01;
+    }
+    return n;
+}
+
+static void test_sizes(void)
+{
+    rs_tracker all = {4, 3, 3, 0.0, 0},
+               lean = {4, 3, 3, 0.0, RS_DROP_STRESS | RS_DROP_ENERGY};
+    ENSURE(rs_track_slot_size(&all) == RS_HIST_SIZE(3));
+    ENSURE(rs_track_statev_at(&all) == RS_H_STATEV);
+    ENSURE(rs_track_energy_at(&all) == RS_H_STATEV + 3);
+    ENSURE(rs_track_slot_size(&lean) == RS_H_RDISP1 + 1 + 3);
+    ENSURE(rs_track_statev_at(&lean) == RS_H_RDISP1 + 1);
+    /* the built-in hertz and hooke read neither; a loaded law (skips 0) reads both */
+    ENSURE(rs_law_drops(rs_law_find("hertz")) == (RS_DROP_STRESS | RS_DROP_ENERGY));
+    ENSURE(rs_law_drops(rs_law_find("hooke")) == (RS_DROP_STRESS | RS_DROP_ENERGY));
+    ENSURE(rs_law_drops(rs_law_find("bonded_interface")) == 0);
+    rs_law loaded;
+    memset(&loaded, 0, sizeof loaded);
+    ENSURE(rs_law_drops(&loaded) == 0);
+}
+
+static void test_dropped_fields(void)
+{
+    const unsigned drops[] = {RS_DROP_STRESS, RS_DROP_ENERGY,
+                              RS_DROP_STRESS | RS_DROP_ENERGY};
+    for (int v = 0; v < 3; v++) {
+        scene ref, lean;
+        scene_init(&ref, 0);
+        scene_init(&lean, drops[v]);
+        int same = 1, zeros = 1, kept = 1, calls = 0;
+        for (int it = 0; it < 6; it++) {
+            double sa[3 * MAXC], sb[3 * MAXC], va[NS * MAXC], vb[NS * MAXC], ea[MAXC],
+                eb[MAXC];
+            const int na = step(&ref, 1e-3, sa, va, ea), nb = step(&lean, 1e-3, sb, vb, eb);
+            ENSURE(na == 3 && nb == 3);
+            if (na != nb || na < 0)
+                break;
+            calls++;
+            for (int e = 0; e < na; e++) {
+                for (int d = 0; d < 3; d++) {
+                    same &= RS_A2(ref.out.rdisp, 3, d, e) == RS_A2(lean.out.rdisp, 3, d, e);
+                    same &=
+                        RS_A2(ref.out.drdisp, 3, d, e) == RS_A2(lean.out.drdisp, 3, d, e);
+                    same &= ref.out.slot[e][RS_H_N + d] == lean.out.slot[e][RS_H_N + d];
+                }
+                for (int d = 0; d < 4; d++)
+                    same &= ref.out.drot[4 * e + d] == lean.out.drot[4 * e + d];
+                for (int b = 0; b < NS; b++)
+                    same &= va[NS * e + b] == vb[NS * e + b];
+                /* what was dropped comes in as zero; what was kept as the reference's */
+                for (int d = 0; d < 3; d++) {
+                    if (drops[v] & RS_DROP_STRESS)
+                        zeros &= sb[3 * e + d] == 0.0;
+                    else
+                        kept &= sb[3 * e + d] == sa[3 * e + d];
+                }
+                if (drops[v] & RS_DROP_ENERGY)
+                    zeros &= eb[e] == 0.0;
+                else
+                    kept &= eb[e] == ea[e];
+                /* from the second call on, the reference brought back what it kept */
+                if (it > 0)
+                    kept &= ea[e] == 5.0 + e + 0.25 * e - 0.5 && sa[3 * e] != 0.0;
+            }
+        }
+        ENSURE(calls == 6);
+        ENSURE(same);
+        ENSURE(zeros);
+        ENSURE(kept);
+        scene_free(&ref);
+        scene_free(&lean);
+    }
+}
+
+int main(void)
+{
+    RS_RUN(test_sizes);
+    RS_RUN(test_dropped_fields);
+    return rs_test_summary();
+}
