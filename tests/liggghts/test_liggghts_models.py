@@ -47,8 +47,8 @@ triangle agrees to 3e-16. The difference at the edge is not explained here (LIGG
 mesh walls keep a contact per triangle and hand it over at the edge; rigidsurf has one
 contact on the flat pair).
 
-Not covered here: a particle with several contacts at a concave fold (the shares of
-docs/conventions.md) under law liggghts.
+A particle with several contacts at a concave fold (the shares of docs/conventions.md)
+under law liggghts: test_liggghts_folds.py.
 
 Bad input: unknown model name, unknown setting, a missing material property
 (LIGGGHTS's message), `props`, `area 2`, `temperature 300` and
