@@ -20,10 +20,11 @@ static int put_params(const parser *ps, const rs_profile_def *def, draft *d)
     if (!ops || !ops->syntax) {
         char found[32];
         snprintf(found, sizeof found, "%d", (int)def->kind);
-        return rs_sf_error(ps, RS_ERR_ARG,
-                           "unknown kind %s (expected RS_SURF_SEGMENTS, RS_SURF_CYLINDER or "
-                           "RS_SURF_REVOLUTION)%s",
-                           found, NULL);
+        return rs_sf_error(
+            ps, RS_ERR_ARG,
+            "unknown kind %s (expected RS_SURF_SEGMENTS, RS_SURF_CYLINDER or "
+            "RS_SURF_REVOLUTION)%s",
+            found, NULL);
     }
     d->active = 1;
     d->kline = ps->line;
@@ -37,7 +38,8 @@ static int put_params(const parser *ps, const rs_profile_def *def, draft *d)
                            NULL, NULL);
     for (size_t c = 0; c < len; c++)
         if (!isprint((unsigned char)name[c]))
-            return rs_sf_error(ps, RS_ERR_ARG, "expected a printable NAME=%s%s", NULL, NULL);
+            return rs_sf_error(ps, RS_ERR_ARG, "expected a printable NAME=%s%s", NULL,
+                               NULL);
     memcpy(d->name, name, len + 1);
     if (def->sides < 0 || def->sides > 2)
         return rs_sf_error(ps, RS_ERR_ARG,
@@ -54,15 +56,15 @@ static int put_params(const parser *ps, const rs_profile_def *def, draft *d)
     }
     if (def->bounded) {
         if (!(d->syntax->params & RS_SF_EXTENT))
-            return rs_sf_error(ps, RS_ERR_ARG, "EXTENT is only for TYPE=CYLINDER%s%s",
-                               NULL, NULL);
+            return rs_sf_error(ps, RS_ERR_ARG, "EXTENT is only for TYPE=CYLINDER%s%s", NULL,
+                               NULL);
         int rc;
         if ((rc = rs_sf_value(ps, RS_ERR_ARG, def->zmin, NULL)) ||
             (rc = rs_sf_value(ps, RS_ERR_ARG, def->zmax, NULL)))
             return rc;
         if (!(def->zmax > def->zmin))
-            return rs_sf_error(ps, RS_ERR_ARG, "expected EXTENT with zmin < zmax%s%s",
-                               NULL, NULL);
+            return rs_sf_error(ps, RS_ERR_ARG, "expected EXTENT with zmin < zmax%s%s", NULL,
+                               NULL);
         d->bounded = 1;
         d->zmin = def->zmin;
         d->zmax = def->zmax;
@@ -73,7 +75,9 @@ static int put_params(const parser *ps, const rs_profile_def *def, draft *d)
 /* The coordinate lines: a, b at line 2, c at line 3 (CYLINDER). */
 static int put_points(parser *ps, const rs_profile_def *def, draft *d)
 {
-    const int need = d->kind == RS_SURF_CYLINDER ? 2 : d->kind == RS_SURF_REVOLUTION ? 1 : 0;
+    const int need = d->kind == RS_SURF_CYLINDER     ? 2
+                     : d->kind == RS_SURF_REVOLUTION ? 1
+                                                     : 0;
     const double *pts[3] = {def->a, def->b, def->c};
     for (int k = 0; k < (need ? need + 1 : 0); k++) {
         ps->line = d->kline + (k < 2 ? 1 : 2);

@@ -367,7 +367,9 @@ typedef struct rs_mesh_def {
 } rs_mesh_def;
 
 /// An rs_mesh_def with its defaults.
+/* clang-format off */
 #define RS_MESH_DEF_INIT {NULL, NULL, 0, 1.0, 0, {0, 0, 0, 0, 0, 0, 0, 0, 0}}
+/* clang-format on */
 
 /// Builds a MESH surface from arrays in memory: nv vertices xyz (3 nv doubles, x y z of
 /// each) and nt triangles tri (3 nt vertex indices from 0, the node order giving the

@@ -91,8 +91,8 @@ void rs_mesh_free(rs_mesh *m);
 /// The frame of a mesh's placement a, b, c (abc): frame[0] the origin a, frame[1 .. 3]
 /// ex toward b, ey toward c in the a-b-c plane, ez = ex x ey; the identity when placed
 /// is 0. RS_ERR_GEOMETRY prefixed by where when a, b, c span no plane.
-int rs_mesh_placement(int placed, const double abc[9], const char *where, double frame[4][3],
-                      rs_error *err);
+int rs_mesh_placement(int placed, const double abc[9], const char *where,
+                      double frame[4][3], rs_error *err);
 
 /// Builds the mesh of a polygon soup (rs_mesh_build, origin naming it in messages) into
 /// surface s (kind MESH, its table of operations set) with the scale and placement frame

@@ -53,17 +53,15 @@ int rs_surface_make_mesh(const double *xyz, int nv, const int *tri, int nt,
     if (rc)
         return rc;
     if (!xyz || !tri)
-        return rs_error_set(err, RS_ERR_ARG,
-                            "%s: NULL %s array (expected %s)", origin,
+        return rs_error_set(err, RS_ERR_ARG, "%s: NULL %s array (expected %s)", origin,
                             !xyz ? "vertex" : "triangle",
                             !xyz ? "3 nv coordinates x, y, z" : "3 nt vertex indices");
     if (nv < 3)
-        return rs_error_set(err, RS_ERR_ARG,
-                            "%s: nv = %d vertices (expected at least 3)", origin, nv);
+        return rs_error_set(err, RS_ERR_ARG, "%s: nv = %d vertices (expected at least 3)",
+                            origin, nv);
     if (nt < 1 || nt > RS_MESH_MAX_TRI)
-        return rs_error_set(err, RS_ERR_ARG,
-                            "%s: nt = %d triangles (expected 1 to %d)", origin, nt,
-                            RS_MESH_MAX_TRI);
+        return rs_error_set(err, RS_ERR_ARG, "%s: nt = %d triangles (expected 1 to %d)",
+                            origin, nt, RS_MESH_MAX_TRI);
     for (long k = 0; k < 3l * nt; k++)
         if (tri[k] < 0 || tri[k] >= nv)
             return rs_error_set(err, RS_ERR_ARG,
@@ -76,7 +74,7 @@ int rs_surface_make_mesh(const double *xyz, int nv, const int *tri, int nt,
         return rc;
     /* The soup points at the caller's arrays, which rs_mesh_build only reads (it takes
      * the soup const); each polygon is one triangle. */
-    rs_soup soup = {nv, nt, (double *)xyz, malloc(((size_t)nt + 1) * sizeof(int)),
+    rs_soup soup = {nv,         nt,  (double *)xyz, malloc(((size_t)nt + 1) * sizeof(int)),
                     (int *)tri, NULL};
     if (!soup.off)
         return rs_error_set(err, RS_ERR_NOMEM, "%s: out of memory building the mesh",

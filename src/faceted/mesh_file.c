@@ -78,8 +78,8 @@ static int stl_check(const char *file, const char *where, rs_error *err)
     return rc;
 }
 
-int rs_mesh_placement(int placed, const double abc[9], const char *where, double frame[4][3],
-                      rs_error *err)
+int rs_mesh_placement(int placed, const double abc[9], const char *where,
+                      double frame[4][3], rs_error *err)
 {
     double *a = frame[0], *ex = frame[1], *ey = frame[2], *ez = frame[3];
     for (int d = 0; d < 3; d++) {
