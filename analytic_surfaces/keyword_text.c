@@ -63,14 +63,29 @@ int rs_sf_number(const parser *ps, const tok *t, double *v)
     char *end;
     errno = 0;
     double x = strtod(buf, &end);
-    if (end != buf + t->len || end == buf || !isfinite(x))
+    if (end != buf + t->len || end == buf)
         return rs_sf_error(ps, RS_ERR_PARSE, "expected a finite number, found '%s'%s", show,
                            NULL);
+    int rc = rs_sf_value(ps, RS_ERR_PARSE, x, show);
+    if (rc)
+        return rc;
+    *v = x;
+    return RS_OK;
+}
+
+int rs_sf_value(const parser *ps, int code, double x, const char *show)
+{
+    char buf[32];
+    if (!show) {
+        snprintf(buf, sizeof buf, "%.17g", x);
+        show = buf;
+    }
+    if (!isfinite(x))
+        return rs_sf_error(ps, code, "expected a finite number, found '%s'%s", show, NULL);
     if (fabs(x) > RS_COORD_MAX)
-        return rs_sf_error(ps, RS_ERR_PARSE,
+        return rs_sf_error(ps, code,
                            "expected a number of magnitude at most 1e100, found '%s'%s",
                            show, NULL);
-    *v = x;
     return RS_OK;
 }
 

@@ -529,8 +529,10 @@ int rs_profile_fillet(rs_profile *p, double r, int **line, const char *origin,
         const double *q0 = fi[k].on ? fi[k].TB : g->p0;
         const double *q1 = fi[jend].on ? fi[jend].TA : g->p1;
         snprintf(where, sizeof where, "%s:%d", origin, (*line)[k]);
-        rc = g->type == RS_LINE ? rs_segment_line(&ns[o], q0, q1, where, err)
-                                : rs_segment_circl(&ns[o], q0, q1, g->pm, where, err);
+        /* a PARAB keeps its ends: corners touching it stay sharp */
+        rc = g->type == RS_LINE    ? rs_segment_line(&ns[o], q0, q1, where, err)
+             : g->type == RS_CIRCL ? rs_segment_circl(&ns[o], q0, q1, g->pm, where, err)
+                                   : rs_segment_parab(&ns[o], q0, g->pm, q1, where, err);
         if (rc)
             goto done;
         nl[o++] = (*line)[k];

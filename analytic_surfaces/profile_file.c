@@ -32,7 +32,7 @@ static int push_segment(const parser *ps, draft *d, const rs_segment *g)
 
 static int data_line(const parser *ps, tok *t, int nt, draft *d)
 {
-    char word[16], show[64], where[300];
+    char word[16], show[64];
     int ncoord_needed = d->kind == RS_SURF_CYLINDER     ? 2
                         : d->kind == RS_SURF_REVOLUTION ? 1
                                                         : 0;
@@ -64,12 +64,16 @@ static int data_line(const parser *ps, tok *t, int nt, draft *d)
         return RS_OK;
     }
     rs_sf_normkey(&t[0], word, sizeof word);
-    int want;
-    if (strcmp(word, "START") == 0 || strcmp(word, "LINE") == 0)
+    rs_profile_word w;
+    int want = 4;
+    if (strcmp(word, "START") == 0 || strcmp(word, "LINE") == 0) {
+        w = word[0] == 'S' ? RS_WORD_START : RS_WORD_LINE;
         want = 2;
-    else if (strcmp(word, "CIRCL") == 0 || strcmp(word, "PARAB") == 0)
-        want = 4;
-    else {
+    } else if (strcmp(word, "CIRCL") == 0) {
+        w = RS_WORD_CIRCL;
+    } else if (strcmp(word, "PARAB") == 0) {
+        w = RS_WORD_PARAB;
+    } else {
         rs_sf_showtok(&t[0], show, sizeof show);
         return rs_sf_error(
             ps, RS_ERR_PARSE,
@@ -81,11 +85,18 @@ static int data_line(const parser *ps, tok *t, int nt, draft *d)
         snprintf(msg, sizeof msg, "%d values, found %d", want, nt - 1);
         return rs_sf_error(ps, RS_ERR_PARSE, "%s takes %s", word, msg);
     }
-    double v[4];
+    double v[4] = {0, 0, 0, 0};
     rc = rs_sf_numbers(ps, t + 1, want, v);
     if (rc)
         return rc;
-    if (strcmp(word, "START") == 0) {
+    return rs_sf_profile_item(ps, d, w, v);
+}
+
+int rs_sf_profile_item(const parser *ps, draft *d, rs_profile_word word, const double v[4])
+{
+    static const char *const names[] = {"START", "LINE", "CIRCL", "PARAB"};
+    char where[300];
+    if (word == RS_WORD_START) {
         if (d->started)
             return rs_sf_error(
                 ps, RS_ERR_PARSE,
@@ -98,12 +109,14 @@ static int data_line(const parser *ps, tok *t, int nt, draft *d)
         return RS_OK;
     }
     if (!d->started)
-        return rs_sf_error(ps, RS_ERR_PARSE, "expected START before %s%s", word, NULL);
+        return rs_sf_error(ps, RS_ERR_PARSE, "expected START before %s%s", names[word],
+                           NULL);
     snprintf(where, sizeof where, "%s:%d", ps->origin, ps->line);
     rs_segment g;
-    if (word[0] == 'L')
+    int rc;
+    if (word == RS_WORD_LINE)
         rc = rs_segment_line(&g, d->cur, v, where, ps->err);
-    else if (word[0] == 'C')
+    else if (word == RS_WORD_CIRCL)
         rc = rs_segment_circl(&g, d->cur, v, v + 2, where, ps->err);
     else
         rc = rs_segment_parab(&g, d->cur, v, v + 2, where, ps->err);

@@ -86,6 +86,13 @@ void rs_sf_showtok(const tok *t, char *out, size_t cap);
 int rs_sf_number(const parser *ps, const tok *t, double *v);
 /// n numbers.
 int rs_sf_numbers(const parser *ps, const tok *t, int n, double *v);
+/// The range of a number: finite and of magnitude at most RS_COORD_MAX, else an error of
+/// the given code that shows it as show (NULL: the value itself).
+int rs_sf_value(const parser *ps, int code, double x, const char *show);
+/// One profile line of draft d at the parser's line: word RS_WORD_START (v: x, y) or a
+/// segment, RS_WORD_LINE (x1, y1), RS_WORD_CIRCL (x1, y1, xc, yc), RS_WORD_PARAB (xm, ym,
+/// x1, y1), from the current point (profile_file.c).
+int rs_sf_profile_item(const parser *ps, draft *d, rs_profile_word word, const double v[4]);
 /// A line whose first value holds blanks, its values written without commas: an error
 /// that shows the line's form. A profile word shows its own form; a line that starts
 /// with a number shows points (its form; NULL where no point line is expected: no

@@ -93,12 +93,14 @@ install(FILES ${PROJECT_SOURCE_DIR}/src/cli/rigidsurf_migrate_motion.py
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs
   FILES_MATCHING PATTERN "*.md")
-# The examples' sources only: not their outputs (out/), nor the CTest file.
+# The examples' sources only: not their outputs (out/), nor the CTest file
+# examples/CMakeLists.txt (examples/coupling/CMakeLists.txt builds that example against
+# the installed package, and is installed with it).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples
   USE_SOURCE_PERMISSIONS
   PATTERN out EXCLUDE
   PATTERN __pycache__ EXCLUDE
   PATTERN .gitignore EXCLUDE
-  PATTERN CMakeLists.txt EXCLUDE
+  REGEX "/examples/CMakeLists\\.txt$" EXCLUDE
   REGEX "\\.(vtk|png|so|o)$" EXCLUDE
   PATTERN log.liggghts EXCLUDE)

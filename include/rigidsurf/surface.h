@@ -313,6 +313,78 @@ int rs_surface_read(const char *path, const char *name, rs_surface *s, rs_error 
 /// Parses surface NAME (NULL: the first) from text; origin names the text in messages.
 int rs_surface_parse(const char *text, const char *origin, const char *name, rs_surface *s,
                      rs_error *err);
+/// A word of a profile built from arrays (rs_surface_make_profile): the keyword text's
+/// START, LINE, CIRCL and PARAB.
+typedef enum rs_profile_word {
+    RS_WORD_START = 0,        ///< v = x, y: the first point
+    RS_WORD_LINE = RS_LINE,   ///< v = x1, y1
+    RS_WORD_CIRCL = RS_CIRCL, ///< v = x1, y1, xc, yc: under 180 deg, the short way
+    RS_WORD_PARAB = RS_PARAB  ///< v = xm, ym, x1, y1: the middle point on the curve
+} rs_profile_word;
+
+/// One line of a profile in its plane (CYLINDER: local x, y; REVOLUTION: r, z).
+typedef struct rs_profile_item {
+    rs_profile_word word;
+    double v[4]; ///< its values in the order of the keyword text; unused ones ignored
+} rs_profile_item;
+
+/// What the *SURFACE line and the coordinate lines of an analytic surface say, for
+/// rs_surface_make_profile. Zeroed: unnamed, one side, no fillet, unbounded.
+typedef struct rs_profile_def {
+    rs_surface_kind kind; ///< RS_SURF_SEGMENTS, RS_SURF_CYLINDER or RS_SURF_REVOLUTION
+    const char *name;     ///< NAME= (NULL or "": unnamed), at most 79 printable characters
+    const char *origin;   ///< names the arrays in messages (NULL: "<arrays>")
+    int sides;            ///< SIDES=: 0 (the default, one side), 1 or 2
+    double fillet;        ///< FILLET RADIUS= (0: none)
+    double a[3];          ///< CYLINDER, REVOLUTION: a, the origin
+    double b[3];          ///< CYLINDER: b on the local x axis; REVOLUTION: b on the axis
+    double c[3];          ///< CYLINDER: c on the generator (local z)
+    int bounded;          ///< CYLINDER: 1 for EXTENT=zmin, zmax along the generator
+    double zmin, zmax;    ///< with bounded: zmin < zmax
+} rs_profile_def;
+
+/// Builds an analytic surface from arrays in memory: def's parameters and points, and
+/// nitems profile lines, the first of them START. It is the surface that the same
+/// *SURFACE written as keyword text gives (rs_surface_parse), through the same checks:
+/// errors read "ORIGIN:LINE: what was expected", LINE counted as in that text (1: the
+/// *SURFACE line with def's parameters; then a, b and, for CYLINDER, c; then items[0],
+/// items[1], ... one a line). A value that is not finite or exceeds RS_COORD_MAX, a bad
+/// parameter or a NULL pointer is RS_ERR_ARG; a degenerate profile or frame
+/// RS_ERR_GEOMETRY. On error s is zeroed.
+int rs_surface_make_profile(const rs_profile_def *def, const rs_profile_item *items,
+                            int nitems, rs_surface *s, rs_error *err);
+
+/// What a mesh file's *SURFACE line and placement say, for rs_surface_make_mesh. Zeroed
+/// except scale = 1 (RS_MESH_DEF_INIT): unnamed, both sides, in place.
+typedef struct rs_mesh_def {
+    const char *name;   ///< NAME= (NULL or "": unnamed), at most 79 printable characters
+    const char *origin; ///< names the arrays in messages (NULL: "<arrays>")
+    int sides;          ///< SIDES=: 0 (the default of CAD meshes: both sides), 1 or 2
+    double scale;       ///< SCALE= (> 0): x = a + scale (X ex + Y ey + Z ez)
+    int placed;         ///< 1: the placement abc below; 0: the vertices as given
+    double abc[9];      ///< the placement a, b, c: origin a, local x toward b, c in the
+                        ///< local x-y plane (as a surface file's placement line)
+} rs_mesh_def;
+
+/// An rs_mesh_def with its defaults.
+/* clang-format off */
+#define RS_MESH_DEF_INIT {NULL, NULL, 0, 1.0, 0, {0, 0, 0, 0, 0, 0, 0, 0, 0}}
+/* clang-format on */
+
+/// Builds a MESH surface from arrays in memory: nv vertices xyz (3 nv doubles, x y z of
+/// each) and nt triangles tri (3 nt vertex indices from 0, the node order giving the
+/// normal by the right-hand rule). def may be NULL (RS_MESH_DEF_INIT). It is the surface
+/// a mesh file of these points and triangles gives (TYPE=MESH, FILE=), through the same
+/// building and checks: points closer than 1e-9 of the mesh's size are welded, degenerate
+/// triangles dropped with a warning (s->warning), each component oriented consistently
+/// (both sides act where none exists). Messages and warnings number points and facets
+/// from 1, as for a file. NULL arrays, nv < 3, nt < 1, an index outside 0 .. nv - 1 or a
+/// bad parameter is RS_ERR_ARG; a coordinate that is not finite (or exceeds RS_COORD_MAX
+/// after scale), a degenerate placement or a mesh without a triangle of non-zero area
+/// RS_ERR_GEOMETRY, as for a file. On error s is zeroed.
+int rs_surface_make_mesh(const double *xyz, int nv, const int *tri, int nt,
+                         const rs_mesh_def *def, rs_surface *s, rs_error *err);
+
 /// Frees what a surface owns and zeroes it.
 void rs_surface_free(rs_surface *s);
 

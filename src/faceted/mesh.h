@@ -88,6 +88,21 @@ int rs_mesh_build(const struct rs_soup *soup, double scale, const double a[3],
                   size_t warncap, rs_error *err);
 void rs_mesh_free(rs_mesh *m);
 
+/// The frame of a mesh's placement a, b, c (abc): frame[0] the origin a, frame[1 .. 3]
+/// ex toward b, ey toward c in the a-b-c plane, ez = ex x ey; the identity when placed
+/// is 0. RS_ERR_GEOMETRY prefixed by where when a, b, c span no plane.
+int rs_mesh_placement(int placed, const double abc[9], const char *where,
+                      double frame[4][3], rs_error *err);
+
+/// Builds the mesh of a polygon soup (rs_mesh_build, origin naming it in messages) into
+/// surface s (kind MESH, its table of operations set) with the scale and placement frame
+/// of rs_mesh_placement. s->sides is the SIDES= asked for, 0 for default_sides; both
+/// sides act where the facets have no consistent orientation.
+struct rs_soup;
+int rs_mesh_surface_soup(rs_surface *s, const struct rs_soup *soup, double scale,
+                         const double frame[4][3], int default_sides, const char *origin,
+                         rs_error *err);
+
 /// Reads a mesh file into surface s (kind MESH, its table of operations set). s->sides is
 /// the SIDES= asked for, 0 for the default: both sides for STL, OBJ, OFF and PLY (as
 /// LIGGGHTS's mesh walls act), one side for an Abaqus rigid part (.inp, as in Abaqus).

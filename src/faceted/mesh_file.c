@@ -78,39 +78,80 @@ static int stl_check(const char *file, const char *where, rs_error *err)
     return rc;
 }
 
+int rs_mesh_placement(int placed, const double abc[9], const char *where,
+                      double frame[4][3], rs_error *err)
+{
+    double *a = frame[0], *ex = frame[1], *ey = frame[2], *ez = frame[3];
+    for (int d = 0; d < 3; d++) {
+        a[d] = 0.0;
+        ex[d] = d == 0;
+        ey[d] = d == 1;
+        ez[d] = d == 2;
+    }
+    if (!placed)
+        return RS_OK;
+    const double *pa = abc, *pb = abc + 3, *pc = abc + 6;
+    double u[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+    double w[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
+    double scl = 0.0;
+    for (int i = 0; i < 9; i++)
+        scl = fmax(scl, fabs(abc[i]));
+    const double lu = rs_norm3(u), lw = rs_norm3(w);
+    if (!(lu > 1e-12 * scl) || !isfinite(lu) || !isfinite(lw))
+        return rs_error_set(err, RS_ERR_GEOMETRY,
+                            "%s: points a and b coincide (expected distinct points a, b "
+                            "placing the mesh)",
+                            where);
+    for (int d = 0; d < 3; d++)
+        ex[d] = u[d] / lu;
+    const double along = rs_dot3(w, ex);
+    double y[3] = {w[0] - along * ex[0], w[1] - along * ex[1], w[2] - along * ex[2]};
+    const double ly = rs_norm3(y);
+    if (!(lw > 1e-12 * scl) || !(ly > 1e-9 * lw))
+        return rs_error_set(err, RS_ERR_GEOMETRY,
+                            "%s: point c coincides with a or lies on the line a-b "
+                            "(expected c off the mesh's local x axis)",
+                            where);
+    for (int d = 0; d < 3; d++)
+        ey[d] = y[d] / ly;
+    rs_cross3(ex, ey, ez);
+    memcpy(a, pa, 3 * sizeof *a);
+    return RS_OK;
+}
+
+int rs_mesh_surface_soup(rs_surface *s, const rs_soup *soup, double scale,
+                         const double frame[4][3], int default_sides, const char *origin,
+                         rs_error *err)
+{
+    rs_mesh *m = NULL;
+    int two = 0;
+    int rc = rs_mesh_build(soup, scale, frame[0], frame[1], frame[2], frame[3], origin, &m,
+                           &two, s->warning, sizeof s->warning, err);
+    if (rc)
+        return rc;
+    s->impl = m;
+    s->ops = &rs_mesh_ops;
+    s->kind = RS_SURF_FACETED;
+    if (two) /* no consistent orientation: both sides act, whatever was asked */
+        s->sides = 2;
+    else if (s->sides == 0)
+        s->sides = default_sides;
+    /* the placement is in the nodes: the reference configuration is global */
+    const double I[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    memset(s->a, 0, sizeof s->a);
+    memcpy(s->ex, I[0], sizeof s->ex);
+    memcpy(s->ey, I[1], sizeof s->ey);
+    memcpy(s->ez, I[2], sizeof s->ez);
+    return RS_OK;
+}
+
 int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int placed,
                          const double abc[9], const char *where, rs_error *err)
 {
-    double a[3] = {0, 0, 0}, ex[3] = {1, 0, 0}, ey[3] = {0, 1, 0}, ez[3] = {0, 0, 1};
-    if (placed) {
-        const double *pa = abc, *pb = abc + 3, *pc = abc + 6;
-        double u[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
-        double w[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
-        double scl = 0.0;
-        for (int i = 0; i < 9; i++)
-            scl = fmax(scl, fabs(abc[i]));
-        const double lu = rs_norm3(u), lw = rs_norm3(w);
-        if (!(lu > 1e-12 * scl) || !isfinite(lu) || !isfinite(lw))
-            return rs_error_set(
-                err, RS_ERR_GEOMETRY,
-                "%s: points a and b coincide (expected distinct points a, b "
-                "placing the mesh)",
-                where);
-        for (int d = 0; d < 3; d++)
-            ex[d] = u[d] / lu;
-        const double along = rs_dot3(w, ex);
-        double y[3] = {w[0] - along * ex[0], w[1] - along * ex[1], w[2] - along * ex[2]};
-        const double ly = rs_norm3(y);
-        if (!(lw > 1e-12 * scl) || !(ly > 1e-9 * lw))
-            return rs_error_set(err, RS_ERR_GEOMETRY,
-                                "%s: point c coincides with a or lies on the line a-b "
-                                "(expected c off the mesh's local x axis)",
-                                where);
-        for (int d = 0; d < 3; d++)
-            ey[d] = y[d] / ly;
-        rs_cross3(ex, ey, ez);
-        memcpy(a, pa, sizeof a);
-    }
+    double frame[4][3];
+    int rc = rs_mesh_placement(placed, abc, where, frame, err);
+    if (rc)
+        return rc;
     struct stat st;
     if (stat(file, &st) != 0)
         return rs_error_set(err, RS_ERR_IO, "%s: cannot open mesh file %s: %s", where, file,
@@ -128,7 +169,7 @@ int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int plac
     if (empty)
         return rs_error_set(err, RS_ERR_PARSE, "%s: %s is empty (expected a mesh)", where,
                             file);
-    int rc = stl_check(file, where, err);
+    rc = stl_check(file, where, err);
     if (rc)
         return rc;
     rs_soup soup;
@@ -143,27 +184,10 @@ int rs_mesh_surface_load(rs_surface *s, const char *file, double scale, int plac
     } else if (rs_cgal_read_soup(file, &soup, msg, sizeof msg)) {
         return rs_error_set(err, RS_ERR_PARSE, "%s: %s: %s", where, file, msg);
     }
-    rs_mesh *m = NULL;
-    int two = 0;
-    rc = rs_mesh_build(&soup, scale, a, ex, ey, ez, file, &m, &two, s->warning,
-                       sizeof s->warning, err);
+    rc = rs_mesh_surface_soup(s, &soup, scale, (const double(*)[3])frame, inp ? 1 : 2, file,
+                              err);
     rs_soup_free(&soup);
-    if (rc)
-        return rc;
-    s->impl = m;
-    s->ops = &rs_mesh_ops;
-    s->kind = RS_SURF_FACETED;
-    if (two) /* no consistent orientation: both sides act, whatever was asked */
-        s->sides = 2;
-    else if (s->sides == 0)
-        s->sides = inp ? 1 : 2;
-    /* the placement is in the nodes: the reference configuration is global */
-    const double I[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    memset(s->a, 0, sizeof s->a);
-    memcpy(s->ex, I[0], sizeof s->ex);
-    memcpy(s->ey, I[1], sizeof s->ey);
-    memcpy(s->ez, I[2], sizeof s->ez);
-    return RS_OK;
+    return rc;
 }
 
 /* FILE= names the mesh, unless the surface file itself holds its elements (*NODE,

@@ -197,9 +197,9 @@ int main(int argc, char **argv)
             return 1;
         }
     }
-    printf(
-        "fuzz_surface: %d seeds, %ld mutated inputs (%ld surfaces accepted), no failure\n",
-        nseed, runs, rs_fuzz_accepted);
+    printf("fuzz_surface: %d seeds, %ld mutated inputs (%ld surfaces accepted, %ld of them "
+           "from arrays), no failure\n",
+           nseed, runs, rs_fuzz_accepted, rs_fuzz_arrays_accepted);
     for (int i = 0; i < nseed; i++)
         free(seeds[i].p);
     return 0;

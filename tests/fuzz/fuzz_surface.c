@@ -103,6 +103,27 @@ static int query_grid(const rs_surface *s)
     return fail;
 }
 
+int rs_fuzz_check_surface(const rs_surface *s)
+{
+    int fail = query_grid(s);
+    rs_trimesh m;
+    rs_error e;
+    if (!fail && rs_surface_triangulate(s, 1.0, 16, &m, &e) == RS_OK) {
+        if (!all_finite(m.xyz, 3 * m.nvert)) {
+            fprintf(stderr, "fuzz_surface: surface '%s': non-finite display mesh\n",
+                    s->name);
+            fail = 1;
+        }
+        for (int i = 0; i < 3 * m.ntri && !fail; i++)
+            if (m.tri[i] < 0 || m.tri[i] >= m.nvert) {
+                fprintf(stderr, "fuzz_surface: surface '%s': bad mesh index\n", s->name);
+                fail = 1;
+            }
+        rs_trimesh_free(&m);
+    }
+    return fail;
+}
+
 int rs_fuzz_surface_one(const uint8_t *data, size_t size)
 {
     char *text = malloc(size + 1);
@@ -121,25 +142,11 @@ int rs_fuzz_surface_one(const uint8_t *data, size_t size)
         }
     } else {
         rs_fuzz_accepted++;
-        fail = query_grid(&s);
-        rs_trimesh m;
-        if (!fail && rs_surface_triangulate(&s, 1.0, 16, &m, &e) == RS_OK) {
-            if (!all_finite(m.xyz, 3 * m.nvert)) {
-                fprintf(stderr, "fuzz_surface: surface '%s': non-finite display mesh\n",
-                        s.name);
-                fail = 1;
-            }
-            for (int i = 0; i < 3 * m.ntri && !fail; i++)
-                if (m.tri[i] < 0 || m.tri[i] >= m.nvert) {
-                    fprintf(stderr, "fuzz_surface: surface '%s': bad mesh index\n", s.name);
-                    fail = 1;
-                }
-            rs_trimesh_free(&m);
-        }
+        fail = rs_fuzz_check_surface(&s);
         rs_surface_free(&s);
     }
     free(text);
-    return fail;
+    return fail || rs_fuzz_arrays_one(data, size);
 }
 
 #ifdef RS_LIBFUZZER

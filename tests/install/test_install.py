@@ -15,6 +15,15 @@ outside the tree as a user would.
    sphere on a plane in the installed liggghts-rigidsurf: the wall force is -m g and the
    sphere stays at its equilibrium overlap m g / k, to 1 %.
 
+4. The coupling example (examples/coupling: drop.c and its CMakeLists.txt), as installed,
+   is the program docs/coupling.md shows, and builds out of tree through
+   find_package(rigidsurf): its three spheres, dropped on a floor built from arrays with
+   law hertz, come to rest at Hertz's static overlap delta = (3 m g / (4 E* sqrt(R)))^(2/3)
+   to 1e-6 of it (an equilibrium the law holds exactly once the bounces have died out),
+   the one dropped straight stays still, and the two launched sideways at 0.05 m/s roll
+   on at 5/7 of it (m rho^2 / (I + m rho^2), rho = R - delta/2) to 0.5 % (the bounces
+   before they roll move them a little off it).
+
 `cmake --install` writes install_manifest.txt into the build directory; the test puts
 back what was there before. Everything else lives in a temporary directory, removed at
 the end (kept with --keep).
@@ -301,7 +310,8 @@ def check_layout(ck, a, prefix):
                  "cmake/rigidsurf/rigidsurfTargets.cmake"):
         ck.check("installed %s/%s" % (a.libdir, name), os.path.exists(os.path.join(lib, name)))
     for name in ("README.md", "docs/fix_wall_rigid.md", "docs/conventions.md",
-                 "docs/architecture.md", "examples/README.md", "examples/user_law/myvuinter.f",
+                 "docs/architecture.md", "docs/coupling.md", "examples/README.md",
+                 "examples/coupling/drop.c", "examples/user_law/myvuinter.f",
                  "examples/surfaces/drum.inp"):
         ck.check("installed %s/%s" % (a.docdir, name), os.path.isfile(os.path.join(doc, name)))
     path = os.path.join(binp, "rigidsurf-migrate")
@@ -426,6 +436,67 @@ def check_vuinter(ck, a, prefix, tmp):
              "overlap %.6g m, largest error %.3g of it" % (h0, zerr))
 
 
+# The coupling example's inputs (examples/coupling/drop.c, docs/coupling.md): sphere i
+# (0, 1, 2) of radius 4 + i mm, density 2500, launched at 0.05 (i - 1) m/s along x;
+# hertz with Y 1e7 and nu 0.3 for sphere and wall; gravity 9.81.
+DROP_RHO, DROP_G, DROP_Y, DROP_NU, DROP_V0 = 2500.0, 9.81, 1.0e7, 0.3, 0.05
+
+
+def code_block(page, heading):
+    """The first ```c block after the heading line of a Markdown page."""
+    after = page.split("\n" + heading + "\n", 1)
+    if len(after) != 2 or "```c\n" not in after[1]:
+        return None
+    return after[1].split("```c\n", 1)[1].split("\n```", 1)[0] + "\n"
+
+
+def check_coupling_example(ck, a, prefix, tmp):
+    doc = os.path.join(prefix, a.docdir)
+    exdir = os.path.join(doc, "examples", "coupling")
+    with open(os.path.join(doc, "docs", "coupling.md")) as f:
+        page = f.read()
+    with open(os.path.join(exdir, "drop.c")) as f:
+        source = f.read()
+    ck.check("docs/coupling.md shows examples/coupling/drop.c as installed",
+             code_block(page, "## The example") == source)
+    ck.check("installed examples/coupling/CMakeLists.txt",
+             os.path.isfile(os.path.join(exdir, "CMakeLists.txt")))
+    srcdir = os.path.join(tmp, "coupling")
+    shutil.copytree(exdir, srcdir)
+    bdir = os.path.join(tmp, "coupling-build")
+    env = clean_env()
+    run(ck, "coupling example: configure out of tree with find_package(rigidsurf)",
+        [a.cmake, "-S", srcdir, "-B", bdir, "-DCMAKE_BUILD_TYPE=Release",
+         "-DCMAKE_C_COMPILER=" + a.cc, "-DCMAKE_PREFIX_PATH=" + prefix,
+         "-DCMAKE_C_FLAGS=-Werror"], tmp, env)
+    run(ck, "coupling example: build", [a.cmake, "--build", bdir], tmp, env)
+    out = run(ck, "coupling example: runs", [os.path.join(bdir, "drop")], tmp, env)
+    print(out.rstrip())
+    rows = [l.split() for l in out.splitlines() if l.startswith("sphere ")]
+    ck.check("coupling example: three spheres reported", len(rows) == 3, "%d" % len(rows))
+    estar = 1.0 / (2.0 * (1.0 - DROP_NU ** 2) / DROP_Y)
+    for i, w in enumerate(rows[:3]):
+        R = 0.004 + 0.001 * i
+        m = DROP_RHO * 4.0 / 3.0 * math.pi * R ** 3
+        delta = (3.0 * m * DROP_G / (4.0 * estar * math.sqrt(R))) ** (2.0 / 3.0)
+        got_r, overlap, speed = float(w[3]), float(w[7]), float(w[9])
+        ck.check("sphere %d: radius %g as launched" % (i + 1, R), abs(got_r - R) <= 1e-12)
+        ck.check("sphere %d rests at the Hertz static overlap to 1e-6" % (i + 1),
+                 abs(overlap - delta) <= 1e-6 * delta,
+                 "overlap %.6e m, closed form %.6e m, error %.2e" % (
+                     overlap, delta, abs(overlap / delta - 1.0)))
+        v0 = DROP_V0 * abs(i - 1)
+        rho = R - delta / 2.0
+        roll = v0 * m * rho ** 2 / (0.4 * m * R ** 2 + m * rho ** 2)
+        if v0 == 0.0:
+            ck.check("sphere %d, dropped straight, is still" % (i + 1), speed <= 1e-9,
+                     "speed %.3g m/s" % speed)
+        else:
+            ck.check("sphere %d rolls at 5/7 of its launch speed to 0.5%%" % (i + 1),
+                     abs(speed - roll) <= 5e-3 * roll,
+                     "speed %.6g m/s, closed form %.6g m/s" % (speed, roll))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -468,7 +539,8 @@ def main():
             elif os.path.exists(manifest):
                 os.remove(manifest)
         check_layout(ck, a, prefix)
-        for step in (check_probe_cmake, check_probe_pkgconfig, check_vuinter):
+        for step in (check_probe_cmake, check_probe_pkgconfig, check_vuinter,
+                     check_coupling_example):
             try:
                 step(ck, a, prefix, tmp)
             except Failed:

@@ -1,6 +1,7 @@
 /* Profile geometry: arc lengths against closed forms, vertex kinds seen from the
  * particle side, fillets tangent to both neighbours (line-line, line-arc, arc-arc), and
  * corners touching a PARAB left sharp. */
+#include "profile.h"
 #include "rigidsurf/surface.h"
 #include "rs_test.h"
 #include "rs_test_geom.h"
@@ -183,6 +184,25 @@ static void test_profile_parab_corner_stays_sharp(void)
     rs_surface_free(&s);
 }
 
+/* A fillet elsewhere in the profile leaves a PARAB the parabola it was: the same three
+ * points, passing through its middle point at xi = 0. */
+static void test_profile_fillet_keeps_parab(void)
+{
+    rs_surface s;
+    ENSURE(parse("*SURFACE, TYPE=SEGMENTS, NAME=a, FILLET RADIUS=0.1\nSTART, -3, 1\n"
+                 "LINE, -2, 0\nLINE, 0, 0\nPARAB, 0.5, 0.75, 1, 2\nLINE, 3, 2\n",
+                 &s) == 0);
+    ENSURE(s.profile.nseg == 5); /* one fillet, at (-2, 0) */
+    const rs_segment *g = &s.profile.seg[3];
+    ENSURE(s.profile.seg[1].type == RS_CIRCL && g->type == RS_PARAB);
+    ENSURE(g->p0[0] == 0.0 && g->p0[1] == 0.0 && g->p1[0] == 1.0 && g->p1[1] == 2.0);
+    double x[2], t[2], k;
+    rs_segment_eval(g, 0.5, x, t, &k);
+    ENSURE_SMALL(x[0] - 0.5, 1e-15);
+    ENSURE_SMALL(x[1] - 0.75, 1e-15);
+    rs_surface_free(&s);
+}
+
 int main(void)
 {
     RS_RUN(test_profile_arc_lengths);
@@ -191,5 +211,6 @@ int main(void)
     RS_RUN(test_profile_fillet_line_arc_and_arc_arc);
     RS_RUN(test_profile_fillet_closed_square);
     RS_RUN(test_profile_parab_corner_stays_sharp);
+    RS_RUN(test_profile_fillet_keeps_parab);
     return rs_test_summary();
 }
