@@ -47,8 +47,8 @@ int main(void)
         id[i] = i + 1;
     }
     /* history: per sphere a directory of CAP doubles, then CAP slots; zeroed = empty */
-    rs_tracker tr = {CAP, law->nstatev, rs_surface_ndir(&floor), 0.0};
-    const ptrdiff_t slot = RS_HIST_SIZE(tr.nstatev), per = CAP * (1 + slot);
+    rs_tracker tr = {CAP, law->nstatev, rs_surface_ndir(&floor), 0.0, rs_law_drops(law)};
+    const ptrdiff_t slot = rs_track_slot_size(&tr), per = CAP * (1 + slot);
     double *hist = calloc((size_t)(N * per), sizeof *hist), *dir[N], *slot0[N];
     for (int i = 0; i < N; i++)
         dir[i] = hist + i * per, slot0[i] = dir[i] + CAP;
@@ -80,6 +80,7 @@ int main(void)
         rs_track_load(&tr, &trk, cb.stress, cb.statev);
         rs_block_particles bp = {.n = N, .radius = r, .mass = m, .id = id};
         rs_cblock_inputs(&cb, &trk, &bp, DT);
+        rs_track_load_energy(&tr, &trk, cb.sed, cb.flux_slv, cb.flux_mst);
         rs_law_block b;
         rs_law_block_init(&b);
         b.kInc = step + 1, b.nDir = nd, b.nSurfDir = nd - 1;
@@ -88,7 +89,8 @@ int main(void)
         b.analytic_master = !rs_surface_has_facets(&floor);
         if (rs_cblock_call(&cb, law, &b, &trk, &err) != RS_OK)
             return fail(&err);
-        /* 4. stress and state into history; the slots of leaving contacts freed */
+        /* 4. stress, state, energies into history; leaving contacts' slots freed */
+        rs_track_commit_energy(&tr, &trk, cb.sed, cb.flux_slv, cb.flux_mst);
         rs_track_commit(&tr, &trk, cb.stress, cb.statev);
 
         /* 5. F = w A (s1 n - s2 t1 - s3 t2) at the contact point, and its torque */
