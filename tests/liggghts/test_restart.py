@@ -26,6 +26,11 @@ Third case, for slots that grew during the run and a turning mesh: a sphere sett
 into the apex of a 12-facet STL cone (MESH) that turns about its axis holds 12 contacts
 at the restart point, so its fix grew from 4 slots; the restarted fix starts with 4
 again and takes 12 from the file.
+
+Fifth case, the slot's layout: a file written with hertz as a loaded C law (its slots
+keep the last call's stress and energies: 17 doubles) is read by law hertz (11) and the
+run continues identically. Sixth, law liggghts with rolling friction epsd2: the model's
+own history (shear and rolling torque) comes through the restart, identically.
 """
 import math
 import os
@@ -104,6 +109,17 @@ def body(s):
     pocket_case(s)
     version_case(s)
     layout_case(s)
+    liggghts_case(s)
+
+
+def liggghts_case(s):
+    """law liggghts with rolling friction: the model's own history (shear and rolling
+    torque) lives in the contact's slot and comes through the restart."""
+    wall = ("fix w all wall/rigid surface drum.inp law liggghts model hertz tangential "
+            "history rolling_friction epsd2 type 2 rotate origin 0 0 0 axis 0 0 1 omega 6")
+    lines = ("fix m5 all property/global coefficientRollingFriction peratomtypepair 2 "
+             "0.1 0.1 0.1 0.1\n" + setup_lines(wall) + "variable nc equal f_w[7]\n")
+    restart_case(s, "liggghts", deck_atoms(), lines, 3, "three contacts")
 
 
 def layout_case(s):
