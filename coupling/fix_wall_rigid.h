@@ -113,6 +113,22 @@ class FixWallRigid : public Fix
     double liggghts_reach() const;
     template <int ND, bool LEAVE, bool UNITA>
     void scatter(const int *idx, int n, int ne, bool setup_call);
+    /// A per-atom output row: rdisp and stress of the block's contact e (nd values each;
+    /// the third 0 for nd = 2), zeros for e < 0 (no contact).
+    void put_output(double *o, int e, int nd) const
+    {
+        if (e < 0) {
+            o[0] = o[1] = o[2] = o[3] = o[4] = o[5] = 0.0;
+            return;
+        }
+        const double *s = cb_.stress + (size_t)e * nd, *rd = tout_.rdisp + (size_t)e * nd;
+        o[0] = rd[0];
+        o[1] = rd[1];
+        o[2] = nd == 3 ? rd[2] : 0.0;
+        o[3] = s[0];
+        o[4] = s[1];
+        o[5] = nd == 3 ? s[2] : 0.0;
+    }
     void write_vtk();
     void update_previous_fields();
 

@@ -484,20 +484,10 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
 
     /* Per-atom output: the deepest live contact of each particle with this wall, zeros
      * for a particle without one. */
-    for (int k = 0; k < n; k++) {
-        const int e = track_deepest ? deepest[k] : (LEAVE && leaving[k]) ? -1 : k;
-        double *o = array_atom[idx[k]];
-        if (e < 0) {
-            o[0] = o[1] = o[2] = o[3] = o[4] = o[5] = 0.0;
-            continue;
-        }
-        const double *s = stress + (size_t)e * ND;
-        const double *rd = rdisp + (size_t)e * ND;
-        o[0] = rd[0];
-        o[1] = rd[1];
-        o[2] = ND == 3 ? rd[2] : 0.0;
-        o[3] = s[0];
-        o[4] = s[1];
-        o[5] = ND == 3 ? s[2] : 0.0;
-    }
+    for (int k = 0; k < n; k++)
+        put_output(array_atom[idx[k]],
+                   track_deepest           ? deepest[k]
+                   : (LEAVE && leaving[k]) ? -1
+                                           : k,
+                   ND);
 }

@@ -99,22 +99,8 @@ void FixWallRigid::liggghts_block(const int *idx, int n, int ne, bool setup_call
     scatter_area_ = area_w_.data();
 
     /* Per-atom output: the deepest contact that applied a force, zeros otherwise. */
-    for (int k = 0; k < n; k++) {
-        const int e = deepest_[k];
-        double *o = array_atom[idx[k]];
-        if (e < 0) {
-            o[0] = o[1] = o[2] = o[3] = o[4] = o[5] = 0.0;
-            continue;
-        }
-        const double *s = cb_.stress + (size_t)e * nd;
-        const double *rd = tout_.rdisp + (size_t)e * nd;
-        o[0] = rd[0];
-        o[1] = rd[1];
-        o[2] = nd == 3 ? rd[2] : 0.0;
-        o[3] = s[0];
-        o[4] = s[1];
-        o[5] = nd == 3 ? s[2] : 0.0;
-    }
+    for (int k = 0; k < n; k++)
+        put_output(array_atom[idx[k]], deepest_[k], nd);
 }
 
 /* The default tracking thickness of law liggghts: LIGGGHTS calls its model for contacts

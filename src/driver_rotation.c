@@ -18,6 +18,7 @@
  * 1e-14 in 1e5 increments, and each round trip then scales w by it: |L| of the asymmetric
  * top of test_driver_rotation drifted by 4e-9 there; normalised, by 1e-11). */
 #include "rigidsurf/driver.h"
+#include "rigidsurf/vec.h"
 
 #include <math.h>
 
@@ -27,21 +28,6 @@ static void quat_normalize(double q[4])
     const double m = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     for (int c = 0; c < 4; c++)
         q[c] /= m;
-}
-
-/* x_world = R(q) x_body for the unit quaternion q = (w, x, y, z). */
-static void quat_matrix(const double q[4], double R[9])
-{
-    const double w = q[0], x = q[1], y = q[2], z = q[3];
-    R[0] = 1.0 - 2.0 * (y * y + z * z);
-    R[1] = 2.0 * (x * y - w * z);
-    R[2] = 2.0 * (x * z + w * y);
-    R[3] = 2.0 * (x * y + w * z);
-    R[4] = 1.0 - 2.0 * (x * x + z * z);
-    R[5] = 2.0 * (y * z - w * x);
-    R[6] = 2.0 * (x * z - w * y);
-    R[7] = 2.0 * (y * z + w * x);
-    R[8] = 1.0 - 2.0 * (x * x + y * y);
 }
 
 /* a <- a b (Hamilton product). */
@@ -107,7 +93,7 @@ void rs_rotation_step(double q[4], double w[3], const double inertia[3],
         return;
     }
     double R[9], pi[3];
-    quat_matrix(q, R);
+    rs_quat_matrix(q, R);
     for (int a = 0; a < 3; a++) {
         const double wb = R[a] * w[0] + R[3 + a] * w[1] + R[6 + a] * w[2];
         const double tb = R[a] * tau[0] + R[3 + a] * tau[1] + R[6 + a] * tau[2];
@@ -119,7 +105,7 @@ void rs_rotation_step(double q[4], double w[3], const double inertia[3],
     free_flow(q, pi, inertia, 1, 0.5 * dt);
     free_flow(q, pi, inertia, 2, 0.5 * dt);
     quat_normalize(q);
-    quat_matrix(q, R);
+    rs_quat_matrix(q, R);
     for (int c = 0; c < 3; c++)
         w[c] = R[3 * c] * pi[0] / inertia[0] + R[3 * c + 1] * pi[1] / inertia[1] +
                R[3 * c + 2] * pi[2] / inertia[2];
@@ -128,7 +114,7 @@ void rs_rotation_step(double q[4], double w[3], const double inertia[3],
 double rs_rotation_energy(const double q[4], const double w[3], const double inertia[3])
 {
     double R[9], e = 0.0;
-    quat_matrix(q, R);
+    rs_quat_matrix(q, R);
     for (int a = 0; a < 3; a++) {
         const double wb = R[a] * w[0] + R[3 + a] * w[1] + R[6 + a] * w[2];
         e += 0.5 * inertia[a] * wb * wb;

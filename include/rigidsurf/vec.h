@@ -40,6 +40,22 @@ static inline void rs_matvec3(const double Q[9], const double v[3], double r[3])
     r[2] = Q[6] * v[0] + Q[7] * v[1] + Q[8] * v[2];
 }
 
+/// The rotation R(q) (row-major, x_world = R x_body) of the unit quaternion q = (w, x,
+/// y, z).
+static inline void rs_quat_matrix(const double q[4], double R[9])
+{
+    const double w = q[0], x = q[1], y = q[2], z = q[3];
+    R[0] = 1.0 - 2.0 * (y * y + z * z);
+    R[1] = 2.0 * (x * y - w * z);
+    R[2] = 2.0 * (x * z + w * y);
+    R[3] = 2.0 * (x * y + w * z);
+    R[4] = 1.0 - 2.0 * (x * x + z * z);
+    R[5] = 2.0 * (y * z - w * x);
+    R[6] = 2.0 * (x * z - w * y);
+    R[7] = 2.0 * (y * z + w * x);
+    R[8] = 1.0 - 2.0 * (x * x + y * y);
+}
+
 #ifdef __cplusplus
 }
 #endif

@@ -316,16 +316,7 @@ int rs_body_init(rs_body *b, const rs_shape *shape, double density, const double
 
 void rs_body_rotation(const rs_body *b, double R[9])
 {
-    const double w = b->q[0], x = b->q[1], y = b->q[2], z = b->q[3];
-    R[0] = 1.0 - 2.0 * (y * y + z * z);
-    R[1] = 2.0 * (x * y - w * z);
-    R[2] = 2.0 * (x * z + w * y);
-    R[3] = 2.0 * (x * y + w * z);
-    R[4] = 1.0 - 2.0 * (x * x + z * z);
-    R[5] = 2.0 * (y * z - w * x);
-    R[6] = 2.0 * (x * z - w * y);
-    R[7] = 2.0 * (y * z + w * x);
-    R[8] = 1.0 - 2.0 * (x * x + y * y);
+    rs_quat_matrix(b->q, R);
 }
 
 void rs_body_support(const rs_body *b, const double dir[3], double out[3])

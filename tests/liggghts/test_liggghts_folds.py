@@ -24,42 +24,11 @@ tangential history`:
 import math
 
 import liglib as L
-from test_mesh_tessellation import DT, HALF, POISSON, R, RHO, YOUNG, v_inp, v_stl
+from test_mesh_tessellation import DT, HALF, POISSON, R, RHO, YOUNG, rest_on_fold
 
 LAW = "law liggghts model hertz tangential history"
 JUMP = 0.02  # largest step-to-step change of the force, relative to its largest value
 STEPS = 20000
-
-
-def rest_on_fold(s):
-    mass = RHO * 4.0 / 3.0 * math.pi * R ** 3
-    g = 9.81
-    estar = 1.0 / sum((1 - nu * nu) / e for e, nu in zip(YOUNG, POISSON))
-    d = (mass * g / math.cos(HALF) / (4.0 / 3.0 * estar * math.sqrt(R))) ** (2.0 / 3.0)
-    z_rest = (R - d) / math.cos(HALF)
-    s.write("vee.stl", v_stl())
-    s.write("vee.inp", v_inp())
-    for tag, surf in (("fold_mesh", "inline mesh vee.stl"), ("fold_profile", "vee.inp")):
-        deck = L.header((-0.06, 0.06, -0.06, 0.06, -0.01, 0.05), DT, e=0.3, mu=0.0)
-        deck += L.sphere(1, (0.0, 0.0, z_rest + 0.0005), R, RHO)
-        deck += "fix grav all gravity %r vector 0 0 -1\n" % g
-        deck += "fix w all wall/rigid surface %s %s type 2\n" % (surf, LAW)
-        deck += "fix integr all nve/sphere\n"
-        deck += ("variable fz equal f_w[3]\nvariable nc equal f_w[7]\n"
-                 "variable x equal x[1]\nvariable z equal z[1]\nrun 40000\n"
-                 'print "REST ${fz} ${nc} ${x} ${z}"\n')
-        rc, out = s.run(tag, deck, expect_ok=False)
-        rest = [l.split()[1:] for l in out.splitlines() if l.startswith("REST ")]
-        if not s.ck.check(tag + ": the run ends", rc == 0 and rest, "exit %s" % rc):
-            continue
-        fz, nc, x, z = (float(v) for v in rest[-1])
-        s.ck.check(tag + ": two touching contacts on the fold line",
-                   nc == 2.0 and abs(x) < 1e-9, "%g contacts, x = %.3g" % (nc, x))
-        s.ck.check(tag + ": the wall carries m g to 1e-6",
-                   abs(abs(fz) - mass * g) <= 1e-6 * mass * g,
-                   "%.10g vs %.10g" % (abs(fz), mass * g))
-        s.ck.check(tag + ": at rest at the closed-form height of shares 1/2, to 1e-6",
-                   abs(z - z_rest) <= 1e-6 * z_rest, "%.10g vs %.10g" % (z, z_rest))
 
 
 def slide(s, tag, surf, z0):
@@ -95,7 +64,7 @@ def largest_jump(series):
 
 
 def body(s):
-    rest_on_fold(s)
+    rest_on_fold(s, LAW)
     mass = RHO * 4.0 / 3.0 * math.pi * R ** 3
     # settle first: start where the left face holds the sphere at its Hertz overlap
     estar = 1.0 / sum((1 - nu * nu) / e for e, nu in zip(YOUNG, POISSON))

@@ -106,7 +106,9 @@ def v_inp(half_width=0.05):
             "START, %r, %r\nLINE, 0, 0\nLINE, %r, %r\n" % (-half_width, h, half_width, h))
 
 
-def rest_on_fold(s):
+def rest_on_fold(s, law="law hertz"):
+    """The frictionless sphere at rest on the V's fold line, with law (the law's words
+    of the fix line)."""
     mass = RHO * 4.0 / 3.0 * math.pi * R ** 3
     g = 9.81
     estar = 1.0 / sum((1 - nu * nu) / e for e, nu in zip(YOUNG, POISSON))
@@ -121,7 +123,7 @@ def rest_on_fold(s):
         deck = L.header((-0.06, 0.06, -0.06, 0.06, -0.01, 0.05), DT, e=0.3, mu=0.0)
         deck += L.sphere(1, (0.0, 0.0, z_rest + 0.0005), R, RHO)
         deck += "fix grav all gravity %r vector 0 0 -1\n" % g
-        deck += "fix w all wall/rigid surface %s law hertz type 2\n" % surf
+        deck += "fix w all wall/rigid surface %s %s type 2\n" % (surf, law)
         deck += "fix integr all nve/sphere\n"
         deck += ("variable fz equal f_w[3]\nvariable nc equal f_w[7]\n"
                  "variable x equal x[1]\nvariable z equal z[1]\nrun 40000\n"
