@@ -16,12 +16,144 @@
 using namespace LAMMPS_NS;
 namespace LCM = LIGGGHTS::ContactModels;
 
-/* LIGGGHTS's combination chosen at run time: each submodel behind its base class. */
-struct LiggghtsLaw::Model {
-    LCM::ContactModel<LCM::GranStyle<>> cm;
-    Model(LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *h, int64_t hash)
-        : cm(lmp, h, true /* a wall */, hash)
+namespace
+{
+
+/* One submodel, created with its concrete type and deleted as such: LIGGGHTS's model base
+ * classes have no virtual destructor. */
+template <class Base> struct Owned {
+    Base *p = nullptr;
+    void (*del)(Base *) = nullptr;
+    ~Owned()
     {
+        if (p)
+            del(p);
+    }
+};
+template <class Derived, class Base> void delete_as(Base *p)
+{
+    delete static_cast<Derived *>(p);
+}
+
+} // namespace
+
+/* LIGGGHTS's five submodels of one contact model, chosen at run time from the ids of
+ * its selector, each behind its base class and called in the order of LIGGGHTS's own
+ * combination (contact_models.h): surface, normal, cohesion, tangential, rolling (the
+ * order in which they register their history, so the offsets are LIGGGHTS's). Each is
+ * LIGGGHTS's code from its headers; only the combination is ours, which owns and frees
+ * its submodels. */
+struct LiggghtsLaw::Model : public LCM::ContactModelBase {
+    Owned<LCM::SurfaceModelBase> surface;
+    Owned<LCM::NormalModelBase> normal;
+    Owned<LCM::CohesionModelBase> cohesion;
+    Owned<LCM::TangentialModelBase> tangential;
+    Owned<LCM::RollingModelBase> rolling;
+
+    Model(LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *h, int64_t hash)
+        : LCM::ContactModelBase(lmp, true /* a wall */)
+    {
+        const int idNormal = (int)(hash & 63), idTangential = (int)((hash >> 6) & 63),
+                  idCohesion = (int)((hash >> 12) & 63),
+                  idRolling = (int)((hash >> 18) & 63),
+                  idSurface = (int)((hash >> 24) & 63);
+        using namespace LCM;
+#define RS_MAKE(SLOT, TEMPLATE, BASE, ID)                                                  \
+    {                                                                                      \
+        SLOT.p = new TEMPLATE<ID>(lmp, h, this);                                           \
+        SLOT.del = &delete_as<TEMPLATE<ID>, BASE>;                                         \
+    }
+        if (false) {
+        }
+#define SURFACE_MODEL(SCLASS, NAME, ID)                                                    \
+    else if (ID == idSurface) RS_MAKE(surface, SurfaceModel, SurfaceModelBase, SCLASS)
+#include "style_surface_model.h"
+#undef SURFACE_MODEL
+        if (idNormal == NORMAL_OFF)
+            RS_MAKE(normal, NormalModel, NormalModelBase, NORMAL_OFF)
+#define NORMAL_MODEL(NCLASS, NAME, ID)                                                     \
+    else if (ID == idNormal) RS_MAKE(normal, NormalModel, NormalModelBase, NCLASS)
+#include "style_normal_model.h"
+#undef NORMAL_MODEL
+        if (idCohesion == COHESION_OFF)
+            RS_MAKE(cohesion, CohesionModel, CohesionModelBase, COHESION_OFF)
+#define COHESION_MODEL(CCLASS, NAME, ID)                                                   \
+    else if (ID == idCohesion) RS_MAKE(cohesion, CohesionModel, CohesionModelBase, CCLASS)
+#include "style_cohesion_model.h"
+#undef COHESION_MODEL
+        if (idTangential == TANGENTIAL_OFF)
+            RS_MAKE(tangential, TangentialModel, TangentialModelBase, TANGENTIAL_OFF)
+#define TANGENTIAL_MODEL(TCLASS, NAME, ID)                                                 \
+    else if (ID == idTangential)                                                           \
+        RS_MAKE(tangential, TangentialModel, TangentialModelBase, TCLASS)
+#include "style_tangential_model.h"
+#undef TANGENTIAL_MODEL
+        if (idRolling == ROLLING_OFF)
+            RS_MAKE(rolling, RollingModel, RollingModelBase, ROLLING_OFF)
+#define ROLLING_MODEL(RCLASS, NAME, ID)                                                    \
+    else if (ID == idRolling) RS_MAKE(rolling, RollingModel, RollingModelBase, RCLASS)
+#include "style_rolling_model.h"
+#undef ROLLING_MODEL
+#undef RS_MAKE
+    }
+    bool complete() const
+    {
+        return surface.p && normal.p && cohesion.p && tangential.p && rolling.p;
+    }
+    void tally_pp(double val, int i, int j, int index)
+    {
+        surface.p->tally_pp(val, i, j, index);
+    }
+    void tally_pw(double val, int i, int j, int index)
+    {
+        surface.p->tally_pw(val, i, j, index);
+    }
+    void registerSettings(Settings &settings)
+    {
+        surface.p->registerSettings(settings);
+        normal.p->registerSettings(settings);
+        cohesion.p->registerSettings(settings);
+        tangential.p->registerSettings(settings);
+        rolling.p->registerSettings(settings);
+    }
+    void postSettings(LIGGGHTS::IContactHistorySetup *h)
+    {
+        surface.p->postSettings(h, this);
+        normal.p->postSettings(h, this);
+        cohesion.p->postSettings(h, this);
+        tangential.p->postSettings(h, this);
+        rolling.p->postSettings(h, this);
+    }
+    void connectToProperties(PropertyRegistry &registry)
+    {
+        surface.p->connectToProperties(registry);
+        normal.p->connectToProperties(registry);
+        cohesion.p->connectToProperties(registry);
+        tangential.p->connectToProperties(registry);
+        rolling.p->connectToProperties(registry);
+    }
+    void surfacesIntersect(LCM::SurfacesIntersectData &sd, LCM::ForceData &fi,
+                           LCM::ForceData &fj)
+    {
+        surface.p->surfacesIntersect(sd, fi, fj);
+        normal.p->surfacesIntersect(sd, fi, fj);
+        cohesion.p->surfacesIntersect(sd, fi, fj);
+        tangential.p->surfacesIntersect(sd, fi, fj);
+        rolling.p->surfacesIntersect(sd, fi, fj);
+    }
+    void endSurfacesIntersect(LCM::SurfacesIntersectData &sd, LCM::ForceData &fi,
+                              LCM::ForceData &fj)
+    {
+        surface.p->endSurfacesIntersect(sd, NULL, fi.delta_F);
+        cohesion.p->endSurfacesIntersect(sd, fi, fj);
+    }
+    void surfacesClose(LCM::SurfacesCloseData &sd, LCM::ForceData &fi, LCM::ForceData &fj)
+    {
+        surface.p->surfacesClose(sd, fi, fj);
+        normal.p->surfacesClose(sd, fi, fj);
+        cohesion.p->surfacesClose(sd, fi, fj);
+        tangential.p->surfacesClose(sd, fi, fj);
+        rolling.p->surfacesClose(sd, fi, fj);
     }
 };
 
@@ -85,14 +217,18 @@ LiggghtsLaw::LiggghtsLaw(LAMMPS *lmp, const std::string &fix_id,
                                 "them)")
                                    .c_str());
     model_ = new Model(lmp, this, hash);
+    if (!model_->complete())
+        lmp->error->all(
+            FLERR,
+            (where + "'" + desc_ + "': a model this LIGGGHTS build does not hold").c_str());
 
     Settings settings(lmp);
-    model_->cm.registerSettings(settings);
+    model_->registerSettings(settings);
     narg -= 1; // the closing word is not a setting
     const bool ok = settings.parseArguments(narg, args);
     if (!ok)
         lmp->error->all(FLERR, (where + settings.error_message).c_str());
-    model_->cm.postSettings(this);
+    model_->postSettings(this);
 }
 
 LiggghtsLaw::~LiggghtsLaw()
@@ -107,7 +243,7 @@ int LiggghtsLaw::add_history_value(std::string, std::string)
 
 void LiggghtsLaw::init()
 {
-    model_->cm.connectToProperties(lmp_->force->registry);
+    model_->connectToProperties(lmp_->force->registry);
 }
 
 double LiggghtsLaw::close_factor() const
@@ -153,12 +289,12 @@ bool LiggghtsLaw::contact(const LiggghtsContact &c, double F[3], double T[3])
 
     LCM::ForceData fi, fj;
     if (touching) {
-        model_->cm.surfacesIntersect(sd, fi, fj);
-        model_->cm.endSurfacesIntersect(sd, NULL, fi, fj);
+        model_->surfacesIntersect(sd, fi, fj);
+        model_->endSurfacesIntersect(sd, fi, fj);
         sd.has_force_update = true;
     } else {
         sd.has_force_update = false;
-        model_->cm.surfacesClose(sd, fi, fj);
+        model_->surfacesClose(sd, fi, fj);
     }
     if (!sd.has_force_update)
         return false;

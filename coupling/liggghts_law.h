@@ -2,9 +2,10 @@
  * `fix wall/gran` line: model, tangential, cohesion, rolling_friction, surface and their
  * settings) evaluated on rigidsurf's contacts.
  *
- * The model is LIGGGHTS's run-time combination (ContactModel<GranStyle<> >, built from
- * its headers): any normal x tangential x cohesion x rolling x surface model that
- * LIGGGHTS 3.8 accepts for walls, with the settings and material properties it reads.
+ * The model is LIGGGHTS's submodels (from its headers), chosen at run time and combined
+ * as LIGGGHTS's run-time combination does: any normal x tangential x cohesion x rolling
+ * model that LIGGGHTS 3.8 accepts for walls, with the settings and material properties
+ * it reads.
  * rigidsurf gives it the geometry LIGGGHTS's walls give it: the sphere's radius, the
  * overlap, the vector from the master point to the centre, the velocities of the sphere
  * and of the wall's material at the master point, and the contact's history (the

@@ -7,7 +7,9 @@ features), spheres that spin and slide, per-atom output dumped, write_restart; a
 process that reads the restart and runs on; a bonded heat case with a lumped wall; a
 malformed fix line (the error path); spheres in an open STL box (MESH: face, edge and
 corner contacts) that turns, with its facets' wear and VTK, and an empty mesh file (its
-error path); a VUINTER given as its Fortran source, which calls the utility routines.
+error path); a VUINTER given as its Fortran source, which calls the utility routines;
+law liggghts with cohesion and rolling friction in the drum (LIGGGHTS's submodels,
+created and freed by the law).
 
 What counts: every memcheck error (invalid read/write/free, uninitialised value,
 mismatched free), and every definitely or indirectly lost block whose allocation stack
@@ -26,12 +28,13 @@ import liglib as L
 R, RHO = 0.004, 2500.0
 # Our frames, by function or by source file; never by the executable's path (the
 # "(in .../liggghts-rigidsurf)" of frames without debug information, OpenMPI's included).
-OURS = re.compile(r"\b(rs_\w+|rigidsurf_\w+|LAMMPS_NS::FixWallRigid::\w+)\s*\(|"
-                  r"\((fix_wall_rigid\w*|rigidsurf_styles)\.cpp:\d+\)|"
-                  r"\((analytic|closest|contacts|pcache|profile|query|reader|triangulate|"
-                  r"contact_block|driver|frame|law\w*|motion|surface|track\w*|error|"
-                  r"bonded_interface|coulomb|hertz|hooke|linear_softening|mesh_build|"
-                  r"mesh_query|abaqus_util)\.c:\d+\)|\(cgal_mesh\.cpp:\d+\)")
+OURS = re.compile(r"\b(rs_\w+|rigidsurf_\w+|LAMMPS_NS::(FixWallRigid|LiggghtsLaw)::\w+)"
+                  r"\s*\(|\((fix_wall_rigid\w*|rigidsurf_styles|liggghts_law)\.cpp:\d+\)|"
+                  r"\((analytic|closest|curves|pscratch|contacts|pcache|profile\w*|query|"
+                  r"reader|keyword_text|surface_kinds|shares|triangulate|"
+                  r"contact_block|driver\w*|frame|law\w*|motion|surface\w*|track\w*|error|"
+                  r"bonded_interface|coulomb|hertz|hooke|linear_softening|mesh_\w+|"
+                  r"abaqus_\w+)\.c:\d+\)|\(cgal_\w+\.cpp:\d+\)")
 VALGRIND = ["valgrind", "--tool=memcheck", "--leak-check=full", "--num-callers=30",
             "--track-origins=no"]
 
@@ -159,6 +162,23 @@ def body(s):
            "START -1 0 LINE 1 0 end law vuinter %s statev 10 props 2e4 0 0 0\n"
            "fix integr all nve/sphere\nrun 50\n" % routine)
     runs.append(("vuinter_source", vu, 0))
+    # law liggghts: LIGGGHTS's submodels, owned and freed by the law; cohesion and rolling
+    # friction, on the drum with its corners
+    lig = L.header((-0.06, 0.06, -0.06, 0.06, -0.03, 0.03), 2e-5, extra_props=(
+        "fix m5 all property/global coefficientRollingFriction peratomtypepair 2 "
+        "0.1 0.1 0.1 0.1\n"
+        "fix m6 all property/global cohesionEnergyDensity peratomtypepair 2 "
+        "1e4 1e4 1e4 1e4\n"))
+    for k in range(4):
+        phi = -math.pi / 2 + 0.3 * (k - 1.5)
+        rr = 0.05 - R + 1e-5
+        lig += L.sphere(k + 1, (rr * math.cos(phi), rr * math.sin(phi), 0.0), R, RHO,
+                        v=(0.1, 0, 0), omega=(0, 0, 5))
+    lig += ("fix grav all gravity 9.81 vector 0 -1 0\n"
+            "fix w all wall/rigid surface drum.inp law liggghts model hertz tangential "
+            "history cohesion sjkr rolling_friction epsd2 type 2 rotate origin 0 0 0 axis "
+            "0 0 1 omega 3\nfix integr all nve/sphere\nrun 300\n")
+    runs.append(("law_liggghts", lig, 0))
     for tag, deck, want_rc in runs:
         rc, out = s.run(tag, deck, expect_ok=False, prefix=VALGRIND, timeout=600)
         s.ck.check(tag + ": exit status %d" % want_rc, rc == want_rc, "%s" % rc,
