@@ -164,13 +164,18 @@ typedef struct rs_convex_contact {
     double pb[3];     ///< witness point on b's surface: pb - pa = -depth normal
 } rs_convex_contact;
 
+/// The largest magnitude of a coordinate the pair queries take (length), as the
+/// numbers of a surface file or a fix line.
+#define RS_CONVEX_COORD_MAX 1e100
+
 /// The contact of bodies a and b (each body's origin inside its shape). Their cores (the
 /// shapes less their rounding) are apart: the gap is their distance (GJK) less the
 /// roundings, exact for rounded points and segments. Their cores overlap: libccd's MPR
 /// depth and normal (of the cores plus the roundings, or of the rounded shapes when a
 /// core has no volume), corrected by GJK with b moved apart along the normal: exact on
 /// flat contacts. gap_max >= 0 (length) bounds the gaps that are resolved. RS_ERR_ARG for
-/// a NULL or non-finite argument or a quaternion that is not unit.
+/// a NULL or non-finite argument, a position beyond RS_CONVEX_COORD_MAX or a quaternion
+/// that is not unit.
 int rs_convex_pair(const rs_body *a, const rs_body *b, double gap_max,
                    rs_convex_contact *out, rs_error *err);
 /// The contact of body a and the triangle tri (three world points, 9 values) as a thin

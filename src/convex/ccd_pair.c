@@ -39,8 +39,11 @@ static int body_cvx(const rs_body *b, rs_cvx *c, rs_error *err)
     if (!b || !b->shape)
         return rs_error_set(err, RS_ERR_ARG, "convex pair: NULL body or shape");
     for (int k = 0; k < 3; k++)
-        if (!isfinite(b->x[k]))
-            return rs_error_set(err, RS_ERR_ARG, "convex pair: body position not finite");
+        if (!(fabs(b->x[k]) <= RS_CONVEX_COORD_MAX))
+            return rs_error_set(err, RS_ERR_ARG,
+                                "convex pair: body position %g (expected a finite "
+                                "coordinate of magnitude at most %g)",
+                                b->x[k], RS_CONVEX_COORD_MAX);
     const double nq =
         sqrt(b->q[0] * b->q[0] + b->q[1] * b->q[1] + b->q[2] * b->q[2] + b->q[3] * b->q[3]);
     if (!(fabs(nq - 1.0) <= 1e-12))
@@ -181,10 +184,18 @@ static int pair(const rs_cvx *a, const rs_cvx *b, double gap_max, rs_convex_cont
         out->depth = rr - g.dist;
         return RS_OK;
     }
-    if (!g.overlap) {
+    /* Apart: the normal along the witnesses' difference, when it is one (its length the
+     * distance); a difference lost to rounding (touching cores, or coordinates far
+     * beyond the shapes' size) leaves it to the overlap's methods below. */
+    double gd[3];
+    for (int k = 0; k < 3; k++)
+        gd[k] = g.pb[k] - g.pa[k];
+    const double gl = rs_norm3(gd);
+    if (!g.overlap && gl > 0.0 &&
+        fabs(gl - g.dist) <= 1e-9 * fmax(g.dist, a->size + b->size)) {
         double n[3], pa[3], pb[3];
         for (int k = 0; k < 3; k++)
-            n[k] = (g.pb[k] - g.pa[k]) / g.dist;
+            n[k] = gd[k] / gl;
         for (int k = 0; k < 3; k++) {
             pa[k] = g.pa[k] + a->radius * n[k];
             pb[k] = g.pb[k] - b->radius * n[k];
@@ -239,11 +250,12 @@ int rs_convex_triangle(const rs_body *a, const double tri[9], double gap_max,
         return rs_error_set(err, RS_ERR_ARG, "convex triangle: NULL triangle");
     memset(&cb, 0, sizeof cb);
     for (int i = 0; i < 9; i++)
-        if (!isfinite(tri[i]))
-            return rs_error_set(err, RS_ERR_ARG,
-                                "triangle corner %d is not finite (expected finite "
-                                "coordinates)",
-                                i / 3 + 1);
+        if (!(fabs(tri[i]) <= RS_CONVEX_COORD_MAX))
+            return rs_error_set(
+                err, RS_ERR_ARG,
+                "triangle corner %d is not finite or has a coordinate beyond "
+                "%g (got %g)",
+                i / 3 + 1, RS_CONVEX_COORD_MAX, tri[i]);
     cb.tri = tri;
     for (int k = 0; k < 3; k++)
         cb.x[k] = (tri[k] + tri[3 + k] + tri[6 + k]) / 3.0;

@@ -2,6 +2,7 @@
  * built in memory (rs_surface_make_mesh, rs_surface_make_profile). Either the arrays are
  * refused with a code and a message and the surface left zeroed, or the surface answers
  * every query with finite contacts (rs_fuzz_check_surface). */
+#include "fuzz_bytes.h"
 #include "fuzz_surface.h"
 
 #include "rigidsurf/surface.h"
@@ -11,38 +12,6 @@
 #include <string.h>
 
 long rs_fuzz_arrays_accepted;
-
-/* The input read as a stream of bytes, from its start again once it runs out. */
-typedef struct bytes {
-    const uint8_t *p;
-    size_t n, i;
-} bytes;
-
-static unsigned next(bytes *b)
-{
-    return b->n ? b->p[b->i++ % b->n] : 0u;
-}
-
-/* A coordinate: a point of a grid of sixteenths, or now and then a value no surface may
- * hold (NaN, infinite, huge) or one at the edge of the doubles (denormal, zero). */
-static double value(bytes *b)
-{
-    const unsigned c = next(b);
-    switch (c) {
-    case 0xff:
-        return NAN;
-    case 0xfe:
-        return -INFINITY;
-    case 0xfd:
-        return 1e300;
-    case 0xfc:
-        return 4.9e-324;
-    case 0xfb:
-        return 0.0;
-    default:
-        return ((int)c - 128) / 16.0;
-    }
-}
 
 static int verdict(int rc, const rs_error *e, rs_surface *s, const char *what)
 {

@@ -198,8 +198,8 @@ int main(int argc, char **argv)
         }
     }
     printf("fuzz_surface: %d seeds, %ld mutated inputs (%ld surfaces accepted, %ld of them "
-           "from arrays), no failure\n",
-           nseed, runs, rs_fuzz_accepted, rs_fuzz_arrays_accepted);
+           "from arrays; %ld convex pair queries), no failure\n",
+           nseed, runs, rs_fuzz_accepted, rs_fuzz_arrays_accepted, rs_fuzz_bodies_queried);
     for (int i = 0; i < nseed; i++)
         free(seeds[i].p);
     return 0;

@@ -146,7 +146,8 @@ int rs_fuzz_surface_one(const uint8_t *data, size_t size)
         rs_surface_free(&s);
     }
     free(text);
-    return fail || rs_fuzz_arrays_one(data, size);
+    fail |= rs_fuzz_arrays_one(data, size);
+    return fail | rs_fuzz_bodies_one(data, size);
 }
 
 #ifdef RS_LIBFUZZER

@@ -215,6 +215,10 @@ static void test_pair_bad_arguments(void)
     const double tri[9] = {0, 0, 0, 1, 0, 0, 0, NAN, 0};
     ENSURE(rs_convex_triangle(&a, tri, 0.1, &c, &err) == RS_ERR_ARG);
     ENSURE(strstr(err.msg, "triangle corner 3 is not finite"));
+    /* a corner far beyond any length the queries resolve against the body */
+    const double far[9] = {0, 0, 0, 1, 0, 0, 0, 1, 1e300};
+    ENSURE(rs_convex_triangle(&a, far, 0.1, &c, &err) == RS_ERR_ARG);
+    ENSURE(strstr(err.msg, "triangle corner 3 is not finite or has a coordinate beyond"));
     a.q[0] = 0.5;
     ENSURE(rs_convex_pair(&a, &a, 0.1, &c, &err) == RS_ERR_ARG);
     ENSURE(strstr(err.msg, "quaternion"));
