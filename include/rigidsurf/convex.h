@@ -12,6 +12,8 @@
 #ifndef RIGIDSURF_CONVEX_H
 #define RIGIDSURF_CONVEX_H
 
+#include "rigidsurf/motion.h"
+#include "rigidsurf/surface.h"
 #include "rigidsurf/types.h"
 
 #ifdef __cplusplus
@@ -182,6 +184,30 @@ int rs_convex_pair(const rs_body *a, const rs_body *b, double gap_max,
 /// convex shape: b is the triangle, so normal points from a towards the triangle.
 int rs_convex_triangle(const rs_body *a, const double tri[9], double gap_max,
                        rs_convex_contact *out, rs_error *err);
+
+/// One contact of a convex body with a surface.
+typedef struct rs_body_contact {
+    int feature;      ///< the master feature that owns it (RS_FEATURE)
+    double depth;     ///< penetration (length): > 0 overlap, < 0 gap, as rdisp(1)
+    double normal[3]; ///< the master's unit normal at xm, toward the body
+    double xm[3];     ///< the master's witness point: the closest point to xs
+    double xs[3];     ///< the body's witness point: its deepest point along -normal
+    int iterations;   ///< the fixed point's iterations
+} rs_body_contact;
+
+/// The contacts of body b with an analytic surface s (SEGMENTS, CYLINDER, REVOLUTION)
+/// in the pose pose (NULL: its reference pose), one per owning feature, with a gap at
+/// most gap_max. For each feature near the body (a sphere query of the body's reach
+/// about its centre) the normal n is iterated to a fixed point: xs = the body's support
+/// along -n, n = the normal of the feature's closest point to xs, until n turns by at
+/// most 1e-13; then depth = -(xs - xm).n. A fixed point not reached in 100 iterations
+/// (a wall curved more sharply than the body where they meet) is RS_ERR_GEOMETRY naming
+/// the feature, never a contact. A MESH is refused (RS_ERR_ARG): its triangles are
+/// answered by rs_convex_triangle. out holds cap contacts, *n gets their count
+/// (RS_ERR_CAPACITY beyond).
+int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                             double gap_max, rs_body_contact *out, int cap, int *n,
+                             rs_error *err);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,155 @@
+/* A convex body against an analytic surface (SEGMENTS, CYLINDER, REVOLUTION): per
+ * owning feature, the body's deepest point along the feature's normal, found as a fixed
+ * point (convex.h, rs_body_surface_contacts; docs/conventions.md, "Convex bodies"). The
+ * surface is asked through its point and sphere queries only, so no kind changes. */
+#include "rigidsurf/convex.h"
+#include "rigidsurf/vec.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { BODY_ITER_MAX = 100 };
+
+/* The body's reach about its centre: the farthest corner of its bounding box. */
+static double body_reach(const rs_body *b)
+{
+    double lo[3], hi[3], r2 = 0.0;
+    rs_shape_bounds(b->shape, lo, hi);
+    for (int c = 0; c < 8; c++) {
+        const double v[3] = {(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1],
+                             (c & 4) ? hi[2] : lo[2]};
+        r2 = fmax(r2, rs_dot3(v, v));
+    }
+    return sqrt(r2);
+}
+
+/* The contact of point p with the surface that the feature base `want` owns, else the
+ * deepest contact p has (the owning feature changed); -1 when p has none. */
+static int point_contact(const rs_surface *s, const rs_pose *pose, const double p[3],
+                         double reach, int want, rs_contacts *c, rs_error *err, int *rc)
+{
+    const double px[1] = {p[0]}, py[1] = {p[1]}, pz[1] = {p[2]};
+    rs_query q;
+    memset(&q, 0, sizeof q);
+    q.n = 1;
+    q.slave.x = px, q.slave.y = py, q.slave.z = pz;
+    q.slave.radius = NULL;
+    q.pose = pose;
+    q.gap_max = reach;
+    q.dist_min = -INFINITY;
+    c->n = 0;
+    *rc = rs_surface_query(s, &q, c, err);
+    if (*rc != RS_OK || c->n == 0)
+        return -1;
+    int best = 0;
+    for (int k = 0; k < c->n; k++) {
+        if (RS_FEATURE_BASE(c->feature[k]) == want)
+            return k;
+        if (c->dist[k] < c->dist[best])
+            best = k;
+    }
+    return best;
+}
+
+int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                             double gap_max, rs_body_contact *out, int cap, int *n,
+                             rs_error *err)
+{
+    if (!s || !b || !b->shape || !out || !n || cap < 1)
+        return rs_error_set(err, RS_ERR_ARG, "body contacts: NULL argument or cap < 1");
+    *n = 0;
+    if (rs_surface_has_facets(s))
+        return rs_error_set(err, RS_ERR_ARG,
+                            "body contacts: surface '%s' is a MESH; this query answers the "
+                            "analytic kinds (a body against triangles: rs_convex_triangle)",
+                            s->name);
+    if (!(gap_max >= 0.0) || !isfinite(gap_max))
+        return rs_error_set(err, RS_ERR_ARG,
+                            "body contacts: gap_max = %g (expected a finite number >= 0)",
+                            gap_max);
+    for (int k = 0; k < 3; k++)
+        if (!(fabs(b->x[k]) <= RS_CONVEX_COORD_MAX))
+            return rs_error_set(err, RS_ERR_ARG, "body contacts: body position %g",
+                                b->x[k]);
+    const double reach = body_reach(b);
+
+    /* The features near the body: a sphere of its reach about its centre. */
+    rs_contacts cand, pc;
+    memset(&cand, 0, sizeof cand);
+    memset(&pc, 0, sizeof pc);
+    int rc = RS_OK;
+    {
+        const double cx[1] = {b->x[0]}, cy[1] = {b->x[1]}, cz[1] = {b->x[2]},
+                     cr[1] = {reach};
+        rs_query q;
+        memset(&q, 0, sizeof q);
+        q.n = 1;
+        q.slave.x = cx, q.slave.y = cy, q.slave.z = cz;
+        q.slave.radius = cr;
+        q.pose = pose;
+        q.gap_max = gap_max;
+        q.dist_min = -INFINITY;
+        rc = rs_surface_query(s, &q, &cand, err);
+    }
+    for (int k = 0; rc == RS_OK && k < cand.n; k++) {
+        double nrm[3] = {cand.nrm[0][k], cand.nrm[1][k], cand.nrm[2][k]};
+        int want = RS_FEATURE_BASE(cand.feature[k]), found = -1, it = 0, conv = 0;
+        double p[3];
+        for (; it < BODY_ITER_MAX && !conv; it++) {
+            const double down[3] = {-nrm[0], -nrm[1], -nrm[2]};
+            rs_body_support(b, down, p);
+            found = point_contact(s, pose, p, 2.0 * reach + gap_max, want, &pc, err, &rc);
+            if (rc != RS_OK || found < 0)
+                break;
+            const double nn[3] = {pc.nrm[0][found], pc.nrm[1][found], pc.nrm[2][found]};
+            const double turn =
+                fabs(nn[0] - nrm[0]) + fabs(nn[1] - nrm[1]) + fabs(nn[2] - nrm[2]);
+            conv = turn <= 1e-13 && RS_FEATURE_BASE(pc.feature[found]) == want;
+            want = RS_FEATURE_BASE(pc.feature[found]);
+            memcpy(nrm, nn, sizeof nrm);
+        }
+        if (rc != RS_OK || found < 0)
+            continue; /* the body's deepest point has no contact: none here */
+        if (!conv) {
+            rc = rs_error_set(err, RS_ERR_GEOMETRY,
+                              "body contacts: the deepest point on feature %d of '%s' did "
+                              "not settle in %d iterations (a wall curved more sharply "
+                              "than the body?)",
+                              want, s->name, BODY_ITER_MAX);
+            break;
+        }
+        const double depth = -pc.dist[found];
+        if (!(-depth <= gap_max))
+            continue;
+        /* one contact per owning feature: the deepest */
+        const int f = pc.feature[found];
+        int slot = -1;
+        for (int j = 0; j < *n; j++)
+            if (out[j].feature == f)
+                slot = j;
+        if (slot >= 0 && out[slot].depth >= depth)
+            continue;
+        if (slot < 0) {
+            if (*n == cap) {
+                rc = rs_error_set(err, RS_ERR_CAPACITY,
+                                  "body contacts: more than %d contacts with '%s'", cap,
+                                  s->name);
+                break;
+            }
+            slot = (*n)++;
+        }
+        rs_body_contact *o = &out[slot];
+        o->feature = f;
+        o->depth = depth;
+        o->iterations = it;
+        for (int d = 0; d < 3; d++) {
+            o->normal[d] = nrm[d];
+            o->xm[d] = pc.xm[d][found];
+            o->xs[d] = p[d];
+        }
+    }
+    rs_contacts_free(&cand);
+    rs_contacts_free(&pc);
+    return rc;
+}
