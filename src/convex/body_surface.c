@@ -24,22 +24,30 @@ static double body_reach(const rs_body *b)
     return sqrt(r2);
 }
 
+/* The contacts of one slave with the surface, into c (emptied first): a point (radius
+ * NULL) or a sphere at x, every penetration kept. */
+static int query_one(const rs_surface *s, const rs_pose *pose, const double x[3],
+                     const double *radius, double gap_max, rs_contacts *c, rs_error *err)
+{
+    const double px[1] = {x[0]}, py[1] = {x[1]}, pz[1] = {x[2]};
+    rs_query q;
+    memset(&q, 0, sizeof q);
+    q.n = 1;
+    q.slave.x = px, q.slave.y = py, q.slave.z = pz;
+    q.slave.radius = radius;
+    q.pose = pose;
+    q.gap_max = gap_max;
+    q.dist_min = -INFINITY;
+    c->n = 0;
+    return rs_surface_query(s, &q, c, err);
+}
+
 /* The contact of point p with the surface that the feature base `want` owns, else the
  * deepest contact p has (the owning feature changed); -1 when p has none. */
 static int point_contact(const rs_surface *s, const rs_pose *pose, const double p[3],
                          double reach, int want, rs_contacts *c, rs_error *err, int *rc)
 {
-    const double px[1] = {p[0]}, py[1] = {p[1]}, pz[1] = {p[2]};
-    rs_query q;
-    memset(&q, 0, sizeof q);
-    q.n = 1;
-    q.slave.x = px, q.slave.y = py, q.slave.z = pz;
-    q.slave.radius = NULL;
-    q.pose = pose;
-    q.gap_max = reach;
-    q.dist_min = -INFINITY;
-    c->n = 0;
-    *rc = rs_surface_query(s, &q, c, err);
+    *rc = query_one(s, pose, p, NULL, reach, c, err);
     if (*rc != RS_OK || c->n == 0)
         return -1;
     int best = 0;
@@ -78,20 +86,8 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
     rs_contacts cand, pc;
     memset(&cand, 0, sizeof cand);
     memset(&pc, 0, sizeof pc);
-    int rc = RS_OK;
-    {
-        const double cx[1] = {b->x[0]}, cy[1] = {b->x[1]}, cz[1] = {b->x[2]},
-                     cr[1] = {reach};
-        rs_query q;
-        memset(&q, 0, sizeof q);
-        q.n = 1;
-        q.slave.x = cx, q.slave.y = cy, q.slave.z = cz;
-        q.slave.radius = cr;
-        q.pose = pose;
-        q.gap_max = gap_max;
-        q.dist_min = -INFINITY;
-        rc = rs_surface_query(s, &q, &cand, err);
-    }
+    const double cr[1] = {reach};
+    int rc = query_one(s, pose, b->x, cr, gap_max, &cand, err);
     for (int k = 0; rc == RS_OK && k < cand.n; k++) {
         double nrm[3] = {cand.nrm[0][k], cand.nrm[1][k], cand.nrm[2][k]};
         int want = RS_FEATURE_BASE(cand.feature[k]), found = -1, it = 0, conv = 0;

@@ -293,13 +293,21 @@ def compare_walls(s, name, ours, ref, atoms, steps, gravity, integrator, box, to
     fb = read_dump(s.path(name + "_" + ref_tag + ".dump"))
     s.ck.check(name + ": the reference run made contact", touched(fb),
                why="LIGGGHTS's wall never touched the sphere: the deck tests nothing")
+    check_trajectories(s, name, fa, fb, scales, tol)
+
+
+def check_trajectories(s, name, fa, fb, scales, tol):
+    """Checks that frames fa (ours) and fb (LIGGGHTS's) hold the same steps and atoms
+    and that every field agrees to tol relative (scales as compare_frames). Returns the
+    worst relative difference, or None when the frames differ."""
     worst = compare_frames(fa, fb, scales)
     if not s.ck.check(name + ": same frames and atoms", worst is not None,
                       "%d vs %d frames" % (len(fa), len(fb))):
-        return
+        return None
     fld, (d, step, i) = max(worst.items(), key=lambda kv: kv[1][0])
     s.ck.check(name + ": trajectory equals LIGGGHTS's to %g" % tol, d <= tol,
                "worst %s rel %.3g at step %d atom %d" % (fld, d, step, i))
+    return d
 
 
 def error_lines(out):

@@ -258,14 +258,7 @@ def deck(cases, wall_lines, tag, dump_every=EVERY, extra="", n1=N1, n2=N2, box=B
 
 
 def compare(s, name, fa, fb, tol=TOL):
-    worst = L.compare_frames(fa, fb, SCALES)
-    if not s.ck.check(name + ": same frames and atoms", worst is not None,
-                      "%d vs %d frames" % (len(fa), len(fb))):
-        return None
-    fld, (d, step, i) = max(worst.items(), key=lambda kv: kv[1][0])
-    s.ck.check(name + ": trajectory equals LIGGGHTS's to %g" % tol, d <= tol,
-               "worst %s rel %.3g at step %d atom %d" % (fld, d, step, i))
-    return d
+    return L.check_trajectories(s, name, fa, fb, SCALES, tol)
 
 
 # The matrix ---------------------------------------------------------------------------

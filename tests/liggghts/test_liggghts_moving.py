@@ -82,13 +82,7 @@ def body(s):
         gap = min(px - py for px, py in (plate_xy(st, f[1]) for st, f in fb))
         s.ck.check(name + ": it stays on one triangle (y < x in the plate's frame)",
                    gap > 0.5 * R, "closest approach to the diagonal %.3g" % gap)
-        worst = L.compare_frames(fa, fb, SCALES)
-        if not s.ck.check(name + ": same frames", worst is not None,
-                          "%d vs %d" % (len(fa), len(fb))):
-            continue
-        fld, (d, step, i) = max(worst.items(), key=lambda kv: kv[1][0])
-        s.ck.check(name + ": trajectory equals LIGGGHTS's to %g" % lig[2], d <= lig[2],
-                   "worst %s rel %.3g at step %d" % (fld, d, step))
+        L.check_trajectories(s, name, fa, fb, SCALES, lig[2])
         if name == "turning":
             s.run("still_rigid", deck(True, lig, steps, "still_rigid", still=True))
             fc = L.read_dump(s.path("still_rigid.dump"))

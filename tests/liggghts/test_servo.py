@@ -87,15 +87,8 @@ def plate_series(s, tag, col=2):
 
 
 def compare(s, name, ours, ref, tol):
-    fa = L.read_dump(s.path(ours + ".dump"))
-    fb = L.read_dump(s.path(ref + ".dump"))
-    worst = L.compare_frames(fa, fb, SCALES)
-    if not s.ck.check(name + ": same frames", worst is not None,
-                      "%d vs %d frames" % (len(fa), len(fb))):
-        return
-    fld, (d, step, i) = max(worst.items(), key=lambda kv: kv[1][0])
-    s.ck.check(name + ": trajectory equals LIGGGHTS's to %g" % tol, d <= tol,
-               "worst %s rel %.3g at step %d atom %d" % (fld, d, step, i))
+    L.check_trajectories(s, name, L.read_dump(s.path(ours + ".dump")),
+                         L.read_dump(s.path(ref + ".dump")), SCALES, tol)
 
 
 def single(s):
