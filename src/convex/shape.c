@@ -8,19 +8,24 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Lengths are bounded as coordinates are (RS_CONVEX_COORD_MAX): a shape's volume and
+ * inertia stay finite. */
 static int check_dim(const char *what, double x, rs_error *err)
 {
-    if (!isfinite(x) || x <= 0.0)
-        return rs_error_set(err, RS_ERR_ARG, "%s = %g (expected a finite number > 0)", what,
-                            x);
+    if (!(x > 0.0 && x <= RS_CONVEX_COORD_MAX))
+        return rs_error_set(err, RS_ERR_ARG,
+                            "%s = %g (expected a finite number > 0, at most %g)", what, x,
+                            RS_CONVEX_COORD_MAX);
     return RS_OK;
 }
 
 static int check_rounding(double r, rs_error *err)
 {
-    if (!isfinite(r) || r < 0.0)
-        return rs_error_set(err, RS_ERR_ARG,
-                            "rounding radius = %g (expected a finite number >= 0)", r);
+    if (!(r >= 0.0 && r <= RS_CONVEX_COORD_MAX))
+        return rs_error_set(
+            err, RS_ERR_ARG,
+            "rounding radius = %g (expected a finite number >= 0, at most %g)", r,
+            RS_CONVEX_COORD_MAX);
     return RS_OK;
 }
 
@@ -119,11 +124,11 @@ int rs_shape_make_polyhedron(rs_shape *s, const double *xyz, int n, double round
     if (!xyz || n < 0)
         return rs_error_set(err, RS_ERR_ARG, "polyhedron: no points (expected n >= 4)");
     for (int i = 0; i < 3 * n; i++)
-        if (!isfinite(xyz[i]))
+        if (!(fabs(xyz[i]) <= RS_CONVEX_COORD_MAX))
             return rs_error_set(err, RS_ERR_ARG,
                                 "polyhedron point %d is not finite (expected finite "
-                                "coordinates)",
-                                i / 3 + 1);
+                                "coordinates of magnitude at most %g)",
+                                i / 3 + 1, RS_CONVEX_COORD_MAX);
     shape_init(s, RS_SHAPE_POLYHEDRON, 0.0, 0.0, 0.0, rounding);
     if (rs_cgal_convex_hull(xyz, n, &s->verts, &s->nv, &s->tris, &s->nt, msg, sizeof msg))
         return rs_error_set(err, strstr(msg, "memory") ? RS_ERR_NOMEM : RS_ERR_GEOMETRY,
@@ -282,9 +287,12 @@ int rs_body_init(rs_body *b, const rs_shape *shape, double density, const double
         return rs_error_set(err, RS_ERR_ARG, "body: NULL argument");
     memset(b, 0, sizeof *b);
     for (int k = 0; k < 3; k++)
-        if (!isfinite(x[k]))
-            return rs_error_set(err, RS_ERR_ARG,
-                                "body position x[%d] = %g (expected finite)", k, x[k]);
+        if (!(fabs(x[k]) <= RS_CONVEX_COORD_MAX))
+            return rs_error_set(
+                err, RS_ERR_ARG,
+                "body position x[%d] = %g (expected finite, of magnitude at "
+                "most %g)",
+                k, x[k], RS_CONVEX_COORD_MAX);
     for (int k = 0; k < 4; k++)
         if (!isfinite(q[k]))
             return rs_error_set(err, RS_ERR_ARG,
@@ -307,6 +315,16 @@ int rs_body_init(rs_body *b, const rs_shape *shape, double density, const double
         int rc = rs_shape_mass_props(shape, density, &mp, err);
         if (rc)
             return rc;
+        int finite = isfinite(mp.mass);
+        for (int k = 0; k < 3; k++)
+            finite &= isfinite(mp.principal[k]);
+        for (int k = 0; k < 9; k++)
+            finite &= isfinite(mp.axes[k]);
+        if (!finite)
+            return rs_error_set(err, RS_ERR_ARG,
+                                "body: the mass properties of the shape with density %g "
+                                "are not finite (mass %g): too large a shape or density",
+                                density, mp.mass);
         b->mass = mp.mass;
         memcpy(b->inertia, mp.principal, sizeof b->inertia);
         memcpy(b->axes, mp.axes, sizeof b->axes);

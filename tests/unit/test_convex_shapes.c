@@ -337,7 +337,11 @@ static void test_bad_shapes(void)
                "capsule radius = -1");
     ENSURE_ERR(rs_shape_make_cone(&s, 1.0, NAN, 0.0, &e_), RS_ERR_ARG, "cone height = nan");
     ENSURE_ERR(rs_shape_make_box(&s, 1.0, 1.0, 1.0, -0.1, &e_), RS_ERR_ARG,
-               "rounding radius = -0.1 (expected a finite number >= 0)");
+               "rounding radius = -0.1 (expected a finite number >= 0, at most 1e+100)");
+    /* lengths beyond any coordinate the queries take */
+    ENSURE_ERR(rs_shape_make_cone(&s, 1e300, 2.0, 0.0, &e_), RS_ERR_ARG,
+               "cone radius = 1e+300 (expected a finite number > 0, at most 1e+100)");
+    ENSURE_ERR(rs_shape_make_sphere(&s, 1.0, 1e101, &e_), RS_ERR_ARG, "rounding radius");
     ENSURE_ERR(rs_shape_make_user(&s, NULL, NULL, 0.0, &e_), RS_ERR_ARG,
                "no support function");
     /* points in one plane, too few points, a non-finite point */
@@ -364,6 +368,14 @@ static void test_bad_shapes(void)
     ENSURE_ERR(rs_body_init(&b, &s, -1.0, x, q1, &e_), RS_ERR_ARG, "density = -1");
     ENSURE_ERR(rs_shape_mass_props(&s, 0.0, &(rs_mass_props){0}, &e_), RS_ERR_ARG,
                "density = 0");
+    /* a body whose mass properties overflow: a box of 1e100 a side */
+    rs_shape big;
+    ENSURE(rs_shape_make_box(&big, 1e100, 1e100, 1e100, 0.0, NULL) == RS_OK);
+    ENSURE_ERR(rs_body_init(&b, &big, 1000.0, x, q1, &e_), RS_ERR_ARG,
+               "mass properties of the shape with density 1000 are not finite");
+    const double far[3] = {0, 1e101, 0};
+    ENSURE_ERR(rs_body_init(&b, &s, 1.0, far, q1, &e_), RS_ERR_ARG,
+               "body position x[1] = 1e+101");
 }
 
 int main(void)
