@@ -1,0 +1,170 @@
+/* Convex bodies: the cost of one body-contact for each shape, against a sphere contact.
+ *
+ *   bench_convex [--bodies N] [--reps R]
+ *
+ * N bodies of each shape (about 1 cm across, random orientations) are pressed 0.1 mm
+ * into the floor z = 0, given two ways: a CYLINDER plane (rs_body_surface_contacts, the
+ * fixed point through the kind's queries) and one large triangle (rs_convex_triangle:
+ * GJK, libccd's MPR and its refinement). The reference is the sphere's own path: the
+ * same N spheres in one rs_surface_query block. Reported: ns per contact (median of the
+ * repetitions, thread CPU time) and the ratio to the sphere query. */
+#define _POSIX_C_SOURCE 200809L
+#include "rigidsurf/convex.h"
+#include "rigidsurf/vec.h"
+
+#include "bench_clock.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench_rng.h"
+
+static const char *PLANE = "*SURFACE, TYPE=CYLINDER, NAME=floor\n"
+                           "0, 0, 0, 1, 0, 0\n0, -1, 0\nSTART, -10, 0\nLINE, 10, 0\n";
+
+static double urange(double a, double b)
+{
+    return a + (b - a) * urand();
+}
+
+/* The shapes, each about 1 cm across. */
+static int make_shape(int k, rs_shape *s, const char **name)
+{
+    static const char *names[] = {"sphere",  "ellipsoid", "box",  "rounded box",
+                                  "capsule", "cylinder",  "cone", "polyhedron 64"};
+    *name = names[k];
+    switch (k) {
+    case 0:
+        return rs_shape_make_sphere(s, 0.005, 0.0, NULL);
+    case 1:
+        return rs_shape_make_ellipsoid(s, 0.006, 0.004, 0.003, 0.0, NULL);
+    case 2:
+        return rs_shape_make_box(s, 0.005, 0.004, 0.003, 0.0, NULL);
+    case 3:
+        return rs_shape_make_box(s, 0.004, 0.003, 0.002, 0.001, NULL);
+    case 4:
+        return rs_shape_make_capsule(s, 0.003, 0.003, 0.0, NULL);
+    case 5:
+        return rs_shape_make_cylinder(s, 0.004, 0.004, 0.0, NULL);
+    case 6:
+        return rs_shape_make_cone(s, 0.004, 0.008, 0.0, NULL);
+    default: {
+        double xyz[3 * 64];
+        for (int i = 0; i < 64; i++) {
+            const double z = urange(-1, 1), ph = urange(0, 2 * RS_PI), r = sqrt(1 - z * z);
+            xyz[3 * i] = 0.005 * r * cos(ph);
+            xyz[3 * i + 1] = 0.005 * r * sin(ph);
+            xyz[3 * i + 2] = 0.005 * z;
+        }
+        return rs_shape_make_polyhedron(s, xyz, 64, 0.0, NULL);
+    }
+    }
+}
+
+int main(int argc, char **argv)
+{
+    int n = 2000, reps = 7;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        if (!strcmp(argv[i], "--bodies"))
+            n = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "--reps"))
+            reps = atoi(argv[i + 1]);
+    }
+    if (n < 1 || reps < 1) {
+        fprintf(stderr, "usage: bench_convex [--bodies N] [--reps R]\n");
+        return 2;
+    }
+    printf("# bench_convex: %d bodies a shape, %d repetitions (%s, %s)\n", n, reps,
+           RS_BUILD_TYPE, RS_BUILD_FLAGS);
+    rs_surface plane;
+    rs_error e;
+    rs_error_clear(&e);
+    if (rs_surface_parse(PLANE, "bench", NULL, &plane, &e) != RS_OK) {
+        fprintf(stderr, "bench_convex: %s\n", e.msg);
+        return 1;
+    }
+    const double tri[9] = {-10, -10, 0, 10, -10, 0, 0, 10, 0};
+    double *t = malloc((size_t)reps * sizeof *t);
+    rs_body *b = malloc((size_t)n * sizeof *b);
+    double *x = malloc((size_t)n * sizeof *x), *y = malloc((size_t)n * sizeof *y),
+           *z = malloc((size_t)n * sizeof *z), *r = malloc((size_t)n * sizeof *r);
+    if (!t || !b || !x || !y || !z || !r)
+        return 1;
+
+    /* the sphere path: n spheres of 5 mm, 0.1 mm into the floor, one block */
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    for (int i = 0; i < n; i++)
+        x[i] = urange(-1, 1), y[i] = urange(-1, 1), z[i] = 0.005 - 1e-4, r[i] = 0.005;
+    rs_query q;
+    memset(&q, 0, sizeof q);
+    q.n = n;
+    q.slave.x = x, q.slave.y = y, q.slave.z = z, q.slave.radius = r;
+    q.gap_max = 0.0;
+    q.dist_min = -INFINITY;
+    for (int k = 0; k < reps; k++) {
+        const double t0 = rs_bench_thread_now();
+        c.n = 0;
+        rs_surface_query(&plane, &q, &c, NULL);
+        t[k] = (rs_bench_thread_now() - t0) / c.n;
+    }
+    const double sphere_ns = 1e9 * rs_bench_median(t, reps);
+    printf("sphere query (rs_surface_query, a block of %d): %.1f ns per contact\n", n,
+           sphere_ns);
+    printf("%-14s %14s %8s %14s %8s\n", "shape", "plane ns", "ratio", "triangle ns",
+           "ratio");
+
+    for (int s = 0; s < 8; s++) {
+        rs_shape sh;
+        const char *name;
+        if (make_shape(s, &sh, &name) != RS_OK)
+            return 1;
+        /* random orientations, each body's lowest point 0.1 mm below the floor */
+        for (int i = 0; i < n; i++) {
+            double qq[4] = {urange(-1, 1), urange(-1, 1), urange(-1, 1), urange(-1, 1)};
+            const double nq =
+                sqrt(qq[0] * qq[0] + qq[1] * qq[1] + qq[2] * qq[2] + qq[3] * qq[3]);
+            for (int k = 0; k < 4; k++)
+                qq[k] /= nq;
+            double x0[3] = {urange(-1, 1), urange(-1, 1), 0.0}, low[3];
+            rs_body_init(&b[i], &sh, 1000.0, x0, qq, NULL);
+            const double down[3] = {0, 0, -1};
+            rs_body_support(&b[i], down, low);
+            b[i].x[2] = -low[2] - 1e-4;
+        }
+        double med[2];
+        long found[2] = {0, 0};
+        for (int way = 0; way < 2; way++) {
+            for (int k = 0; k < reps; k++) {
+                long m = 0;
+                const double t0 = rs_bench_thread_now();
+                for (int i = 0; i < n; i++) {
+                    if (way == 0) {
+                        rs_body_contact bc[4];
+                        int nb = 0;
+                        rs_body_surface_contacts(&plane, NULL, &b[i], 0.0, bc, 4, &nb,
+                                                 NULL);
+                        m += nb;
+                    } else {
+                        rs_convex_contact cc;
+                        rs_convex_triangle(&b[i], tri, 0.0, &cc, NULL);
+                        m += cc.state == RS_CONVEX_OVERLAP;
+                    }
+                }
+                t[k] = (rs_bench_thread_now() - t0) / (double)(m ? m : 1);
+                found[way] = m;
+            }
+            med[way] = 1e9 * rs_bench_median(t, reps);
+        }
+        printf("%-14s %11.1f %s %8.1f %11.1f %s %8.1f\n", name, med[0],
+               found[0] == n ? "   " : "(!)", med[0] / sphere_ns, med[1],
+               found[1] == n ? "   " : "(!)", med[1] / sphere_ns);
+        rs_shape_free(&sh);
+    }
+    printf("(!): not every body found its one contact\n");
+    rs_contacts_free(&c);
+    rs_surface_free(&plane);
+    free(t), free(b), free(x), free(y), free(z), free(r);
+    return 0;
+}
