@@ -192,6 +192,9 @@ typedef struct rs_body_contact {
     double normal[3]; ///< the master's unit normal at xm, toward the body
     double xm[3];     ///< the master's witness point: the closest point to xs
     double xs[3];     ///< the body's witness point: its deepest point along -normal
+    double t1[3];     ///< the master's first tangent at xm, by the kind's convention
+    double t2[3];     ///< the second tangent, normal x t1
+    double curv[2];   ///< the master's principal curvatures at xm (rs_contacts.curv)
     int iterations;   ///< the fixed point's iterations
 } rs_body_contact;
 

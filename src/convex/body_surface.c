@@ -143,7 +143,11 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
             o->normal[d] = nrm[d];
             o->xm[d] = pc.xm[d][found];
             o->xs[d] = p[d];
+            o->t1[d] = pc.t1[d][found];
+            o->t2[d] = pc.t2[d][found];
         }
+        o->curv[0] = pc.curv[0][found];
+        o->curv[1] = pc.curv[1][found];
     }
     rs_contacts_free(&cand);
     rs_contacts_free(&pc);
