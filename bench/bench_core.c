@@ -180,9 +180,10 @@ static int pipeline(pipe *pp, const cloud *cl, double dt, double *tq, double *tt
         int rc = query_block(pp, cl, b, err);
         if (rc)
             return rc;
-        rs_particles p = {nb,          cl->x + b0,  cl->y + b0,  cl->z + b0,  cl->vx + b0,
-                          cl->vy + b0, cl->vz + b0, cl->wx + b0, cl->wy + b0, cl->wz + b0,
-                          cl->r + b0,  cl->id + b0, cl->dp + b0, cl->hp + b0, cl->stride};
+        rs_particles p = {nb,          cl->x + b0,  cl->y + b0,  cl->z + b0,
+                          cl->vx + b0, cl->vy + b0, cl->vz + b0, cl->wx + b0,
+                          cl->wy + b0, cl->wz + b0, cl->r + b0,  cl->id + b0,
+                          cl->dp + b0, cl->hp + b0, cl->stride,  NULL};
         rc = rs_track_update(&pp->tr, &pp->s, pp->still ? NULL : &pp->m, dt, &p, &pp->c,
                              &pp->out, err);
         if (rc)

@@ -105,6 +105,7 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     p.dir = bdir_.data();
     p.hist = bhist_.data();
     p.slot_stride = slot_stride();
+    p.body = nullptr; // LIGGGHTS 3.8.0 particles are spheres
 
     /* A setup call has no increment: no slip, no master rotation. */
     rs_motion still;

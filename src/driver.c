@@ -1,6 +1,8 @@
-/* The standalone explicit driver: central differences for slave nodes against one
- * analytic rigid master, the law called on the tracker's blocks (driver.h). */
+/* The standalone explicit driver: central differences for slave nodes (points, spheres,
+ * convex bodies) against one rigid master, the law called on the tracker's blocks
+ * (driver.h). */
 #include "rigidsurf/driver.h"
+#include "rigidsurf/vec.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -50,6 +52,8 @@ int rs_driver_init(rs_driver *d, const rs_surface *s, int n, rs_error *err)
     d->inertia = zalloc(3 * un, sizeof(double), &ok);
     d->text = zalloc(3 * un, sizeof(double), &ok);
     d->tcon = zalloc(3 * un, sizeof(double), &ok);
+    d->shape = zalloc(un, sizeof(const rs_shape *), &ok);
+    d->body = zalloc(un, sizeof(rs_body), &ok);
     d->temp_prev = zalloc(un, sizeof(double), &ok);
     d->dtemp = zalloc(un, sizeof(double), &ok);
     d->id = zalloc(un, sizeof(int), &ok);
@@ -94,6 +98,94 @@ int rs_driver_set_law(rs_driver *d, const rs_law *law, const double *props, int 
     if (nprops)
         memcpy(d->props, props, (size_t)nprops * sizeof(double));
     d->nstatev = nstatev;
+    return RS_OK;
+}
+
+int rs_driver_set_body(rs_driver *d, int i, const rs_shape *shape, double density,
+                       rs_error *err)
+{
+    if (!d || i < 0 || i >= d->n || !shape)
+        return rs_error_set(err, RS_ERR_ARG, "driver: node %d of %d, or no shape", i,
+                            d ? d->n : 0);
+    if (d->inc > 0)
+        return rs_error_set(err, RS_ERR_ARG, "driver: bodies are set before increment 1");
+    rs_mass_props mp;
+    int rc = rs_shape_mass_props(shape, density, &mp, err);
+    if (rc)
+        return rc;
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            if (mp.axes[3 * r + c] != (r == c ? 1.0 : 0.0))
+                return rs_error_set(err, RS_ERR_ARG,
+                                    "driver: node %d: the shape's principal axes are not "
+                                    "its body axes (give a polyhedron's points in its "
+                                    "principal axes)",
+                                    i);
+    d->shape[i] = shape;
+    d->mass[i] = mp.mass;
+    for (int k = 0; k < 3; k++)
+        d->inertia[3 * i + k] = mp.principal[k];
+    d->radius[i] = cbrt(3.0 * mp.volume / (4.0 * RS_PI));
+    if (d->capacity < 16)
+        d->capacity = 16;
+    return RS_OK;
+}
+
+/* The contacts of every node at x_k: runs of spheres and points by the surface's block
+ * query, each body by its own (driver.h, step 2). A list that holds bodies keeps the
+ * witness points, a sphere's x - R n. */
+static int query_nodes(rs_driver *d, rs_error *err)
+{
+    rs_contacts *c = &d->contacts;
+    c->n = 0;
+    int bodies = 0;
+    for (int i = 0; i < d->n; ++i)
+        bodies |= d->shape[i] != NULL;
+    c->witness = bodies;
+    for (int i = 0; i < d->n;) {
+        if (d->shape[i]) {
+            rs_body *b = &d->body[i];
+            b->x[0] = d->x[i], b->x[1] = d->y[i], b->x[2] = d->z[i];
+            memcpy(b->q, d->q + 4 * (size_t)i, sizeof b->q);
+            b->mass = d->mass[i];
+            memcpy(b->inertia, d->inertia + 3 * (size_t)i, sizeof b->inertia);
+            b->shape = d->shape[i];
+            int rc = rs_body_query(d->surface, &d->motion.pose, b, i, d->radius[i],
+                                   d->tracking, c, err);
+            if (rc)
+                return rc;
+            ++i;
+            continue;
+        }
+        int j = i;
+        while (j < d->n && !d->shape[j])
+            ++j;
+        rs_query q;
+        memset(&q, 0, sizeof q);
+        q.n = j - i;
+        q.slave.x = d->x + i;
+        q.slave.y = d->y + i;
+        q.slave.z = d->z + i;
+        q.slave.radius = d->radius + i;
+        q.pose = &d->motion.pose;
+        q.gap_max = d->tracking;
+        q.dist_min = -INFINITY;
+        const int k0 = c->n;
+        int rc = rs_surface_query(d->surface, &q, c, err);
+        if (rc)
+            return rc;
+        if (bodies && (rc = rs_contacts_reserve(c, c->n, err)) != RS_OK)
+            return rc;
+        for (int k = k0; k < c->n; ++k) {
+            const int p = c->point[k] += i;
+            if (bodies) {
+                c->xs[0][k] = d->x[p] - d->radius[p] * c->nrm[0][k];
+                c->xs[1][k] = d->y[p] - d->radius[p] * c->nrm[1][k];
+                c->xs[2][k] = d->z[p] - d->radius[p] * c->nrm[2][k];
+            }
+        }
+        i = j;
+    }
     return RS_OK;
 }
 
@@ -215,18 +307,7 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     }
 
     /* query and tracker at x_k with v_{k-1/2} */
-    rs_query q;
-    memset(&q, 0, sizeof q);
-    q.n = n;
-    q.slave.x = d->x;
-    q.slave.y = d->y;
-    q.slave.z = d->z;
-    q.slave.radius = d->radius;
-    q.pose = &d->motion.pose;
-    q.gap_max = d->tracking;
-    q.dist_min = -INFINITY;
-    d->contacts.n = 0;
-    rc = rs_surface_query(d->surface, &q, &d->contacts, err);
+    rc = query_nodes(d, err);
     if (rc)
         return rc;
     rs_particles p;
@@ -246,6 +327,7 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     p.dir = d->dir_ptr;
     p.hist = d->hist_ptr;
     p.slot_stride = slot_stride(d);
+    p.body = d->contacts.witness ? d->body : NULL;
     /* The first call sees the initial state: no increment of motion lies behind it. */
     rc = rs_track_update(&d->tracker, d->surface, d->moving ? &d->motion : NULL,
                          d->inc == 0 ? 0.0 : d->dt, &p, &d->contacts, &d->trk, err);
@@ -365,6 +447,8 @@ void rs_driver_free(rs_driver *d)
     free(d->inertia);
     free(d->text);
     free(d->tcon);
+    free((void *)d->shape);
+    free(d->body);
     free(d->temp_prev);
     free(d->id);
     free(d->hist_ptr);

@@ -368,7 +368,8 @@ RS_INLINE void run_gather(track_run *restrict r, int m, const rs_track_out *o, i
  * branches. nd = 2: t1 only, drot = I. */
 RS_INLINE void run_kinematics(track_run *restrict r, int m, const master_rates *mr,
                               double dt, const rs_particles *p, int i0,
-                              const rs_contacts *c, int k0, const int nd, const int belt)
+                              const rs_contacts *c, int k0, const int nd, const int belt,
+                              const int wit)
 {
     static const double zero[RS_TRACK_RUN];
     const double *prad = p->radius ? p->radius + i0 : zero;
@@ -386,11 +387,16 @@ RS_INLINE void run_kinematics(track_run *restrict r, int m, const master_rates *
     const double *cax = c->t1[0] + k0, *cay = c->t1[1] + k0, *caz = c->t1[2] + k0;
     const double *cbx = c->t2[0] + k0, *cby = c->t2[1] + k0, *cbz = c->t2[2] + k0;
     const double *cd = c->dist + k0;
+    const double *csx = wit ? c->xs[0] + k0 : zero, *csy = wit ? c->xs[1] + k0 : zero,
+                 *csz = wit ? c->xs[2] + k0 : zero;
     for (int j = 0; j < m; j++) {
         const double nx = cnx[j], ny = cny[j], nz = cnz[j];
         const double ax = cax[j], ay = cay[j], az = caz[j];
         const double rad = prad[j], rd1 = rad - cd[j], arm = rad - 0.5 * rd1;
-        const double rx = -arm * nx, ry = -arm * ny, rz = -arm * nz;
+        /* a body: from the centre to its witness point, then half the overlap out */
+        const double rx = wit ? csx[j] - pxc[j] + 0.5 * rd1 * nx : -arm * nx;
+        const double ry = wit ? csy[j] - pyc[j] + 0.5 * rd1 * ny : -arm * ny;
+        const double rz = wit ? csz[j] - pzc[j] + 0.5 * rd1 * nz : -arm * nz;
         const double px = pxc[j] + rx, py = pyc[j] + ry, pz = pzc[j] + rz;
         const double wx = pwx[j], wy = pwy[j], wz = pwz[j];
         const double mx = px - C0, my = py - C1, mz = pz - C2;
@@ -599,8 +605,13 @@ static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
     rs_matvec3(mr->Q, h + RS_H_N, n);
     rs_matvec3(mr->Q, h + RS_H_T1, t1);
     rs_cross3(n, t1, t2);
-    for (int b = 0; b < 3; b++)
-        xcp[b] = xc[b] - rad * n[b];
+    if (p->body && p->body[i].shape) {
+        const double down[3] = {-n[0], -n[1], -n[2]};
+        rs_body_support(&p->body[i], down, xcp);
+    } else {
+        for (int b = 0; b < 3; b++)
+            xcp[b] = xc[b] - rad * n[b];
+    }
     rel_velocity(p, i, mr, xc, xcp, vr);
 
     if (mr->belt) {
@@ -662,10 +673,12 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
             }
         }
         run_gather(&r, m, out, e0);
-        if (mr->belt)
-            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 1);
+        if (c->witness && c->xs[0])
+            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, mr->belt, 1);
+        else if (mr->belt)
+            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 1, 0);
         else
-            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 0);
+            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 0, 0);
         run_outputs(&r, m, c, k0, out, e0, nd);
         run_store(&r, m, tr, c, k0, out, e0);
     }

@@ -212,6 +212,40 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
                              double gap_max, rs_body_contact *out, int cap, int *n,
                              rs_error *err);
 
+/// Most owning features of one body that rs_body_query answers.
+#define RS_BODY_FEATURES_MAX 16
+/// Most points of one body's manifold on one feature.
+#define RS_MANIFOLD_MAX 4
+/// The ids of a feature's manifold points: 0 for the body's deepest point, 1 .. 30 for
+/// the points of its core (a box's corner v is 1 + v, a cylinder's rim point k of rim e
+/// (top 0, bottom 1) 1 + 4 e + k, a cone's rim 1 .. 4 and apex 5, a capsule's ends 1, 2,
+/// a polyhedron's vertex i 1 + i mod 30).
+#define RS_MANIFOLD_IDS 31
+/// A manifold point's contact id: the owning feature f (below RS_MANIFOLD_STRIDE) and
+/// the point's id j, f + j RS_MANIFOLD_STRIDE. Type, ring sector and RS_FEATURE_BASE
+/// read as f's.
+#define RS_MANIFOLD_STRIDE (1 << 26)
+#define RS_FEATURE_MANIFOLD(f, j) ((f) + (j)*RS_MANIFOLD_STRIDE)
+/// The owning feature of a contact id (itself for a sphere's contact).
+#define RS_FEATURE_OWNER(f) ((f) % RS_MANIFOLD_STRIDE)
+
+/// A convex body as a slave of the contact core: its contacts with surface s in pose
+/// (NULL: reference) appended to c, a list that keeps witness points (c->witness), as
+/// slave number point of its block. For each owning feature of rs_body_surface_contacts
+/// (at most RS_BODY_FEATURES_MAX), the feature's manifold: the body's deepest point
+/// and the points of its core that rest on the feature within gap_max (a box's corners,
+/// a cylinder's or cone's rim points a quarter turn apart from the lowest, a cone's
+/// apex, a capsule's ends; none for a sphere, an ellipsoid or a user shape), each
+/// rounded toward the wall and measured by the surface's own point query on that
+/// feature; the deepest point stands for itself only where it is none of them. The
+/// RS_MANIFOLD_MAX deepest points are kept, each a contact with share 1, contact id
+/// RS_FEATURE_MANIFOLD(feature, point id), xs its point on the body and dist = radius -
+/// depth (radius: the body's characteristic length as the tracker and the law see it,
+/// so that rdisp1 is the depth). RS_ERR_ARG for a list without witness points or a bad
+/// radius; the errors of rs_body_surface_contacts.
+int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, int point,
+                  double radius, double gap_max, rs_contacts *c, rs_error *err);
+
 #ifdef __cplusplus
 }
 #endif

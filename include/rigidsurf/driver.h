@@ -1,6 +1,7 @@
 /* rigidsurf: a standalone explicit driver.
  *
- * Integrates a set of slave nodes (point masses, or spheres with a radius) against one
+ * Integrates a set of slave nodes (point masses, spheres with a radius, or rigid convex
+ * bodies, rs_driver_set_body) against one
  * rigid master of any kind (analytic or faceted) with the explicit central-difference
  * scheme, and calls an interface law through rs_law_call on the blocks of the tracker,
  * as Abaqus/Explicit does for VUINTER. It reproduces the Abaqus VUINTER verification cases
@@ -10,7 +11,9 @@
  *  1. The master moves to t_k (rs_motion_advance; not on the first increment).
  *  2. Query and tracker at the positions x_k with the velocities v_{k-1/2} and angular
  *     velocities w_{k-1/2} (without spin, the slip increment of the tracker is then
- *     exactly the displacement x_k - x_{k-1}).
+ *     exactly the displacement x_k - x_{k-1}). Spheres and points are queried in runs
+ *     of consecutive nodes (rs_surface_query), a body alone in its pose q_k
+ *     (rs_body_query: its manifold's contacts, each at its own witness point).
  *  3. The law, in blocks of at most RS_BLOCK contacts. On entry stress is the previous
  *     increment's, its shear rotated by drot (law.h). Temperatures are those at t_k.
  *  4. Contact force on node i: F = areaSlv (s1 n - s2 t1 - s3 t2) summed over its
@@ -38,6 +41,7 @@
 #define RIGIDSURF_DRIVER_H
 
 #include "rigidsurf/contact_block.h"
+#include "rigidsurf/convex.h"
 #include "rigidsurf/law.h"
 #include "rigidsurf/motion.h"
 #include "rigidsurf/surface.h"
@@ -104,8 +108,10 @@ typedef struct rs_driver {
     double *text;         ///< applied torque (3, n), world frame
     double *tcon;         ///< contact torque of the last increment (3, n), world frame,
                           ///< about the node's position
-    double tmaster;       ///< master temperature
-    double heatcap_master; ///< master heat capacity; 0: fixed temperature
+    const rs_shape **shape; ///< per node its convex shape (not owned), NULL for a sphere
+                            ///< or a point (rs_driver_set_body)
+    double tmaster;         ///< master temperature
+    double heatcap_master;  ///< master heat capacity; 0: fixed temperature
 
     rs_driver_bc_fn bc; ///< optional, see rs_driver_bc_fn
     void *bc_ctx;
@@ -129,6 +135,7 @@ typedef struct rs_driver {
     double *temp_prev, *dtemp;
     double tmaster_prev;
     rs_contacts contacts;
+    rs_body *body; ///< the bodies in their pose of the increment (n)
 } rs_driver;
 
 /// Allocates n nodes on surface s (not owned): positions and velocities 0, mass 1,
@@ -140,6 +147,18 @@ int rs_driver_init(rs_driver *d, const rs_surface *s, int n, rs_error *err);
 /// variables per contact, nstatev >= law->nstatev. Call before the first increment.
 int rs_driver_set_law(rs_driver *d, const rs_law *law, const double *props, int nprops,
                       int nstatev, rs_error *err);
+
+/// Makes node i a rigid convex body of the given shape (not owned; it outlives d):
+/// its mass and principal moments from the shape at density (rs_shape_mass_props),
+/// its radius, the characteristic length the tracker and the laws see (Hertz's radius),
+/// that of the sphere of equal volume, and a capacity of at least 16 history slots
+/// per node (a manifold has up to RS_MANIFOLD_MAX points per feature). Its contacts come
+/// from rs_body_query. The node's q is the body's orientation; set it after this call.
+/// RS_ERR_ARG for a bad node, shape or density, a user shape (it has no mass of its
+/// own), or a shape whose principal axes are not its body axes (a polyhedron whose
+/// inertia is not diagonal: give its points in principal axes).
+int rs_driver_set_body(rs_driver *d, int i, const rs_shape *shape, double density,
+                       rs_error *err);
 
 /// One increment (see the file comment). Returns the first error of the query, the
 /// tracker, the law or the boundary-condition callback.

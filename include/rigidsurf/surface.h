@@ -220,6 +220,12 @@ typedef struct rs_contacts {
                      ///< every share 1
     int shared;      ///< nonzero when a share may differ from 1 (kept over appends;
                      ///< reset by a query into an empty list)
+    int witness;     ///< set before the first reserve: the list keeps xs, for a block
+                     ///< that holds convex bodies (the queries of spheres and points do
+                     ///< not fill it: the engine sets their xs = x - R n)
+    double *xs[3];   ///< the slave's witness point (witness lists only): a body's
+                     ///< deepest point along -n; the tracker's contact point is then
+                     ///< xs + rdisp1 n / 2 instead of x - (R - rdisp1 / 2) n
 } rs_contacts;
 
 /// Allocates room for cap contacts (cap >= 1). Returns RS_ERR_NOMEM on failure.

@@ -21,6 +21,7 @@
 #ifndef RIGIDSURF_TRACK_H
 #define RIGIDSURF_TRACK_H
 
+#include "rigidsurf/convex.h"
 #include "rigidsurf/motion.h"
 #include "rigidsurf/surface.h"
 #include "rigidsurf/types.h"
@@ -108,6 +109,9 @@ typedef struct rs_particles {
     double **dir;               ///< per particle: its directory (capacity doubles)
     double **hist;              ///< per particle: its slot 0
     ptrdiff_t slot_stride; ///< doubles from slot j to slot j + 1 (0: RS_HIST_SIZE(nstatev))
+    const rs_body *body;   ///< per particle its convex body, or NULL (then and where
+                           ///< body[i].shape is NULL: a sphere or point); a leaving
+                           ///< contact's point is the body's support along -n
 } rs_particles;
 
 /// Tracker output: one entry per live or leaving contact, in Abaqus layout with

@@ -2,7 +2,7 @@
  * owning feature, the body's deepest point along the feature's normal, found as a fixed
  * point (convex.h, rs_body_surface_contacts; docs/conventions.md, "Convex bodies"). The
  * surface is asked through its point and sphere queries only, so no kind changes. */
-#include "rigidsurf/convex.h"
+#include "convex_internal.h"
 #include "rigidsurf/vec.h"
 
 #include <math.h>
@@ -12,7 +12,7 @@
 enum { BODY_ITER_MAX = 100 };
 
 /* The body's reach about its centre: the farthest corner of its bounding box. */
-static double body_reach(const rs_body *b)
+double rs_body_reach(const rs_body *b)
 {
     double lo[3], hi[3], r2 = 0.0;
     rs_shape_bounds(b->shape, lo, hi);
@@ -44,8 +44,8 @@ static int query_one(const rs_surface *s, const rs_pose *pose, const double x[3]
 
 /* The contact of point p with the surface that the feature base `want` owns, else the
  * deepest contact p has (the owning feature changed); -1 when p has none. */
-static int point_contact(const rs_surface *s, const rs_pose *pose, const double p[3],
-                         double reach, int want, rs_contacts *c, rs_error *err, int *rc)
+int rs_body_point_contact(const rs_surface *s, const rs_pose *pose, const double p[3],
+                          double reach, int want, rs_contacts *c, rs_error *err, int *rc)
 {
     *rc = query_one(s, pose, p, NULL, reach, c, err);
     if (*rc != RS_OK || c->n == 0)
@@ -80,7 +80,7 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
         if (!(fabs(b->x[k]) <= RS_CONVEX_COORD_MAX))
             return rs_error_set(err, RS_ERR_ARG, "body contacts: body position %g",
                                 b->x[k]);
-    const double reach = body_reach(b);
+    const double reach = rs_body_reach(b);
 
     /* The features near the body: a sphere of its reach about its centre. */
     rs_contacts cand, pc;
@@ -95,7 +95,8 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
         for (; it < BODY_ITER_MAX && !conv; it++) {
             const double down[3] = {-nrm[0], -nrm[1], -nrm[2]};
             rs_body_support(b, down, p);
-            found = point_contact(s, pose, p, 2.0 * reach + gap_max, want, &pc, err, &rc);
+            found = rs_body_point_contact(s, pose, p, 2.0 * reach + gap_max, want, &pc, err,
+                                          &rc);
             if (rc != RS_OK || found < 0)
                 break;
             const double nn[3] = {pc.nrm[0][found], pc.nrm[1][found], pc.nrm[2][found]};

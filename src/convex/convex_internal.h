@@ -11,6 +11,14 @@ void rs_shape_core_support(const rs_shape *s, const double d[3], double out[3]);
 /// a capsule (whose cores are a point and a segment).
 double rs_shape_core_radius(const rs_shape *s);
 
+/// A body's reach about its centre: the farthest corner of its bounding box.
+double rs_body_reach(const rs_body *b);
+/// The contact of point p with surface s whose feature base is want, else p's deepest
+/// contact, from a point query with gap reach into c; -1 when p has none (*rc: the
+/// query's status).
+int rs_body_point_contact(const rs_surface *s, const rs_pose *pose, const double p[3],
+                          double reach, int want, rs_contacts *c, rs_error *err, int *rc);
+
 /// Volume moments of a solid about the frame's origin: v = int dV, s = int x dV,
 /// ss = int x x^T dV (row-major).
 typedef struct rs_moments {

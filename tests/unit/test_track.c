@@ -52,7 +52,7 @@ static void block_init(block *b, int n, const rs_tracker *tr)
         rs_track_clear(tr, b->dir[i], b->hist[i], 0);
     }
     b->p = (rs_particles){n,     b->x,  b->y, b->z,  b->vx, b->vy, b->vz, b->wx,
-                          b->wy, b->wz, b->r, b->id, b->dp, b->hp, 0};
+                          b->wy, b->wz, b->r, b->id, b->dp, b->hp, 0,     NULL};
 }
 
 static void block_set(block *b, int i, const double x[3], const double v[3],
@@ -1108,7 +1108,7 @@ static void block_vs_single(int nd)
         for (int i = 0; i < NB; i++)
             contacts37(&l, &a, i, i, step);
         rs_particles pa = {NB,   a.x,  a.y, a.z,  a.vx, a.vy, a.vz, a.wx,
-                           a.wy, a.wz, a.r, NULL, a.dp, a.hp, 0};
+                           a.wy, a.wz, a.r, NULL, a.dp, a.hp, 0,    NULL};
         ENSURE(rs_track_update(&tr, NULL, &m, dt, &pa, &l.c, &oa, &err) == RS_OK);
         double sa[3 * MAXC], va[NS * MAXC], sa0[3 * MAXC], va0[NS * MAXC];
         rs_track_load(&tr, &oa, sa0, va0);
@@ -1130,9 +1130,9 @@ static void block_vs_single(int nd)
             clist li;
             clist_init(&li);
             contacts37(&li, &b, 0, i, step);
-            rs_particles pb = {1,        b.x + i,  b.y + i,  b.z + i,  b.vx + i,
-                               b.vy + i, b.vz + i, b.wx + i, b.wy + i, b.wz + i,
-                               b.r + i,  NULL,     b.dp + i, b.hp + i, 0};
+            rs_particles pb = {1,        b.x + i,  b.y + i,  b.z + i,  b.vx + i, b.vy + i,
+                               b.vz + i, b.wx + i, b.wy + i, b.wz + i, b.r + i,  NULL,
+                               b.dp + i, b.hp + i, 0,        NULL};
             ENSURE(rs_track_update(&tr, NULL, &m, dt, &pb, &li.c, &ob, &err) == RS_OK);
             double sb[3 * CAP], vb[NS * CAP];
             rs_track_load(&tr, &ob, sb, vb);

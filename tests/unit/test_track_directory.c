@@ -75,7 +75,7 @@ static int zblock_init(zblock *b, int cap)
         b->r[i] = 0.01;
     }
     b->p = (rs_particles){NP,   b->x, b->y, b->z,  b->vx,  b->vy,   b->vz, NULL,
-                          NULL, NULL, b->r, b->id, b->dir, b->hist, 0};
+                          NULL, NULL, b->r, b->id, b->dir, b->hist, 0,     NULL};
     return ok;
 }
 

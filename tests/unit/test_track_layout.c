@@ -45,7 +45,7 @@ static void scene_init(scene *s, unsigned drop)
         s->vz[i] = -0.2;
     }
     s->p = (rs_particles){2,    s->x, s->y, s->z,  s->vx,  s->vy,   s->vz, NULL,
-                          NULL, NULL, s->r, s->id, s->dir, s->hist, 0};
+                          NULL, NULL, s->r, s->id, s->dir, s->hist, 0,     NULL};
     s->c.cap = MAXC;
     s->c.point = s->point;
     s->c.feature = s->feature;

@@ -40,7 +40,7 @@ static void one_init(one *o, const rs_tracker *tr, double radius)
     o->hp = o->hist;
     rs_track_clear(tr, o->dir, o->hist, 0);
     o->p = (rs_particles){1,      &o->x,  &o->y, &o->z,  &o->vx, &o->vy, &o->vz, &o->wx,
-                          &o->wy, &o->wz, &o->r, &o->id, &o->dp, &o->hp, 0};
+                          &o->wy, &o->wz, &o->r, &o->id, &o->dp, &o->hp, 0,      NULL};
     o->q = (rs_query){1, {&o->x, &o->y, &o->z, &o->r}, NULL, tr->tracking, -INFINITY};
 }
 

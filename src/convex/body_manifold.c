@@ -1,0 +1,227 @@
+/* A convex body as a slave of the contact core (rs_body_query): per owning feature of
+ * rs_body_surface_contacts, its contact manifold: the body's deepest point and the
+ * points of its core that can rest on the feature (a box's corners, a cylinder's rims,
+ * a capsule's ends), each a contact of its own, as each slave node of a face is in an
+ * Abaqus node-to-surface contact (docs/conventions.md, "Convex bodies"). */
+#include "convex_internal.h"
+#include "rigidsurf/vec.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { CAND_MAX = 1 + RS_MANIFOLD_IDS };
+
+/* A candidate: body-frame core point, its id (1 .. RS_MANIFOLD_IDS - 1). */
+typedef struct cand {
+    double p[3];
+    int id;
+} cand;
+
+/* The core points of b's shape that can touch a wall under it: d is the body-frame
+ * direction into the wall (unit). Smooth shapes have none (their deepest point is their
+ * only one). A polyhedron's vertex i has id 1 + i mod (RS_MANIFOLD_IDS - 1). */
+static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
+{
+    const double *h = s->dim;
+    int n = 0;
+    switch (s->kind) {
+    case RS_SHAPE_BOX:
+        for (int v = 0; v < 8 && n < cap; v++, n++) {
+            c[n].p[0] = (v & 1) ? h[0] : -h[0];
+            c[n].p[1] = (v & 2) ? h[1] : -h[1];
+            c[n].p[2] = (v & 4) ? h[2] : -h[2];
+            c[n].id = 1 + v;
+        }
+        break;
+    case RS_SHAPE_POLYHEDRON:
+        for (int v = 0; v < s->nv && n < cap; v++, n++) {
+            memcpy(c[n].p, s->verts + 3 * v, sizeof c[n].p);
+            c[n].id = 1 + v % (RS_MANIFOLD_IDS - 1);
+        }
+        break;
+    case RS_SHAPE_CYLINDER:
+    case RS_SHAPE_CONE: {
+        /* four rim points from the rim's lowest (the generator under the wall) in
+         * quarter turns; a cone's apex; a cylinder's two rims */
+        const double rho = hypot(d[0], d[1]);
+        const double c0 = rho > 0.0 ? d[0] / rho : 1.0, s0 = rho > 0.0 ? d[1] / rho : 0.0;
+        const int cyl = s->kind == RS_SHAPE_CYLINDER;
+        for (int e = 0; e < (cyl ? 2 : 1); e++) {
+            const double z = cyl ? (e ? -h[1] : h[1]) : -0.25 * h[1] - s->shift[2];
+            for (int k = 0; k < 4 && n < cap; k++, n++) {
+                const double ck = k == 0 ? c0 : k == 1 ? -s0 : k == 2 ? -c0 : s0;
+                const double sk = k == 0 ? s0 : k == 1 ? c0 : k == 2 ? -s0 : -c0;
+                c[n].p[0] = h[0] * ck;
+                c[n].p[1] = h[0] * sk;
+                c[n].p[2] = z;
+                c[n].id = 1 + 4 * e + k;
+            }
+        }
+        if (!cyl && n < cap) {
+            c[n].p[0] = c[n].p[1] = 0.0;
+            c[n].p[2] = 0.75 * h[1] - s->shift[2];
+            c[n].id = 5;
+            n++;
+        }
+        break;
+    }
+    case RS_SHAPE_CAPSULE:
+        for (int e = 0; e < 2 && n < cap; e++, n++) {
+            c[n].p[0] = c[n].p[1] = 0.0;
+            c[n].p[2] = e ? -h[1] : h[1];
+            c[n].id = 1 + e;
+        }
+        break;
+    default: /* sphere, ellipsoid, user shape: smooth or unknown, the deepest point */
+        break;
+    }
+    return n;
+}
+
+/* One manifold point, before it is appended. */
+typedef struct mpoint {
+    int id;
+    double depth, xs[3], xm[3], n[3], t1[3], t2[3], curv[2];
+} mpoint;
+
+static int append(rs_contacts *c, int point, double radius, int feature, const mpoint *m,
+                  rs_error *err)
+{
+    int rc = rs_contacts_reserve(c, c->n + 1, err);
+    if (rc)
+        return rc;
+    const int k = c->n++;
+    c->point[k] = point;
+    c->feature[k] = RS_FEATURE_MANIFOLD(feature, m->id);
+    for (int d = 0; d < 3; d++) {
+        c->xm[d][k] = m->xm[d];
+        c->nrm[d][k] = m->n[d];
+        c->t1[d][k] = m->t1[d];
+        c->t2[d][k] = m->t2[d];
+        c->xs[d][k] = m->xs[d];
+    }
+    c->dist[k] = radius - m->depth;
+    c->curv[0][k] = m->curv[0];
+    c->curv[1][k] = m->curv[1];
+    c->share[k] = 1.0;
+    return RS_OK;
+}
+
+static int by_depth(const void *a, const void *b)
+{
+    const double da = ((const mpoint *)a)->depth, db = ((const mpoint *)b)->depth;
+    return da < db ? 1 : da > db ? -1 : ((const mpoint *)a)->id - ((const mpoint *)b)->id;
+}
+
+int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, int point,
+                  double radius, double gap_max, rs_contacts *c, rs_error *err)
+{
+    if (!c || !c->witness)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "body query: the contact list must keep witness points "
+                            "(rs_contacts.witness)");
+    if (!(radius >= 0.0) || !isfinite(radius))
+        return rs_error_set(err, RS_ERR_ARG,
+                            "body query: radius = %g (expected a finite number >= 0)",
+                            radius);
+    rs_body_contact fc[RS_BODY_FEATURES_MAX];
+    int nf = 0;
+    int rc =
+        rs_body_surface_contacts(s, pose, b, gap_max, fc, RS_BODY_FEATURES_MAX, &nf, err);
+    if (rc)
+        return rc;
+    double R[9];
+    rs_body_rotation(b, R);
+    const double rr = rs_shape_core_radius(b->shape), reach = rs_body_reach(b);
+    rs_contacts pc;
+    memset(&pc, 0, sizeof pc);
+    for (int f = 0; f < nf && rc == RS_OK; f++) {
+        const rs_body_contact *o = &fc[f];
+        if (o->feature >= RS_MANIFOLD_STRIDE) {
+            rc = rs_error_set(err, RS_ERR_CAPACITY,
+                              "body query: feature %d of '%s' is beyond the manifold's "
+                              "ids (%d)",
+                              o->feature, s->name, RS_MANIFOLD_STRIDE);
+            break;
+        }
+        mpoint m[CAND_MAX];
+        int nm = 1;
+        m[0].id = 0;
+        m[0].depth = o->depth;
+        memcpy(m[0].xs, o->xs, sizeof m[0].xs);
+        memcpy(m[0].xm, o->xm, sizeof m[0].xm);
+        memcpy(m[0].n, o->normal, sizeof m[0].n);
+        memcpy(m[0].t1, o->t1, sizeof m[0].t1);
+        memcpy(m[0].t2, o->t2, sizeof m[0].t2);
+        memcpy(m[0].curv, o->curv, sizeof m[0].curv);
+
+        /* the core points, each rounded toward the wall, then its own contact with the
+         * feature (the same owning feature, else it rests on another one) */
+        double d[3];
+        for (int i = 0; i < 3; i++)
+            d[i] =
+                -(R[i] * o->normal[0] + R[3 + i] * o->normal[1] + R[6 + i] * o->normal[2]);
+        const double dn = rs_norm3(d);
+        for (int i = 0; i < 3; i++)
+            d[i] /= dn;
+        cand cp[CAND_MAX];
+        const int ncp = core_points(b->shape, d, cp, CAND_MAX - 1);
+        int deep_is_core = 0;
+        for (int k = 0; k < ncp && rc == RS_OK; k++) {
+            double bp[3], xs[3];
+            for (int i = 0; i < 3; i++)
+                bp[i] = cp[k].p[i] + rr * d[i];
+            rs_matvec3(R, bp, xs);
+            for (int i = 0; i < 3; i++)
+                xs[i] += b->x[i];
+            const double h = rs_dot3(o->normal, xs) - rs_dot3(o->normal, o->xs);
+            if (h > o->depth + gap_max + reach)
+                continue; /* too high above the deepest point to reach the wall */
+            const int j = rs_body_point_contact(s, pose, xs, 2.0 * reach + gap_max,
+                                                RS_FEATURE_BASE(o->feature), &pc, err, &rc);
+            if (rc != RS_OK || j < 0 ||
+                RS_FEATURE_BASE(pc.feature[j]) != RS_FEATURE_BASE(o->feature))
+                continue;
+            const double depth = -pc.dist[j];
+            if (!(-depth <= gap_max))
+                continue;
+            if (depth >= o->depth - 1e-12 * reach)
+                deep_is_core = 1; /* as deep as the deepest point: it stands for it */
+            mpoint *q = &m[nm++];
+            q->id = cp[k].id;
+            q->depth = depth;
+            for (int i = 0; i < 3; i++) {
+                q->xs[i] = xs[i];
+                q->xm[i] = pc.xm[i][j];
+                q->n[i] = pc.nrm[i][j];
+                q->t1[i] = pc.t1[i][j];
+                q->t2[i] = pc.t2[i][j];
+            }
+            q->curv[0] = pc.curv[0][j];
+            q->curv[1] = pc.curv[1][j];
+        }
+        if (rc != RS_OK)
+            break;
+        /* the deepest point stands for itself unless a core point is as deep (is it, or
+         * rests on the wall beside it: a face, a rim) */
+        const mpoint *first = deep_is_core ? m + 1 : m;
+        int count = deep_is_core ? nm - 1 : nm;
+        mpoint keep[CAND_MAX];
+        memcpy(keep, first, (size_t)count * sizeof *keep);
+        qsort(keep, (size_t)count, sizeof *keep, by_depth);
+        /* two kept points of one id (a polyhedron's vertices i and i + 30): the deeper */
+        int nk = 0;
+        for (int k = 0; k < count && nk < RS_MANIFOLD_MAX; k++) {
+            int dup = 0;
+            for (int q = 0; q < nk; q++)
+                dup |= keep[q].id == keep[k].id;
+            if (!dup)
+                keep[nk++] = keep[k];
+        }
+        for (int k = 0; k < nk && rc == RS_OK; k++)
+            rc = append(c, point, radius, o->feature, &keep[k], err);
+    }
+    rs_contacts_free(&pc);
+    return rc;
+}

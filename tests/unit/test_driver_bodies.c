@@ -1,0 +1,393 @@
+/* Convex bodies in the standalone driver (rs_driver_set_body, rs_body_query) against
+ * closed forms of rigid-body mechanics on the plane z = 0, with the linear law hooke:
+ * - a cube dropped flat rests on its four corners (overlap v0 sqrt(m / 4 kn)) and
+ *   rebounds at its speed without spin; dropped on an edge, it leaves with the velocity
+ *   and spin of a frictionless elastic impact at that edge;
+ * - elastic frictionless bodies bouncing under gravity keep their energy;
+ * - a box on a slope (gravity turned by theta) sticks while tan(theta) < mu, slides at
+ *   g (sin(theta) - mu cos(theta)) when it does not, and tips at tan(theta) = w / h;
+ * - a cylinder, and a capsule on its cylindrical part, rolls down the slope at
+ *   (2/3) g sin(theta);
+ * - a rounded box at rest on its face stays at rest (no rocking);
+ * - a sphere given as a body moves as the driver's sphere node. */
+#include "rigidsurf/driver.h"
+#include "rigidsurf/vec.h"
+#include "rs_test.h"
+
+/* the plane z = 0, normal +z (a CYLINDER whose profile is one LINE) */
+static const char *PLANE = "*SURFACE, TYPE=CYLINDER, NAME=floor\n"
+                           "0, 0, 0, 1, 0, 0\n0, -1, 0\nSTART, -100, 0\nLINE, 100, 0\n";
+
+/* One driver on the plane with n nodes and hooke (kn, kt, zeta_n, zeta_t, mu). */
+static int setup(rs_driver *d, rs_surface *s, int n, const double hooke[5], double dt)
+{
+    rs_error e;
+    rs_error_clear(&e);
+    if (rs_surface_parse(PLANE, "plane", NULL, s, &e) != RS_OK ||
+        rs_driver_init(d, s, n, &e) != RS_OK ||
+        rs_driver_set_law(d, rs_law_find("hooke"), hooke, 5, 2, &e) != RS_OK) {
+        fprintf(stderr, "setup: %s\n", e.msg);
+        return 0;
+    }
+    d->dt = dt;
+    d->tracking = 1e-3;
+    return 1;
+}
+
+static int step(rs_driver *d)
+{
+    rs_error e;
+    rs_error_clear(&e);
+    if (rs_driver_step(d, &e) != RS_OK) {
+        fprintf(stderr, "step %d: %s\n", d->inc, e.msg);
+        return 0;
+    }
+    return 1;
+}
+
+static void quat_axis(double angle, const double axis[3], double q[4])
+{
+    const double n = rs_norm3(axis);
+    q[0] = cos(0.5 * angle);
+    for (int k = 0; k < 3; k++)
+        q[k + 1] = sin(0.5 * angle) * axis[k] / n;
+}
+
+/* The angle of node i's body z axis (column 2 of R(q)) from the world z axis. */
+static double tilt_z(const rs_driver *d, int i)
+{
+    double R[9];
+    rs_quat_matrix(d->q + 4 * i, R);
+    return acos(fmin(1.0, fabs(R[8])));
+}
+
+static double norm_w(const rs_driver *d, int i)
+{
+    return sqrt(d->wx[i] * d->wx[i] + d->wy[i] * d->wy[i] + d->wz[i] * d->wz[i]);
+}
+
+/* A unit cube (half 0.5, mass 1) dropped flat at 1 m/s without gravity, kn = 1e5: four
+ * corner contacts, each a spring kn, so the deepest overlap is v0 sqrt(m / (4 kn)); it
+ * leaves at 1 m/s (the spring is elastic) and does not turn. */
+static void test_cube_dropped_flat_rests_on_four_corners_and_rebounds(void)
+{
+    rs_surface s;
+    rs_driver d;
+    const double law[5] = {1e5, 1e5, 0.0, 0.0, 0.0};
+    ENSURE(setup(&d, &s, 1, law, 1e-5));
+    rs_shape cube;
+    ENSURE(rs_shape_make_box(&cube, 0.5, 0.5, 0.5, 0.0, NULL) == RS_OK);
+    ENSURE(rs_driver_set_body(&d, 0, &cube, 1.0, NULL) == RS_OK);
+    ENSURE_NEAR(d.mass[0], 1.0, 1e-14);
+    d.z[0] = 0.5 + 1e-4;
+    d.vz[0] = -1.0;
+    double zmin = 1.0;
+    int most = 0;
+    for (int k = 0; k < 20000 && !(d.z[0] > 0.5 + 2e-3); k++) {
+        ENSURE(step(&d));
+        zmin = fmin(zmin, d.z[0]);
+        most = d.trk.n > most ? d.trk.n : most;
+        ENSURE_SMALL(norm_w(&d, 0), 1e-12);
+    }
+    ENSURE(d.z[0] > 0.5 + 2e-3);
+    ENSURE(most == 4);
+    ENSURE_NEAR(0.5 - zmin, sqrt(1.0 / 4e5), 2e-3 * sqrt(1.0 / 4e5));
+    /* central differences: a contact that starts and ends between steps costs or gives
+     * energy of order (omega dt)^2 = 4e-5, omega^2 = 4 kn / m */
+    ENSURE_NEAR(d.vz[0], 1.0, 1e-5);
+    ENSURE_SMALL(d.vx[0], 1e-12);
+    ENSURE_SMALL(d.vy[0], 1e-12);
+    rs_driver_free(&d);
+    rs_surface_free(&s);
+}
+
+/* A cube turned by phi about x dropped at v0 on its lowest edge, frictionless and
+ * elastic: the edge is at lever arm r (horizontal offset y_e of the edge from the
+ * centre), so the impulse is J = 2 v0 / (1/m + r^2 / I) and the cube leaves with
+ * vz = J / m - v0 and wx = J r / I (the sign of the edge's side). */
+static void test_cube_dropped_on_an_edge_leaves_with_the_impulse_about_it(void)
+{
+    rs_surface s;
+    rs_driver d;
+    const double law[5] = {1e7, 1e7, 0.0, 0.0, 0.0};
+    ENSURE(setup(&d, &s, 1, law, 2e-6));
+    rs_shape cube;
+    ENSURE(rs_shape_make_box(&cube, 0.5, 0.5, 0.5, 0.0, NULL) == RS_OK);
+    ENSURE(rs_driver_set_body(&d, 0, &cube, 1.0, NULL) == RS_OK);
+    const double phi = 0.3, ax[3] = {1, 0, 0};
+    quat_axis(phi, ax, d.q);
+    /* the lowest edge: body (y, z) = (-0.5, -0.5) turned by phi about x */
+    const double ye = -0.5 * cos(phi) + 0.5 * sin(phi),
+                 ze = -0.5 * sin(phi) - 0.5 * cos(phi);
+    d.z[0] = -ze + 1e-4;
+    d.vz[0] = -1.0;
+    const double I = d.inertia[0], m = d.mass[0];
+    ENSURE_NEAR(I, 1.0 / 6.0, 1e-14);
+    int touched = 0;
+    for (int k = 0; k < 200000; k++) {
+        ENSURE(step(&d));
+        touched |= d.trk.n > 0;
+        if (touched && d.trk.n == 0)
+            break;
+    }
+    ENSURE(touched && d.trk.n == 0);
+    /* the torque of an upward impulse at (ye, ze) about x: ye J */
+    const double J = 2.0 / (1.0 / m + ye * ye / I);
+    ENSURE_NEAR(d.vz[0], J / m - 1.0, 5e-3);
+    ENSURE_NEAR(d.wx[0], ye * J / I, 5e-3 * fabs(ye * J / I));
+    ENSURE_SMALL(d.vy[0], 1e-9);
+    rs_driver_free(&d);
+    rs_surface_free(&s);
+}
+
+/* Elastic frictionless bodies (a tilted spinning box, capsule and cylinder) bouncing
+ * under gravity: kinetic + potential + elastic energy stays at its start, to the
+ * scheme's O(dt^2) and without a drift up. */
+static void test_elastic_bodies_keep_their_energy(void)
+{
+    rs_surface s;
+    rs_driver d;
+    const double law[5] = {1e7, 1e7, 0.0, 0.0, 0.0}, g = 9.81;
+    ENSURE(setup(&d, &s, 3, law, 2e-5));
+    rs_shape sh[3];
+    ENSURE(rs_shape_make_box(&sh[0], 0.3, 0.2, 0.1, 0.0, NULL) == RS_OK);
+    ENSURE(rs_shape_make_capsule(&sh[1], 0.1, 0.2, 0.0, NULL) == RS_OK);
+    ENSURE(rs_shape_make_cylinder(&sh[2], 0.15, 0.1, 0.02, NULL) == RS_OK);
+    const double axes[3][3] = {{1, 2, 3}, {-1, 0.5, 0.2}, {0.3, -1, 1}};
+    for (int i = 0; i < 3; i++) {
+        ENSURE(rs_driver_set_body(&d, i, &sh[i], 1000.0, NULL) == RS_OK);
+        quat_axis(0.4 + 0.3 * i, axes[i], d.q + 4 * i);
+        d.x[i] = 3.0 * i;
+        d.z[i] = 0.6;
+        d.wx[i] = 2.0 - i;
+        d.wy[i] = 1.0;
+        d.fext[3 * i + 2] = -g * d.mass[i];
+        d.vx[i] = 0.2;
+    }
+    double e0 = 0.0;
+    int flights = 0;
+    for (int k = 0; k < 60000; k++) {
+        ENSURE(step(&d));
+        double pe = 0.0;
+        for (int i = 0; i < 3; i++)
+            pe += d.mass[i] * g * d.z[i];
+        const double e = d.energy.allke + d.energy.allse + pe;
+        if (k == 0)
+            e0 = e;
+        /* in flight, where the kinetic energy of the half steps is the whole of it;
+         * a bounce's error is of order (omega dt)^2 = 3e-4 (omega^2 = kn / m) */
+        if (d.trk.n == 0) {
+            ENSURE(e <= e0 * (1.0 + 5e-4));
+            ENSURE(e >= e0 * (1.0 - 5e-4));
+            flights++;
+        }
+    }
+    ENSURE(flights > 30000);
+    rs_driver_free(&d);
+    rs_surface_free(&s);
+}
+
+/* A box (w = 0.2 along the slope, h = 0.4 up, unit depth) resting on the plane under
+ * gravity turned by theta about y: x is down the slope. Damped normal contact. Returns
+ * the mean acceleration down the slope over [t1, t2] and the largest tilt. */
+static int slope_run(double theta, double mu, double t1, double t2, double *acc,
+                     double *tilt)
+{
+    rs_surface s;
+    rs_driver d;
+    const double law[5] = {1e6, 1e6, 0.5, 0.5, mu}, g = 9.81;
+    if (!setup(&d, &s, 1, law, 1e-5))
+        return 0;
+    rs_shape box;
+    if (rs_shape_make_box(&box, 0.1, 0.5, 0.2, 0.0, NULL) != RS_OK ||
+        rs_driver_set_body(&d, 0, &box, 1.0, NULL) != RS_OK)
+        return 0;
+    const double m = d.mass[0];
+    d.z[0] = 0.2 - g * cos(theta) * m / 4e6; /* at rest on its four corners */
+    d.fext[0] = m * g * sin(theta);
+    d.fext[2] = -m * g * cos(theta);
+    double v1 = 0.0;
+    *tilt = 0.0;
+    const int k1 = (int)lround(t1 / d.dt), k2 = (int)lround(t2 / d.dt);
+    for (int k = 0; k <= k2; k++) {
+        if (!step(&d))
+            return 0;
+        if (k == k1)
+            v1 = d.vx[0];
+        *tilt = fmax(*tilt, tilt_z(&d, 0));
+    }
+    *acc = (d.vx[0] - v1) / ((k2 - k1) * d.dt);
+    rs_driver_free(&d);
+    rs_surface_free(&s);
+    return 1;
+}
+
+static void test_box_on_a_slope_sticks_slides_and_tips(void)
+{
+    const double g = 9.81;
+    double a, tilt;
+    /* w / h = 0.5: with mu = 0.2 it slides at tan(theta) = 0.3 */
+    const double th = atan(0.3);
+    ENSURE(slope_run(th, 0.2, 0.1, 0.3, &a, &tilt));
+    ENSURE_NEAR(a, g * (sin(th) - 0.2 * cos(th)), 5e-3 * g);
+    ENSURE_SMALL(tilt, 1e-2);
+    /* mu = 0.4 > tan(theta) = 0.3: it sticks */
+    ENSURE(slope_run(th, 0.4, 0.1, 0.3, &a, &tilt));
+    ENSURE_SMALL(a, 1e-3 * g);
+    /* mu = 0.8 > w / h: it tips once tan(theta) > w / h = 0.5, not before */
+    ENSURE(slope_run(atan(0.45), 0.8, 0.1, 0.5, &a, &tilt));
+    ENSURE_SMALL(tilt, 1e-2);
+    ENSURE(slope_run(atan(0.6), 0.8, 0.1, 0.5, &a, &tilt));
+    ENSURE(tilt > 0.3);
+}
+
+/* A body with its axis (body z) along world y rolling down the slope (gravity turned
+ * by theta about y) without slip: a = g sin(theta) / (1 + I / (m r^2)), 2/3 g sin(theta)
+ * for a solid cylinder; a capsule on its cylindrical part rolls as its core cylinder
+ * with its own I and m. Returns the acceleration over [0.1, 0.3] s. */
+static int roll_run(const rs_shape *sh, double r, double theta, double *acc, double *pred)
+{
+    rs_surface s;
+    rs_driver d;
+    const double law[5] = {1e6, 1e6, 0.5, 0.5, 0.8}, g = 9.81;
+    if (!setup(&d, &s, 1, law, 1e-5))
+        return 0;
+    if (rs_driver_set_body(&d, 0, sh, 1000.0, NULL) != RS_OK)
+        return 0;
+    const double ax[3] = {1, 0, 0};
+    quat_axis(-0.5 * RS_PI, ax, d.q); /* body z to world y */
+    const double m = d.mass[0];
+    d.z[0] = r - g * cos(theta) * m / 2e6; /* at rest on the two ends of its line */
+    d.fext[0] = m * g * sin(theta);
+    d.fext[2] = -m * g * cos(theta);
+    /* the moment of inertia about the rolling axis, the body's z */
+    *pred = g * sin(theta) / (1.0 + d.inertia[2] / (m * r * r));
+    double v1 = 0.0;
+    for (int k = 0; k <= 30000; k++) {
+        if (!step(&d))
+            return 0;
+        if (k == 10000)
+            v1 = d.vx[0];
+    }
+    *acc = (d.vx[0] - v1) / (20000 * d.dt);
+    rs_driver_free(&d);
+    rs_surface_free(&s);
+    return 1;
+}
+
+static void test_cylinder_and_capsule_roll_at_two_thirds_g_sin(void)
+{
+    const double g = 9.81, th = 0.3;
+    double a, pred;
+    rs_shape cyl, cap;
+    ENSURE(rs_shape_make_cylinder(&cyl, 0.05, 0.1, 0.0, NULL) == RS_OK);
+    ENSURE(roll_run(&cyl, 0.05, th, &a, &pred));
+    ENSURE_NEAR(pred, 2.0 / 3.0 * g * sin(th), 1e-12);
+    ENSURE_NEAR(a, pred, 5e-3 * pred);
+    /* a capsule rests on its cylindrical part: a = g sin / (1 + I/(m r^2)) */
+    ENSURE(rs_shape_make_capsule(&cap, 0.05, 0.1, 0.0, NULL) == RS_OK);
+    ENSURE(roll_run(&cap, 0.05, th, &a, &pred));
+    ENSURE_NEAR(a, pred, 5e-3 * pred);
+}
+
+/* A rounded box at rest on its face under gravity, damped: its four corners hold it,
+ * and it does not rock. */
+static void test_rounded_box_at_rest_does_not_rock(void)
+{
+    rs_surface s;
+    rs_driver d;
+    const double law[5] = {1e5, 1e5, 0.7, 0.7, 0.5}, g = 9.81;
+    ENSURE(setup(&d, &s, 1, law, 1e-4));
+    rs_shape box;
+    ENSURE(rs_shape_make_box(&box, 0.2, 0.1, 0.05, 0.01, NULL) == RS_OK);
+    ENSURE(rs_driver_set_body(&d, 0, &box, 1000.0, NULL) == RS_OK);
+    const double m = d.mass[0];
+    d.x[0] = 0.3;
+    d.y[0] = -0.2;
+    d.z[0] = 0.06 - 0.9 * g * m / 4e5;
+    d.fext[2] = -m * g;
+    double wmax = 0.0;
+    for (int k = 0; k < 100000; k++) {
+        ENSURE(step(&d));
+        wmax = fmax(wmax, norm_w(&d, 0));
+        if (k > 1000)
+            ENSURE(d.trk.n == 4);
+    }
+    ENSURE_SMALL(wmax, 1e-9);
+    ENSURE_NEAR(d.z[0], 0.06 - g * m / 4e5, 1e-9);
+    rs_driver_free(&d);
+    rs_surface_free(&s);
+}
+
+/* Node 0 a sphere, node 1 the same sphere as a body: dropped spinning and sliding with
+ * friction, they move alike. */
+static void test_sphere_body_moves_as_the_sphere_node(void)
+{
+    rs_surface s;
+    rs_driver d;
+    const double law[5] = {1e5, 5e4, 0.3, 0.3, 0.4}, g = 9.81;
+    ENSURE(setup(&d, &s, 2, law, 1e-5));
+    rs_shape ball;
+    ENSURE(rs_shape_make_sphere(&ball, 0.1, 0.0, NULL) == RS_OK);
+    ENSURE(rs_driver_set_body(&d, 1, &ball, 2000.0, NULL) == RS_OK);
+    ENSURE_NEAR(d.radius[1], 0.1, 1e-15);
+    d.radius[0] = 0.1;
+    d.mass[0] = d.mass[1];
+    for (int k = 0; k < 3; k++)
+        d.inertia[k] = d.inertia[3 + k];
+    for (int i = 0; i < 2; i++) {
+        d.x[i] = 2.0 * i;
+        d.z[i] = 0.12;
+        d.vx[i] = 1.0;
+        d.wy[i] = -3.0;
+        d.wz[i] = 2.0;
+        d.fext[3 * i + 2] = -d.mass[i] * g;
+    }
+    for (int k = 0; k < 50000; k++) {
+        ENSURE(step(&d));
+        ENSURE_NEAR(d.x[1] - 2.0, d.x[0], 1e-9);
+        ENSURE_NEAR(d.y[1], d.y[0], 1e-9);
+        ENSURE_NEAR(d.z[1], d.z[0], 1e-9);
+        ENSURE_NEAR(d.wx[1], d.wx[0], 1e-9);
+        ENSURE_NEAR(d.wy[1], d.wy[0], 1e-9);
+        ENSURE_NEAR(d.wz[1], d.wz[0], 1e-9);
+    }
+    rs_driver_free(&d);
+    rs_surface_free(&s);
+}
+
+static void test_bad_bodies_are_refused(void)
+{
+    rs_surface s;
+    rs_driver d;
+    const double law[5] = {1e5, 1e5, 0.0, 0.0, 0.0};
+    ENSURE(setup(&d, &s, 2, law, 1e-5));
+    rs_shape box;
+    ENSURE(rs_shape_make_box(&box, 0.1, 0.1, 0.1, 0.0, NULL) == RS_OK);
+    rs_error e;
+    ENSURE(rs_driver_set_body(&d, 2, &box, 1.0, &e) == RS_ERR_ARG);
+    ENSURE(rs_driver_set_body(&d, 0, NULL, 1.0, &e) == RS_ERR_ARG);
+    ENSURE(rs_driver_set_body(&d, 0, &box, -1.0, &e) == RS_ERR_ARG);
+    /* a tetrahedron whose inertia is not diagonal in its own axes */
+    const double pts[12] = {0, 0, 0, 1, 0, 0, 0, 2, 0, 0.3, 0.1, 1.5};
+    rs_shape tet;
+    ENSURE(rs_shape_make_polyhedron(&tet, pts, 4, 0.0, &e) == RS_OK);
+    ENSURE(rs_driver_set_body(&d, 1, &tet, 1.0, &e) == RS_ERR_ARG);
+    ENSURE(strstr(e.msg, "principal axes") != NULL);
+    rs_shape_free(&tet);
+    rs_driver_free(&d);
+    rs_surface_free(&s);
+}
+
+int main(void)
+{
+    RS_RUN(test_cube_dropped_flat_rests_on_four_corners_and_rebounds);
+    RS_RUN(test_cube_dropped_on_an_edge_leaves_with_the_impulse_about_it);
+    RS_RUN(test_elastic_bodies_keep_their_energy);
+    RS_RUN(test_box_on_a_slope_sticks_slides_and_tips);
+    RS_RUN(test_cylinder_and_capsule_roll_at_two_thirds_g_sin);
+    RS_RUN(test_rounded_box_at_rest_does_not_rock);
+    RS_RUN(test_sphere_body_moves_as_the_sphere_node);
+    RS_RUN(test_bad_bodies_are_refused);
+    return rs_test_summary();
+}
