@@ -127,8 +127,7 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
                             radius);
     rs_body_contact fc[RS_BODY_FEATURES_MAX];
     int nf = 0;
-    int rc =
-        rs_body_surface_contacts(s, pose, b, gap_max, fc, RS_BODY_FEATURES_MAX, &nf, err);
+    int rc = rs_body_features(s, pose, b, gap_max, 1, fc, RS_BODY_FEATURES_MAX, &nf, err);
     if (rc)
         return rc;
     double R[9];
@@ -204,7 +203,11 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
         if (rc != RS_OK)
             break;
         /* the deepest point stands for itself unless a core point is as deep (is it, or
-         * rests on the wall beside it: a face, a rim) */
+         * rests on the wall beside it: a face, a rim); where it did not settle (a fold
+         * sharper than the body) the core points stand for it, and a smooth body keeps
+         * its deepest iterate */
+        if (o->iterations < 0 && ncp > 0)
+            deep_is_core = 1;
         const mpoint *first = deep_is_core ? m + 1 : m;
         int count = deep_is_core ? nm - 1 : nm;
         mpoint keep[CAND_MAX];

@@ -60,9 +60,34 @@ int rs_body_point_contact(const rs_surface *s, const rs_pose *pose, const double
     return best;
 }
 
+/* The contact of the query's entry j as a body contact with witness p. */
+static void take(rs_body_contact *o, const rs_contacts *pc, int j, const double p[3],
+                 int it)
+{
+    o->feature = pc->feature[j];
+    o->depth = -pc->dist[j];
+    o->iterations = it;
+    for (int d = 0; d < 3; d++) {
+        o->normal[d] = pc->nrm[d][j];
+        o->xm[d] = pc->xm[d][j];
+        o->xs[d] = p[d];
+        o->t1[d] = pc->t1[d][j];
+        o->t2[d] = pc->t2[d][j];
+    }
+    o->curv[0] = pc->curv[0][j];
+    o->curv[1] = pc->curv[1][j];
+}
+
 int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_body *b,
                              double gap_max, rs_body_contact *out, int cap, int *n,
                              rs_error *err)
+{
+    return rs_body_features(s, pose, b, gap_max, 0, out, cap, n, err);
+}
+
+int rs_body_features(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                     double gap_max, int lenient, rs_body_contact *out, int cap, int *n,
+                     rs_error *err)
 {
     if (!s || !b || !b->shape || !out || !n || cap < 1)
         return rs_error_set(err, RS_ERR_ARG, "body contacts: NULL argument or cap < 1");
@@ -92,6 +117,8 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
         double nrm[3] = {cand.nrm[0][k], cand.nrm[1][k], cand.nrm[2][k]};
         int want = RS_FEATURE_BASE(cand.feature[k]), found = -1, it = 0, conv = 0;
         double p[3];
+        rs_body_contact best; /* the deepest iterate */
+        best.depth = -INFINITY;
         for (; it < BODY_ITER_MAX && !conv; it++) {
             const double down[3] = {-nrm[0], -nrm[1], -nrm[2]};
             rs_body_support(b, down, p);
@@ -99,6 +126,8 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
                                           &rc);
             if (rc != RS_OK || found < 0)
                 break;
+            if (-pc.dist[found] > best.depth)
+                take(&best, &pc, found, p, -1);
             const double nn[3] = {pc.nrm[0][found], pc.nrm[1][found], pc.nrm[2][found]};
             const double turn =
                 fabs(nn[0] - nrm[0]) + fabs(nn[1] - nrm[1]) + fabs(nn[2] - nrm[2]);
@@ -108,7 +137,12 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
         }
         if (rc != RS_OK || found < 0)
             continue; /* the body's deepest point has no contact: none here */
-        if (!conv) {
+        rs_body_contact got;
+        if (conv) {
+            take(&got, &pc, found, p, it);
+        } else if (lenient) {
+            got = best;
+        } else {
             rc = rs_error_set(err, RS_ERR_GEOMETRY,
                               "body contacts: the deepest point on feature %d of '%s' did "
                               "not settle in %d iterations (a wall curved more sharply "
@@ -116,16 +150,14 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
                               want, s->name, BODY_ITER_MAX);
             break;
         }
-        const double depth = -pc.dist[found];
-        if (!(-depth <= gap_max))
+        if (!(-got.depth <= gap_max))
             continue;
         /* one contact per owning feature: the deepest */
-        const int f = pc.feature[found];
         int slot = -1;
         for (int j = 0; j < *n; j++)
-            if (out[j].feature == f)
+            if (out[j].feature == got.feature)
                 slot = j;
-        if (slot >= 0 && out[slot].depth >= depth)
+        if (slot >= 0 && out[slot].depth >= got.depth)
             continue;
         if (slot < 0) {
             if (*n == cap) {
@@ -136,19 +168,7 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
             }
             slot = (*n)++;
         }
-        rs_body_contact *o = &out[slot];
-        o->feature = f;
-        o->depth = depth;
-        o->iterations = it;
-        for (int d = 0; d < 3; d++) {
-            o->normal[d] = nrm[d];
-            o->xm[d] = pc.xm[d][found];
-            o->xs[d] = p[d];
-            o->t1[d] = pc.t1[d][found];
-            o->t2[d] = pc.t2[d][found];
-        }
-        o->curv[0] = pc.curv[0][found];
-        o->curv[1] = pc.curv[1][found];
+        out[slot] = got;
     }
     rs_contacts_free(&cand);
     rs_contacts_free(&pc);

@@ -19,6 +19,13 @@ double rs_body_reach(const rs_body *b);
 int rs_body_point_contact(const rs_surface *s, const rs_pose *pose, const double p[3],
                           double reach, int want, rs_contacts *c, rs_error *err, int *rc);
 
+/// rs_body_surface_contacts; with lenient != 0 a fixed point that does not settle (a
+/// wall curved more sharply than the body) gives the deepest of its iterates, with
+/// iterations = -1, instead of RS_ERR_GEOMETRY.
+int rs_body_features(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                     double gap_max, int lenient, rs_body_contact *out, int cap, int *n,
+                     rs_error *err);
+
 /// Volume moments of a solid about the frame's origin: v = int dV, s = int x dV,
 /// ss = int x x^T dV (row-major).
 typedef struct rs_moments {
