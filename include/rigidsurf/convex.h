@@ -235,9 +235,11 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
 /// (at most RS_BODY_FEATURES_MAX), the feature's manifold: the body's deepest point
 /// and the points of its core that rest on the feature within gap_max (a box's corners,
 /// a cylinder's or cone's rim points a quarter turn apart from the lowest, a cone's
-/// apex, a capsule's ends; none for a sphere, an ellipsoid or a user shape), each
-/// rounded toward the wall and measured by the surface's own point query on that
-/// feature; the deepest point stands for itself only where it is none of them. The
+/// apex, a capsule's ends; none for a sphere, an ellipsoid or a user shape), each with
+/// its rounding ball measured by the surface's own sphere query on that feature; the
+/// deepest point stands for itself only where no core point is as deep. Where the
+/// deepest point does not settle (a wall curved more sharply than the body), the core
+/// points stand for it, or for a body without them the deepest of its iterates. The
 /// RS_MANIFOLD_MAX deepest points are kept, each a contact with share 1, contact id
 /// RS_FEATURE_MANIFOLD(feature, point id), xs its point on the body and dist = radius -
 /// depth (radius: the body's characteristic length as the tracker and the law see it,

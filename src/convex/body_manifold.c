@@ -168,25 +168,27 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
         const int ncp = core_points(b->shape, d, cp, CAND_MAX - 1);
         int deep_is_core = 0;
         for (int k = 0; k < ncp && rc == RS_OK; k++) {
-            double bp[3], xs[3];
+            double cw[3];
+            rs_matvec3(R, cp[k].p, cw);
             for (int i = 0; i < 3; i++)
-                bp[i] = cp[k].p[i] + rr * d[i];
-            rs_matvec3(R, bp, xs);
-            for (int i = 0; i < 3; i++)
-                xs[i] += b->x[i];
-            const double h = rs_dot3(o->normal, xs) - rs_dot3(o->normal, o->xs);
+                cw[i] += b->x[i];
+            const double h = rs_dot3(o->normal, cw) - rr - rs_dot3(o->normal, o->xs);
             if (h > o->depth + gap_max + reach)
                 continue; /* too high above the deepest point to reach the wall */
-            const int j = rs_body_point_contact(s, pose, xs, 2.0 * reach + gap_max,
+            /* the core point's rounding ball, as a sphere meets the wall */
+            const int j = rs_body_point_contact(s, pose, cw, rr, 2.0 * reach + gap_max,
                                                 RS_FEATURE_BASE(o->feature), &pc, err, &rc);
             if (rc != RS_OK || j < 0 ||
                 RS_FEATURE_BASE(pc.feature[j]) != RS_FEATURE_BASE(o->feature))
                 continue;
-            const double depth = -pc.dist[j];
+            const double depth = rr - pc.dist[j];
             if (!(-depth <= gap_max))
                 continue;
             if (depth >= o->depth - 1e-12 * reach)
                 deep_is_core = 1; /* as deep as the deepest point: it stands for it */
+            double xs[3];
+            for (int i = 0; i < 3; i++)
+                xs[i] = cw[i] - rr * pc.nrm[i][j];
             mpoint *q = &m[nm++];
             q->id = cp[k].id;
             q->depth = depth;

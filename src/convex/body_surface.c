@@ -42,12 +42,15 @@ static int query_one(const rs_surface *s, const rs_pose *pose, const double x[3]
     return rs_surface_query(s, &q, c, err);
 }
 
-/* The contact of point p with the surface that the feature base `want` owns, else the
- * deepest contact p has (the owning feature changed); -1 when p has none. */
+/* The contact of point p (a ball of radius r about it when r > 0) with the surface
+ * that the feature base `want` owns, else the deepest contact p has (the owning feature
+ * changed); -1 when p has none. */
 int rs_body_point_contact(const rs_surface *s, const rs_pose *pose, const double p[3],
-                          double reach, int want, rs_contacts *c, rs_error *err, int *rc)
+                          double r, double reach, int want, rs_contacts *c, rs_error *err,
+                          int *rc)
 {
-    *rc = query_one(s, pose, p, NULL, reach, c, err);
+    const double rad[1] = {r};
+    *rc = query_one(s, pose, p, r > 0.0 ? rad : NULL, reach, c, err);
     if (*rc != RS_OK || c->n == 0)
         return -1;
     int best = 0;
@@ -122,8 +125,8 @@ int rs_body_features(const rs_surface *s, const rs_pose *pose, const rs_body *b,
         for (; it < BODY_ITER_MAX && !conv; it++) {
             const double down[3] = {-nrm[0], -nrm[1], -nrm[2]};
             rs_body_support(b, down, p);
-            found = rs_body_point_contact(s, pose, p, 2.0 * reach + gap_max, want, &pc, err,
-                                          &rc);
+            found = rs_body_point_contact(s, pose, p, 0.0, 2.0 * reach + gap_max, want, &pc,
+                                          err, &rc);
             if (rc != RS_OK || found < 0)
                 break;
             if (-pc.dist[found] > best.depth)

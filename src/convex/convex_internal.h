@@ -13,11 +13,12 @@ double rs_shape_core_radius(const rs_shape *s);
 
 /// A body's reach about its centre: the farthest corner of its bounding box.
 double rs_body_reach(const rs_body *b);
-/// The contact of point p with surface s whose feature base is want, else p's deepest
-/// contact, from a point query with gap reach into c; -1 when p has none (*rc: the
-/// query's status).
+/// The contact of point p, or of the ball of radius r > 0 about it, with surface s whose
+/// feature base is want, else p's deepest contact, from a query with gap reach into c;
+/// -1 when p has none (*rc: the query's status).
 int rs_body_point_contact(const rs_surface *s, const rs_pose *pose, const double p[3],
-                          double reach, int want, rs_contacts *c, rs_error *err, int *rc);
+                          double r, double reach, int want, rs_contacts *c, rs_error *err,
+                          int *rc);
 
 /// rs_body_surface_contacts; with lenient != 0 a fixed point that does not settle (a
 /// wall curved more sharply than the body) gives the deepest of its iterates, with

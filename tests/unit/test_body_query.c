@@ -1,0 +1,145 @@
+/* A convex body as a slave (rs_body_query): its manifold against closed forms.
+ * - A rounded box tilted a little over a plane: its four lowest corners, each rounded
+ *   toward the plane, with their own depths (corner height less the rounding), ids 1 + v
+ *   and witness points on the body.
+ * - A capsule beside the drum's fillet of its own radius, on the mantle: the fixed point
+ *   of the deepest point does not settle there (rs_body_surface_contacts says so); the
+ *   manifold answers with the capsule's ends, each with the depth of its end sphere
+ *   against the fillet, the mantle or the cap, in the drum's profile plane.
+ * - The refusals. */
+#include "rigidsurf/convex.h"
+#include "rigidsurf/vec.h"
+#include "rs_test.h"
+
+static const char *PLANE = "*SURFACE, TYPE=CYLINDER, NAME=floor\n"
+                           "0, 0, 0, 1, 0, 0\n0, -1, 0\nSTART, -10, 0\nLINE, 10, 0\n";
+
+/* examples/surfaces/drum.inp: radius 0.1 about z, caps at z = 0 and 0.06, fillets 0.005 */
+static const char *DRUM = "*SURFACE, TYPE=REVOLUTION, NAME=drum, FILLET RADIUS=0.005\n"
+                          "0, 0, 0,  0, 0, 1\nSTART, 0, 0\nLINE, 0.1, 0\nLINE, 0.1, 0.06\n"
+                          "LINE, 0, 0.06\n";
+
+static void test_tilted_rounded_box_rests_on_its_four_lowest_corners(void)
+{
+    rs_surface s;
+    rs_error e;
+    ENSURE(rs_surface_parse(PLANE, "t", NULL, &s, &e) == RS_OK);
+    rs_shape sh;
+    const double h[3] = {0.2, 0.1, 0.05}, r = 0.01;
+    ENSURE(rs_shape_make_box(&sh, h[0], h[1], h[2], r, NULL) == RS_OK);
+    const double a = 0.005; /* about the body x + y diagonal */
+    const double q[4] = {cos(0.5 * a), sin(0.5 * a) / sqrt(2.0), sin(0.5 * a) / sqrt(2.0),
+                         0};
+    const double x[3] = {0.3, -0.1, 0.058};
+    rs_body b;
+    ENSURE(rs_body_init(&b, &sh, 1000.0, x, q, &e) == RS_OK);
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    c.witness = 1;
+    ENSURE(rs_body_query(&s, NULL, &b, 7, 0.05, 1e-3, &c, &e) == RS_OK);
+    ENSURE(c.n == 4);
+    double R[9];
+    rs_quat_matrix(q, R);
+    for (int k = 0; k < c.n; k++) {
+        const int j = c.feature[k] / RS_MANIFOLD_STRIDE, v = j - 1;
+        ENSURE(j >= 1 && j <= 4); /* the corners with body z = -h */
+        ENSURE(RS_FEATURE_OWNER(c.feature[k]) == c.feature[k] % RS_MANIFOLD_STRIDE);
+        const double bc[3] = {(v & 1) ? h[0] : -h[0], (v & 2) ? h[1] : -h[1], -h[2]};
+        double w[3];
+        rs_matvec3(R, bc, w);
+        const double depth = -(x[2] + w[2] - r); /* the rounding sphere's lowest point */
+        ENSURE(c.point[k] == 7);
+        ENSURE_NEAR(0.05 - c.dist[k], depth, 1e-14);
+        ENSURE_NEAR(c.xs[0][k], x[0] + w[0], 1e-14);
+        ENSURE_NEAR(c.xs[1][k], x[1] + w[1], 1e-14);
+        ENSURE_NEAR(c.xs[2][k], x[2] + w[2] - r, 1e-14);
+        ENSURE_NEAR(c.nrm[2][k], 1.0, 1e-15);
+        ENSURE_NEAR(c.share[k], 1.0, 0.0);
+    }
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+}
+
+/* The depth of a sphere (centre rho, z in the profile plane, radius rs) in the drum:
+ * against the fillet at the top corner (centre 0.095, 0.055) where the centre lies in
+ * its quarter, else against the mantle or the top cap. */
+static double drum_depth(double rho, double z, double rs, int *fillet)
+{
+    *fillet = rho > 0.095 && z > 0.055;
+    if (*fillet)
+        return rs - (0.005 - hypot(rho - 0.095, z - 0.055));
+    return fmax(rho + rs - 0.1, z + rs - 0.06);
+}
+
+static void test_capsule_in_a_fillet_of_its_own_radius_rests_on_its_ends(void)
+{
+    rs_surface s;
+    rs_error e;
+    ENSURE(rs_surface_parse(DRUM, "t", NULL, &s, &e) == RS_OK);
+    rs_shape sh;
+    ENSURE(rs_shape_make_capsule(&sh, 0.005, 0.008, 0.0, NULL) == RS_OK);
+    /* a pose of examples/convex where the deepest point did not settle */
+    const double x[3] = {0.068748541070068295, -0.065104750225140437, 0.052727723272117527};
+    const double q[4] = {-0.6733699418012018, 0.16103842546321814, -0.59332658599922727,
+                         -0.41061308959831666};
+    rs_body b;
+    ENSURE(rs_body_init(&b, &sh, 1000.0, x, q, &e) == RS_OK);
+    rs_body_contact bc[8];
+    int nb = 0;
+    ENSURE(rs_body_surface_contacts(&s, NULL, &b, 5e-4, bc, 8, &nb, &e) == RS_ERR_GEOMETRY);
+    ENSURE(strstr(e.msg, "did not settle") != NULL);
+
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    c.witness = 1;
+    ENSURE(rs_body_query(&s, NULL, &b, 0, 0.0, 5e-4, &c, &e) == RS_OK);
+    ENSURE(c.n >= 1);
+    double R[9];
+    rs_quat_matrix(q, R);
+    for (int k = 0; k < c.n; k++) {
+        const int j = c.feature[k] / RS_MANIFOLD_STRIDE;
+        ENSURE(j == 1 || j == 2); /* an end, never an unsettled deepest point */
+        const double end[3] = {x[0] + (j == 1 ? 1 : -1) * 0.008 * R[2],
+                               x[1] + (j == 1 ? 1 : -1) * 0.008 * R[5],
+                               x[2] + (j == 1 ? 1 : -1) * 0.008 * R[8]};
+        int fil;
+        const double depth = drum_depth(hypot(end[0], end[1]), end[2], 0.005, &fil);
+        (void)fil;
+        ENSURE_NEAR(-c.dist[k], depth, 1e-12);
+        /* its witness point is on the end's sphere */
+        const double d[3] = {c.xs[0][k] - end[0], c.xs[1][k] - end[1], c.xs[2][k] - end[2]};
+        ENSURE_NEAR(rs_norm3(d), 0.005, 1e-12);
+    }
+    rs_contacts_free(&c);
+    rs_shape_free(&sh);
+    rs_surface_free(&s);
+}
+
+static void test_refusals(void)
+{
+    rs_surface s;
+    rs_error e;
+    ENSURE(rs_surface_parse(PLANE, "t", NULL, &s, &e) == RS_OK);
+    rs_shape sh;
+    ENSURE(rs_shape_make_box(&sh, 0.1, 0.1, 0.1, 0.0, NULL) == RS_OK);
+    const double x[3] = {0, 0, 0.1}, q[4] = {1, 0, 0, 0};
+    rs_body b;
+    ENSURE(rs_body_init(&b, &sh, 1000.0, x, q, &e) == RS_OK);
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    ENSURE(rs_body_query(&s, NULL, &b, 0, 0.1, 1e-3, &c, &e) == RS_ERR_ARG);
+    ENSURE(strstr(e.msg, "witness") != NULL);
+    c.witness = 1;
+    ENSURE(rs_body_query(&s, NULL, &b, 0, NAN, 1e-3, &c, &e) == RS_ERR_ARG);
+    ENSURE(rs_body_query(&s, NULL, &b, 0, 0.1, -1.0, &c, &e) == RS_ERR_ARG);
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+}
+
+int main(void)
+{
+    RS_RUN(test_tilted_rounded_box_rests_on_its_four_lowest_corners);
+    RS_RUN(test_capsule_in_a_fillet_of_its_own_radius_rests_on_its_ends);
+    RS_RUN(test_refusals);
+    return rs_test_summary();
+}
