@@ -1,8 +1,9 @@
 /* The fuzz target's third reading of an input: its bytes as convex bodies (convex.h): a
  * shape of every kind with its dimensions and rounding, a pose, then a second body or a
- * triangle. Either a maker or rs_body_init refuses with a code and a message, or the
- * pair query answers with a state and finite values: the depth always, and the normal
- * (unit) and witness points of a contact within reach. */
+ * triangle, or a plane or a drum the body meets as a slave (rs_body_query). Either a
+ * maker or rs_body_init refuses with a code and a message, or the pair query answers
+ * with a state and finite values: the depth always, and the normal (unit) and witness
+ * points of a contact within reach; the wall's contacts are finite throughout. */
 #include "fuzz_bytes.h"
 #include "fuzz_surface.h"
 
@@ -127,6 +128,54 @@ static int check(int rc, const rs_error *e, const rs_convex_contact *c, const ch
     return bad;
 }
 
+/* The analytic surfaces a body meets: a plane and the main job's drum (fillets). */
+static const char *const WALLS[2] = {
+    "*SURFACE, TYPE=CYLINDER, NAME=floor\n0, 0, 0, 1, 0, 0\n0, -1, 0\nSTART, -10, 0\n"
+    "LINE, 10, 0\n",
+    "*SURFACE, TYPE=REVOLUTION, NAME=drum, FILLET RADIUS=0.005\n0, 0, 0,  0, 0, 1\n"
+    "START, 0, 0\nLINE, 0.1, 0\nLINE, 0.1, 0.06\nLINE, 0, 0.06\n"};
+
+/* The body as a slave (rs_body_query) of one of WALLS: refused with a message, or
+ * contacts whose values are all finite, normals unit, shares 1. */
+static int wall_contacts(const rs_body *a, unsigned which, double gap_max)
+{
+    static rs_surface walls[2];
+    static int made[2];
+    rs_error e;
+    rs_error_clear(&e);
+    if (!made[which]) {
+        if (rs_surface_parse(WALLS[which], "fuzz", NULL, &walls[which], &e) != RS_OK) {
+            fprintf(stderr, "fuzz_bodies: wall %u: %s\n", which, e.msg);
+            return 1;
+        }
+        made[which] = 1;
+    }
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    c.witness = 1;
+    const int rc = rs_body_query(&walls[which], NULL, a, 0, 0.01, gap_max, &c, &e);
+    int bad = 0;
+    if (rc != RS_OK) {
+        bad = refused(rc, &e, "a body against a wall");
+    } else {
+        rs_fuzz_bodies_queried++;
+        for (int k = 0; k < c.n && !bad; k++) {
+            double n2 = 0.0;
+            for (int d = 0; d < 3; d++) {
+                n2 += c.nrm[d][k] * c.nrm[d][k];
+                bad |= !isfinite(c.xs[d][k]) || !isfinite(c.xm[d][k]);
+            }
+            bad |= !isfinite(c.dist[k]) || !(fabs(n2 - 1.0) < 1e-9) || c.share[k] != 1.0 ||
+                   c.point[k] != 0;
+            if (bad)
+                fprintf(stderr, "fuzz_bodies: wall %u contact %d: dist %g, |n|^2 %g\n",
+                        which, k, c.dist[k], n2);
+        }
+    }
+    rs_contacts_free(&c);
+    return bad;
+}
+
 int rs_fuzz_bodies_one(const uint8_t *data, size_t size)
 {
     bytes b = {data, size, 0};
@@ -144,7 +193,10 @@ int rs_fuzz_bodies_one(const uint8_t *data, size_t size)
         rs_convex_contact c;
         rs_error e;
         rs_error_clear(&e);
-        if (next(&b) % 2) {
+        const unsigned pick = next(&b) % 4;
+        if (pick >= 2) {
+            fail = wall_contacts(&a, pick - 2, gap_max);
+        } else if (pick) {
             double tri[9];
             for (int k = 0; k < 9; k++)
                 tri[k] = value(&b);
