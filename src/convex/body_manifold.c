@@ -20,7 +20,8 @@ typedef struct cand {
 
 /* The core points of b's shape that can touch a wall under it: d is the body-frame
  * direction into the wall (unit). Smooth shapes have none (their deepest point is their
- * only one). A polyhedron's vertex i has id 1 + i mod (RS_MANIFOLD_IDS - 1). */
+ * only one). A polyhedron gives its cap vertices lowest along d; its vertex i has id
+ * 1 + i mod (RS_MANIFOLD_IDS - 1). */
 static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
 {
     const double *h = s->dim;
@@ -34,12 +35,24 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
             c[n].id = 1 + v;
         }
         break;
-    case RS_SHAPE_POLYHEDRON:
-        for (int v = 0; v < s->nv && n < cap; v++, n++) {
-            memcpy(c[n].p, s->verts + 3 * v, sizeof c[n].p);
-            c[n].id = 1 + v % (RS_MANIFOLD_IDS - 1);
+    case RS_SHAPE_POLYHEDRON: {
+        /* the cap vertices lowest along d, by insertion into c (highest d.v first) */
+        double key[CAND_MAX];
+        for (int v = 0; v < s->nv; v++) {
+            const double kv = rs_dot3(s->verts + 3 * v, d);
+            if (n == cap && !(kv > key[n - 1]))
+                continue;
+            int at = n < cap ? n++ : n - 1;
+            for (; at > 0 && key[at - 1] < kv; at--) {
+                key[at] = key[at - 1];
+                c[at] = c[at - 1];
+            }
+            key[at] = kv;
+            memcpy(c[at].p, s->verts + 3 * v, sizeof c[at].p);
+            c[at].id = 1 + v % (RS_MANIFOLD_IDS - 1);
         }
         break;
+    }
     case RS_SHAPE_CYLINDER:
     case RS_SHAPE_CONE: {
         /* four rim points from the rim's lowest (the generator under the wall) in

@@ -6,10 +6,13 @@
  *   of the deepest point does not settle there (rs_body_surface_contacts says so); the
  *   manifold answers with the capsule's ends, each with the depth of its end sphere
  *   against the fillet, the mantle or the cap, in the drum's profile plane.
+ * - A polyhedron of 10^4 points on a sphere, within its hull's sagitta of the sphere.
  * - The refusals. */
 #include "rigidsurf/convex.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
+
+#include <stdlib.h>
 
 static const char *PLANE = "*SURFACE, TYPE=CYLINDER, NAME=floor\n"
                            "0, 0, 0, 1, 0, 0\n0, -1, 0\nSTART, -10, 0\nLINE, 10, 0\n";
@@ -115,6 +118,76 @@ static void test_capsule_in_a_fillet_of_its_own_radius_rests_on_its_ends(void)
     rs_surface_free(&s);
 }
 
+/* A polyhedron of 10^4 points on a sphere of radius R (a Fibonacci lattice) over a
+ * plane, in several orientations: its deepest contact lies within the hull's sagitta
+ * of the sphere's, R - z, and no contact is deeper. The sagitta is R less the nearest
+ * plane of a hull face to the centre. */
+static void test_fine_polyhedron_agrees_with_its_sphere_within_the_sagitta(void)
+{
+    rs_surface s;
+    rs_error e;
+    ENSURE(rs_surface_parse(PLANE, "t", NULL, &s, &e) == RS_OK);
+    enum { N = 10000 };
+    const double R = 0.05, golden = RS_PI * (3.0 - sqrt(5.0));
+    double *xyz = malloc(3 * N * sizeof *xyz);
+    ENSURE(xyz != NULL);
+    for (int i = 0; i < N; i++) {
+        const double z = 1.0 - (2.0 * i + 1.0) / N, r = sqrt(1.0 - z * z);
+        xyz[3 * i] = R * r * cos(golden * i);
+        xyz[3 * i + 1] = R * r * sin(golden * i);
+        xyz[3 * i + 2] = R * z;
+    }
+    rs_shape sh;
+    ENSURE(rs_shape_make_polyhedron(&sh, xyz, N, 0.0, &e) == RS_OK);
+    free(xyz);
+    ENSURE(sh.nv == N);
+    double inner = INFINITY;
+    for (int t = 0; t < sh.nt; t++) {
+        const double *a = sh.verts + 3 * sh.tris[3 * t],
+                     *b = sh.verts + 3 * sh.tris[3 * t + 1],
+                     *c = sh.verts + 3 * sh.tris[3 * t + 2];
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        double n[3];
+        rs_cross3(u, v, n);
+        inner = fmin(inner, fabs(rs_dot3(n, a) + rs_dot3(n, sh.shift)) / rs_norm3(n));
+    }
+    const double sag = R - inner;
+    ENSURE(sag > 0.0 && sag < 1e-3 * R);
+    const double quats[3][4] = {{1, 0, 0, 0}, {0.9, 0.3, -0.2, 0.1}, {0.2, 0.7, 0.5, -0.4}};
+    for (int k = 0; k < 3; k++) {
+        double q[4];
+        const double nq = sqrt(quats[k][0] * quats[k][0] + quats[k][1] * quats[k][1] +
+                               quats[k][2] * quats[k][2] + quats[k][3] * quats[k][3]);
+        for (int j = 0; j < 4; j++)
+            q[j] = quats[k][j] / nq;
+        const double x[3] = {0.01 * k, 0.0, R - 1e-4};
+        rs_body b;
+        /* the body frame is the points' frame less the centre of mass (shift) */
+        ENSURE(rs_body_init(&b, &sh, 1000.0, x, q, &e) == RS_OK);
+        rs_contacts c;
+        memset(&c, 0, sizeof c);
+        c.witness = 1;
+        ENSURE(rs_body_query(&s, NULL, &b, 0, R, 1e-3, &c, &e) == RS_OK);
+        ENSURE(c.n >= 1 && c.n <= RS_MANIFOLD_MAX);
+        double deepest = -INFINITY;
+        for (int j = 0; j < c.n; j++)
+            deepest = fmax(deepest, R - c.dist[j]);
+        /* the sphere of radius R about the points' centre, which is the body's x + R(q)
+         * (-shift): within the sagitta of 1e-4 */
+        double R9[9], off[3];
+        rs_quat_matrix(q, R9);
+        const double ms[3] = {-sh.shift[0], -sh.shift[1], -sh.shift[2]};
+        rs_matvec3(R9, ms, off);
+        const double sphere = R - (x[2] + off[2]);
+        ENSURE(deepest <= sphere + 1e-15);
+        ENSURE(deepest >= sphere - sag);
+        rs_contacts_free(&c);
+    }
+    rs_shape_free(&sh);
+    rs_surface_free(&s);
+}
+
 static void test_refusals(void)
 {
     rs_surface s;
@@ -140,6 +213,7 @@ int main(void)
 {
     RS_RUN(test_tilted_rounded_box_rests_on_its_four_lowest_corners);
     RS_RUN(test_capsule_in_a_fillet_of_its_own_radius_rests_on_its_ends);
+    RS_RUN(test_fine_polyhedron_agrees_with_its_sphere_within_the_sagitta);
     RS_RUN(test_refusals);
     return rs_test_summary();
 }
