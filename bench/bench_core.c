@@ -160,7 +160,7 @@ static int query_block(pipe *pp, const cloud *cl, int b, rs_error *err)
 {
     int b0 = b * block, nb = cl->n - b0 < block ? cl->n - b0 : block;
     rs_query q = {nb,
-                  {cl->x + b0, cl->y + b0, cl->z + b0, cl->r + b0},
+                  {cl->x + b0, cl->y + b0, cl->z + b0, cl->r + b0, NULL},
                   &pp->m.pose,
                   pp->tr.tracking,
                   -RAD};

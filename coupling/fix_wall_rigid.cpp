@@ -562,6 +562,7 @@ rs_query FixWallRigid::sphere_query(const int *idx, int n)
     q.slave.y = by_.data();
     q.slave.z = bz_.data();
     q.slave.radius = brad_.data();
+    q.slave.body = nullptr; // LIGGGHTS 3.8.0 particles are spheres
     q.pose = &motion_.pose;
     q.gap_max = 0.0;
     q.dist_min = 0.0;

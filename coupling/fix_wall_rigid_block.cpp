@@ -71,6 +71,7 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     q.n = n;
     q.slave.x = bx_.data(), q.slave.y = by_.data(), q.slave.z = bz_.data();
     q.slave.radius = brad_.data();
+    q.slave.body = nullptr; // LIGGGHTS 3.8.0 particles are spheres
     q.pose = &motion_.pose;
     q.gap_max = tracking_ + lookahead_;
     /* With bounds, the depth limit is that of the largest candidate plus the look-ahead:

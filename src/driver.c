@@ -131,62 +131,36 @@ int rs_driver_set_body(rs_driver *d, int i, const rs_shape *shape, double densit
     return RS_OK;
 }
 
-/* The contacts of every node at x_k: runs of spheres and points by the surface's block
- * query, each body by its own (driver.h, step 2). A list that holds bodies keeps the
- * witness points, a sphere's x - R n. */
+/* The contacts of every node at x_k: one query of the block, its bodies in their pose
+ * of the increment (driver.h, step 2). A list with bodies keeps the witness points. */
 static int query_nodes(rs_driver *d, rs_error *err)
 {
-    rs_contacts *c = &d->contacts;
-    c->n = 0;
     int bodies = 0;
-    for (int i = 0; i < d->n; ++i)
-        bodies |= d->shape[i] != NULL;
-    c->witness = bodies;
-    for (int i = 0; i < d->n;) {
-        if (d->shape[i]) {
-            rs_body *b = &d->body[i];
-            b->x[0] = d->x[i], b->x[1] = d->y[i], b->x[2] = d->z[i];
-            memcpy(b->q, d->q + 4 * (size_t)i, sizeof b->q);
-            b->mass = d->mass[i];
-            memcpy(b->inertia, d->inertia + 3 * (size_t)i, sizeof b->inertia);
-            b->shape = d->shape[i];
-            int rc = rs_body_query(d->surface, &d->motion.pose, b, i, d->radius[i],
-                                   d->tracking, c, err);
-            if (rc)
-                return rc;
-            ++i;
+    for (int i = 0; i < d->n; ++i) {
+        rs_body *b = &d->body[i];
+        b->shape = d->shape[i];
+        if (!b->shape)
             continue;
-        }
-        int j = i;
-        while (j < d->n && !d->shape[j])
-            ++j;
-        rs_query q;
-        memset(&q, 0, sizeof q);
-        q.n = j - i;
-        q.slave.x = d->x + i;
-        q.slave.y = d->y + i;
-        q.slave.z = d->z + i;
-        q.slave.radius = d->radius + i;
-        q.pose = &d->motion.pose;
-        q.gap_max = d->tracking;
-        q.dist_min = -INFINITY;
-        const int k0 = c->n;
-        int rc = rs_surface_query(d->surface, &q, c, err);
-        if (rc)
-            return rc;
-        if (bodies && (rc = rs_contacts_reserve(c, c->n, err)) != RS_OK)
-            return rc;
-        for (int k = k0; k < c->n; ++k) {
-            const int p = c->point[k] += i;
-            if (bodies) {
-                c->xs[0][k] = d->x[p] - d->radius[p] * c->nrm[0][k];
-                c->xs[1][k] = d->y[p] - d->radius[p] * c->nrm[1][k];
-                c->xs[2][k] = d->z[p] - d->radius[p] * c->nrm[2][k];
-            }
-        }
-        i = j;
+        bodies = 1;
+        b->x[0] = d->x[i], b->x[1] = d->y[i], b->x[2] = d->z[i];
+        memcpy(b->q, d->q + 4 * (size_t)i, sizeof b->q);
+        b->mass = d->mass[i];
+        memcpy(b->inertia, d->inertia + 3 * (size_t)i, sizeof b->inertia);
     }
-    return RS_OK;
+    rs_query q;
+    memset(&q, 0, sizeof q);
+    q.n = d->n;
+    q.slave.x = d->x;
+    q.slave.y = d->y;
+    q.slave.z = d->z;
+    q.slave.radius = d->radius;
+    q.slave.body = bodies ? d->body : NULL;
+    q.pose = &d->motion.pose;
+    q.gap_max = d->tracking;
+    q.dist_min = -INFINITY;
+    d->contacts.n = 0;
+    d->contacts.witness = bodies;
+    return rs_surface_query(d->surface, &q, &d->contacts, err);
 }
 
 /* A slot as the tracker lays it out for the law (track.h): what the law reads of the

@@ -1,11 +1,78 @@
 /* Surface dispatch: the contact core reaches every surface kind through its table of
  * operations (rs_surface_ops), chosen when the surface was made. */
 #include "rigidsurf/surface.h"
+#include "rigidsurf/convex.h"
 #include <string.h>
 
 int rs_surface_ndir(const rs_surface *s)
 {
     return s && s->ops ? s->ops->ndir : 0;
+}
+
+/* A sphere's or point's witness point, x - R n, for contacts [k0, n) of q's block. */
+static int sphere_witness(const rs_query *q, rs_contacts *out, int k0, rs_error *err)
+{
+    int rc = rs_contacts_reserve(out, out->n, err);
+    for (int k = k0; rc == RS_OK && k < out->n; k++) {
+        const int i = out->point[k];
+        const double R = q->slave.radius ? q->slave.radius[i] : 0.0;
+        out->xs[0][k] = q->slave.x[i] - R * out->nrm[0][k];
+        out->xs[1][k] = q->slave.y[i] - R * out->nrm[1][k];
+        out->xs[2][k] = q->slave.z[i] - R * out->nrm[2][k];
+    }
+    return rc;
+}
+
+/* The kind's own query of a block of spheres and points. */
+static int query_spheres(const rs_surface *s, const rs_query *q, rs_contacts *out,
+                         rs_error *err)
+{
+    const int k0 = out->n;
+    int rc = s->ops->closest(s, q, out, err);
+    if (rc == RS_OK) {
+        rs_frame_orient(s->ops->frame, out, k0, out->n);
+        if (!s->ops->shares)
+            rs_contacts_fold_shares(q, out, k0);
+        if (out->witness)
+            rc = sphere_witness(q, out, k0, err);
+    }
+    return rc;
+}
+
+/* A block with bodies: runs of spheres and points by the kind, each body alone. */
+static int query_bodies(const rs_surface *s, const rs_query *q, rs_contacts *out,
+                        rs_error *err)
+{
+    if (!out->witness)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_surface_query: a block with bodies needs a contact list "
+                            "that keeps witness points (rs_contacts.witness)");
+    int rc = RS_OK;
+    for (int i = 0; i < q->n && rc == RS_OK;) {
+        if (q->slave.body[i].shape) {
+            rc = rs_body_query(s, q->pose, &q->slave.body[i], i,
+                               q->slave.radius ? q->slave.radius[i] : 0.0, q->gap_max, out,
+                               err);
+            i++;
+            continue;
+        }
+        int j = i;
+        while (j < q->n && !q->slave.body[j].shape)
+            j++;
+        rs_query run = *q;
+        run.n = j - i;
+        run.slave.x = q->slave.x + i;
+        run.slave.y = q->slave.y + i;
+        run.slave.z = q->slave.z + i;
+        run.slave.radius = q->slave.radius ? q->slave.radius + i : NULL;
+        run.slave.body = NULL;
+        const int k0 = out->n;
+        rc = query_spheres(s, &run, out, err);
+        for (int k = k0; rc == RS_OK && k < out->n; k++)
+            out->point[k] += i;
+        i = j;
+    }
+    return rc;
 }
 
 int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
@@ -15,16 +82,9 @@ int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
         return rs_error_set(err, RS_ERR_ARG, "rs_surface_query: NULL argument");
     if (!s->ops)
         return rs_error_set(err, RS_ERR_ARG, "surface '%s' has no kind", s->name);
-    const int k0 = out->n;
-    if (k0 == 0)
+    if (out->n == 0)
         out->shared = 0;
-    int rc = s->ops->closest(s, q, out, err);
-    if (rc == RS_OK) {
-        rs_frame_orient(s->ops->frame, out, k0, out->n);
-        if (!s->ops->shares)
-            rs_contacts_fold_shares(q, out, k0);
-    }
-    return rc;
+    return q->slave.body ? query_bodies(s, q, out, err) : query_spheres(s, q, out, err);
 }
 
 int rs_surface_has_candidates(const rs_surface *s)
@@ -50,11 +110,17 @@ int rs_surface_query_among(const rs_surface *s, const rs_query *q, const int *co
     const int k0 = out->n;
     if (k0 == 0)
         out->shared = 0;
+    if (q->slave.body)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_surface_query_among: candidate lists take spheres and "
+                            "points (a block with bodies: rs_surface_query)");
     int rc = s->ops->closest_among(s, q, cand, ncand, out, err);
     if (rc == RS_OK) {
         rs_frame_orient(s->ops->frame, out, k0, out->n);
         if (!s->ops->shares)
             rs_contacts_fold_shares(q, out, k0);
+        if (out->witness)
+            rc = sphere_witness(q, out, k0, err);
     }
     return rc;
 }

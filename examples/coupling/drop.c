@@ -68,7 +68,7 @@ int main(void)
         if (step > 0 && rs_motion_advance(&motion, DT, &err) != RS_OK)
             return fail(&err);
         /* 1. contacts of the spheres with the floor in its current pose */
-        rs_query q = {N, {x, y, z, r}, &motion.pose, tr.tracking, -INFINITY};
+        rs_query q = {N, {x, y, z, r, NULL}, &motion.pose, tr.tracking, -INFINITY};
         c.n = 0;
         if (rs_surface_query(&floor, &q, &c, &err) != RS_OK)
             return fail(&err);

@@ -184,9 +184,15 @@ int rs_surface_ndir(const rs_surface *s);
 /// or spheres when radius is set. A convex body given by its support function joins as
 /// a further form of slave in the contact core, answered through the kinds' sphere
 /// queries, so that no kind changes.
+struct rs_body;
+
 typedef struct rs_slaves {
-    const double *x, *y, *z; ///< points or sphere centres (z ignored for SEGMENTS)
-    const double *radius;    ///< sphere radii, NULL for points
+    const double *x, *y, *z;    ///< points or sphere centres (z ignored for SEGMENTS)
+    const double *radius;       ///< sphere radii, NULL for points
+    const struct rs_body *body; ///< per slave its convex body (convex.h), or NULL: where
+                                ///< body[i].shape is set, slave i is that body, its
+                                ///< contacts rs_body_query's and its radius the
+                                ///< characteristic length the laws see
 } rs_slaves;
 
 /// A block of query slaves against a surface in its current pose.
@@ -249,7 +255,11 @@ void rs_contacts_free(rs_contacts *c);
 
 /// Appends the contacts of every query point to out (out->n grows; call with
 /// out->n = 0 for a fresh list), each in the kind's frame convention. Contacts of one
-/// point are consecutive.
+/// point are consecutive. A list that keeps witness points (out->witness) gets a
+/// sphere's or point's as x - R n. A block with bodies (q->slave.body) needs such a list
+/// (RS_ERR_ARG otherwise): its spheres and points are asked in runs between the bodies,
+/// each body by rs_body_query (every penetration of a body is kept: dist_min is the
+/// spheres'), all in block order.
 int rs_surface_query(const rs_surface *s, const rs_query *q, rs_contacts *out,
                      rs_error *err);
 

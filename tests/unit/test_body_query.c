@@ -7,6 +7,7 @@
  *   manifold answers with the capsule's ends, each with the depth of its end sphere
  *   against the fillet, the mantle or the cap, in the drum's profile plane.
  * - A polyhedron of 10^4 points on a sphere, within its hull's sagitta of the sphere.
+ * - One query of a block of spheres, points and bodies.
  * - The refusals. */
 #include "rigidsurf/convex.h"
 #include "rigidsurf/vec.h"
@@ -188,6 +189,54 @@ static void test_fine_polyhedron_agrees_with_its_sphere_within_the_sagitta(void)
     rs_surface_free(&s);
 }
 
+/* One query of a block of a sphere, a body, a point and a body: the spheres' and the
+ * points' contacts are the kind's own (with the witness x - R n), the bodies' are
+ * rs_body_query's, all in block order; without witness points the block is refused. */
+static void test_a_block_of_spheres_and_bodies_is_one_query(void)
+{
+    rs_surface s;
+    rs_error e;
+    ENSURE(rs_surface_parse(PLANE, "t", NULL, &s, &e) == RS_OK);
+    rs_shape box, cap;
+    ENSURE(rs_shape_make_box(&box, 0.1, 0.1, 0.1, 0.0, NULL) == RS_OK);
+    ENSURE(rs_shape_make_capsule(&cap, 0.05, 0.1, 0.0, NULL) == RS_OK);
+    const double x[4] = {0, 1, 2, 3}, y[4] = {0, 0, 0, 0},
+                 z[4] = {0.049, 0.099, -0.001, 0.0};
+    const double r[4] = {0.05, 0.1, 0.0, 0.05};
+    rs_body bodies[4];
+    memset(bodies, 0, sizeof bodies);
+    const double q0[4] = {1, 0, 0, 0}, q1[4] = {sqrt(0.5), sqrt(0.5), 0, 0};
+    const double xb[3] = {1, 0, 0.099}, xc[3] = {3, 0, 0.0499};
+    ENSURE(rs_body_init(&bodies[1], &box, 1.0, xb, q0, &e) == RS_OK);
+    ENSURE(rs_body_init(&bodies[3], &cap, 1.0, xc, q1, &e) == RS_OK);
+    rs_query q = {4, {x, y, z, r, bodies}, NULL, 1e-3, -INFINITY};
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    ENSURE(rs_surface_query(&s, &q, &c, &e) == RS_ERR_ARG);
+    ENSURE(strstr(e.msg, "witness") != NULL);
+    c.witness = 1;
+    c.n = 0;
+    ENSURE(rs_surface_query(&s, &q, &c, &e) == RS_OK);
+    /* the sphere: one contact, depth 1e-3; the box: its four lower corners, 1e-3; the
+     * point: depth 1e-3; the capsule on its side: its two ends, 1e-4 */
+    int count[4] = {0, 0, 0, 0};
+    for (int k = 0; k < c.n; k++) {
+        const int i = c.point[k];
+        ENSURE(i >= 0 && i < 4 && (k == 0 || i >= c.point[k - 1]));
+        count[i]++;
+        const double depth = r[i] - c.dist[k];
+        ENSURE_NEAR(depth, i == 3 ? 1e-4 : 1e-3, 1e-15);
+        ENSURE_NEAR(c.xs[2][k], i == 2 ? -1e-3 : i == 3 ? -1e-4 : -1e-3, 1e-15);
+        if (i == 0 || i == 2) {
+            ENSURE_NEAR(c.xs[0][k], x[i], 0.0);
+            ENSURE(c.feature[k] < RS_MANIFOLD_STRIDE);
+        }
+    }
+    ENSURE(count[0] == 1 && count[1] == 4 && count[2] == 1 && count[3] == 2);
+    rs_contacts_free(&c);
+    rs_surface_free(&s);
+}
+
 static void test_refusals(void)
 {
     rs_surface s;
@@ -214,6 +263,7 @@ int main(void)
     RS_RUN(test_tilted_rounded_box_rests_on_its_four_lowest_corners);
     RS_RUN(test_capsule_in_a_fillet_of_its_own_radius_rests_on_its_ends);
     RS_RUN(test_fine_polyhedron_agrees_with_its_sphere_within_the_sagitta);
+    RS_RUN(test_a_block_of_spheres_and_bodies_is_one_query);
     RS_RUN(test_refusals);
     return rs_test_summary();
 }

@@ -13,7 +13,7 @@ static int query(const rs_surface *s, double x, double y, double rad, double gap
                  rs_contacts *c)
 {
     double z = 0.0;
-    rs_query q = {1, {&x, &y, &z, &rad}, NULL, gap, -INFINITY};
+    rs_query q = {1, {&x, &y, &z, &rad, NULL}, NULL, gap, -INFINITY};
     c->n = 0;
     return rs_surface_query(s, &q, c, NULL);
 }
@@ -303,7 +303,7 @@ static void test_corner_drum_fillet_sweep(void)
             z = 0.95;
         }
         double x = r * cos(0.3), y = r * sin(0.3), zz = z;
-        rs_query q = {1, {&x, &y, &zz, &R}, NULL, 1e-9, -INFINITY};
+        rs_query q = {1, {&x, &y, &zz, &R, NULL}, NULL, 1e-9, -INFINITY};
         c.n = 0;
         ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
         ENSURE(c.n == 1);

@@ -12,7 +12,7 @@
 static int query1(const rs_surface *s, double x, double y, double z, double gap,
                   rs_contacts *c)
 {
-    rs_query q = {1, {&x, &y, &z, NULL}, NULL, gap, -INFINITY};
+    rs_query q = {1, {&x, &y, &z, NULL, NULL}, NULL, gap, -INFINITY};
     c->n = 0;
     return rs_surface_query(s, &q, c, NULL);
 }
@@ -333,7 +333,7 @@ static void test_query_gap_and_depth_filters(void)
            0);
     double x[4] = {0, 0, 0, 0}, y[4] = {0.35, 0.25, -0.5, -2.0},
            rad[4] = {0.3, 0.3, 0.3, 0.3};
-    rs_query q = {4, {x, y, NULL, rad}, NULL, 0.0, -1.0};
+    rs_query q = {4, {x, y, NULL, rad, NULL}, NULL, 0.0, -1.0};
     rs_contacts c = {0};
     ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
     ENSURE(c.n == 2);

@@ -41,7 +41,7 @@ static void one_init(one *o, const rs_tracker *tr, double radius)
     rs_track_clear(tr, o->dir, o->hist, 0);
     o->p = (rs_particles){1,      &o->x,  &o->y, &o->z,  &o->vx, &o->vy, &o->vz, &o->wx,
                           &o->wy, &o->wz, &o->r, &o->id, &o->dp, &o->hp, 0,      NULL};
-    o->q = (rs_query){1, {&o->x, &o->y, &o->z, &o->r}, NULL, tr->tracking, -INFINITY};
+    o->q = (rs_query){1, {&o->x, &o->y, &o->z, &o->r, NULL}, NULL, tr->tracking, -INFINITY};
 }
 
 /* The drum turns about an axis that is not its own and translates; the sphere sits on
