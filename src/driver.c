@@ -53,6 +53,7 @@ int rs_driver_init(rs_driver *d, const rs_surface *s, int n, rs_error *err)
     d->text = zalloc(3 * un, sizeof(double), &ok);
     d->tcon = zalloc(3 * un, sizeof(double), &ok);
     d->shape = zalloc(un, sizeof(const rs_shape *), &ok);
+    d->owned = zalloc(un, sizeof(rs_shape), &ok);
     d->body = zalloc(un, sizeof(rs_body), &ok);
     d->temp_prev = zalloc(un, sizeof(double), &ok);
     d->dtemp = zalloc(un, sizeof(double), &ok);
@@ -113,14 +114,29 @@ int rs_driver_set_body(rs_driver *d, int i, const rs_shape *shape, double densit
     int rc = rs_shape_mass_props(shape, density, &mp, err);
     if (rc)
         return rc;
+    int principal = 1;
     for (int r = 0; r < 3; r++)
         for (int c = 0; c < 3; c++)
-            if (mp.axes[3 * r + c] != (r == c ? 1.0 : 0.0))
-                return rs_error_set(err, RS_ERR_ARG,
-                                    "driver: node %d: the shape's principal axes are not "
-                                    "its body axes (give a polyhedron's points in its "
-                                    "principal axes)",
-                                    i);
+            principal &= mp.axes[3 * r + c] == (r == c ? 1.0 : 0.0);
+    rs_shape_free(&d->owned[i]);
+    if (!principal) {
+        /* only a polyhedron has axes of its own: its hull turned into them, p' = A^T p */
+        const int nv = shape->nv;
+        double *pts = malloc(3 * (size_t)nv * sizeof *pts);
+        if (!pts)
+            return rs_error_set(err, RS_ERR_NOMEM, "driver: out of memory for node %d", i);
+        for (int v = 0; v < nv; v++)
+            for (int c = 0; c < 3; c++) {
+                const double *p = shape->verts + 3 * v;
+                pts[3 * v + c] =
+                    mp.axes[c] * p[0] + mp.axes[3 + c] * p[1] + mp.axes[6 + c] * p[2];
+            }
+        rc = rs_shape_make_polyhedron(&d->owned[i], pts, nv, shape->rounding, err);
+        free(pts);
+        if (rc)
+            return rc;
+        shape = &d->owned[i];
+    }
     d->shape[i] = shape;
     d->mass[i] = mp.mass;
     for (int k = 0; k < 3; k++)
@@ -422,6 +438,9 @@ void rs_driver_free(rs_driver *d)
     free(d->text);
     free(d->tcon);
     free((void *)d->shape);
+    for (int i = 0; d->owned && i < d->n; i++)
+        rs_shape_free(&d->owned[i]);
+    free(d->owned);
     free(d->body);
     free(d->temp_prev);
     free(d->id);

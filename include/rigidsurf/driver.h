@@ -135,7 +135,8 @@ typedef struct rs_driver {
     double *temp_prev, *dtemp;
     double tmaster_prev;
     rs_contacts contacts;
-    rs_body *body; ///< the bodies in their pose of the increment (n)
+    rs_body *body;   ///< the bodies in their pose of the increment (n)
+    rs_shape *owned; ///< polyhedra turned into their principal axes (n, unused: zero)
 } rs_driver;
 
 /// Allocates n nodes on surface s (not owned): positions and velocities 0, mass 1,
@@ -153,10 +154,12 @@ int rs_driver_set_law(rs_driver *d, const rs_law *law, const double *props, int 
 /// its radius, the characteristic length the tracker and the laws see (Hertz's radius),
 /// that of the sphere of equal volume, and a capacity of at least 16 history slots
 /// per node (a manifold has up to RS_MANIFOLD_MAX points per feature). Its contacts come
-/// from rs_body_query. The node's q is the body's orientation; set it after this call.
-/// RS_ERR_ARG for a bad node, shape or density, a user shape (it has no mass of its
-/// own), or a shape whose principal axes are not its body axes (a polyhedron whose
-/// inertia is not diagonal: give its points in principal axes).
+/// from rs_body_query. The node's q is the orientation of the body's principal axes:
+/// those of every built-in shape are its body axes; a polyhedron whose inertia is not
+/// diagonal in its points' axes is turned once into its principal axes A (the columns
+/// of rs_mass_props.axes; the driver keeps the turned copy), so that its points' frame
+/// has the orientation q A^T. Set q after this call. RS_ERR_ARG for a bad node, shape
+/// or density, or a user shape (it has no mass of its own).
 int rs_driver_set_body(rs_driver *d, int i, const rs_shape *shape, double density,
                        rs_error *err);
 

@@ -9,7 +9,9 @@
  * - a cylinder, and a capsule on its cylindrical part, rolls down the slope at
  *   (2/3) g sin(theta);
  * - a rounded box at rest on its face stays at rest (no rocking);
- * - a sphere given as a body moves as the driver's sphere node. */
+ * - a sphere given as a body moves as the driver's sphere node;
+ * - a polyhedron whose points' axes are not principal is turned into its principal axes
+ *   (and bounces with the others in the energy test). */
 #include "rigidsurf/driver.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
@@ -140,7 +142,8 @@ static void test_cube_dropped_on_an_edge_leaves_with_the_impulse_about_it(void)
     rs_surface_free(&s);
 }
 
-/* Elastic frictionless bodies (a tilted spinning box, capsule and cylinder) bouncing
+/* Elastic frictionless bodies (a tilted spinning box, capsule, cylinder and rounded
+ * rock, a polyhedron whose points' axes are not principal) bouncing
  * under gravity: kinetic + potential + elastic energy stays at its start, to the
  * scheme's O(dt^2) and without a drift up. */
 static void test_elastic_bodies_keep_their_energy(void)
@@ -148,13 +151,16 @@ static void test_elastic_bodies_keep_their_energy(void)
     rs_surface s;
     rs_driver d;
     const double law[5] = {1e7, 1e7, 0.0, 0.0, 0.0}, g = 9.81;
-    ENSURE(setup(&d, &s, 3, law, 2e-5));
-    rs_shape sh[3];
+    ENSURE(setup(&d, &s, 4, law, 2e-5));
+    rs_shape sh[4];
     ENSURE(rs_shape_make_box(&sh[0], 0.3, 0.2, 0.1, 0.0, NULL) == RS_OK);
     ENSURE(rs_shape_make_capsule(&sh[1], 0.1, 0.2, 0.0, NULL) == RS_OK);
     ENSURE(rs_shape_make_cylinder(&sh[2], 0.15, 0.1, 0.02, NULL) == RS_OK);
-    const double axes[3][3] = {{1, 2, 3}, {-1, 0.5, 0.2}, {0.3, -1, 1}};
-    for (int i = 0; i < 3; i++) {
+    const double rock[18] = {0,   0,    0,   0.3, 0,   0,    0,     0.25, 0,
+                             0.1, 0.05, 0.2, 0.2, 0.2, 0.15, -0.05, 0.1,  0.1};
+    ENSURE(rs_shape_make_polyhedron(&sh[3], rock, 6, 0.01, NULL) == RS_OK);
+    const double axes[4][3] = {{1, 2, 3}, {-1, 0.5, 0.2}, {0.3, -1, 1}, {0.2, 0.4, -1}};
+    for (int i = 0; i < 4; i++) {
         ENSURE(rs_driver_set_body(&d, i, &sh[i], 1000.0, NULL) == RS_OK);
         quat_axis(0.4 + 0.3 * i, axes[i], d.q + 4 * i);
         d.x[i] = 3.0 * i;
@@ -169,7 +175,7 @@ static void test_elastic_bodies_keep_their_energy(void)
     for (int k = 0; k < 60000; k++) {
         ENSURE(step(&d));
         double pe = 0.0;
-        for (int i = 0; i < 3; i++)
+        for (int i = 0; i < 4; i++)
             pe += d.mass[i] * g * d.z[i];
         const double e = d.energy.allke + d.energy.allse + pe;
         if (k == 0)
@@ -183,6 +189,7 @@ static void test_elastic_bodies_keep_their_energy(void)
         }
     }
     ENSURE(flights > 30000);
+    rs_shape_free(&sh[3]);
     rs_driver_free(&d);
     rs_surface_free(&s);
 }
@@ -368,12 +375,53 @@ static void test_bad_bodies_are_refused(void)
     ENSURE(rs_driver_set_body(&d, 2, &box, 1.0, &e) == RS_ERR_ARG);
     ENSURE(rs_driver_set_body(&d, 0, NULL, 1.0, &e) == RS_ERR_ARG);
     ENSURE(rs_driver_set_body(&d, 0, &box, -1.0, &e) == RS_ERR_ARG);
-    /* a tetrahedron whose inertia is not diagonal in its own axes */
+    rs_shape_free(&box);
+    rs_driver_free(&d);
+    rs_surface_free(&s);
+}
+
+/* A tetrahedron whose inertia is not diagonal in its points' axes: the driver turns it
+ * into its principal axes A (rs_mass_props.axes), so that the node's moments are the
+ * principal ones and its body point A^T (p - c) for each point p (c the centre of
+ * mass): with q = 1, its support along each world axis is the extreme of those. */
+static void test_polyhedron_turned_into_its_principal_axes(void)
+{
+    rs_surface s;
+    rs_driver d;
+    const double law[5] = {1e5, 1e5, 0.0, 0.0, 0.0};
+    ENSURE(setup(&d, &s, 1, law, 1e-5));
     const double pts[12] = {0, 0, 0, 1, 0, 0, 0, 2, 0, 0.3, 0.1, 1.5};
     rs_shape tet;
+    rs_error e;
     ENSURE(rs_shape_make_polyhedron(&tet, pts, 4, 0.0, &e) == RS_OK);
-    ENSURE(rs_driver_set_body(&d, 1, &tet, 1.0, &e) == RS_ERR_ARG);
-    ENSURE(strstr(e.msg, "principal axes") != NULL);
+    rs_mass_props mp;
+    ENSURE(rs_shape_mass_props(&tet, 1.0, &mp, &e) == RS_OK);
+    ENSURE(fabs(mp.axes[1]) > 1e-3 || fabs(mp.axes[2]) > 1e-3 || fabs(mp.axes[5]) > 1e-3);
+    ENSURE(rs_driver_set_body(&d, 0, &tet, 1.0, &e) == RS_OK);
+    ENSURE(d.shape[0] != &tet);
+    for (int k = 0; k < 3; k++)
+        ENSURE_NEAR(d.inertia[k], mp.principal[k], 1e-15 * mp.principal[k]);
+    ENSURE_NEAR(d.mass[0], mp.mass, 1e-15);
+    /* the centre of mass of the points: the body frame's origin of tet, -shift */
+    for (int axis = 0; axis < 3; axis++) {
+        double hi = -INFINITY, lo = INFINITY;
+        for (int v = 0; v < 4; v++) {
+            double p[3];
+            for (int c = 0; c < 3; c++)
+                p[c] = pts[3 * v + c] - tet.shift[c];
+            const double a =
+                mp.axes[axis] * p[0] + mp.axes[3 + axis] * p[1] + mp.axes[6 + axis] * p[2];
+            hi = fmax(hi, a);
+            lo = fmin(lo, a);
+        }
+        double dir[3] = {0, 0, 0}, out[3];
+        dir[axis] = 1.0;
+        rs_shape_support(d.shape[0], dir, out);
+        ENSURE_NEAR(out[axis], hi, 1e-12);
+        dir[axis] = -1.0;
+        rs_shape_support(d.shape[0], dir, out);
+        ENSURE_NEAR(out[axis], lo, 1e-12);
+    }
     rs_shape_free(&tet);
     rs_driver_free(&d);
     rs_surface_free(&s);
@@ -389,5 +437,6 @@ int main(void)
     RS_RUN(test_rounded_box_at_rest_does_not_rock);
     RS_RUN(test_sphere_body_moves_as_the_sphere_node);
     RS_RUN(test_bad_bodies_are_refused);
+    RS_RUN(test_polyhedron_turned_into_its_principal_axes);
     return rs_test_summary();
 }
