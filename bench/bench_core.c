@@ -159,11 +159,12 @@ static int block = RS_BLOCK;
 static int query_block(pipe *pp, const cloud *cl, int b, rs_error *err)
 {
     int b0 = b * block, nb = cl->n - b0 < block ? cl->n - b0 : block;
-    rs_query q = {nb,
-                  {cl->x + b0, cl->y + b0, cl->z + b0, cl->r + b0, NULL},
-                  &pp->m.pose,
-                  pp->tr.tracking,
-                  -RAD};
+    rs_query q = {
+        .n = nb,
+        .slave = {.x = cl->x + b0, .y = cl->y + b0, .z = cl->z + b0, .radius = cl->r + b0},
+        .pose = &pp->m.pose,
+        .gap_max = pp->tr.tracking,
+        .dist_min = -RAD};
     pp->c.n = 0;
     int rc = rs_surface_query(&pp->s, &q, &pp->c, err);
     pp->contacts += pp->c.n;
@@ -180,10 +181,21 @@ static int pipeline(pipe *pp, const cloud *cl, double dt, double *tq, double *tt
         int rc = query_block(pp, cl, b, err);
         if (rc)
             return rc;
-        rs_particles p = {nb,          cl->x + b0,  cl->y + b0,  cl->z + b0,
-                          cl->vx + b0, cl->vy + b0, cl->vz + b0, cl->wx + b0,
-                          cl->wy + b0, cl->wz + b0, cl->r + b0,  cl->id + b0,
-                          cl->dp + b0, cl->hp + b0, cl->stride,  NULL};
+        rs_particles p = {.n = nb,
+                          .x = cl->x + b0,
+                          .y = cl->y + b0,
+                          .z = cl->z + b0,
+                          .vx = cl->vx + b0,
+                          .vy = cl->vy + b0,
+                          .vz = cl->vz + b0,
+                          .wx = cl->wx + b0,
+                          .wy = cl->wy + b0,
+                          .wz = cl->wz + b0,
+                          .radius = cl->r + b0,
+                          .id = cl->id + b0,
+                          .dir = cl->dp + b0,
+                          .hist = cl->hp + b0,
+                          .slot_stride = cl->stride};
         rc = rs_track_update(&pp->tr, &pp->s, pp->still ? NULL : &pp->m, dt, &p, &pp->c,
                              &pp->out, err);
         if (rc)

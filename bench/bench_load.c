@@ -124,7 +124,11 @@ static double query_ns(const rs_surface *s, double reach_h)
             y[i] = 0.0;
         }
     }
-    rs_query q = {NP, {x, y, z, NULL, NULL}, NULL, reach_h * h, -reach_h * h};
+    rs_query q = {.n = NP,
+                  .slave = {.x = x, .y = y, .z = z},
+                  .pose = NULL,
+                  .gap_max = reach_h * h,
+                  .dist_min = -reach_h * h};
     rs_contacts c = {0};
     double best = INFINITY;
     for (int r = 0; r < 3; r++) {

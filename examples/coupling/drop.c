@@ -68,12 +68,30 @@ int main(void)
         if (step > 0 && rs_motion_advance(&motion, DT, &err) != RS_OK)
             return fail(&err);
         /* 1. contacts of the spheres with the floor in its current pose */
-        rs_query q = {N, {x, y, z, r, NULL}, &motion.pose, tr.tracking, -INFINITY};
+        rs_query q = {.n = N,
+                      .slave = {.x = x, .y = y, .z = z, .radius = r},
+                      .pose = &motion.pose,
+                      .gap_max = tr.tracking,
+                      .dist_min = -INFINITY};
         c.n = 0;
         if (rs_surface_query(&floor, &q, &c, &err) != RS_OK)
             return fail(&err);
         /* 2. matched to history: overlap, slip, frame rotation; leaving contacts */
-        rs_particles p = {N, x, y, z, vx, vy, vz, wx, wy, wz, r, id, dir, slot0, slot};
+        rs_particles p = {.n = N,
+                          .x = x,
+                          .y = y,
+                          .z = z,
+                          .vx = vx,
+                          .vy = vy,
+                          .vz = vz,
+                          .wx = wx,
+                          .wy = wy,
+                          .wz = wz,
+                          .radius = r,
+                          .id = id,
+                          .dir = dir,
+                          .hist = slot0,
+                          .slot_stride = slot};
         if (rs_track_update(&tr, &floor, &motion, step ? DT : 0.0, &p, &c, &trk, &err))
             return fail(&err);
         /* 3. the law's inputs: last stress and state, then per-contact values */

@@ -87,7 +87,11 @@ static int query_grid(const rs_surface *s)
     memset(&c, 0, sizeof c);
     int fail = 0;
     for (int sph = 0; sph < 2 && !fail; sph++) {
-        rs_query qr = {NQ, {x, y, z, sph ? r : NULL, NULL}, NULL, INFINITY, -INFINITY};
+        rs_query qr = {.n = NQ,
+                       .slave = {.x = x, .y = y, .z = z, .radius = sph ? r : NULL},
+                       .pose = NULL,
+                       .gap_max = INFINITY,
+                       .dist_min = -INFINITY};
         rs_error e;
         c.n = 0;
         int rc = rs_surface_query(s, &qr, &c, &e);

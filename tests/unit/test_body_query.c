@@ -209,7 +209,11 @@ static void test_a_block_of_spheres_and_bodies_is_one_query(void)
     const double xb[3] = {1, 0, 0.099}, xc[3] = {3, 0, 0.0499};
     ENSURE(rs_body_init(&bodies[1], &box, 1.0, xb, q0, &e) == RS_OK);
     ENSURE(rs_body_init(&bodies[3], &cap, 1.0, xc, q1, &e) == RS_OK);
-    rs_query q = {4, {x, y, z, r, bodies}, NULL, 1e-3, -INFINITY};
+    rs_query q = {.n = 4,
+                  .slave = {.x = x, .y = y, .z = z, .radius = r, .body = bodies},
+                  .pose = NULL,
+                  .gap_max = 1e-3,
+                  .dist_min = -INFINITY};
     rs_contacts c;
     memset(&c, 0, sizeof c);
     ENSURE(rs_surface_query(&s, &q, &c, &e) == RS_ERR_ARG);

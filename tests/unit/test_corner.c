@@ -13,7 +13,11 @@ static int query(const rs_surface *s, double x, double y, double rad, double gap
                  rs_contacts *c)
 {
     double z = 0.0;
-    rs_query q = {1, {&x, &y, &z, &rad, NULL}, NULL, gap, -INFINITY};
+    rs_query q = {.n = 1,
+                  .slave = {.x = &x, .y = &y, .z = &z, .radius = &rad},
+                  .pose = NULL,
+                  .gap_max = gap,
+                  .dist_min = -INFINITY};
     c->n = 0;
     return rs_surface_query(s, &q, c, NULL);
 }
@@ -303,7 +307,11 @@ static void test_corner_drum_fillet_sweep(void)
             z = 0.95;
         }
         double x = r * cos(0.3), y = r * sin(0.3), zz = z;
-        rs_query q = {1, {&x, &y, &zz, &R, NULL}, NULL, 1e-9, -INFINITY};
+        rs_query q = {.n = 1,
+                      .slave = {.x = &x, .y = &y, .z = &zz, .radius = &R},
+                      .pose = NULL,
+                      .gap_max = 1e-9,
+                      .dist_min = -INFINITY};
         c.n = 0;
         ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
         ENSURE(c.n == 1);

@@ -80,7 +80,11 @@ static void test_frame_segments_t1_is_minus_z_cross_n(void)
     ENSURE(rs_surface_ndir(&s) == 2);
     double *x = malloc(3 * NPTS * sizeof *x), *y = x + NPTS, *z = y + NPTS;
     random_points(x, y, z, 3.0);
-    rs_query q = {NPTS, {x, y, z, NULL, NULL}, NULL, INFINITY, -INFINITY};
+    rs_query q = {.n = NPTS,
+                  .slave = {.x = x, .y = y, .z = z},
+                  .pose = NULL,
+                  .gap_max = INFINITY,
+                  .dist_min = -INFINITY};
     rs_contacts c = {0};
     int rc = rs_surface_query(&s, &q, &c, NULL);
     ENSURE(rc == 0 && c.n >= NPTS / 2);
@@ -121,7 +125,11 @@ static void test_frame_cylinder_t1_is_generator(void)
         y[i] += a[1];
         z[i] += a[2];
     }
-    rs_query q = {NPTS, {x, y, z, NULL, NULL}, NULL, INFINITY, -INFINITY};
+    rs_query q = {.n = NPTS,
+                  .slave = {.x = x, .y = y, .z = z},
+                  .pose = NULL,
+                  .gap_max = INFINITY,
+                  .dist_min = -INFINITY};
     rs_contacts c = {0};
     ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0 && c.n >= NPTS);
     ENSURE(frames_orthonormal(&c));
@@ -155,7 +163,11 @@ static void test_frame_revolution_t2_is_hoop(void)
         y[i] += a[1];
         z[i] += a[2];
     }
-    rs_query q = {NPTS, {x, y, z, NULL, NULL}, NULL, INFINITY, -INFINITY};
+    rs_query q = {.n = NPTS,
+                  .slave = {.x = x, .y = y, .z = z},
+                  .pose = NULL,
+                  .gap_max = INFINITY,
+                  .dist_min = -INFINITY};
     rs_contacts c = {0};
     ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0 && c.n >= NPTS / 2);
     ENSURE(frames_orthonormal(&c));
@@ -198,7 +210,11 @@ static void test_frame_revolution_axis_is_finite_and_deterministic(void)
         y[i] = a[1] + h * ez[1];
         z[i] = a[2] + h * ez[2];
     }
-    rs_query q = {8, {x, y, z, NULL, NULL}, NULL, INFINITY, -INFINITY};
+    rs_query q = {.n = 8,
+                  .slave = {.x = x, .y = y, .z = z},
+                  .pose = NULL,
+                  .gap_max = INFINITY,
+                  .dist_min = -INFINITY};
     rs_contacts c = {0};
     ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
     ENSURE(c.n >= 8);
@@ -244,7 +260,11 @@ static void test_frame_revolution_local_x_on_the_axis(void)
         double x = 0.5 * ez[0], y = 0.5 * ez[1], z = 0.5 * ez[2], t2[3], t1[3];
         rs_cross3(ez, ex, t2);
         rs_cross3(t2, ez, t1); /* n = +z_local */
-        rs_query q = {1, {&x, &y, &z, NULL, NULL}, NULL, INFINITY, -INFINITY};
+        rs_query q = {.n = 1,
+                      .slave = {.x = &x, .y = &y, .z = &z},
+                      .pose = NULL,
+                      .gap_max = INFINITY,
+                      .dist_min = -INFINITY};
         rs_contacts c = {0};
         ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0 && c.n == 1);
         for (int d = 0; d < 3; d++) {
@@ -285,8 +305,16 @@ static void pose_check(const char *txt, int planar)
         y[i] = R[3] * P[0] + R[4] * P[1] + R[5] * P[2] + pose.T[1];
         z[i] = R[6] * P[0] + R[7] * P[1] + R[8] * P[2] + pose.T[2];
     }
-    rs_query q0 = {N, {X, Y, Z, NULL, NULL}, NULL, 0.5, -INFINITY};
-    rs_query q1 = {N, {x, y, z, NULL, NULL}, &pose, 0.5, -INFINITY};
+    rs_query q0 = {.n = N,
+                   .slave = {.x = X, .y = Y, .z = Z},
+                   .pose = NULL,
+                   .gap_max = 0.5,
+                   .dist_min = -INFINITY};
+    rs_query q1 = {.n = N,
+                   .slave = {.x = x, .y = y, .z = z},
+                   .pose = &pose,
+                   .gap_max = 0.5,
+                   .dist_min = -INFINITY};
     rs_contacts c0 = {0}, c1 = {0};
     ENSURE(rs_surface_query(&s, &q0, &c0, NULL) == 0);
     ENSURE(rs_surface_query(&s, &q1, &c1, NULL) == 0);

@@ -115,7 +115,11 @@ static void check_block_against_brute_force(const char *deck, int revolution)
         r[i] = 0.01 * size * urand();
     }
     /* gap_max beyond the sampling box: every point reaches its closest feature */
-    rs_query q = {N, {x, y, z, r, NULL}, &pose, 2.0 * size, -INFINITY};
+    rs_query q = {.n = N,
+                  .slave = {.x = x, .y = y, .z = z, .radius = r},
+                  .pose = &pose,
+                  .gap_max = 2.0 * size,
+                  .dist_min = -INFINITY};
     rs_contacts c = {0};
     ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
     int k = 0;
@@ -136,7 +140,11 @@ static void check_block_against_brute_force(const char *deck, int revolution)
     rs_contacts c1 = {0};
     k = 0;
     for (int i = 0; i < N; i++) {
-        rs_query q1 = {1, {x + i, y + i, z + i, r + i, NULL}, &pose, 2.0 * size, -INFINITY};
+        rs_query q1 = {.n = 1,
+                       .slave = {.x = x + i, .y = y + i, .z = z + i, .radius = r + i},
+                       .pose = &pose,
+                       .gap_max = 2.0 * size,
+                       .dist_min = -INFINITY};
         c1.n = 0;
         ENSURE(rs_surface_query(&s, &q1, &c1, NULL) == 0);
         for (int h = 0; h < c1.n; h++, k++) {
@@ -228,7 +236,11 @@ static void check_large_profile(int nseg, int sides)
             y[i] = s30 * u + c30 * v;
             z[i] = 0.0;
         }
-        rs_query q = {m, {x, y, z, NULL, NULL}, NULL, reach, -reach};
+        rs_query q = {.n = m,
+                      .slave = {.x = x, .y = y, .z = z},
+                      .pose = NULL,
+                      .gap_max = reach,
+                      .dist_min = -reach};
         rs_contacts c = {0};
         ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
         int k = 0, checked = 0;
@@ -415,7 +427,11 @@ static void check_collinear_chain(int sides, int npc)
         y[i] = rr * sin(th);
         z[i] = (H - 2.0 * h) * (2.0 * urand() - 1.0);
     }
-    rs_query q = {N, {x, y, z, NULL, NULL}, NULL, h, -h};
+    rs_query q = {.n = N,
+                  .slave = {.x = x, .y = y, .z = z},
+                  .pose = NULL,
+                  .gap_max = h,
+                  .dist_min = -h};
     rs_contacts c = {0};
     ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
     int k = 0, bad = 0, seen = 0;
@@ -481,7 +497,11 @@ static void check_oblique_chain(int sides, int npc)
         sp[i] = sj;
         dp[i] = d;
     }
-    rs_query q = {N, {x, y, z, NULL, NULL}, NULL, h, -h};
+    rs_query q = {.n = N,
+                  .slave = {.x = x, .y = y, .z = z},
+                  .pose = NULL,
+                  .gap_max = h,
+                  .dist_min = -h};
     rs_contacts c = {0};
     ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
     int k = 0, bad = 0, seen = 0;

@@ -260,7 +260,11 @@ static void test_reader_example_files(void)
     ENSURE(s.kind == RS_SURF_REVOLUTION && s.fillet_radius == 0.005);
     ENSURE(s.profile.nseg == 5); /* three lines and two fillets */
     double x = 0.05, y = 0.0, z = 0.03;
-    rs_query q = {1, {&x, &y, &z, NULL, NULL}, NULL, INFINITY, -INFINITY};
+    rs_query q = {.n = 1,
+                  .slave = {.x = &x, .y = &y, .z = &z},
+                  .pose = NULL,
+                  .gap_max = INFINITY,
+                  .dist_min = -INFINITY};
     rs_contacts c = {0};
     ENSURE(rs_surface_query(&s, &q, &c, &e) == RS_OK);
     double dmin = INFINITY;
@@ -387,7 +391,11 @@ static void test_reader_fuzz_never_crashes(void)
         if (rc == RS_OK) {
             accepted++;
             double x = 0.3, y = 0.2, z = 0.1;
-            rs_query q = {1, {&x, &y, &z, NULL, NULL}, NULL, INFINITY, -INFINITY};
+            rs_query q = {.n = 1,
+                          .slave = {.x = &x, .y = &y, .z = &z},
+                          .pose = NULL,
+                          .gap_max = INFINITY,
+                          .dist_min = -INFINITY};
             rs_contacts c = {0};
             ENSURE(rs_surface_query(&s, &q, &c, NULL) == RS_OK);
             for (int k = 0; k < c.n; k++)

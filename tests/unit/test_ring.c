@@ -13,7 +13,11 @@
 static int sphere1(const rs_surface *s, double x, double y, double z, double Rs, double gap,
                    rs_contacts *c)
 {
-    rs_query q = {1, {&x, &y, &z, &Rs, NULL}, NULL, gap, -INFINITY};
+    rs_query q = {.n = 1,
+                  .slave = {.x = &x, .y = &y, .z = &z, .radius = &Rs},
+                  .pose = NULL,
+                  .gap_max = gap,
+                  .dist_min = -INFINITY};
     c->n = 0;
     return rs_surface_query(s, &q, c, NULL);
 }
@@ -113,7 +117,11 @@ static void test_ring_points_have_one_contact(void)
                  "START, 0.01, -1\nLINE, 0.01, 1\n",
                  &s) == 0);
     double x = 0.0, y = 0.0, z = 0.0;
-    rs_query q = {1, {&x, &y, &z, NULL, NULL}, NULL, 0.02, -INFINITY};
+    rs_query q = {.n = 1,
+                  .slave = {.x = &x, .y = &y, .z = &z},
+                  .pose = NULL,
+                  .gap_max = 0.02,
+                  .dist_min = -INFINITY};
     rs_contacts c = {0};
     ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
     ENSURE(c.n == 1);
@@ -149,8 +157,16 @@ static void test_ring_contacts_do_not_depend_on_the_reach(void)
             r[i] = R;
         }
         rs_contacts near = {0}, far = {0};
-        rs_query q0 = {N, {x, y, z, r, NULL}, NULL, 0.0, -INFINITY};
-        rs_query q1 = {N, {x, y, z, r, NULL}, NULL, 0.1, -INFINITY};
+        rs_query q0 = {.n = N,
+                       .slave = {.x = x, .y = y, .z = z, .radius = r},
+                       .pose = NULL,
+                       .gap_max = 0.0,
+                       .dist_min = -INFINITY};
+        rs_query q1 = {.n = N,
+                       .slave = {.x = x, .y = y, .z = z, .radius = r},
+                       .pose = NULL,
+                       .gap_max = 0.1,
+                       .dist_min = -INFINITY};
         ENSURE(rs_surface_query(&s, &q0, &near, NULL) == 0);
         ENSURE(rs_surface_query(&s, &q1, &far, NULL) == 0);
         int k = 0;

@@ -60,7 +60,11 @@ static int same_answers(const rs_surface *a, const rs_surface *b, int min)
     rs_surface_bounds(b, lb, hb);
     ok = ok && same_doubles(la, lb, 3) && same_doubles(ha, hb, 3);
     for (int sph = 0; sph < 2 && ok; sph++) {
-        rs_query q = {NQ, {x, y, z, sph ? r : NULL, NULL}, NULL, 0.05, -INFINITY};
+        rs_query q = {.n = NQ,
+                      .slave = {.x = x, .y = y, .z = z, .radius = sph ? r : NULL},
+                      .pose = NULL,
+                      .gap_max = 0.05,
+                      .dist_min = -INFINITY};
         rs_contacts ca, cb;
         memset(&ca, 0, sizeof ca);
         memset(&cb, 0, sizeof cb);
@@ -550,7 +554,11 @@ static void default_sides(void)
     ENSURE(s.sides == 2 && s.kind == RS_SURF_FACETED && s.name[0] == '\0');
     /* a sphere below the one-sided triangle has no contact; two-sided it has */
     const double x = 0.2, y = 0.2, z = -0.3, r = 0.35;
-    rs_query q = {1, {&x, &y, &z, &r, NULL}, NULL, 0.0, -r};
+    rs_query q = {.n = 1,
+                  .slave = {.x = &x, .y = &y, .z = &z, .radius = &r},
+                  .pose = NULL,
+                  .gap_max = 0.0,
+                  .dist_min = -r};
     rs_contacts c;
     memset(&c, 0, sizeof c);
     ENSURE(rs_surface_query(&s, &q, &c, &e) == RS_OK && c.n == 1);

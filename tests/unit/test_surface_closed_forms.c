@@ -12,7 +12,11 @@
 static int query1(const rs_surface *s, double x, double y, double z, double gap,
                   rs_contacts *c)
 {
-    rs_query q = {1, {&x, &y, &z, NULL, NULL}, NULL, gap, -INFINITY};
+    rs_query q = {.n = 1,
+                  .slave = {.x = &x, .y = &y, .z = &z},
+                  .pose = NULL,
+                  .gap_max = gap,
+                  .dist_min = -INFINITY};
     c->n = 0;
     return rs_surface_query(s, &q, c, NULL);
 }
@@ -333,7 +337,11 @@ static void test_query_gap_and_depth_filters(void)
            0);
     double x[4] = {0, 0, 0, 0}, y[4] = {0.35, 0.25, -0.5, -2.0},
            rad[4] = {0.3, 0.3, 0.3, 0.3};
-    rs_query q = {4, {x, y, NULL, rad, NULL}, NULL, 0.0, -1.0};
+    rs_query q = {.n = 4,
+                  .slave = {.x = x, .y = y, .radius = rad},
+                  .pose = NULL,
+                  .gap_max = 0.0,
+                  .dist_min = -1.0};
     rs_contacts c = {0};
     ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
     ENSURE(c.n == 2);

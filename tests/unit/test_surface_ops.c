@@ -143,8 +143,16 @@ static void test_spin_axis_of_a_revolution(void)
             r[d] = o[d] + pp[d] * cos(th) + axp[d] * sin(th) + ax[d] * ap * (1.0 - cos(th));
             q[d] = p[d];
         }
-        rs_query qa = {1, {q, q + 1, q + 2, NULL, NULL}, NULL, 10.0, -10.0};
-        rs_query qb = {1, {r, r + 1, r + 2, NULL, NULL}, NULL, 10.0, -10.0};
+        rs_query qa = {.n = 1,
+                       .slave = {.x = q, .y = q + 1, .z = q + 2},
+                       .pose = NULL,
+                       .gap_max = 10.0,
+                       .dist_min = -10.0};
+        rs_query qb = {.n = 1,
+                       .slave = {.x = r, .y = r + 1, .z = r + 2},
+                       .pose = NULL,
+                       .gap_max = 10.0,
+                       .dist_min = -10.0};
         c0.n = c1.n = 0;
         ENSURE(rs_surface_query(&s, &qa, &c0, &e) == RS_OK);
         ENSURE(rs_surface_query(&s, &qb, &c1, &e) == RS_OK);
@@ -214,7 +222,11 @@ static void test_a_surface_without_kind_answers_neutrally(void)
         rs_contacts c;
         memset(&c, 0, sizeof c);
         const double x = 0.0;
-        const rs_query q = {1, {&x, &x, &x, NULL, NULL}, NULL, 1.0, -INFINITY};
+        const rs_query q = {.n = 1,
+                            .slave = {.x = &x, .y = &x, .z = &x},
+                            .pose = NULL,
+                            .gap_max = 1.0,
+                            .dist_min = -INFINITY};
         ENSURE(rs_surface_query(&s, &q, &c, &err) == RS_ERR_ARG);
     }
     ENSURE(rs_surface_ndir(NULL) == 0 && rs_surface_spin_axis(NULL, NULL, NULL) == 0);
@@ -231,7 +243,11 @@ static void test_query_without_proximity_cache_is_an_error(void)
     rs_contacts c;
     memset(&c, 0, sizeof c);
     const double x = 0.1, y = 0.2, z = 0.3, r = 0.05;
-    const rs_query q = {1, {&x, &y, &z, &r, NULL}, NULL, 1.0, -INFINITY};
+    const rs_query q = {.n = 1,
+                        .slave = {.x = &x, .y = &y, .z = &z, .radius = &r},
+                        .pose = NULL,
+                        .gap_max = 1.0,
+                        .dist_min = -INFINITY};
     rs_error err;
     ENSURE(rs_surface_query(&s, &q, &c, &err) == RS_ERR_ARG);
     ENSURE(strstr(err.msg, "proximity cache") != NULL && c.n == 0);

@@ -30,7 +30,11 @@ static void check(const char *name)
     rs_contacts c = {0};
     for (int v = 0; v < m.nvert; v++) {
         double *p = m.xyz + 3 * v;
-        rs_query q = {1, {p, p + 1, p + 2, NULL, NULL}, NULL, 1e-6, -1e-6};
+        rs_query q = {.n = 1,
+                      .slave = {.x = p, .y = p + 1, .z = p + 2},
+                      .pose = NULL,
+                      .gap_max = 1e-6,
+                      .dist_min = -1e-6};
         c.n = 0;
         ENSURE(rs_surface_query(&s, &q, &c, &e) == 0);
         double dmin = INFINITY;
@@ -51,7 +55,11 @@ static void check(const char *name)
         double g[3];
         for (int i = 0; i < 3; i++)
             g[i] = (a[i] + b[i] + d[i]) / 3.0 + 0.02 * n[i] / nl; /* beyond the sagitta */
-        rs_query q = {1, {g, g + 1, g + 2, NULL, NULL}, NULL, 0.1, -0.1};
+        rs_query q = {.n = 1,
+                      .slave = {.x = g, .y = g + 1, .z = g + 2},
+                      .pose = NULL,
+                      .gap_max = 0.1,
+                      .dist_min = -0.1};
         c.n = 0;
         ENSURE(rs_surface_query(&s, &q, &c, &e) == 0);
         int best = -1;

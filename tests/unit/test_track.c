@@ -51,8 +51,20 @@ static void block_init(block *b, int n, const rs_tracker *tr)
         b->id[i] = 100 + i;
         rs_track_clear(tr, b->dir[i], b->hist[i], 0);
     }
-    b->p = (rs_particles){n,     b->x,  b->y, b->z,  b->vx, b->vy, b->vz, b->wx,
-                          b->wy, b->wz, b->r, b->id, b->dp, b->hp, 0,     NULL};
+    b->p = (rs_particles){.n = n,
+                          .x = b->x,
+                          .y = b->y,
+                          .z = b->z,
+                          .vx = b->vx,
+                          .vy = b->vy,
+                          .vz = b->vz,
+                          .wx = b->wx,
+                          .wy = b->wy,
+                          .wz = b->wz,
+                          .radius = b->r,
+                          .id = b->id,
+                          .dir = b->dp,
+                          .hist = b->hp};
 }
 
 static void block_set(block *b, int i, const double x[3], const double v[3],
@@ -1107,8 +1119,19 @@ static void block_vs_single(int nd)
         clist_init(&l);
         for (int i = 0; i < NB; i++)
             contacts37(&l, &a, i, i, step);
-        rs_particles pa = {NB,   a.x,  a.y, a.z,  a.vx, a.vy, a.vz, a.wx,
-                           a.wy, a.wz, a.r, NULL, a.dp, a.hp, 0,    NULL};
+        rs_particles pa = {.n = NB,
+                           .x = a.x,
+                           .y = a.y,
+                           .z = a.z,
+                           .vx = a.vx,
+                           .vy = a.vy,
+                           .vz = a.vz,
+                           .wx = a.wx,
+                           .wy = a.wy,
+                           .wz = a.wz,
+                           .radius = a.r,
+                           .dir = a.dp,
+                           .hist = a.hp};
         ENSURE(rs_track_update(&tr, NULL, &m, dt, &pa, &l.c, &oa, &err) == RS_OK);
         double sa[3 * MAXC], va[NS * MAXC], sa0[3 * MAXC], va0[NS * MAXC];
         rs_track_load(&tr, &oa, sa0, va0);
@@ -1130,9 +1153,19 @@ static void block_vs_single(int nd)
             clist li;
             clist_init(&li);
             contacts37(&li, &b, 0, i, step);
-            rs_particles pb = {1,        b.x + i,  b.y + i,  b.z + i,  b.vx + i, b.vy + i,
-                               b.vz + i, b.wx + i, b.wy + i, b.wz + i, b.r + i,  NULL,
-                               b.dp + i, b.hp + i, 0,        NULL};
+            rs_particles pb = {.n = 1,
+                               .x = b.x + i,
+                               .y = b.y + i,
+                               .z = b.z + i,
+                               .vx = b.vx + i,
+                               .vy = b.vy + i,
+                               .vz = b.vz + i,
+                               .wx = b.wx + i,
+                               .wy = b.wy + i,
+                               .wz = b.wz + i,
+                               .radius = b.r + i,
+                               .dir = b.dp + i,
+                               .hist = b.hp + i};
             ENSURE(rs_track_update(&tr, NULL, &m, dt, &pb, &li.c, &ob, &err) == RS_OK);
             double sb[3 * CAP], vb[NS * CAP];
             rs_track_load(&tr, &ob, sb, vb);

@@ -74,8 +74,17 @@ static int zblock_init(zblock *b, int cap)
         b->id[i] = 4711 + i;
         b->r[i] = 0.01;
     }
-    b->p = (rs_particles){NP,   b->x, b->y, b->z,  b->vx,  b->vy,   b->vz, NULL,
-                          NULL, NULL, b->r, b->id, b->dir, b->hist, 0,     NULL};
+    b->p = (rs_particles){.n = NP,
+                          .x = b->x,
+                          .y = b->y,
+                          .z = b->z,
+                          .vx = b->vx,
+                          .vy = b->vy,
+                          .vz = b->vz,
+                          .radius = b->r,
+                          .id = b->id,
+                          .dir = b->dir,
+                          .hist = b->hist};
     return ok;
 }
 

@@ -44,8 +44,17 @@ static void scene_init(scene *s, unsigned drop)
         s->vy[i] = 0.3;
         s->vz[i] = -0.2;
     }
-    s->p = (rs_particles){2,    s->x, s->y, s->z,  s->vx,  s->vy,   s->vz, NULL,
-                          NULL, NULL, s->r, s->id, s->dir, s->hist, 0,     NULL};
+    s->p = (rs_particles){.n = 2,
+                          .x = s->x,
+                          .y = s->y,
+                          .z = s->z,
+                          .vx = s->vx,
+                          .vy = s->vy,
+                          .vz = s->vz,
+                          .radius = s->r,
+                          .id = s->id,
+                          .dir = s->dir,
+                          .hist = s->hist};
     s->c.cap = MAXC;
     s->c.point = s->point;
     s->c.feature = s->feature;

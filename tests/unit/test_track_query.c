@@ -39,9 +39,25 @@ static void one_init(one *o, const rs_tracker *tr, double radius)
     o->dp = o->dir;
     o->hp = o->hist;
     rs_track_clear(tr, o->dir, o->hist, 0);
-    o->p = (rs_particles){1,      &o->x,  &o->y, &o->z,  &o->vx, &o->vy, &o->vz, &o->wx,
-                          &o->wy, &o->wz, &o->r, &o->id, &o->dp, &o->hp, 0,      NULL};
-    o->q = (rs_query){1, {&o->x, &o->y, &o->z, &o->r, NULL}, NULL, tr->tracking, -INFINITY};
+    o->p = (rs_particles){.n = 1,
+                          .x = &o->x,
+                          .y = &o->y,
+                          .z = &o->z,
+                          .vx = &o->vx,
+                          .vy = &o->vy,
+                          .vz = &o->vz,
+                          .wx = &o->wx,
+                          .wy = &o->wy,
+                          .wz = &o->wz,
+                          .radius = &o->r,
+                          .id = &o->id,
+                          .dir = &o->dp,
+                          .hist = &o->hp};
+    o->q = (rs_query){.n = 1,
+                      .slave = {.x = &o->x, .y = &o->y, .z = &o->z, .radius = &o->r},
+                      .pose = NULL,
+                      .gap_max = tr->tracking,
+                      .dist_min = -INFINITY};
 }
 
 /* The drum turns about an axis that is not its own and translates; the sphere sits on
