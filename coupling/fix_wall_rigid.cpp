@@ -556,13 +556,13 @@ rs_query FixWallRigid::sphere_query(const int *idx, int n)
         bz_[k] = x[i][2];
         brad_[k] = radius[i];
     }
-    rs_query q;
+    rs_query q = rs_query(); // LIGGGHTS 3.8.0's particles are spheres: no bodies
     q.n = n;
+    q.slave.n = n;
     q.slave.x = bx_.data();
     q.slave.y = by_.data();
     q.slave.z = bz_.data();
     q.slave.radius = brad_.data();
-    q.slave.body = nullptr; // LIGGGHTS 3.8.0 particles are spheres
     q.pose = &motion_.pose;
     q.gap_max = 0.0;
     q.dist_min = 0.0;

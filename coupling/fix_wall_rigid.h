@@ -334,6 +334,7 @@ class FixWallRigid : public Fix
     /* per particle of a block: mass, type, heat capacity, temperature and its
      * increment, predefined fields and their increments (npred per particle) */
     std::vector<double> bmass_, bheat_, btemp_, bdtemp_, bpred_, bdpred_;
+    rs_particle_block pblk_; // the block's arrays as the library's calls read them
     std::vector<int> btype_;
     rs_contact_block cb_; // per contact of a block (RS_BLOCK * capacity): law inputs
 

@@ -67,11 +67,25 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
             pack_atom(idx[k], &saved_rows_[(size_t)k * as]);
     }
 
-    rs_query q;
+    /* The block as the query, the tracker and the law's inputs read it. LIGGGHTS 3.8.0's
+     * particles are spheres: no bodies. */
+    rs_particle_block &p = pblk_;
+    p = rs_particle_block();
+    p.n = n;
+    p.x = qx, p.y = qy, p.z = qz;
+    p.vx = qvx, p.vy = qvy, p.vz = qvz;
+    p.wx = qwx, p.wy = qwy, p.wz = qwz;
+    p.radius = qr;
+    p.id = qid;
+    p.dir = qd;
+    p.hist = qh;
+    p.slot_stride = slot_stride();
+    p.mass = qm;
+    p.type = qt;
+
+    rs_query q = rs_query();
     q.n = n;
-    q.slave.x = bx_.data(), q.slave.y = by_.data(), q.slave.z = bz_.data();
-    q.slave.radius = brad_.data();
-    q.slave.body = nullptr; // LIGGGHTS 3.8.0 particles are spheres
+    q.slave = p;
     q.pose = &motion_.pose;
     q.gap_max = tracking_ + lookahead_;
     /* With bounds, the depth limit is that of the largest candidate plus the look-ahead:
@@ -95,18 +109,6 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         fail_one(std::string("surface query: ") + err.msg);
     if (bounds_ok_)
         keep_tracked(idx, n, -rmax);
-
-    rs_particles p;
-    p.n = n;
-    p.x = bx_.data(), p.y = by_.data(), p.z = bz_.data();
-    p.vx = bvx_.data(), p.vy = bvy_.data(), p.vz = bvz_.data();
-    p.wx = bwx_.data(), p.wy = bwy_.data(), p.wz = bwz_.data();
-    p.radius = brad_.data();
-    p.id = bid_.data();
-    p.dir = bdir_.data();
-    p.hist = bhist_.data();
-    p.slot_stride = slot_stride();
-    p.body = nullptr; // LIGGGHTS 3.8.0 particles are spheres
 
     /* A setup call has no increment: no slip, no master rotation. */
     rs_motion still;
@@ -315,13 +317,7 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call)
 {
     const double *cp = fix_heatcap_ ? fix_heatcap_->get_values() : NULL;
     double *const *__restrict bd = bdir_.data();
-    rs_block_particles p;
-    std::memset(&p, 0, sizeof p);
-    p.n = n;
-    p.radius = brad_.data();
-    p.mass = bmass_.data();
-    p.id = bid_.data();
-    p.type = btype_.data();
+    rs_particle_block &p = pblk_; /* the block's, with its heat and predefined fields */
     if (cp) {
         for (int k = 0; k < n; k++)
             bheat_[k] = bmass_[k] * cp[btype_[k] - 1];

@@ -147,9 +147,16 @@ int rs_driver_set_body(rs_driver *d, int i, const rs_shape *shape, double densit
     return RS_OK;
 }
 
-/* The contacts of every node at x_k: one query of the block, its bodies in their pose
- * of the increment (driver.h, step 2). A list with bodies keeps the witness points. */
-static int query_nodes(rs_driver *d, rs_error *err)
+/* A slot as the tracker lays it out for the law (track.h): what the law reads of the
+ * contact's last call, the energies included. */
+static ptrdiff_t slot_stride(const rs_driver *d)
+{
+    return rs_track_slot_size(&d->tracker);
+}
+
+/* The nodes as one particle block, which the query, the tracker and the law's inputs
+ * read (surface.h, rs_particle_block); the bodies in their pose of the increment. */
+static rs_particle_block node_block(rs_driver *d)
 {
     int bodies = 0;
     for (int i = 0; i < d->n; ++i) {
@@ -163,27 +170,46 @@ static int query_nodes(rs_driver *d, rs_error *err)
         b->mass = d->mass[i];
         memcpy(b->inertia, d->inertia + 3 * (size_t)i, sizeof b->inertia);
     }
+    for (int i = 0; i < d->n; ++i)
+        d->dtemp[i] = d->temp[i] - d->temp_prev[i];
+    const rs_particle_block p = {.n = d->n,
+                                 .x = d->x,
+                                 .y = d->y,
+                                 .z = d->z,
+                                 .radius = d->radius,
+                                 .body = bodies ? d->body : NULL,
+                                 .vx = d->vx,
+                                 .vy = d->vy,
+                                 .vz = d->vz,
+                                 .wx = d->wx,
+                                 .wy = d->wy,
+                                 .wz = d->wz,
+                                 .id = d->id,
+                                 .dir = d->dir_ptr,
+                                 .hist = d->hist_ptr,
+                                 .slot_stride = slot_stride(d),
+                                 .mass = d->mass,
+                                 .area = d->area,
+                                 .heatcap = d->heatcap,
+                                 .temp = d->temp,
+                                 .dtemp = d->dtemp};
+    return p;
+}
+
+/* The contacts of every node at x_k: one query of the block (driver.h, step 2). A list
+ * with bodies keeps the witness points. */
+static int query_nodes(rs_driver *d, const rs_particle_block *p, rs_error *err)
+{
     rs_query q;
     memset(&q, 0, sizeof q);
     q.n = d->n;
-    q.slave.x = d->x;
-    q.slave.y = d->y;
-    q.slave.z = d->z;
-    q.slave.radius = d->radius;
-    q.slave.body = bodies ? d->body : NULL;
+    q.slave = *p;
     q.pose = &d->motion.pose;
     q.gap_max = d->tracking;
     q.dist_min = -INFINITY;
     d->contacts.n = 0;
-    d->contacts.witness = bodies;
+    d->contacts.witness = p->body != NULL;
     return rs_surface_query(d->surface, &q, &d->contacts, err);
-}
-
-/* A slot as the tracker lays it out for the law (track.h): what the law reads of the
- * contact's last call, the energies included. */
-static ptrdiff_t slot_stride(const rs_driver *d)
-{
-    return rs_track_slot_size(&d->tracker);
 }
 
 /* History storage, allocated on the first increment (capacity and nstatev are known):
@@ -226,21 +252,11 @@ static int grow_contacts(rs_driver *d, int nc, int nd, rs_error *err)
 
 /* The law on the tracker's contacts: previous stress and state from history
  * (rs_track_load), the per-contact inputs from the nodes (rs_cblock_inputs). */
-static int call_law(rs_driver *d, int nd, rs_error *err)
+static int call_law(rs_driver *d, const rs_particle_block *p, int nd, rs_error *err)
 {
     const int ns = d->nstatev;
     rs_track_load(&d->tracker, &d->trk, d->cb.stress, ns ? d->cb.statev : NULL);
-    for (int i = 0; i < d->n; ++i)
-        d->dtemp[i] = d->temp[i] - d->temp_prev[i];
-    const rs_block_particles p = {.n = d->n,
-                                  .radius = d->radius,
-                                  .mass = d->mass,
-                                  .id = d->id,
-                                  .area = d->area,
-                                  .heatcap = d->heatcap,
-                                  .temp = d->temp,
-                                  .dtemp = d->dtemp};
-    rs_cblock_inputs(&d->cb, &d->trk, &p, d->dt);
+    rs_cblock_inputs(&d->cb, &d->trk, p, d->dt);
     rs_track_load_energy(&d->tracker, &d->trk, d->cb.sed, d->cb.flux_slv, d->cb.flux_mst);
 
     /* One Abaqus step per driver; its increments count from 1, the call at t_k being
@@ -297,27 +313,10 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     }
 
     /* query and tracker at x_k with v_{k-1/2} */
-    rc = query_nodes(d, err);
+    const rs_particle_block p = node_block(d);
+    rc = query_nodes(d, &p, err);
     if (rc)
         return rc;
-    rs_particles p;
-    memset(&p, 0, sizeof p);
-    p.n = n;
-    p.x = d->x;
-    p.y = d->y;
-    p.z = d->z;
-    p.vx = d->vx;
-    p.vy = d->vy;
-    p.vz = d->vz;
-    p.wx = d->wx;
-    p.wy = d->wy;
-    p.wz = d->wz;
-    p.radius = d->radius;
-    p.id = d->id;
-    p.dir = d->dir_ptr;
-    p.hist = d->hist_ptr;
-    p.slot_stride = slot_stride(d);
-    p.body = d->contacts.witness ? d->body : NULL;
     /* The first call sees the initial state: no increment of motion lies behind it. */
     rc = rs_track_update(&d->tracker, d->surface, d->moving ? &d->motion : NULL,
                          d->inc == 0 ? 0.0 : d->dt, &p, &d->contacts, &d->trk, err);
@@ -326,7 +325,7 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     rc = grow_contacts(d, d->trk.n, nd, err);
     if (rc)
         return rc;
-    rc = call_law(d, nd, err);
+    rc = call_law(d, &p, nd, err);
     if (rc)
         return rc;
     const rs_contact_block *cb = &d->cb;

@@ -67,9 +67,26 @@ int main(void)
     for (int step = 0; step < nstep; step++) {
         if (step > 0 && rs_motion_advance(&motion, DT, &err) != RS_OK)
             return fail(&err);
+        /* the spheres as one block, which every call below reads */
+        const rs_particle_block p = {.n = N,
+                                     .x = x,
+                                     .y = y,
+                                     .z = z,
+                                     .radius = r,
+                                     .vx = vx,
+                                     .vy = vy,
+                                     .vz = vz,
+                                     .wx = wx,
+                                     .wy = wy,
+                                     .wz = wz,
+                                     .id = id,
+                                     .dir = dir,
+                                     .hist = slot0,
+                                     .slot_stride = slot,
+                                     .mass = m};
         /* 1. contacts of the spheres with the floor in its current pose */
         rs_query q = {.n = N,
-                      .slave = {.x = x, .y = y, .z = z, .radius = r},
+                      .slave = p,
                       .pose = &motion.pose,
                       .gap_max = tr.tracking,
                       .dist_min = -INFINITY};
@@ -77,27 +94,11 @@ int main(void)
         if (rs_surface_query(&floor, &q, &c, &err) != RS_OK)
             return fail(&err);
         /* 2. matched to history: overlap, slip, frame rotation; leaving contacts */
-        rs_particles p = {.n = N,
-                          .x = x,
-                          .y = y,
-                          .z = z,
-                          .vx = vx,
-                          .vy = vy,
-                          .vz = vz,
-                          .wx = wx,
-                          .wy = wy,
-                          .wz = wz,
-                          .radius = r,
-                          .id = id,
-                          .dir = dir,
-                          .hist = slot0,
-                          .slot_stride = slot};
         if (rs_track_update(&tr, &floor, &motion, step ? DT : 0.0, &p, &c, &trk, &err))
             return fail(&err);
         /* 3. the law's inputs: last stress and state, then per-contact values */
         rs_track_load(&tr, &trk, cb.stress, cb.statev);
-        rs_block_particles bp = {.n = N, .radius = r, .mass = m, .id = id};
-        rs_cblock_inputs(&cb, &trk, &bp, DT);
+        rs_cblock_inputs(&cb, &trk, &p, DT);
         rs_track_load_energy(&tr, &trk, cb.sed, cb.flux_slv, cb.flux_mst);
         rs_law_block b;
         rs_law_block_init(&b);

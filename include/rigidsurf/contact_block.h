@@ -27,21 +27,10 @@ typedef enum rs_area_mode {
     RS_AREA_CONSTANT = 2   ///< a given constant
 } rs_area_mode;
 
-/// The particles of one block (SoA, index k as in rs_track_out.point). Optional arrays
-/// are NULL when the engine has none.
-typedef struct rs_block_particles {
-    int n;
-    const double *radius;  ///< radii
-    const double *mass;    ///< masses
-    const int *id;         ///< ids (jSlvUid)
-    const int *type;       ///< material types (slv_type), optional
-    const double *area;    ///< contact areas, optional: else the block's area mode
-    const double *heatcap; ///< heat capacities m c, optional: else conductance 0
-    const double *temp;    ///< temperatures at the end of the increment, optional
-    const double *dtemp;   ///< their increments (with temp)
-    const double *pred;    ///< predefined fields (npred, n), optional
-    const double *dpred;   ///< their increments (with pred)
-} rs_block_particles;
+/// The law inputs' view of a block (surface.h, rs_particle_block; index k as in
+/// rs_track_out.point): n, radius, mass, id, type, area, heatcap, temp, dtemp, pred,
+/// dpred.
+typedef rs_particle_block rs_block_particles;
 
 /// Per-contact arrays of a block (capacity cap contacts), in the law's layout.
 typedef struct rs_contact_block {

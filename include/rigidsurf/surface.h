@@ -23,6 +23,8 @@
 #include "rigidsurf/motion.h"
 #include "rigidsurf/types.h"
 
+#include <stddef.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -180,20 +182,45 @@ typedef struct rs_surface {
 /// kind (zeroed or freed).
 int rs_surface_ndir(const rs_surface *s);
 
-/// The slaves of a query block (SoA, global coordinates, current configuration): points,
-/// or spheres when radius is set. A convex body given by its support function joins as
-/// a further form of slave in the contact core, answered through the kinds' sphere
-/// queries, so that no kind changes.
+/// The slaves of a query block (SoA, global coordinates, current configuration) are
+/// points, spheres where radius is set, and convex bodies where body is set: a body's
+/// contacts come from rs_body_query through the kinds' own point and sphere queries,
+/// so that no kind changes.
 struct rs_body;
 
-typedef struct rs_slaves {
-    const double *x, *y, *z;    ///< points or sphere centres (z ignored for SEGMENTS)
-    const double *radius;       ///< sphere radii, NULL for points
-    const struct rs_body *body; ///< per slave its convex body (convex.h), or NULL: where
-                                ///< body[i].shape is set, slave i is that body, its
-                                ///< contacts rs_body_query's and its radius the
-                                ///< characteristic length the laws see
-} rs_slaves;
+/// One block of particles as every call of the contact core reads it (SoA, n each): the
+/// query (rs_query.slave), the tracker (rs_particles) and the law's inputs
+/// (rs_block_particles) take the same struct, so an engine fills it once a step. Each
+/// call reads the fields it names; what it does not read, and what the engine does not
+/// have, may be NULL (zero-initialise the struct).
+typedef struct rs_particle_block {
+    int n;                      ///< particles (the query reads rs_query.n)
+    const double *x, *y, *z;    ///< centres (z ignored for SEGMENTS)
+    const double *radius;       ///< sphere radii, NULL for points; a body's
+                                ///< characteristic length, the radius the laws see
+    const struct rs_body *body; ///< per particle its convex body (convex.h), or NULL:
+                                ///< where body[i].shape is set, particle i is that body,
+                                ///< its contacts rs_body_query's; a leaving contact's
+                                ///< point is its support along -n
+    const double *vx, *vy, *vz; ///< velocities (tracker)
+    const double *wx, *wy, *wz; ///< angular velocities (tracker; NULL: zero)
+    const int *id;              ///< ids, for messages and the law's jSlvUid (NULL: index)
+    double **dir;               ///< tracker: per particle its directory (capacity doubles)
+    double **hist;              ///< tracker: per particle its slot 0
+    ptrdiff_t slot_stride;      ///< tracker: doubles from slot j to slot j + 1 (0:
+                                ///< rs_track_slot_size)
+    const double *mass;         ///< masses (law inputs)
+    const int *type;            ///< material types (slv_type), optional
+    const double *area;         ///< contact areas, optional: else the block's area mode
+    const double *heatcap;      ///< heat capacities m c, optional: else conductance 0
+    const double *temp;         ///< temperatures at the end of the increment, optional
+    const double *dtemp;        ///< their increments (with temp)
+    const double *pred;         ///< predefined fields (npred, n), optional
+    const double *dpred;        ///< their increments (with pred)
+} rs_particle_block;
+
+/// The query's view of a block: x, y, z, radius, body.
+typedef rs_particle_block rs_slaves;
 
 /// A block of query slaves against a surface in its current pose.
 typedef struct rs_query {

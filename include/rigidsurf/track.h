@@ -98,21 +98,10 @@ static inline int rs_track_slot_size(const rs_tracker *tr)
     return rs_track_energy_at(tr) + ((tr->drop & RS_DROP_ENERGY) ? 0 : 3);
 }
 
-/// A block of particles (SoA). The query points of the same block are their centres.
-typedef struct rs_particles {
-    int n;
-    const double *x, *y, *z;    ///< centres
-    const double *vx, *vy, *vz; ///< velocities
-    const double *wx, *wy, *wz; ///< angular velocities (NULL: zero)
-    const double *radius;       ///< radii (NULL: points)
-    const int *id;              ///< particle ids for messages (NULL: block index)
-    double **dir;               ///< per particle: its directory (capacity doubles)
-    double **hist;              ///< per particle: its slot 0
-    ptrdiff_t slot_stride; ///< doubles from slot j to slot j + 1 (0: RS_HIST_SIZE(nstatev))
-    const rs_body *body;   ///< per particle its convex body, or NULL (then and where
-                           ///< body[i].shape is NULL: a sphere or point); a leaving
-                           ///< contact's point is the body's support along -n
-} rs_particles;
+/// The tracker's view of a block (surface.h, rs_particle_block): n, x, y, z, v, w,
+/// radius, id, dir, hist, slot_stride and body. The query points of the same block are
+/// its centres.
+typedef rs_particle_block rs_particles;
 
 /// Tracker output: one entry per live or leaving contact, in Abaqus layout with
 /// stride ndir. Arrays grow as needed.
