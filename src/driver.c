@@ -332,41 +332,44 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     rs_track_commit_energy(&d->tracker, &d->trk, cb->sed, cb->flux_slv, cb->flux_mst);
     rs_track_commit(&d->tracker, &d->trk, cb->stress, d->nstatev ? cb->statev : NULL);
 
-    /* contact forces and torques, heat and energies */
+    /* contact forces and torques, heat and energies (rs_cblock_loads), scattered */
+    const int ne = d->trk.n;
+    if (ne > d->load_cap) {
+        double *grown = realloc(d->load, 7 * (size_t)ne * sizeof(double));
+        if (!grown)
+            return rs_error_set(err, RS_ERR_NOMEM, "driver: out of memory for %d contacts",
+                                ne);
+        d->load = grown;
+        d->load_cap = ne;
+    }
+    double *lf = d->load, *lt = lf + 3 * (size_t)ne, *lq = lt + 3 * (size_t)ne;
+    double origin[3];
+    rs_pose_to_global(&d->motion.pose, d->surface->a, origin);
+    rs_wall_load wl;
+    rs_cblock_loads(cb, &d->trk, &p, origin, lf, lt, lq, &wl);
     memset(d->fcon, 0, 3 * (size_t)n * sizeof(double));
     memset(d->tcon, 0, 3 * (size_t)n * sizeof(double));
     double *qslv = d->temp_prev; /* reused below after the old temperatures are saved */
-    double qmst = 0.0, se = 0.0;
-    rs_driver_energy *en = &d->energy;
     for (int i = 0; i < n; ++i)
         qslv[i] = 0.0;
-    for (int e = 0; e < d->trk.n; ++e) {
+    for (int e = 0; e < ne; ++e) {
         const int i = d->trk.point[e];
-        const double a = d->area[i] * d->trk.share[e]; /* the contact's share of it */
-        const double *al = d->trk.alocaldir + (size_t)e * nd * nd;
-        double f[3] = {0.0, 0.0, 0.0}, r[3] = {0.0, 0.0, 0.0};
-        const double xi[3] = {d->x[i], d->y[i], d->z[i]};
-        for (int c = 0; c < nd; ++c) {
-            double fc = RS_A2(cb->stress, nd, 0, e) * al[c];
-            for (int j = 1; j < nd; ++j)
-                fc -= RS_A2(cb->stress, nd, j, e) * al[j * nd + c];
-            f[c] = a * fc;
-            d->fcon[3 * i + c] += f[c];
-            r[c] = RS_A2(d->trk.coordslv, nd, c, e) - xi[c];
+        for (int c = 0; c < 3; ++c) {
+            d->fcon[3 * i + c] += lf[3 * e + c];
+            d->tcon[3 * i + c] += lt[3 * e + c];
         }
-        d->tcon[3 * i] += r[1] * f[2] - r[2] * f[1];
-        d->tcon[3 * i + 1] += r[2] * f[0] - r[0] * f[2];
-        d->tcon[3 * i + 2] += r[0] * f[1] - r[1] * f[0];
-        qslv[i] += a * cb->flux_slv[e];
-        qmst += a * cb->flux_mst[e];
-        se += a * cb->sed[e];
-        en->allfd += a * cb->sfd[e];
-        en->allpd += a * cb->spd[e];
-        en->allvd += a * cb->svd[e];
-        en->allcd += a * cb->scd[e];
+        qslv[i] += lq[e];
     }
-    en->allse = se;
-    en->heat_mst += qmst * d->dt;
+    rs_driver_energy *en = &d->energy;
+    en->allse = wl.se;
+    en->allfd += wl.fd;
+    en->allpd += wl.pd;
+    en->allvd += wl.vd;
+    en->allcd += wl.cd;
+    en->heat_mst += wl.flux_mst * d->dt;
+    const double qmst = wl.flux_mst;
+    memcpy(d->fwall, wl.force, sizeof d->fwall);
+    memcpy(d->mwall, wl.moment, sizeof d->mwall);
 
     /* central differences */
     double ke = 0.0;
@@ -447,6 +450,7 @@ void rs_driver_free(rs_driver *d)
     free(d->dir_ptr);
     free(d->hist);
     free(d->dtemp);
+    free(d->load);
     rs_cblock_free(&d->cb);
     rs_track_out_free(&d->trk);
     rs_contacts_free(&d->contacts);

@@ -112,22 +112,17 @@ int main(void)
         rs_track_commit_energy(&tr, &trk, cb.sed, cb.flux_slv, cb.flux_mst);
         rs_track_commit(&tr, &trk, cb.stress, cb.statev);
 
-        /* 5. F = w A (s1 n - s2 t1 - s3 t2) at the contact point, and its torque */
-        double f[N][3] = {{0}}, t[N][3] = {{0}};
-        for (int e = 0; e < trk.n; e++) {
-            const int i = trk.point[e];
-            const double wA = trk.share[e] * cb.area[e];
-            const double *s = cb.stress + nd * e, *a = trk.alocaldir + nd * nd * e;
-            const double *xc = trk.coordslv + nd * e;
-            double F[3], d[3] = {xc[0] - x[i], xc[1] - y[i], xc[2] - z[i]};
-            for (int k = 0; k < 3; k++)
-                F[k] = wA * (s[0] * a[k] - s[1] * a[nd + k] - s[2] * a[2 * nd + k]);
+        /* 5. F = w A (s1 n - s2 t1 - s3 t2) at the contact point and its torque per
+         * contact (and the floor's totals), scattered onto the spheres */
+        double fe[N * CAP][3], te[N * CAP][3], f[N][3] = {{0}}, t[N][3] = {{0}};
+        const double origin[3] = {0, 0, 0};
+        rs_wall_load wall;
+        rs_cblock_loads(&cb, &trk, &p, origin, fe[0], te[0], NULL, &wall);
+        for (int e = 0; e < trk.n; e++)
             for (int k = 0; k < 3; k++) {
-                f[i][k] += F[k];
-                t[i][k] +=
-                    d[(k + 1) % 3] * F[(k + 2) % 3] - d[(k + 2) % 3] * F[(k + 1) % 3];
+                f[trk.point[e]][k] += fe[e][k];
+                t[trk.point[e]][k] += te[e][k];
             }
-        }
         /* 6. explicit integration (symplectic Euler), gravity along -z */
         for (int i = 0; i < N; i++) {
             const double I = 0.4 * m[i] * r[i] * r[i];

@@ -88,6 +88,31 @@ int rs_cblock_facets(rs_contact_block *cb, const rs_track_out *o, const rs_surfa
 int rs_cblock_call(rs_contact_block *cb, const rs_law *law, const rs_law_block *tmpl,
                    const rs_track_out *o, rs_error *err);
 
+/// What the contacts of one call do to the wall (rs_cblock_loads); each sum over the
+/// live contacts e with weight w_e A_e (share times area).
+typedef struct rs_wall_load {
+    double force[3];       ///< the force on the wall, the sum of -F_e
+    double moment[3];      ///< its moment about the given origin
+    double se;             ///< elastic energy of the interface now, the sum of sed (ALLSE)
+    double fd, pd, vd, cd; ///< this call's frictional, plastic, viscous and creep
+                           ///< dissipation, the sums of sfd, spd, svd, scd
+    double flux_slv;       ///< heat flow into the particles, the sum of fluxSlv
+    double flux_mst;       ///< heat flow into the wall, the sum of fluxMst
+    int ncontact;          ///< contacts that overlap (rdisp1 > 0)
+} rs_wall_load;
+
+/// The loads of the contacts of o after the law (cb's stress, energies and fluxes):
+/// for each live contact e on particle i = o->point[e], F_e = w A (s1 n - s2 t1 - s3
+/// t2) at its contact point x_cp (docs/conventions.md, "Stress, flux, energy signs"; w
+/// its share, A its area), into f (3, o->n), its torque (x_cp - x_i) x F_e about the
+/// particle's centre (p's x, y, z) into t (3, o->n), and its heat flow w A fluxSlv into q
+/// (o->n; NULL: not wanted); a leaving contact gets zeros. SEGMENTS (nDir 2): the
+/// contact point keeps the particle's z, F has no z part. The wall's totals, with the
+/// moment about origin, into *w. The engine adds f, t and q onto its particles.
+void rs_cblock_loads(const rs_contact_block *cb, const rs_track_out *o,
+                     const rs_particle_block *p, const double origin[3], double *f,
+                     double *t, double *q, rs_wall_load *w);
+
 #ifdef __cplusplus
 }
 #endif

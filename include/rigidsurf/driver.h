@@ -18,7 +18,8 @@
  *     increment's, its shear rotated by drot (law.h). Temperatures are those at t_k.
  *  4. Contact force on node i: F = areaSlv (s1 n - s2 t1 - s3 t2) summed over its
  *     contacts, and contact torque (x_cp - x) x F about its centre, x_cp the contact
- *     point (docs/conventions.md, "Stress, flux, energy signs").
+ *     point (docs/conventions.md, "Stress, flux, energy signs"), by rs_cblock_loads,
+ *     which also gives the master's force and moment (fwall, mwall).
  *  5. v_{k+1/2} = v_{k-1/2} + dt (F + f_ext) / m for free components; prescribed
  *     components take vpres. x_{k+1} = x_k + dt v_{k+1/2}.
  *     Rotation (rs_rotation_step): the torque kicks the angular momentum, L_{k+1/2} =
@@ -110,6 +111,8 @@ typedef struct rs_driver {
                           ///< about the node's position
     const rs_shape **shape; ///< per node its convex shape (not owned), NULL for a sphere
                             ///< or a point (rs_driver_set_body)
+    double fwall[3];        ///< force of the last increment's contacts on the master
+    double mwall[3];        ///< its moment about the master's point a (its origin)
     double tmaster;         ///< master temperature
     double heatcap_master;  ///< master heat capacity; 0: fixed temperature
 
@@ -137,6 +140,8 @@ typedef struct rs_driver {
     rs_contacts contacts;
     rs_body *body;   ///< the bodies in their pose of the increment (n)
     rs_shape *owned; ///< polyhedra turned into their principal axes (n, unused: zero)
+    double *load;    ///< the contacts' loads: f (3, m), t (3, m), q (m), m <= load_cap
+    int load_cap;
 } rs_driver;
 
 /// Allocates n nodes on surface s (not owned): positions and velocities 0, mass 1,
