@@ -1,8 +1,9 @@
 /* A convex body against a MESH (convex.h, rs_body_surface_contacts; docs/conventions.md,
- * "Convex bodies"): the triangles near the body, each answered by the body's support
- * along its normal where the face owns the body's deepest point, else by the pair query
- * rs_convex_triangle and the Voronoi owner of its witness; one contact per owning
- * feature, and one per coplanar region. The mesh is asked through mesh.h only. */
+ * "Convex bodies"): the triangles near the body, each against the body by the pair query
+ * rs_convex_triangle; each coplanar region answered by the body's support along its
+ * normal where the region holds the foot of the body's deepest point, and each triangle
+ * by the Voronoi owner of its pair's witness; one contact per owning feature and one per
+ * coplanar region. The mesh is asked through mesh.h only. */
 #include "convex_internal.h"
 #include "mesh.h"
 #include "rigidsurf/vec.h"
@@ -54,27 +55,6 @@ static int keep(found_list *l, const found *g)
     return 0;
 }
 
-/* x = R X + T and its inverse X = R^T (x - T); vectors without T. */
-static void to_world(const rs_pose *p, const double X[3], double x[3])
-{
-    rs_matvec3(p->R, X, x);
-    for (int d = 0; d < 3; d++)
-        x[d] += p->T[d];
-}
-
-static void to_reference(const rs_pose *p, const double x[3], double X[3])
-{
-    const double w[3] = {x[0] - p->T[0], x[1] - p->T[1], x[2] - p->T[2]};
-    for (int d = 0; d < 3; d++)
-        X[d] = p->R[d] * w[0] + p->R[3 + d] * w[1] + p->R[6 + d] * w[2];
-}
-
-static void vector_to_reference(const rs_pose *p, const double v[3], double V[3])
-{
-    for (int d = 0; d < 3; d++)
-        V[d] = p->R[d] * v[0] + p->R[3 + d] * v[1] + p->R[6 + d] * v[2];
-}
-
 /* The box about the body in the reference configuration: the corners of its body-frame
  * bounds, placed and taken back through the pose, widened by gap_max. */
 static void body_box(const rs_body *b, const rs_pose *p, double gap_max, double lo[3],
@@ -94,7 +74,7 @@ static void body_box(const rs_body *b, const rs_pose *p, double gap_max, double 
         rs_matvec3(R, v, w);
         for (int d = 0; d < 3; d++)
             w[d] += b->x[d];
-        to_reference(p, w, X);
+        rs_pose_to_local(p, w, X);
         for (int d = 0; d < 3; d++) {
             lo[d] = fmin(lo[d], X[d] - gap_max);
             hi[d] = fmax(hi[d], X[d] + gap_max);
@@ -187,7 +167,7 @@ static int region_face(const rs_surface *s, const rs_pose *p, const rs_body *b,
         return 0;
     for (int d = 0; d < 3; d++)
         foot[d] = xs[d] + depth * ns[d];
-    to_reference(p, foot, F);
+    rs_pose_to_local(p, foot, F);
     const int k = region_holds(s, c, ru, nr, F);
     if (k < 0)
         return 0;
@@ -195,7 +175,7 @@ static int region_face(const rs_surface *s, const rs_pose *p, const rs_body *b,
         double xc[3], C[3];
         for (int d = 0; d < 3; d++)
             xc[d] = b->x[d] - h * nf[d];
-        to_reference(p, xc, C);
+        rs_pose_to_local(p, xc, C);
         if (region_holds(s, c, ru, nr, C) < 0)
             return 0;
     }
@@ -213,8 +193,8 @@ static int witness_contact(const rs_surface *s, const rs_pose *p, const cand *c,
     const double nm[3] = {-cc->normal[0], -cc->normal[1], -cc->normal[2]};
     double P[3], N[3];
     int ft;
-    to_reference(p, cc->pb, P);
-    vector_to_reference(p, nm, N);
+    rs_pose_to_local(p, cc->pb, P);
+    rs_pose_unrotate(p, nm, N);
     const int f = rs_mesh_direction_owner(s, ck->t, P, N, &ft);
     if (f == RS_FEATURE_NONE)
         return 0;
@@ -272,8 +252,8 @@ int rs_body_mesh_contacts(const rs_surface *s, const rs_pose *pose, const rs_bod
         ck->region = label[k];
         ck->face = rs_mesh_triangle(s, ck->t, X, nr);
         for (int i = 0; i < 3; i++)
-            to_world(pose, X + 3 * i, ck->tri + 3 * i);
-        rs_matvec3(pose->R, nr, ck->nf);
+            rs_pose_to_global(pose, X + 3 * i, ck->tri + 3 * i);
+        rs_pose_rotate(pose, nr, ck->nf);
         if ((rc = rs_convex_triangle(b, ck->tri, gap_max, &ck->cc, err)) != RS_OK)
             goto done;
         ck->reach = ck->cc.state != RS_CONVEX_APART && ck->cc.depth >= -gap_max;
