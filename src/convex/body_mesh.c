@@ -183,13 +183,22 @@ static int region_face(const rs_surface *s, const rs_pose *p, const rs_body *b,
     return 1;
 }
 
+/* How far outside the body, relative to the overlap's depth, an overlap's witness on the
+ * mesh may lie (the pair query's rounding): it lies depth inside a face of the body
+ * pressed on an edge. */
+#define RS_BODY_HOLD_REL 0.1
+
 /* The contact of candidate k from the pair's witness on its triangle, owned by the
  * feature whose cone holds the pair's normal there, if any. */
-static int witness_contact(const rs_surface *s, const rs_pose *p, const cand *c, int nc,
-                           int k, found *g)
+static int witness_contact(const rs_surface *s, const rs_pose *p, const rs_body *b,
+                           const cand *c, int nc, int k, found *g)
 {
     const cand *ck = c + k;
     const rs_convex_contact *cc = &ck->cc;
+    /* an overlap's witness on the mesh lies in the body (the pair's way out through a far
+     * border of the triangle leaves it outside: no contact of the mesh's there) */
+    if (cc->depth > 0.0 && !rs_body_holds(b, cc->pb, RS_BODY_HOLD_REL * cc->depth))
+        return 0;
     const double nm[3] = {-cc->normal[0], -cc->normal[1], -cc->normal[2]};
     double P[3], N[3];
     int ft;
@@ -271,7 +280,7 @@ int rs_body_mesh_contacts(const rs_surface *s, const rs_pose *pose, const rs_bod
     }
     for (int k = 0; k < nt; k++) {
         found g;
-        if (c[k].reach && witness_contact(s, pose, c, nt, k, &g) && keep(&l, &g))
+        if (c[k].reach && witness_contact(s, pose, b, c, nt, k, &g) && keep(&l, &g))
             goto nomem;
     }
     if (l.n > cap) {

@@ -19,6 +19,9 @@ double rs_body_reach(const rs_body *b);
 int rs_body_point_contact(const rs_surface *s, const rs_pose *pose, const double p[3],
                           double reach, int want, rs_contacts *c, rs_error *err, int *rc);
 
+/// Does body b hold the world point p, to tol (length): is p within the rounding plus tol
+/// of its core (GJK)? 0 for a body rs_convex_pair refuses.
+int rs_body_holds(const rs_body *b, const double p[3], double tol);
 /// The checks of rs_body_surface_contacts' arguments (RS_ERR_ARG); sets *n = 0.
 int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max,
                   const rs_body_contact *out, int cap, int *n, rs_error *err);

@@ -286,6 +286,95 @@ static void test_bodies_across_the_diagonal(void)
     rs_surface_free(&s);
 }
 
+/* A box tilted on a gridded cube's top near its edge, its centre and lowest corner over
+ * the top: the top's contact at the closed-form depth, and none from the side face it
+ * reaches across (at most the top edge's, no deeper). */
+static void test_box_at_a_table_edge(void)
+{
+    rs_surface s;
+    ENSURE(cube_mesh(8, &s) == RS_OK);
+    const double hx = 0.12, hy = 0.08, hz = 0.05;
+    rs_shape bx;
+    ENSURE(rs_shape_make_box(&bx, hx, hy, hz, 0.0, NULL) == RS_OK);
+    int tried = 0;
+    for (int k = 0; k < 300; k++) {
+        double q[4], R[9], low[3] = {0, 0, 1e300};
+        unit_quat(sin(1.1 * k + 0.3), cos(2.3 * k), sin(0.37 * k + 1), cos(0.91 * k + 2),
+                  q);
+        rs_quat_matrix(q, R);
+        for (int c = 0; c < 8; c++) {
+            const double v[3] = {(c & 1) ? hx : -hx, (c & 2) ? hy : -hy,
+                                 (c & 4) ? hz : -hz};
+            double w[3];
+            rs_matvec3(R, v, w);
+            if (w[2] < low[2])
+                memcpy(low, w, sizeof low);
+        }
+        const double want = 0.0005 * (1 + k % 20);
+        const double x[3] = {0.44 + 0.06 * sin(0.7 * k), 0.3 * cos(1.3 * k),
+                             0.5 - low[2] - want};
+        if (!(x[0] < 0.5 && x[0] + low[0] < 0.5 && fabs(x[1] + low[1]) < 0.5))
+            continue; /* the centre or the lowest corner off the top */
+        tried++;
+        rs_body b;
+        rs_body_contact c[8];
+        int n = 0, top = 0;
+        ENSURE(rs_body_init(&b, &bx, 1000.0, x, q, NULL) == RS_OK);
+        ENSURE(rs_body_surface_contacts(&s, NULL, &b, 0.0, c, 8, &n, NULL) == RS_OK);
+        for (int i = 0; i < n; i++) {
+            if (RS_FEATURE_TYPE(c[i].feature) == RS_FEAT_FACE) {
+                top++;
+                ENSURE_NEAR(c[i].depth, want, 1e-9);
+                ENSURE_NEAR(c[i].normal[2], 1.0, 1e-12);
+            } else {
+                ENSURE(RS_FEATURE_TYPE(c[i].feature) == RS_FEAT_EDGE);
+                ENSURE(c[i].depth <= want + 1e-9);
+            }
+        }
+        ENSURE(top == 1);
+    }
+    ENSURE(tried >= 100);
+    rs_shape_free(&bx);
+    rs_surface_free(&s);
+}
+
+/* A box sunk halfway through a one-sided floor, in several orientations: the floor's
+ * contact at the closed-form depth (its lowest point's), none at the floor's far borders
+ * (a thin plate's way out sideways is no contact of the mesh's). */
+static void test_box_through_a_floor(void)
+{
+    rs_surface s;
+    ENSURE(floor_mesh(1, &s) == RS_OK);
+    const double hx = 0.1, hy = 0.07, hz = 0.05, r = 0.01;
+    rs_shape bx;
+    ENSURE(rs_shape_make_box(&bx, hx, hy, hz, r, NULL) == RS_OK);
+    for (int k = 0; k < 40; k++) {
+        double q[4], R[9], zlow = 1e300;
+        unit_quat(sin(1.7 * k + 0.2), cos(0.9 * k), sin(2.1 * k + 1), cos(0.5 * k + 2), q);
+        rs_quat_matrix(q, R);
+        for (int c = 0; c < 8; c++) {
+            const double v[3] = {(c & 1) ? hx : -hx, (c & 2) ? hy : -hy,
+                                 (c & 4) ? hz : -hz};
+            double w[3];
+            rs_matvec3(R, v, w);
+            zlow = fmin(zlow, w[2]);
+        }
+        const double x[3] = {-0.47 + 0.02 * sin(k), 0.26 - 0.5 * cos(k),
+                             0.01 * sin(3.0 * k)};
+        rs_body b;
+        rs_body_contact c[8];
+        int n = 0;
+        ENSURE(rs_body_init(&b, &bx, 1000.0, x, q, NULL) == RS_OK);
+        ENSURE(rs_body_surface_contacts(&s, NULL, &b, 0.01, c, 8, &n, NULL) == RS_OK);
+        ENSURE(n == 1);
+        ENSURE(RS_FEATURE_TYPE(c[0].feature) == RS_FEAT_FACE);
+        ENSURE_NEAR(c[0].depth, -(x[2] + zlow - r), 1e-9);
+        ENSURE_NEAR(c[0].normal[2], 1.0, 1e-12);
+    }
+    rs_shape_free(&bx);
+    rs_surface_free(&s);
+}
+
 /* The roof z = -|x| tan(20 deg) over y in [-1, 1]: its ridge is the y axis. */
 static int roof_mesh(double sg, rs_surface *s)
 {
@@ -524,6 +613,8 @@ int main(void)
     RS_RUN(test_sphere_on_floor);
     RS_RUN(test_sphere_on_closed_meshes);
     RS_RUN(test_bodies_across_the_diagonal);
+    RS_RUN(test_box_at_a_table_edge);
+    RS_RUN(test_box_through_a_floor);
     RS_RUN(test_box_at_ridge_and_apex);
     RS_RUN(test_ellipsoid_in_mesh_drum);
     RS_RUN(test_moved_pose);
