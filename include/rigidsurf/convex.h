@@ -213,7 +213,8 @@ typedef struct rs_body_contact {
 ///   or the pair's normal on one of its triangles is within 60 degrees of the region's):
 ///   the depth in closed form, the feature the face under the foot; else each triangle by
 ///   its pair's witness, owned by the face, edge or vertex whose Voronoi cone holds the
-///   pair's normal there (the mesh's point query's rules, ties to the face). One contact
+///   pair's normal there (the mesh's point query's rules, ties to the face; an overlap's
+///   witness must lie in the body, to a tenth of the depth). One contact
 ///   per feature and per coplanar region, the deepest (the support's first); the mesh's
 ///   sides as its sphere query takes them; t1, t2 by the FACETED convention, curvatures 0,
 ///   iterations 0.

@@ -2,10 +2,11 @@
  * a sphere given as a body against the mesh's own sphere query (a two-triangle floor, one
  * and two sides, a tessellated sphere and a tessellated cube), an ellipsoid and a rounded
  * box over the floor in several orientations and across its flat diagonal (one contact,
- * the closed-form depth), a box at a roof's ridge and a pyramid's apex (the edge and the
- * vertex, the depth from the box's corner or face), an ellipsoid in a fine mesh of a drum
- * against the analytic drum (within the sagitta), a moved pose against the mesh placed
- * there, and the capacity and refusals. */
+ * the closed-form depth), a box tilted on a table near its edge and one sunk through a
+ * one-sided floor (the face's closed form alone), a box at a roof's ridge and a pyramid's
+ * apex (the edge and the vertex, the depth from the box's corner or face), an ellipsoid
+ * in a fine mesh of a drum against the analytic drum (within the sagitta), a moved pose
+ * against the mesh placed there, and the capacity and refusals. */
 #include "rigidsurf/convex.h"
 #include "rigidsurf/motion.h"
 #include "rigidsurf/vec.h"
