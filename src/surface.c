@@ -135,7 +135,7 @@ int rs_surface_facet(const rs_surface *s, int f, const double xm[3], int nodes[4
 {
     if (!s || !s->ops || !s->ops->facet)
         return 0;
-    return s->ops->facet(s, f, xm, nodes, xyz, shape);
+    return s->ops->facet(s, f < 0 ? f : RS_FEATURE_OWNER(f), xm, nodes, xyz, shape);
 }
 
 int rs_surface_facet_size(const rs_surface *s, int *nnode)
@@ -166,14 +166,17 @@ int rs_surface_facet_index(const rs_surface *s, int f)
 {
     if (!s || !s->ops || !s->ops->facet_index)
         return -1;
-    return s->ops->facet_index(s, f);
+    return s->ops->facet_index(s, f < 0 ? f : RS_FEATURE_OWNER(f));
 }
 
 int rs_surface_adjacent(const rs_surface *s, int fa, int fb)
 {
     if (!s || !s->ops || !s->ops->adjacent)
         return 0;
-    return s->ops->adjacent(s, fa, fb);
+    /* a body's manifold point passes its history to the same point on the next feature */
+    if (fa / RS_MANIFOLD_STRIDE != fb / RS_MANIFOLD_STRIDE)
+        return 0;
+    return s->ops->adjacent(s, RS_FEATURE_OWNER(fa), RS_FEATURE_OWNER(fb));
 }
 
 void rs_surface_bounds(const rs_surface *s, double lo[3], double hi[3])

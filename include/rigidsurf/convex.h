@@ -198,16 +198,27 @@ typedef struct rs_body_contact {
     int iterations;   ///< the fixed point's iterations
 } rs_body_contact;
 
-/// The contacts of body b with an analytic surface s (SEGMENTS, CYLINDER, REVOLUTION)
-/// in the pose pose (NULL: its reference pose), one per owning feature, with a gap at
-/// most gap_max. For each feature near the body (a sphere query of the body's reach
-/// about its centre) the normal n is iterated to a fixed point: xs = the body's support
-/// along -n, n = the normal of the feature's closest point to xs, until n turns by at
-/// most 1e-13; then depth = -(xs - xm).n. A fixed point not reached in 100 iterations
-/// (a wall curved more sharply than the body where they meet) is RS_ERR_GEOMETRY naming
-/// the feature, never a contact. A MESH is refused (RS_ERR_ARG): its triangles are
-/// answered by rs_convex_triangle. out holds cap contacts, *n gets their count
-/// (RS_ERR_CAPACITY beyond).
+/// The contacts of body b with surface s in the pose pose (NULL: its reference pose), one
+/// per owning feature, with a gap at most gap_max.
+/// - An analytic surface (SEGMENTS, CYLINDER, REVOLUTION): for each feature near the body
+///   (a sphere query of the body's reach about its centre) the normal n is iterated to a
+///   fixed point: xs = the body's support along -n, n = the normal of the feature's
+///   closest point to xs, until n turns by at most 1e-13; then depth = -(xs - xm).n. A
+///   fixed point not reached in 100 iterations (a wall curved more sharply than the body
+///   where they meet) is RS_ERR_GEOMETRY naming the feature, never a contact.
+/// - A MESH: the triangles whose tree boxes meet the body's bounding box (widened by
+///   gap_max), each within gap_max of the body by rs_convex_triangle. Each coplanar region
+///   (triangles joined by flat edges) answers by the body's support along its normal
+///   where the foot of it lies on the region (and so does the foot of the body's centre,
+///   or the pair's normal on one of its triangles is within 60 degrees of the region's):
+///   the depth in closed form, the feature the face under the foot; else each triangle by
+///   its pair's witness, owned by the face, edge or vertex whose Voronoi cone holds the
+///   pair's normal there (the mesh's point query's rules, ties to the face; an overlap's
+///   witness must lie in the body, to a tenth of the depth). One contact
+///   per feature and per coplanar region, the deepest (the support's first); the mesh's
+///   sides as its sphere query takes them; t1, t2 by the FACETED convention, curvatures 0,
+///   iterations 0.
+/// out holds cap contacts, *n gets their count (RS_ERR_CAPACITY beyond).
 int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_body *b,
                              double gap_max, rs_body_contact *out, int cap, int *n,
                              rs_error *err);

@@ -121,6 +121,24 @@ static int append(rs_contacts *c, int point, double radius, int feature, const m
     return RS_OK;
 }
 
+/* Whether the contact j of a core point lies on the pair's wall: the same owning
+ * feature, or on a MESH a face of the pair's plane (a coplanar region of faces, which
+ * the pair answers as one). */
+static int same_wall(const rs_contacts *pc, int j, const rs_body_contact *o, double reach)
+{
+    if (RS_FEATURE_BASE(pc->feature[j]) == RS_FEATURE_BASE(o->feature))
+        return 1;
+    if (RS_FEATURE_TYPE(pc->feature[j]) != RS_FEAT_FACE ||
+        RS_FEATURE_TYPE(o->feature) != RS_FEAT_FACE || o->curv[0] != 0.0 ||
+        o->curv[1] != 0.0)
+        return 0;
+    const double n[3] = {pc->nrm[0][j], pc->nrm[1][j], pc->nrm[2][j]};
+    const double dx[3] = {pc->xm[0][j] - o->xm[0], pc->xm[1][j] - o->xm[1],
+                          pc->xm[2][j] - o->xm[2]};
+    return rs_dot3(n, o->normal) >= 1.0 - 1e-12 &&
+           fabs(rs_dot3(dx, o->normal)) <= 1e-12 * reach;
+}
+
 static int by_depth(const void *a, const void *b)
 {
     const double da = ((const mpoint *)a)->depth, db = ((const mpoint *)b)->depth;
@@ -148,6 +166,7 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
     const double rr = rs_shape_core_radius(b->shape), reach = rs_body_reach(b);
     rs_contacts pc;
     memset(&pc, 0, sizeof pc);
+    const int k0 = c->n;
     for (int f = 0; f < nf && rc == RS_OK; f++) {
         const rs_body_contact *o = &fc[f];
         if (o->feature >= RS_MANIFOLD_STRIDE) {
@@ -191,8 +210,7 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
             /* the core point's rounding ball, as a sphere meets the wall */
             const int j = rs_body_point_contact(s, pose, cw, rr, 2.0 * reach + gap_max,
                                                 RS_FEATURE_BASE(o->feature), &pc, err, &rc);
-            if (rc != RS_OK || j < 0 ||
-                RS_FEATURE_BASE(pc.feature[j]) != RS_FEATURE_BASE(o->feature))
+            if (rc != RS_OK || j < 0 || !same_wall(&pc, j, o, reach))
                 continue;
             const double depth = rr - pc.dist[j];
             if (!(-depth <= gap_max))
@@ -241,5 +259,19 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
             rc = append(c, point, radius, o->feature, &keep[k], err);
     }
     rs_contacts_free(&pc);
+    /* Contacts on features that fold concavely under the body (two facets of a drum)
+     * overlap one patch of it: their shares, as a sphere's of radius R (weights a^2,
+     * a = sqrt(R^2 - dist^2), docs/conventions.md, "Shares at concave folds"). Corners
+     * apart by more than their patches keep 1. */
+    const int m = c->n - k0;
+    if (rc == RS_OK && m > 1) {
+        for (int k = k0; k < c->n; k++) {
+            const double d = c->dist[k];
+            c->share[k] = d > 0.0 && d < radius ? (radius - d) * (radius + d) : 1.0;
+        }
+        rs_contacts_patch_shares(c, k0, m, radius);
+        for (int k = k0; k < c->n; k++)
+            c->shared |= c->share[k] != 1.0;
+    }
     return rc;
 }

@@ -85,21 +85,17 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
                              double gap_max, rs_body_contact *out, int cap, int *n,
                              rs_error *err)
 {
+    if (s && rs_surface_has_facets(s))
+        return rs_body_mesh_contacts(s, pose, b, gap_max, out, cap, n, err);
     return rs_body_features(s, pose, b, gap_max, 0, out, cap, n, err);
 }
 
-int rs_body_features(const rs_surface *s, const rs_pose *pose, const rs_body *b,
-                     double gap_max, int lenient, rs_body_contact *out, int cap, int *n,
-                     rs_error *err)
+int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max,
+                  const rs_body_contact *out, int cap, int *n, rs_error *err)
 {
     if (!s || !b || !b->shape || !out || !n || cap < 1)
         return rs_error_set(err, RS_ERR_ARG, "body contacts: NULL argument or cap < 1");
     *n = 0;
-    if (rs_surface_has_facets(s))
-        return rs_error_set(err, RS_ERR_ARG,
-                            "body contacts: surface '%s' is a MESH; this query answers the "
-                            "analytic kinds (a body against triangles: rs_convex_triangle)",
-                            s->name);
     if (!(gap_max >= 0.0) || !isfinite(gap_max))
         return rs_error_set(err, RS_ERR_ARG,
                             "body contacts: gap_max = %g (expected a finite number >= 0)",
@@ -108,6 +104,18 @@ int rs_body_features(const rs_surface *s, const rs_pose *pose, const rs_body *b,
         if (!(fabs(b->x[k]) <= RS_CONVEX_COORD_MAX))
             return rs_error_set(err, RS_ERR_ARG, "body contacts: body position %g",
                                 b->x[k]);
+    return RS_OK;
+}
+
+int rs_body_features(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                     double gap_max, int lenient, rs_body_contact *out, int cap, int *n,
+                     rs_error *err)
+{
+    int rc = rs_body_check(s, b, gap_max, out, cap, n, err);
+    if (rc != RS_OK)
+        return rc;
+    if (rs_surface_has_facets(s)) /* a fixed point on no MESH: nothing to settle */
+        return rs_body_mesh_contacts(s, pose, b, gap_max, out, cap, n, err);
     const double reach = rs_body_reach(b);
 
     /* The features near the body: a sphere of its reach about its centre. */
@@ -115,7 +123,7 @@ int rs_body_features(const rs_surface *s, const rs_pose *pose, const rs_body *b,
     memset(&cand, 0, sizeof cand);
     memset(&pc, 0, sizeof pc);
     const double cr[1] = {reach};
-    int rc = query_one(s, pose, b->x, cr, gap_max, &cand, err);
+    rc = query_one(s, pose, b->x, cr, gap_max, &cand, err);
     for (int k = 0; rc == RS_OK && k < cand.n; k++) {
         double nrm[3] = {cand.nrm[0][k], cand.nrm[1][k], cand.nrm[2][k]};
         int want = RS_FEATURE_BASE(cand.feature[k]), found = -1, it = 0, conv = 0;

@@ -267,3 +267,17 @@ int rs_convex_triangle(const rs_body *a, const double tri[9], double gap_max,
     }
     return pair(&ca, &cb, gap_max, out, err);
 }
+
+int rs_body_holds(const rs_body *b, const double p[3], double tol)
+{
+    rs_cvx ca, cb;
+    if (body_cvx(b, &ca, NULL) != RS_OK)
+        return 0;
+    const double tri[9] = {p[0], p[1], p[2], p[0], p[1], p[2], p[0], p[1], p[2]};
+    memset(&cb, 0, sizeof cb);
+    cb.tri = tri;
+    memcpy(cb.x, p, sizeof cb.x);
+    rs_gjk g;
+    rs_gjk_distance(&ca, &cb, ca.radius + tol, &g);
+    return !g.apart && (g.overlap || g.dist <= ca.radius + tol);
+}

@@ -20,9 +20,24 @@ int rs_body_point_contact(const rs_surface *s, const rs_pose *pose, const double
                           double r, double reach, int want, rs_contacts *c, rs_error *err,
                           int *rc);
 
-/// rs_body_surface_contacts; with lenient != 0 a fixed point that does not settle (a
-/// wall curved more sharply than the body) gives the deepest of its iterates, with
-/// iterations = -1, instead of RS_ERR_GEOMETRY.
+/// Does body b hold the world point p, to tol (length): is p within the rounding plus tol
+/// of its core (GJK)? 0 for a body rs_convex_pair refuses.
+int rs_body_holds(const rs_body *b, const double p[3], double tol);
+/// The checks of rs_body_surface_contacts' arguments (RS_ERR_ARG); sets *n = 0.
+int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max,
+                  const rs_body_contact *out, int cap, int *n, rs_error *err);
+/// rs_body_surface_contacts on a MESH (body_mesh.c): the triangles whose tree boxes meet
+/// the body's box (its body-frame bounds placed, taken to the mesh's reference
+/// configuration and widened by gap_max), each answered by the body's support along its
+/// normal where its face owns the body's deepest point, else by rs_convex_triangle and
+/// the feature that owns the pair's normal at its witness (rs_mesh_direction_owner); one
+/// contact per owning feature and per coplanar region, the deepest.
+int rs_body_mesh_contacts(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                          double gap_max, rs_body_contact *out, int cap, int *n,
+                          rs_error *err);
+/// rs_body_surface_contacts on the analytic kinds; with lenient != 0 a fixed point that
+/// does not settle (a wall curved more sharply than the body) gives the deepest of its
+/// iterates, with iterations = -1, instead of RS_ERR_GEOMETRY.
 int rs_body_features(const rs_surface *s, const rs_pose *pose, const rs_body *b,
                      double gap_max, int lenient, rs_body_contact *out, int cap, int *n,
                      rs_error *err);

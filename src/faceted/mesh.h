@@ -128,4 +128,34 @@ int rs_mesh_facet_count(const rs_surface *s);
 int rs_mesh_facet_area(const rs_surface *s, int k, double *area, double n[3]);
 int rs_mesh_facet_index(const rs_surface *s, int f);
 
+/* What a convex body's query asks of a MESH s (mesh_body.c, for src/convex/body_mesh.c),
+ * all in the reference configuration. */
+/// The triangles whose tree boxes meet the box [lo, hi]: every triangle that meets it,
+/// and a few more near it, into *ids (room for *cap, grown as needed). Returns their
+/// number, -1 when out of memory.
+int rs_mesh_box_candidates(const rs_surface *s, const double lo[3], const double hi[3],
+                           int **ids, int *cap);
+/// Triangle t's nodes (9 values) and unit normal; returns its face feature
+/// RS_FEATURE(RS_FEAT_FACE, element).
+int rs_mesh_triangle(const rs_surface *s, int t, double xyz[9], double n[3]);
+/// Does x, a point of t's plane, lie in triangle t (on the inner side of each of its
+/// edges' planes, ties included)?
+int rs_mesh_triangle_holds(const rs_surface *s, int t, const double x[3]);
+/// The feature that owns the unit direction n (from the mesh toward a body) at the point
+/// x of triangle t, by the point query's Voronoi rules at x + n, ties to the face: x
+/// within 1e-8 of t's longest edge from an edge's plane lies on that edge. x inside t, or
+/// n along t's normal, is t's face (so are a flat edge and a vertex inside a coplanar
+/// region); else a vertex at x when n is inside its cone, n.(w - v) < 0 for each
+/// neighbour w; else an edge at x when n.m <= 0 for each of its faces' in-plane normals m
+/// and n does not point beyond an end of the edge that x is at, or its face when n is
+/// that face's normal (each to 1e-12). Behind a one-sided mesh (n against the edge's or
+/// vertex's pseudo-normal), and where nothing owns n, RS_FEATURE_NONE. *tri gets the
+/// triangle of a face, -1 for an edge, a vertex or none.
+int rs_mesh_direction_owner(const rs_surface *s, int t, const double x[3],
+                            const double n[3], int *tri);
+/// The coplanar regions among triangles ids[0 .. n): label[k] is the least index in ids
+/// of the triangles joined to ids[k] through flat edges between triangles of the list.
+/// Returns 0, -1 when out of memory.
+int rs_mesh_flat_regions(const rs_surface *s, const int *ids, int n, int *label);
+
 #endif

@@ -136,7 +136,7 @@ static const char *const WALLS[2] = {
     "START, 0, 0\nLINE, 0.1, 0\nLINE, 0.1, 0.06\nLINE, 0, 0.06\n"};
 
 /* The body as a slave (rs_body_query) of one of WALLS: refused with a message, or
- * contacts whose values are all finite, normals unit, shares 1. */
+ * contacts whose values are all finite, normals unit, shares in (0, 1]. */
 static int wall_contacts(const rs_body *a, unsigned which, double gap_max)
 {
     static rs_surface walls[2];
@@ -165,8 +165,8 @@ static int wall_contacts(const rs_body *a, unsigned which, double gap_max)
                 n2 += c.nrm[d][k] * c.nrm[d][k];
                 bad |= !isfinite(c.xs[d][k]) || !isfinite(c.xm[d][k]);
             }
-            bad |= !isfinite(c.dist[k]) || !(fabs(n2 - 1.0) < 1e-9) || c.share[k] != 1.0 ||
-                   c.point[k] != 0;
+            bad |= !isfinite(c.dist[k]) || !(fabs(n2 - 1.0) < 1e-9) ||
+                   !(c.share[k] > 0.0 && c.share[k] <= 1.0) || c.point[k] != 0;
             if (bad)
                 fprintf(stderr, "fuzz_bodies: wall %u contact %d: dist %g, |n|^2 %g\n",
                         which, k, c.dist[k], n2);

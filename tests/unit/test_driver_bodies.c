@@ -11,7 +11,9 @@
  * - a rounded box at rest on its face stays at rest (no rocking);
  * - a sphere given as a body moves as the driver's sphere node;
  * - a polyhedron whose points' axes are not principal is turned into its principal axes
- *   (and bounces with the others in the energy test). */
+ *   (and bounces with the others in the energy test);
+ * - a frictionless body in a drum given analytically and as a MESH moves alike, within
+ *   the facets' angle. */
 #include "rigidsurf/driver.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
@@ -427,6 +429,82 @@ static void test_polyhedron_turned_into_its_principal_axes(void)
     rs_surface_free(&s);
 }
 
+/* One body in a drum given analytically (a REVOLUTION) and as a MESH of its display
+ * triangulation (nhoop facets around): a frictionless ellipsoid let go on the mantle
+ * slides down and up the other side, rocking. A facet's normal is off the drum's by up
+ * to pi / nhoop, so the two paths part by about that angle times the distance
+ * travelled, and less on a finer mesh. Returns the largest distance between the two
+ * paths and the length of the analytic one, or a negative number on an error. */
+static double drum_paths(int nhoop, double *length)
+{
+    static const char *DRUM = "*SURFACE, TYPE=REVOLUTION, NAME=drum\n0, 0, 0, 0, 0, 1\n"
+                              "START, 0, -0.05\nLINE, 0.1, -0.05\nLINE, 0.1, 0.05\n"
+                              "LINE, 0, 0.05\n";
+    rs_surface s[2];
+    rs_error e;
+    if (rs_surface_parse(DRUM, "drum", NULL, &s[0], &e) != RS_OK)
+        return -1.0;
+    rs_trimesh tm;
+    memset(&tm, 0, sizeof tm);
+    const rs_mesh_def def = RS_MESH_DEF_INIT;
+    if (rs_surface_triangulate(&s[0], 0.1, nhoop, &tm, &e) != RS_OK ||
+        rs_surface_make_mesh(tm.xyz, tm.nvert, tm.tri, tm.ntri, &def, &s[1], &e) != RS_OK)
+        return -1.0;
+    rs_trimesh_free(&tm);
+    rs_shape ell;
+    if (rs_shape_make_ellipsoid(&ell, 0.02, 0.012, 0.01, 0.0, NULL) != RS_OK)
+        return -1.0;
+    const double law[5] = {1e4, 1e4, 0.3, 0.3, 0.0}, g = 9.81, a = 0.8;
+    rs_driver d[2];
+    for (int k = 0; k < 2; k++) {
+        if (rs_driver_init(&d[k], &s[k], 1, &e) != RS_OK ||
+            rs_driver_set_law(&d[k], rs_law_find("hooke"), law, 5, 2, &e) != RS_OK ||
+            rs_driver_set_body(&d[k], 0, &ell, 1000.0, &e) != RS_OK)
+            return -1.0;
+        d[k].dt = 2e-5;
+        d[k].tracking = 1e-3;
+        /* its shortest axis (z) along the drum's radius, resting on the mantle */
+        const double ax[3] = {cos(a), sin(a), 0}; /* turns body z to the radius */
+        quat_axis(0.5 * RS_PI, ax, d[k].q);
+        d[k].x[0] = (0.1 - 0.01) * sin(a);
+        d[k].y[0] = -(0.1 - 0.01) * cos(a);
+        d[k].fext[1] = -g * d[k].mass[0];
+    }
+    double worst = 0.0, prev[3] = {d[0].x[0], d[0].y[0], d[0].z[0]};
+    *length = 0.0;
+    for (int step = 0; step < 15000; step++) {
+        for (int k = 0; k < 2; k++)
+            if (rs_driver_step(&d[k], &e) != RS_OK) {
+                fprintf(stderr, "drum %d: %s\n", k, e.msg);
+                return -1.0;
+            }
+        const double dx = d[1].x[0] - d[0].x[0], dy = d[1].y[0] - d[0].y[0],
+                     dz = d[1].z[0] - d[0].z[0];
+        worst = fmax(worst, sqrt(dx * dx + dy * dy + dz * dz));
+        const double cur[3] = {d[0].x[0], d[0].y[0], d[0].z[0]};
+        *length += sqrt((cur[0] - prev[0]) * (cur[0] - prev[0]) +
+                        (cur[1] - prev[1]) * (cur[1] - prev[1]) +
+                        (cur[2] - prev[2]) * (cur[2] - prev[2]));
+        memcpy(prev, cur, sizeof prev);
+    }
+    for (int k = 0; k < 2; k++) {
+        rs_driver_free(&d[k]);
+        rs_surface_free(&s[k]);
+    }
+    return worst;
+}
+
+static void test_body_in_an_analytic_and_a_meshed_drum_alike(void)
+{
+    double len1, len2;
+    const double w1 = drum_paths(256, &len1), w2 = drum_paths(1024, &len2);
+    ENSURE(w1 >= 0.0 && w2 >= 0.0);
+    ENSURE(len1 > 0.1); /* it went down and up the other side */
+    ENSURE(w1 <= RS_PI / 256 * len1);
+    ENSURE(w2 <= RS_PI / 1024 * len2);
+    ENSURE(w2 < 0.25 * w1); /* the finer mesh, the closer (measured: 6.4 times) */
+}
+
 int main(void)
 {
     RS_RUN(test_cube_dropped_flat_rests_on_four_corners_and_rebounds);
@@ -438,5 +516,6 @@ int main(void)
     RS_RUN(test_sphere_body_moves_as_the_sphere_node);
     RS_RUN(test_bad_bodies_are_refused);
     RS_RUN(test_polyhedron_turned_into_its_principal_axes);
+    RS_RUN(test_body_in_an_analytic_and_a_meshed_drum_alike);
     return rs_test_summary();
 }

@@ -1,0 +1,305 @@
+/* A convex body against a MESH (convex.h, rs_body_surface_contacts; docs/conventions.md,
+ * "Convex bodies"): the triangles near the body, each against the body by the pair query
+ * rs_convex_triangle; each coplanar region answered by the body's support along its
+ * normal where the region holds the foot of the body's deepest point, and each triangle
+ * by the Voronoi owner of its pair's witness; one contact per owning feature and one per
+ * coplanar region. The mesh is asked through mesh.h only. */
+#include "convex_internal.h"
+#include "mesh.h"
+#include "rigidsurf/vec.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A contact found on one triangle, before the merge. */
+typedef struct found {
+    rs_body_contact c;
+    int region; /* a face's coplanar region (rs_mesh_flat_regions), -1 otherwise */
+    int exact;  /* a face's contact from the body's support along the face's normal */
+} found;
+
+typedef struct found_list {
+    found *f;
+    int n, cap;
+} found_list;
+
+/* Does a take b's place: an exact face contact before a pair query's, then the deeper? */
+static int better(const found *a, const found *b)
+{
+    return a->exact != b->exact ? a->exact > b->exact : a->c.depth > b->c.depth;
+}
+
+/* Keeps g, merged with the contact of its feature or, for a face, of its coplanar
+ * region: the better of the two stays. -1 when out of memory. */
+static int keep(found_list *l, const found *g)
+{
+    for (int j = 0; j < l->n; j++) {
+        found *o = &l->f[j];
+        if (o->c.feature == g->c.feature ||
+            (g->region >= 0 && o->region >= 0 && o->region == g->region)) {
+            if (better(g, o))
+                *o = *g;
+            return 0;
+        }
+    }
+    if (l->n == l->cap) {
+        const int cap = l->cap ? 2 * l->cap : 16;
+        found *nf = realloc(l->f, (size_t)cap * sizeof *nf);
+        if (!nf)
+            return -1;
+        l->f = nf;
+        l->cap = cap;
+    }
+    l->f[l->n++] = *g;
+    return 0;
+}
+
+/* The box about the body in the reference configuration: the corners of its body-frame
+ * bounds, placed and taken back through the pose, widened by gap_max. */
+static void body_box(const rs_body *b, const rs_pose *p, double gap_max, double lo[3],
+                     double hi[3])
+{
+    double blo[3], bhi[3], R[9];
+    rs_shape_bounds(b->shape, blo, bhi);
+    rs_body_rotation(b, R);
+    for (int d = 0; d < 3; d++) {
+        lo[d] = INFINITY;
+        hi[d] = -INFINITY;
+    }
+    for (int c = 0; c < 8; c++) {
+        const double v[3] = {(c & 1) ? bhi[0] : blo[0], (c & 2) ? bhi[1] : blo[1],
+                             (c & 4) ? bhi[2] : blo[2]};
+        double w[3], X[3];
+        rs_matvec3(R, v, w);
+        for (int d = 0; d < 3; d++)
+            w[d] += b->x[d];
+        rs_pose_to_local(p, w, X);
+        for (int d = 0; d < 3; d++) {
+            lo[d] = fmin(lo[d], X[d] - gap_max);
+            hi[d] = fmax(hi[d], X[d] + gap_max);
+        }
+    }
+}
+
+static void set_contact(found *g, int feature, double depth, const double n[3],
+                        const double xm[3], const double xs[3], int region, int exact)
+{
+    memset(g, 0, sizeof *g);
+    g->c.feature = feature;
+    g->c.depth = depth;
+    memcpy(g->c.normal, n, sizeof g->c.normal);
+    memcpy(g->c.xm, xm, sizeof g->c.xm);
+    memcpy(g->c.xs, xs, sizeof g->c.xs);
+    rs_frame_faceted(n, g->c.t1, g->c.t2); /* FACETED: flat, curvatures 0 */
+    g->region = region;
+    g->exact = exact;
+}
+
+/* A candidate triangle in the world, its coplanar region and the pair query's answer. */
+typedef struct cand {
+    int t, face, region;
+    int reach; /* the body within gap_max of the triangle */
+    double tri[9], nf[3];
+    rs_convex_contact cc;
+} cand;
+
+/* A candidate's place in its region's run: sorted by region, then by candidate. */
+typedef struct member {
+    int region, k;
+} member;
+
+static int cmp_member(const void *pa, const void *pb)
+{
+    const member *a = pa, *b = pb;
+    if (a->region != b->region)
+        return (a->region > b->region) - (a->region < b->region);
+    return (a->k > b->k) - (a->k < b->k);
+}
+
+/* The cosine of the largest angle between the pair's normal on a triangle of a region
+ * and the region's normal for which the region may answer a body whose centre lies
+ * beyond it. */
+#define RS_BODY_FACE_COS 0.5
+
+/* Does a triangle of the region (candidates ru[0 .. nr)) hold the reference point X? */
+static int region_holds(const rs_surface *s, const cand *c, const member *ru, int nr,
+                        const double X[3])
+{
+    for (int i = 0; i < nr; i++)
+        if (rs_mesh_triangle_holds(s, c[ru[i].k].t, X))
+            return ru[i].k;
+    return -1;
+}
+
+/* The contact of a coplanar region (candidates ru[0 .. nr)), if any: the body's deepest
+ * point along the region's normal (on the side of the body's centre; the front of a
+ * one-sided mesh, whose faces take a body pushed through from behind as a
+ * penetration), when the foot of it lies on a triangle of the region, and so does the
+ * foot of the body's centre or the pair's normal on one of its triangles is within 60
+ * degrees of the region's (else a body beside the region, reaching across its plane
+ * beyond a convex edge, would take the plane for a face). */
+static int region_face(const rs_surface *s, const rs_pose *p, const rs_body *b,
+                       double gap_max, const cand *c, const member *ru, int nr, found *g)
+{
+    int best = -1;
+    double ba = -1.0;
+    for (int i = 0; i < nr; i++) {
+        const cand *ci = c + ru[i].k;
+        const double along = fabs(rs_dot3(ci->cc.normal, ci->nf));
+        if (ci->reach && along > ba)
+            best = ru[i].k, ba = along;
+    }
+    if (best < 0)
+        return 0;
+    const cand *cb = c + best;
+    const double *a0 = cb->tri, *nf = cb->nf;
+    const double h =
+        (b->x[0] - a0[0]) * nf[0] + (b->x[1] - a0[1]) * nf[1] + (b->x[2] - a0[2]) * nf[2];
+    const double side = s->sides != 2 || h >= 0.0 ? 1.0 : -1.0;
+    const double ns[3] = {side * nf[0], side * nf[1], side * nf[2]};
+    const double down[3] = {-ns[0], -ns[1], -ns[2]};
+    double xs[3], foot[3], F[3];
+    rs_body_support(b, down, xs);
+    const double depth =
+        (a0[0] - xs[0]) * ns[0] + (a0[1] - xs[1]) * ns[1] + (a0[2] - xs[2]) * ns[2];
+    if (!(depth >= -gap_max))
+        return 0;
+    for (int d = 0; d < 3; d++)
+        foot[d] = xs[d] + depth * ns[d];
+    rs_pose_to_local(p, foot, F);
+    const int k = region_holds(s, c, ru, nr, F);
+    if (k < 0)
+        return 0;
+    if (ba < RS_BODY_FACE_COS) {
+        double xc[3], C[3];
+        for (int d = 0; d < 3; d++)
+            xc[d] = b->x[d] - h * nf[d];
+        rs_pose_to_local(p, xc, C);
+        if (region_holds(s, c, ru, nr, C) < 0)
+            return 0;
+    }
+    set_contact(g, c[k].face, depth, ns, foot, xs, c[k].region, 1);
+    return 1;
+}
+
+/* How far outside the body, relative to the overlap's depth, an overlap's witness on the
+ * mesh may lie (the pair query's rounding): it lies depth inside a face of the body
+ * pressed on an edge. */
+#define RS_BODY_HOLD_REL 0.1
+
+/* The contact of candidate k from the pair's witness on its triangle, owned by the
+ * feature whose cone holds the pair's normal there, if any. */
+static int witness_contact(const rs_surface *s, const rs_pose *p, const rs_body *b,
+                           const cand *c, int nc, int k, found *g)
+{
+    const cand *ck = c + k;
+    const rs_convex_contact *cc = &ck->cc;
+    /* an overlap's witness on the mesh lies in the body (the pair's way out through a far
+     * border of the triangle leaves it outside: no contact of the mesh's there) */
+    if (cc->depth > 0.0 && !rs_body_holds(b, cc->pb, RS_BODY_HOLD_REL * cc->depth))
+        return 0;
+    const double nm[3] = {-cc->normal[0], -cc->normal[1], -cc->normal[2]};
+    double P[3], N[3];
+    int ft;
+    rs_pose_to_local(p, cc->pb, P);
+    rs_pose_unrotate(p, nm, N);
+    const int f = rs_mesh_direction_owner(s, ck->t, P, N, &ft);
+    if (f == RS_FEATURE_NONE)
+        return 0;
+    if (ft != ck->t) { /* an edge, a vertex, or the other face of an edge (normal nm) */
+        int region = -1;
+        for (int j = 0; ft >= 0 && j < nc; j++)
+            if (c[j].t == ft)
+                region = c[j].region;
+        set_contact(g, f, cc->depth, nm, cc->pb, cc->pa, region, 0);
+        return 1;
+    }
+    const double along = rs_dot3(nm, ck->nf);
+    if (s->sides != 2 && along < 0.0)
+        return 0; /* behind a one-sided face, along no face's normal */
+    const double sg = along < 0.0 ? -1.0 : 1.0;
+    const double n[3] = {sg * ck->nf[0], sg * ck->nf[1], sg * ck->nf[2]};
+    set_contact(g, f, cc->depth, n, cc->pb, cc->pa, ck->region, 0);
+    return 1;
+}
+
+int rs_body_mesh_contacts(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                          double gap_max, rs_body_contact *out, int cap, int *n,
+                          rs_error *err)
+{
+    int rc = rs_body_check(s, b, gap_max, out, cap, n, err);
+    if (rc != RS_OK)
+        return rc;
+    if (!s->impl)
+        return rs_error_set(err, RS_ERR_ARG, "body contacts: mesh '%s' has no data",
+                            s->name);
+    rs_pose id;
+    if (!pose) {
+        rs_pose_identity(&id);
+        pose = &id;
+    }
+    double lo[3], hi[3];
+    body_box(b, pose, gap_max, lo, hi);
+    int cap_ids = 64, *ids = malloc((size_t)cap_ids * sizeof *ids), *label = NULL;
+    cand *c = NULL;
+    member *ru = NULL;
+    found_list l = {NULL, 0, 0};
+    const int nt = ids ? rs_mesh_box_candidates(s, lo, hi, &ids, &cap_ids) : -1;
+    if (nt >= 0) {
+        const size_t m = (size_t)(nt > 0 ? nt : 1);
+        label = malloc(m * sizeof *label);
+        c = malloc(m * sizeof *c);
+        ru = malloc(m * sizeof *ru);
+    }
+    if (nt < 0 || !label || !c || !ru || rs_mesh_flat_regions(s, ids, nt, label))
+        goto nomem;
+    for (int k = 0; k < nt; k++) {
+        cand *ck = c + k;
+        double X[9], nr[3];
+        ck->t = ids[k];
+        ck->region = label[k];
+        ck->face = rs_mesh_triangle(s, ck->t, X, nr);
+        for (int i = 0; i < 3; i++)
+            rs_pose_to_global(pose, X + 3 * i, ck->tri + 3 * i);
+        rs_pose_rotate(pose, nr, ck->nf);
+        if ((rc = rs_convex_triangle(b, ck->tri, gap_max, &ck->cc, err)) != RS_OK)
+            goto done;
+        ck->reach = ck->cc.state != RS_CONVEX_APART && ck->cc.depth >= -gap_max;
+        ru[k].region = label[k];
+        ru[k].k = k;
+    }
+    /* each coplanar region by the body's support, then each triangle by its witness */
+    qsort(ru, (size_t)nt, sizeof *ru, cmp_member);
+    for (int i = 0, j; i < nt; i = j) {
+        for (j = i + 1; j < nt && ru[j].region == ru[i].region;)
+            j++;
+        found g;
+        if (region_face(s, pose, b, gap_max, c, ru + i, j - i, &g) && keep(&l, &g))
+            goto nomem;
+    }
+    for (int k = 0; k < nt; k++) {
+        found g;
+        if (c[k].reach && witness_contact(s, pose, b, c, nt, k, &g) && keep(&l, &g))
+            goto nomem;
+    }
+    if (l.n > cap) {
+        rc = rs_error_set(err, RS_ERR_CAPACITY,
+                          "body contacts: %d contacts with '%s', room for %d", l.n, s->name,
+                          cap);
+        goto done;
+    }
+    for (int k = 0; k < l.n; k++)
+        out[k] = l.f[k].c;
+    *n = l.n;
+    goto done;
+nomem:
+    rc = rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
+done:
+    free(ids);
+    free(label);
+    free(c);
+    free(ru);
+    free(l.f);
+    return rc;
+}

@@ -1,0 +1,201 @@
+/* What a convex body's query against a MESH asks of the mesh (the contact core's
+ * src/convex/body_mesh.c; docs/conventions.md, "Convex bodies"): the triangles near a box,
+ * a triangle's nodes and normal, the feature that owns a direction at a point of a
+ * triangle (the Voronoi rules of the point query, mesh_query.c) and the coplanar regions
+ * of a set of triangles. All in the reference configuration. */
+#include "mesh.h"
+#include "mesh_regions.h"
+#include "rigidsurf/vec.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A point of a triangle lies on its edge j where its side is within this fraction of the
+ * triangle's longest edge: the witness points of the pair queries carry their rounding. */
+#define RS_BODY_ON_EDGE 1e-8
+/* A direction lies in a feature's normal cone where it leaves the cone by at most this
+ * (the cosine of its angle to a bounding plane). */
+#define RS_BODY_CONE_TOL 1e-12
+
+int rs_mesh_box_candidates(const rs_surface *s, const double lo[3], const double hi[3],
+                           int **ids, int *cap)
+{
+    const rs_mesh *m = s->impl;
+    const double pad = 1e-9 * m->size;
+    const double l[3] = {lo[0] - pad, lo[1] - pad, lo[2] - pad};
+    const double h[3] = {hi[0] + pad, hi[1] + pad, hi[2] + pad};
+    int n = rs_cgal_tree_box(m->tree, l, h, *ids, *cap);
+    if (n > *cap) {
+        int *ni = realloc(*ids, (size_t)n * 2 * sizeof *ni);
+        if (!ni)
+            return -1;
+        *ids = ni;
+        *cap = 2 * n;
+        n = rs_cgal_tree_box(m->tree, l, h, *ids, *cap);
+    }
+    return n;
+}
+
+int rs_mesh_triangle(const rs_surface *s, int t, double xyz[9], double n[3])
+{
+    const rs_mesh *m = s->impl;
+    const rs_mtri *r = m->rec + t;
+    for (int i = 0; i < 3; i++)
+        memcpy(xyz + 3 * i, m->xyz + 3 * r->v[i], 3 * sizeof(double));
+    memcpy(n, r->n, 3 * sizeof(double));
+    return RS_FEATURE(RS_FEAT_FACE, r->el);
+}
+
+int rs_mesh_triangle_holds(const rs_surface *s, int t, const double x[3])
+{
+    const rs_mesh *m = s->impl;
+    return side_of(m, t, 0, x) >= 0.0 && side_of(m, t, 1, x) >= 0.0 &&
+           side_of(m, t, 2, x) >= 0.0;
+}
+
+/* Does vertex v own direction n strictly: n.(w - v) < -tol |w - v| for each neighbour w
+ * (the products of vertex_owns at v + n, away from the cone's border)? */
+static int vertex_cone(const rs_mesh *m, int v, const double n[3])
+{
+    const double *pv = m->xyz + 3 * v;
+    for (int k = m->vert_e0[v]; k < m->vert_e0[v + 1]; k++) {
+        const double *pw = m->xyz + 3 * m->vert_w[k];
+        const double u[3] = {pw[0] - pv[0], pw[1] - pv[1], pw[2] - pv[2]};
+        if (!(rs_dot3(n, u) < -RS_BODY_CONE_TOL * rs_norm3(u)))
+            return 0;
+    }
+    return 1;
+}
+
+/* Does edge e own direction n: outside each of its faces' edge planes, n.m <= tol (the
+ * tests of edge_owns at a point of the edge moved along n)? *face gets the face feature
+ * of a face whose normal n is (the cone's border: the face keeps it), else
+ * RS_FEATURE_NONE; pn the mean of its first two faces' normals, as point_hits reads it. */
+static int edge_cone(const rs_mesh *m, int e, const double n[3], int *face, int *tri,
+                     double pn[3])
+{
+    *face = RS_FEATURE_NONE;
+    pn[0] = pn[1] = pn[2] = 0.0;
+    for (int k = m->edge_f0[e]; k < m->edge_f0[e + 1]; k++) {
+        const int f = m->edge_f[k];
+        int j = 0;
+        while (m->tedge[3 * f + j] != e)
+            j++;
+        if (rs_dot3(n, m->rec[f].e[j]) > RS_BODY_CONE_TOL)
+            return 0;
+        if (*face == RS_FEATURE_NONE &&
+            fabs(rs_dot3(n, m->rec[f].n)) >= 1.0 - RS_BODY_CONE_TOL)
+            *face = RS_FEATURE(RS_FEAT_FACE, m->rec[f].el), *tri = f;
+        if (k - m->edge_f0[e] < 2)
+            for (int d = 0; d < 3; d++)
+                pn[d] += m->rec[f].n[d];
+    }
+    return 1;
+}
+
+int rs_mesh_direction_owner(const rs_surface *s, int t, const double x[3],
+                            const double n[3], int *tri)
+{
+    *tri = t;
+    const rs_mesh *m = s->impl;
+    const rs_mtri *r = m->rec + t;
+    const int face = RS_FEATURE(RS_FEAT_FACE, r->el);
+    const int one_sided = s->sides != 2;
+    double len = 0.0;
+    for (int j = 0; j < 3; j++) {
+        const double *a = m->xyz + 3 * r->v[j], *b = m->xyz + 3 * r->v[(j + 1) % 3];
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        len = fmax(len, rs_norm3(u));
+    }
+    int on[3];
+    for (int j = 0; j < 3; j++)
+        on[j] = side_of(m, t, j, x) <= RS_BODY_ON_EDGE * len;
+    /* inside t, or t's own normal on its border (flat edges and the vertices inside a
+     * coplanar region have no other) */
+    if ((!on[0] && !on[1] && !on[2]) || fabs(rs_dot3(n, r->n)) >= 1.0 - RS_BODY_CONE_TOL)
+        return face;
+    *tri = -1;
+    /* a vertex (between slots j - 1 and j) where n is inside its cone */
+    for (int j = 0; j < 3; j++) {
+        const int v = r->v[j];
+        if (!on[j] || !on[(j + 2) % 3] || !vertex_cone(m, v, n))
+            continue;
+        if (one_sided && rs_dot3(n, m->vpn + 3 * v) < 0.0)
+            return RS_FEATURE_NONE; /* behind: the faces answer */
+        return RS_FEATURE(RS_FEAT_VERTEX, v);
+    }
+    /* an edge whose cone holds n, or a face of it whose normal n is; at an end of the
+     * edge, n does not point beyond that end (the along tests of edge_owns) */
+    for (int j = 0; j < 3; j++) {
+        double pn[3];
+        int f, ft;
+        if (!on[j] || !edge_cone(m, r->edge[j], n, &f, &ft, pn))
+            continue;
+        const double *a = m->xyz + 3 * r->v[j], *b = m->xyz + 3 * r->v[(j + 1) % 3];
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const double lu = rs_norm3(u), nu = rs_dot3(n, u);
+        if ((on[(j + 2) % 3] && nu < -RS_BODY_CONE_TOL * lu) ||
+            (on[(j + 1) % 3] && nu > RS_BODY_CONE_TOL * lu))
+            continue;
+        if (f != RS_FEATURE_NONE) {
+            *tri = ft;
+            return f;
+        }
+        if (one_sided && rs_dot3(n, pn) < 0.0)
+            return RS_FEATURE_NONE;
+        return RS_FEATURE(RS_FEAT_EDGE, r->edge[j]);
+    }
+    return RS_FEATURE_NONE;
+}
+
+static int find_root(int *parent, int k)
+{
+    while (parent[k] != k) {
+        parent[k] = parent[parent[k]];
+        k = parent[k];
+    }
+    return k;
+}
+
+static int cmp_int(const void *a, const void *b)
+{
+    const int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+int rs_mesh_flat_regions(const rs_surface *s, const int *ids, int n, int *label)
+{
+    const rs_mesh *m = s->impl;
+    int *sorted = malloc((size_t)(n > 0 ? n : 1) * 2 * sizeof *sorted);
+    if (!sorted)
+        return -1;
+    int *pos = sorted + n;
+    for (int k = 0; k < n; k++)
+        sorted[k] = ids[k];
+    qsort(sorted, (size_t)n, sizeof *sorted, cmp_int);
+    /* pos[i]: the index in ids of sorted[i] */
+    for (int k = 0; k < n; k++) {
+        const int *hit = bsearch(ids + k, sorted, (size_t)n, sizeof *sorted, cmp_int);
+        pos[hit - sorted] = k;
+        label[k] = k;
+    }
+    for (int k = 0; k < n; k++) {
+        const rs_mtri *r = m->rec + ids[k];
+        for (int j = 0; j < 3; j++) {
+            if (r->kind[j] != RS_EDGE_FLAT || r->nbr[j] < 0)
+                continue;
+            const int other = r->nbr[j] / 3;
+            const int *hit = bsearch(&other, sorted, (size_t)n, sizeof *sorted, cmp_int);
+            if (!hit)
+                continue; /* not among the candidates */
+            const int a = find_root(label, k), b = find_root(label, pos[hit - sorted]);
+            if (a != b)
+                label[a > b ? a : b] = a < b ? a : b;
+        }
+    }
+    for (int k = 0; k < n; k++)
+        label[k] = find_root(label, k);
+    free(sorted);
+    return 0;
+}
