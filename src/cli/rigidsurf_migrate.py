@@ -329,9 +329,6 @@ class Migration:
             m["reasons"].append("a mesh not read from a file has no wall/rigid counterpart")
         elif not f.lower().endswith(MESH_FILE_EXT):
             m["reasons"].append("wall/rigid reads STL, OBJ, OFF or PLY meshes, not '%s'" % f)
-        if "temperature" in m["opts"] and self.heat:
-            m["reasons"].append("its temperature conducts heat under fix heat/gran; "
-                                "law hertz and hooke exchange no heat")
         return m
 
     def parse_wall(self, i, c):
@@ -385,9 +382,9 @@ class Migration:
             key = rest[k]
             if key == "temperature" and k + 1 < len(rest):
                 opts["temperature"] = [rest[k + 1]]
-                if self.heat:
-                    wall["reasons"].append("its temperature conducts heat under fix "
-                                           "heat/gran; law hertz and hooke exchange no heat")
+                k += 2
+            elif key == "store_force" and k + 1 < len(rest) and rest[k + 1] == "yes":
+                opts["store_force"] = ["yes"]
                 k += 2
             elif key == "shear" and k + 2 < len(rest):
                 vel = shear(wall.get("shape"), rest[k + 1], rest[k + 2])
@@ -525,7 +522,13 @@ class Migration:
             surf + ["law"] + wall["law"].split() + ["type", wall["type"]]
         for key, vals in wall["opts"].items():
             words += [key] + vals
+        words += self.conduction(wall["opts"])
         return lines + [wrap(words)]
+
+    def conduction(self, opts):
+        """A wall's temperature under fix heat/gran conducts heat into the particles that
+        touch it (fix_wall_gran.cpp, addHeatFlux): wall/rigid's conduction liggghts."""
+        return ["conduction", "liggghts"] if "temperature" in opts and self.heat else []
 
     def mesh_wall(self, wall, m):
         s = self.motion_state[m["id"]]
@@ -540,6 +543,10 @@ class Migration:
         words += ["law"] + wall["law"].split() + ["type", m["type"]]
         for key, vals in m["opts"].items():
             words += [key] + vals
+        words += self.conduction(m["opts"])
+        if wall["opts"].get("store_force"):
+            # wall/gran keeps one force_ID for all its meshes: each mesh's wall adds to it
+            words += ["store_force", "into", wall["id"]]
         if m["wear"] == "finnie":
             words += ["wear", "finnie"]
         if m.get("vtk"):
