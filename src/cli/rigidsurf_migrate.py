@@ -13,6 +13,9 @@ Rewrites the walls of a LIGGGHTS deck into `fix wall/rigid` (docs/migration.md):
   riggle, vibrot) and the `unfix` of it become `variable` lines that set the wall's
   rates (`v_rs_MESH_vx` ...; rigidsurf_migrate_motion.py);
 - `shear` of a primitive wall along a plane or a cylinder's axis becomes `surface_vel`;
+- a wall's `temperature` under `fix heat/gran` gets `conduction liggghts` (LIGGGHTS's wall
+  conduction), `store_force yes` becomes `store_force yes` (`store_force into ID` on the
+  walls of a wall/gran's meshes), so `f_force_ID[1-3]` read the same vector;
 - `dump mesh/gran/VTK` of one migrated mesh becomes the wall's `vtk FILE N`.
 
 Every other line is copied byte for byte, comments included. What the tool cannot
