@@ -186,10 +186,13 @@ bool FixWallRigid::shares_wallforce(const FixWallRigid *other) const
     return other != this && other->store_force_ && other->wallforce_id_ == wallforce_id_;
 }
 
-/* unfix: the stored force goes with the last fix that stores into it. */
+/* unfix: the stored force goes with the last fix that stores into it, when it comes
+ * after that fix in the fix list (as after the fix that made it): Modify::delete_fix
+ * deletes the fix at the index it had before pre_delete. */
 void FixWallRigid::pre_delete(bool unfixflag)
 {
-    if (!unfixflag || !store_force_ || modify->find_fix(wallforce_id_.c_str()) < 0)
+    if (!unfixflag || !store_force_ ||
+        modify->find_fix(wallforce_id_.c_str()) < modify->find_fix(id))
         return;
     for (int i = 0; i < modify->nfix; i++)
         if (std::strcmp(modify->fix[i]->style, "wall/rigid") == 0 &&

@@ -590,9 +590,11 @@ class Migration:
                 lines += self.mesh_wall(wall, m)
                 self.out.update(self.motion_state[mid]["lines"])
             self.out[wall["index"]] = lines
+            # last made, first unfixed: the wall that made force_ID (store_force) deletes
+            # it when it goes, after the others
             for i, c in enumerate(self.cmds):
                 if c.words[:2] == ["unfix", wall["id"]]:
-                    self.out[i] = ["unfix %s" % mid for mid in wall["meshes"]]
+                    self.out[i] = ["unfix %s" % mid for mid in reversed(wall["meshes"])]
         self.references()
 
     def dump_refs(self):

@@ -267,6 +267,7 @@ fix m2 all mesh/surface file b.stl type 2
 fix w all wall/gran model hertz tangential history mesh n_meshes 2 meshes m1 m2 store_force yes
 fix heat all heat/gran initial_temperature 300
 dump d all custom 10 d.dump id f_force_p[1] f_force_w[3] f_Temp[0]
+unfix w
 """
 rc, out, err = run(OUTS)
 flat = out.replace(" &\n    ", " ")
@@ -275,7 +276,8 @@ check("store_force and a temperature under heat/gran are translated, their refer
       flat and "fix m1 all wall/rigid surface inline mesh a.stl law hertz type 2 temperature "
       "350 conduction liggghts store_force into w" in flat and
       "fix m2 all wall/rigid surface inline mesh b.stl law hertz type 2 store_force into w"
-      in flat and OUTS.splitlines()[7] + "\n" in out and "LINE" not in err, out + err)
+      in flat and OUTS.splitlines()[7] + "\n" in out and "LINE" not in err and
+      out.endswith("unfix m2\nunfix m1\n"), out + err)
 rc, out, err = run(OUTS.replace("fix heat all heat/gran initial_temperature 300\n", ""))
 check("a temperature without fix heat/gran conducts nothing, as LIGGGHTS's",
       rc == 0 and "conduction" not in out and "temperature 400" in out, out + err)

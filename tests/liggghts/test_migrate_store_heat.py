@@ -68,7 +68,7 @@ def pair(s, tag, text, scales, more=""):
     return fb, out
 
 
-def store_deck(tag, walls, spheres, fid):
+def store_deck(tag, walls, spheres, fid, after=""):
     d = L.header(BOX, DT)
     for i, (x, v) in enumerate(spheres, 1):
         d += L.sphere(i, (x, 0.0, R + 2e-4), R, RHO, v=v, omega=(0, 30.0, -20.0))
@@ -76,7 +76,7 @@ def store_deck(tag, walls, spheres, fid):
     d += "fix integr all nve/sphere\n"
     d += L.dump_lines("d", 5, tag + "_ref.dump", L.DUMP_COLS + " f_force_%s[1] "
                       "f_force_%s[2] f_force_%s[3]" % (fid, fid, fid))
-    d += "run 2000\n"
+    d += "run 2000\n" + after
     return d
 
 
@@ -115,8 +115,11 @@ def body(s):
              "fix p2 all mesh/surface file p2.stl type 2\n"
              "fix w all wall/gran model hertz tangential history mesh n_meshes 2 meshes "
              "p1 p2 store_force yes\n")
+    # then the wall goes (its meshes' walls, the last first, and force_w with them) and
+    # the deck runs on
     text = store_deck("store_meshes", walls, [(-0.025, (0.2, 0.0, -0.4)),
-                                              (0.025, (-0.1, 0.2, -0.6))], "w")
+                                              (0.025, (-0.1, 0.2, -0.6))], "w",
+                      "undump d\nunfix w\nrun 10\n")
     fb = pair(s, "store_meshes", text, sc)[0]
     touched = [max(abs(f[i]["f_force_w[3]"]) for _, f in fb) for i in (1, 2)]
     s.ck.check("store_meshes: LIGGGHTS stored each mesh's force on its sphere",
