@@ -189,8 +189,9 @@ def follow(mg, Numbers, FLOW, fmt):
     mesh's rates (state 'lines': command index -> text), the rates set before the wall
     exists, the rotation axis, and the displacement a later rotation's origin needs."""
     num, dt, step, restart = Numbers(), None, 0.0, None
-    st = {mid: dict(active={}, wall=False, D=[0.0, 0.0, 0.0], rot=None, lin_used=False,
-                    lin_since_rot=False, assigned=set(), pre_wall=set(), lines={})
+    st = {mid: dict(active={}, wall=False, D=[0.0, 0.0, 0.0], D_rot=None, rot=None,
+                    lin_used=False, lin_since_rot=False, assigned=set(), pre_wall=set(),
+                    lines={})
           for mid in mg.meshes}
     mg.motion_state = st
     for i, c in enumerate(mg.cmds):
@@ -293,7 +294,9 @@ def move(i, c, num, s, m, restart, fmt):
 def rotation(c, num, s, m, mo, fmt):
     """The wall's one rotation: origin (in the wall's reference configuration: LIGGGHTS's
     fixed point less the translation so far) and axis, from the first rotating fix; a
-    later one must turn about the same axis, with no translation in between."""
+    later one must turn about the same axis, with no translation since the first (D_rot,
+    the translation then, which a translation made before it and still running moves
+    on)."""
     origin, axis = [num.value(x) for x in mo["origin"]], [num.value(x) for x in mo["axis"]]
     if s["rot"] is None:
         if s["lin_used"]:
@@ -306,8 +309,9 @@ def rotation(c, num, s, m, mo, fmt):
         else:
             o = mo["origin"]
         s["rot"] = (o, mo["axis"], origin, axis)
-    elif s["lin_since_rot"] or origin != s["rot"][2] or axis != s["rot"][3] \
-            or None in origin + axis:
+        s["D_rot"] = list(s["D"]) if s["D"] is not None else None
+    elif s["lin_since_rot"] or s["D"] != s["D_rot"] or origin != s["rot"][2] \
+            or axis != s["rot"][3] or None in origin + axis:
         m["reasons"].append("LINE %d turns it about another axis, or after it moved on since "
                             "its first rotation: one wall/rigid has one rotation axis fixed "
                             "in it" % c.lineno)

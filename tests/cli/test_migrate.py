@@ -404,6 +404,11 @@ CANNOT = {
      "run 10\nunfix r\n"
      "fix r2 all move/mesh mesh m vibrot origin 0 0 0 axis 1 0 0 order 1 amplitude 0.1 "
      "phase 0 period 0.2\n", "LINE 10 turns it about another axis"),
+    "a second rotation after a translation running since the first carried it on":
+    ("fix a all move/mesh mesh m linear 0 0 1\n"
+     "fix r all move/mesh mesh m rotate origin 0 0 0 axis 0 0 1 period 2\nrun 10\n"
+     "unfix r\nfix r2 all move/mesh mesh m rotate origin 0 0 0 axis 0 0 1 period 3\n",
+     "LINE 11 turns it about another axis, or after it moved on since its first rotation"),
     "the time origin in a restart file":
     ("read_restart a.restart\n"
      "fix a all move/mesh mesh m wiggle amplitude 0 0 0.1 period 0.3\n",
