@@ -45,11 +45,13 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       tracking_given_(false), area_mode_(AREA_NODE), area_const_(1.0), temp_given_(false),
       temp_wall_(0.0), dtemp_wall_(0.0), capacity_wall_(0.0), heat_wall_(0.0),
       heat_step_(0.0), fix_temp_(NULL), fix_heatflux_(NULL), fix_heatcap_(NULL),
-      vtk_every_(0), vtk_mesh_ok_(false), wear_(false), facets_(false), stress_step_(false),
-      nfacet_(0), step_checked_(false), row_(NULL), hist_(NULL), nmax_(0), rebuild_(true),
-      lookahead_(0.0), rglob_(0.0), bounds_ok_(false), list_bounds_(false), se_now_(0.0),
-      ncontact_(0), out_step_(-1), out_valid_(false), kstep_(0), run_time0_(0.0),
-      pnewdt_stop_(false), routine_step_warned_(false), behind_(0), behind_warned_(false)
+      conduction_(false), th_cond_(NULL), deltan_ratio_(NULL), store_force_(false),
+      wallforce_clear_(true), wallforce_(NULL), vtk_every_(0), vtk_mesh_ok_(false),
+      wear_(false), facets_(false), stress_step_(false), nfacet_(0), step_checked_(false),
+      row_(NULL), hist_(NULL), nmax_(0), rebuild_(true), lookahead_(0.0), rglob_(0.0),
+      bounds_ok_(false), list_bounds_(false), se_now_(0.0), ncontact_(0), out_step_(-1),
+      out_valid_(false), kstep_(0), run_time0_(0.0), pnewdt_stop_(false),
+      routine_step_warned_(false), behind_(0), behind_warned_(false)
 {
     std::memset(&surf_, 0, sizeof surf_);
     std::memset(&loaded_, 0, sizeof loaded_);
@@ -153,6 +155,52 @@ int FixWallRigid::setmask()
     return mask;
 }
 
+/* store_force: the per-atom vector LIGGGHTS's fix wall/gran registers for it
+ * (FixWallGran::post_create): a fix property/atom of ID and name force_ID (force_W with
+ * 'into W'), 3 columns, neither restarted nor communicated; made by the first fix that
+ * names it. */
+void FixWallRigid::post_create()
+{
+    if (!store_force_)
+        return;
+    if (wallforce_id_.empty())
+        wallforce_id_ = std::string("force_") + id;
+    if (modify->find_fix(wallforce_id_.c_str()) >= 0)
+        return;
+    const char *fixarg[11] = {wallforce_id_.c_str(),
+                              "all",
+                              "property/atom",
+                              wallforce_id_.c_str(),
+                              "vector",
+                              "no",
+                              "no",
+                              "no",
+                              "0.",
+                              "0.",
+                              "0."};
+    modify->add_fix(11, const_cast<char **>(fixarg));
+}
+
+bool FixWallRigid::shares_wallforce(const FixWallRigid *other) const
+{
+    return other != this && other->store_force_ && other->wallforce_id_ == wallforce_id_;
+}
+
+/* unfix: the stored force goes with the last fix that stores into it, when it comes
+ * after that fix in the fix list (as after the fix that made it): Modify::delete_fix
+ * deletes the fix at the index it had before pre_delete. */
+void FixWallRigid::pre_delete(bool unfixflag)
+{
+    if (!unfixflag || !store_force_ ||
+        modify->find_fix(wallforce_id_.c_str()) < modify->find_fix(id))
+        return;
+    for (int i = 0; i < modify->nfix; i++)
+        if (std::strcmp(modify->fix[i]->style, "wall/rigid") == 0 &&
+            shares_wallforce(static_cast<FixWallRigid *>(modify->fix[i])))
+            return;
+    modify->delete_fix(wallforce_id_.c_str());
+}
+
 int FixWallRigid::min_type()
 {
     return wall_type_;
@@ -215,6 +263,12 @@ void FixWallRigid::init()
     if (servo_.on)
         init_servo();
     init_heat();
+    init_conduction();
+    wallforce_clear_ = true;
+    for (int i = 0; store_force_ && i < modify->nfix && modify->fix[i] != this; i++)
+        if (std::strcmp(modify->fix[i]->style, "wall/rigid") == 0 &&
+            shares_wallforce(static_cast<FixWallRigid *>(modify->fix[i])))
+            wallforce_clear_ = false;
     init_predef();
     if (vtk_every_ > 0 && !vtk_mesh_ok_)
         init_vtk_mesh();
@@ -578,6 +632,7 @@ void FixWallRigid::compute(bool setup_call)
     out_valid_ = false;
     heat_step_ = 0.0;
     begin_facets();
+    begin_wallforce();
 
     /* Per-atom output: every candidate's row is written by its block each step, so only
      * the rows that may stop being candidates are zeroed here: all of them after a

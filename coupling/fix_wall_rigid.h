@@ -38,6 +38,8 @@ class FixWallRigid : public Fix
     ~FixWallRigid();
 
     int setmask();
+    void post_create();
+    void pre_delete(bool unfixflag);
     void init();
     void setup(int);
     void initial_integrate(int);
@@ -131,6 +133,7 @@ class FixWallRigid : public Fix
     }
     void write_vtk();
     void update_previous_fields();
+    void begin_wallforce();
 
     /* facets of a MESH: stress and wear (fix_wall_rigid_facets.cpp) */
     void init_facets();
@@ -261,6 +264,24 @@ class FixWallRigid : public Fix
     double heat_step_;     // heat flow into the wall this step (power), this rank
     class FixPropertyAtom *fix_temp_, *fix_heatflux_;
     class FixPropertyGlobal *fix_heatcap_;
+    /* conduction liggghts: LIGGGHTS's wall conduction (fix_wall_gran.cpp, addHeatFlux)
+     * between the wall at its temperature and each touching particle
+     * (fix_wall_rigid_heat.cpp) */
+    bool conduction_;
+    const double *th_cond_;             // thermalConductivity per atom type
+    double const *const *deltan_ratio_; // heat/gran/conduction's area correction, or NULL
+    void init_conduction();
+    void conduct(const int *idx, int ne, bool setup_call);
+
+    /* store_force yes: the wall's force on each particle this step, in the per-atom
+     * vector force_ID of a fix property/atom of that ID, as fix wall/gran keeps it;
+     * store_force into W: in force_W, shared by the wall/rigid fixes that name it (the
+     * meshes of one wall/gran); the first of them in the fix list clears it each step */
+    bool store_force_;
+    std::string wallforce_id_;
+    bool wallforce_clear_;
+    double **wallforce_; // its array this step, or NULL
+    bool shares_wallforce(const FixWallRigid *other) const;
 
     /* predefined fields */
     std::vector<std::string> predef_names_;

@@ -105,11 +105,11 @@ int FixWallRigid::integer(const char *keyword, const char *what, const char *s)
 
 bool FixWallRigid::is_keyword(const char *s) const
 {
-    static const char *const kw[] = {"surface",     "name",   "law",       "props",
-                                     "type",        "statev", "tracking",  "area",
-                                     "contacts",    "move",   "rotate",    "temperature",
-                                     "predef",      "vtk",    "curvature", "pnewdt",
-                                     "surface_vel", "wear",   "servo"};
+    static const char *const kw[] = {
+        "surface",  "name",       "law",        "props",  "type",        "statev",
+        "tracking", "area",       "contacts",   "move",   "rotate",      "temperature",
+        "predef",   "vtk",        "curvature",  "pnewdt", "surface_vel", "wear",
+        "servo",    "conduction", "store_force"};
     for (const char *k : kw)
         if (std::strcmp(s, k) == 0)
             return true;
@@ -270,6 +270,35 @@ void FixWallRigid::parse(int narg, char **arg)
                          arg[iarg + 1]);
                 iarg += 2;
             }
+        } else if (std::strcmp(kw, "conduction") == 0) {
+            need(1, "'liggghts' or 'off'");
+            if (std::strcmp(arg[iarg + 1], "liggghts") == 0)
+                conduction_ = true;
+            else if (std::strcmp(arg[iarg + 1], "off") == 0)
+                conduction_ = false;
+            else
+                fail(
+                    std::string("keyword 'conduction' expects 'liggghts' or 'off', got '") +
+                    arg[iarg + 1] + "'");
+            iarg += 2;
+        } else if (std::strcmp(kw, "store_force") == 0) {
+            need(1, "'yes', 'no' or 'into ID'");
+            wallforce_id_.clear();
+            if (std::strcmp(arg[iarg + 1], "yes") == 0) {
+                store_force_ = true;
+            } else if (std::strcmp(arg[iarg + 1], "no") == 0) {
+                store_force_ = false;
+            } else if (std::strcmp(arg[iarg + 1], "into") == 0) {
+                need(2, "'into ID': the ID W of the per-atom vector force_W");
+                store_force_ = true;
+                wallforce_id_ = std::string("force_") + arg[iarg + 2];
+                iarg++;
+            } else {
+                fail(std::string("keyword 'store_force' expects 'yes', 'no' or 'into ID', "
+                                 "got '") +
+                     arg[iarg + 1] + "'");
+            }
+            iarg += 2;
         } else if (std::strcmp(kw, "predef") == 0) {
             iarg++;
             while (iarg < narg && !is_keyword(arg[iarg])) {
@@ -310,13 +339,15 @@ void FixWallRigid::parse(int narg, char **arg)
         } else {
             fail(std::string("unknown keyword '") + kw +
                  "'; expected surface, name, law, props, type, statev, tracking, area, "
-                 "contacts, move, rotate, servo, surface_vel, temperature, predef, vtk, "
-                 "curvature, wear or pnewdt");
+                 "contacts, move, rotate, servo, surface_vel, temperature, conduction, "
+                 "predef, vtk, curvature, wear, store_force or pnewdt");
         }
     }
 
     if (!have_surface)
         fail("missing 'surface FILE' (or 'surface inline ...')");
+    if (conduction_ && !temp_given_)
+        fail("keyword 'conduction liggghts' needs the wall's 'temperature T'");
     if (!have_law)
         fail("missing 'law LAW'");
 
@@ -360,9 +391,10 @@ void FixWallRigid::parse(int narg, char **arg)
                  "does not apply");
         if (area_mode_ != AREA_NODE)
             fail("law liggghts gives a force, not a stress; 'area' does not apply");
-        if (temp_given_ || !predef_names_.empty())
+        if ((temp_given_ && !conduction_) || !predef_names_.empty())
             fail("law liggghts conducts no heat and reads no predefined fields; "
-                 "'temperature' and 'predef' apply to the interface laws");
+                 "'temperature' applies to the interface laws and to 'conduction "
+                 "liggghts', 'predef' to the interface laws");
         if (curvature_given)
             fail("keyword 'curvature' applies to law hertz only");
         nstatev_ = law_nsv;

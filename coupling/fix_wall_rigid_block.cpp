@@ -153,6 +153,8 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     rs_track_load(&tracker_, &tout_, cb_.stress, ns ? cb_.statev : NULL);
     if (lig_) {
         liggghts_block(idx, n, ne, setup_call);
+        if (conduction_)
+            conduct(idx, ne, setup_call);
         if (facets_)
             facet_pass(idx, ne, setup_call);
         if (setup_call) {
@@ -259,6 +261,8 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
             nleave_ ? scatter<2, true, false>(idx, n, ne, setup_call)
                     : scatter<2, false, false>(idx, n, ne, setup_call);
     }
+    if (conduction_)
+        conduct(idx, ne, setup_call);
     if (facets_)
         facet_pass(idx, ne, setup_call);
 
@@ -378,7 +382,7 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call)
 template <int ND, bool LEAVE, bool UNITA>
 void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
 {
-    double **f = atom->f, **torque = atom->torque;
+    double **f = atom->f, **torque = atom->torque, **wf = wallforce_;
     double origin[3];
     rs_pose_to_global(&motion_.pose, surf_.a, origin);
     const double o0 = origin[0], o1 = origin[1], o2 = origin[2];
@@ -424,6 +428,10 @@ void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
         const double Fw0 = -F0, Fw1 = -F1, Fw2 = -F2;
         double *fi = f[idx[k]], *ti = torque[idx[k]];
         fi[0] += F0, fi[1] += F1, fi[2] += F2;
+        if (wf) {
+            double *wi = wf[idx[k]];
+            wi[0] += F0, wi[1] += F1, wi[2] += F2;
+        }
         ti[0] += r1 * F2 - r2 * F1;
         ti[1] += r2 * F0 - r0 * F2;
         ti[2] += r0 * F1 - r1 * F0;

@@ -87,6 +87,9 @@ void FixWallRigid::liggghts_block(const int *idx, int n, int ne, bool setup_call
         double *fi = f[i], *ti = torque[i];
         for (int d = 0; d < 3; d++)
             fi[d] += F[d], ti[d] += T[d], f_wall_[d] -= F[d];
+        if (wallforce_)
+            for (int d = 0; d < 3; d++)
+                wallforce_[i][d] += F[d];
         const double r[3] = {bx_[k] - origin[0], by_[k] - origin[1], bz_[k] - origin[2]};
         m_wall_[0] -= r[1] * F[2] - r[2] * F[1] + T[0];
         m_wall_[1] -= r[2] * F[0] - r[0] * F[2] + T[1];

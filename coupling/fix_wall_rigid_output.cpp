@@ -7,6 +7,7 @@
 #include "comm.h"
 #include "error.h"
 #include "fix_property_atom.h"
+#include "modify.h"
 #include "update.h"
 
 #include <cerrno>
@@ -33,6 +34,25 @@ void FixWallRigid::update_previous_fields()
         for (int a = 0; a < npred; a++)
             row_[i][pred_offset() + a] = predef_fix_[a]->vector_atom[i];
     }
+}
+
+/* store_force: this step's array of the per-atom vector, zeroed for the local atoms by
+ * the first fix that stores into it; the blocks add each contact's force on its particle
+ * (as fix wall/gran does, in setup calls too). */
+void FixWallRigid::begin_wallforce()
+{
+    wallforce_ = NULL;
+    if (!store_force_)
+        return;
+    const int ifix = modify->find_fix(wallforce_id_.c_str());
+    if (ifix < 0)
+        fail("store_force: fix " + wallforce_id_ + " (the stored force) was deleted");
+    wallforce_ = static_cast<FixPropertyAtom *>(modify->fix[ifix])->array_atom;
+    if (!wallforce_clear_)
+        return;
+    const int nlocal = atom->nlocal;
+    for (int i = 0; i < nlocal; i++)
+        wallforce_[i][0] = wallforce_[i][1] = wallforce_[i][2] = 0.0;
 }
 
 /* Legacy VTK polydata of the surface in its current pose; '*' in the name becomes the

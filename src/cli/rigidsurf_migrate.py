@@ -13,6 +13,9 @@ Rewrites the walls of a LIGGGHTS deck into `fix wall/rigid` (docs/migration.md):
   riggle, vibrot) and the `unfix` of it become `variable` lines that set the wall's
   rates (`v_rs_MESH_vx` ...; rigidsurf_migrate_motion.py);
 - `shear` of a primitive wall along a plane or a cylinder's axis becomes `surface_vel`;
+- a wall's `temperature` under `fix heat/gran` gets `conduction liggghts` (LIGGGHTS's wall
+  conduction), `store_force yes` becomes `store_force yes` (`store_force into ID` on the
+  walls of a wall/gran's meshes), so `f_force_ID[1-3]` read the same vector;
 - `dump mesh/gran/VTK` of one migrated mesh becomes the wall's `vtk FILE N`.
 
 Every other line is copied byte for byte, comments included. What the tool cannot
@@ -329,9 +332,6 @@ class Migration:
             m["reasons"].append("a mesh not read from a file has no wall/rigid counterpart")
         elif not f.lower().endswith(MESH_FILE_EXT):
             m["reasons"].append("wall/rigid reads STL, OBJ, OFF or PLY meshes, not '%s'" % f)
-        if "temperature" in m["opts"] and self.heat:
-            m["reasons"].append("its temperature conducts heat under fix heat/gran; "
-                                "law hertz and hooke exchange no heat")
         return m
 
     def parse_wall(self, i, c):
@@ -385,9 +385,9 @@ class Migration:
             key = rest[k]
             if key == "temperature" and k + 1 < len(rest):
                 opts["temperature"] = [rest[k + 1]]
-                if self.heat:
-                    wall["reasons"].append("its temperature conducts heat under fix "
-                                           "heat/gran; law hertz and hooke exchange no heat")
+                k += 2
+            elif key == "store_force" and k + 1 < len(rest) and rest[k + 1] == "yes":
+                opts["store_force"] = ["yes"]
                 k += 2
             elif key == "shear" and k + 2 < len(rest):
                 vel = shear(wall.get("shape"), rest[k + 1], rest[k + 2])
@@ -525,7 +525,13 @@ class Migration:
             surf + ["law"] + wall["law"].split() + ["type", wall["type"]]
         for key, vals in wall["opts"].items():
             words += [key] + vals
+        words += self.conduction(wall["opts"])
         return lines + [wrap(words)]
+
+    def conduction(self, opts):
+        """A wall's temperature under fix heat/gran conducts heat into the particles that
+        touch it (fix_wall_gran.cpp, addHeatFlux): wall/rigid's conduction liggghts."""
+        return ["conduction", "liggghts"] if "temperature" in opts and self.heat else []
 
     def mesh_wall(self, wall, m):
         s = self.motion_state[m["id"]]
@@ -540,6 +546,10 @@ class Migration:
         words += ["law"] + wall["law"].split() + ["type", m["type"]]
         for key, vals in m["opts"].items():
             words += [key] + vals
+        words += self.conduction(m["opts"])
+        if wall["opts"].get("store_force"):
+            # wall/gran keeps one force_ID for all its meshes: each mesh's wall adds to it
+            words += ["store_force", "into", wall["id"]]
         if m["wear"] == "finnie":
             words += ["wear", "finnie"]
         if m.get("vtk"):
@@ -580,9 +590,11 @@ class Migration:
                 lines += self.mesh_wall(wall, m)
                 self.out.update(self.motion_state[mid]["lines"])
             self.out[wall["index"]] = lines
+            # last made, first unfixed: the wall that made force_ID (store_force) deletes
+            # it when it goes, after the others
             for i, c in enumerate(self.cmds):
                 if c.words[:2] == ["unfix", wall["id"]]:
-                    self.out[i] = ["unfix %s" % mid for mid in wall["meshes"]]
+                    self.out[i] = ["unfix %s" % mid for mid in reversed(wall["meshes"])]
         self.references()
 
     def dump_refs(self):

@@ -21,6 +21,13 @@ being integrated, so t = time - t0, with t0 the `time` when the move fix is made
 `variable rs_F_t0 equal $(time)` at the move fix's line), gives the same velocity and
 the same displacement every step. Translations superpose (LIGGGHTS adds each mover's
 displacement and velocity): the rate is the sum of the active fixes' rates.
+
+Several movers of one mesh act in the order they were made (FixMesh::move and ::rotate):
+each moves the mesh, then carries the reference point (a rotation's origin) of itself and
+of the movers made after it. A rotation made while translations run therefore turns
+about an origin the translations carry, which is wall/rigid's `move` + `rotate` (its
+origin moves with the translation); a translation made while a rotation runs leaves that
+rotation's origin in place in space, which wall/rigid cannot express.
 """
 import math
 import re
@@ -182,8 +189,9 @@ def follow(mg, Numbers, FLOW, fmt):
     mesh's rates (state 'lines': command index -> text), the rates set before the wall
     exists, the rotation axis, and the displacement a later rotation's origin needs."""
     num, dt, step, restart = Numbers(), None, 0.0, None
-    st = {mid: dict(active={}, wall=False, D=[0.0, 0.0, 0.0], rot=None, lin_used=False,
-                    lin_since_rot=False, assigned=set(), pre_wall=set(), lines={})
+    st = {mid: dict(active={}, wall=False, D=[0.0, 0.0, 0.0], D_rot=None, rot=None,
+                    lin_used=False, lin_since_rot=False, assigned=set(), pre_wall=set(),
+                    lines={})
           for mid in mg.meshes}
     mg.motion_state = st
     for i, c in enumerate(mg.cmds):
@@ -259,17 +267,23 @@ def move(i, c, num, s, m, restart, fmt):
                             % (c.lineno, style, restart))
     if mo["kind"] == "linear":
         if "rotate" in kinds:
-            m["reasons"].append("LINE %d moves it while another move/mesh turns it: "
-                                "wall/rigid's rotation origin moves with the wall, "
-                                "LIGGGHTS's need not" % c.lineno)
+            rid = [f for f, x in s["active"].items() if x["kind"] == "rotate"][0]
+            m["reasons"].append(
+                "LINE %d moves it while move/mesh %s turns it, and %s comes first among the "
+                "mesh's movers: LIGGGHTS then turns the mesh about %s's origin fixed in space "
+                "(a mover carries the origins of the movers made after it only), wall/rigid "
+                "about an origin that moves with the wall's translation" % (
+                    c.lineno, rid, rid, rid))
         s["lin_used"] = True
         if s["rot"] is not None:
             s["lin_since_rot"] = True
     else:
-        if kinds:
-            m["reasons"].append("LINE %d turns it while another move/mesh moves or turns it: "
-                                "one wall/rigid has one rotation, about an origin that moves "
-                                "with the wall" % c.lineno)
+        if "rotate" in kinds:
+            m["reasons"].append("LINE %d turns it while another move/mesh turns it: one "
+                                "wall/rigid has one rotation" % c.lineno)
+        # a rotation made while translations run: they come first among the mesh's movers
+        # and carry its origin (FixMesh::move), as wall/rigid's translation carries the
+        # rotation's origin
         rotation(c, num, s, m, mo, fmt)
     s["active"][fid] = mo
     pre = ["variable rs_%s_t0 equal $(time)" % fid] if mo["t0"] else []
@@ -280,7 +294,9 @@ def move(i, c, num, s, m, restart, fmt):
 def rotation(c, num, s, m, mo, fmt):
     """The wall's one rotation: origin (in the wall's reference configuration: LIGGGHTS's
     fixed point less the translation so far) and axis, from the first rotating fix; a
-    later one must turn about the same axis, with no translation in between."""
+    later one must turn about the same axis, with no translation since the first (D_rot,
+    the translation then, which a translation made before it and still running moves
+    on)."""
     origin, axis = [num.value(x) for x in mo["origin"]], [num.value(x) for x in mo["axis"]]
     if s["rot"] is None:
         if s["lin_used"]:
@@ -293,8 +309,9 @@ def rotation(c, num, s, m, mo, fmt):
         else:
             o = mo["origin"]
         s["rot"] = (o, mo["axis"], origin, axis)
-    elif s["lin_since_rot"] or origin != s["rot"][2] or axis != s["rot"][3] \
-            or None in origin + axis:
+        s["D_rot"] = list(s["D"]) if s["D"] is not None else None
+    elif s["lin_since_rot"] or s["D"] != s["D_rot"] or origin != s["rot"][2] \
+            or axis != s["rot"][3] or None in origin + axis:
         m["reasons"].append("LINE %d turns it about another axis, or after it moved on since "
                             "its first rotation: one wall/rigid has one rotation axis fixed "
                             "in it" % c.lineno)

@@ -256,6 +256,32 @@ check("a line it cannot read is kept and reported", rc == 3 and out == "fix a al
 rc, out, err = run("")
 check("an empty deck: exit 0, nothing out", rc == 0 and out == "", err)
 
+# store_force yes: the same per-atom vector force_ID (wall/rigid's store_force, for the
+# meshes of one wall/gran each adding into it); a wall's temperature under fix heat/gran:
+# LIGGGHTS's conduction (conduction liggghts)
+OUTS = """region reg block 0 1 0 1 0 1 units box
+create_box 2 reg
+fix p all wall/gran model hertz tangential history primitive type 2 zplane 0 store_force yes temperature 400
+fix m1 all mesh/surface file a.stl type 2 temperature 350
+fix m2 all mesh/surface file b.stl type 2
+fix w all wall/gran model hertz tangential history mesh n_meshes 2 meshes m1 m2 store_force yes
+fix heat all heat/gran initial_temperature 300
+dump d all custom 10 d.dump id f_force_p[1] f_force_w[3] f_Temp[0]
+unfix w
+"""
+rc, out, err = run(OUTS)
+flat = out.replace(" &\n    ", " ")
+check("store_force and a temperature under heat/gran are translated, their references kept",
+      rc == 0 and "law hertz type 2 store_force yes temperature 400 conduction liggghts" in
+      flat and "fix m1 all wall/rigid surface inline mesh a.stl law hertz type 2 temperature "
+      "350 conduction liggghts store_force into w" in flat and
+      "fix m2 all wall/rigid surface inline mesh b.stl law hertz type 2 store_force into w"
+      in flat and OUTS.splitlines()[7] + "\n" in out and "LINE" not in err and
+      out.endswith("unfix m2\nunfix m1\n"), out + err)
+rc, out, err = run(OUTS.replace("fix heat all heat/gran initial_temperature 300\n", ""))
+check("a temperature without fix heat/gran conducts nothing, as LIGGGHTS's",
+      rc == 0 and "conduction" not in out and "temperature 400" in out, out + err)
+
 # ---- oscillating move/mesh: the rates against LIGGGHTS's mesh movers ---------------------
 # LIGGGHTS's mesh velocities (src/mesh_mover_linear.cpp, mesh_mover_rotation.cpp) at
 # dTAbs, the time since the move fix was made; a rotation's in rad/time about the unit
@@ -364,19 +390,25 @@ check("riggle and vibrot turn the wall about LIGGGHTS's fixed point less the tra
 
 # what one wall/rigid cannot do: said with the line, the wall kept
 CANNOT = {
-    "a rotation while a translation runs":
-    ("fix a all move/mesh mesh m wiggle amplitude 0 0 0.1 period 0.3\n"
-     "fix r all move/mesh mesh m riggle origin 0 0 0 axis 0 0 1 period 0.2 amplitude 5\n",
-     "LINE 8 turns it while another move/mesh moves or turns it"),
-    "a translation while a rotation runs":
+    "two rotations at once":
+    ("fix r all move/mesh mesh m riggle origin 0 0 0 axis 0 0 1 period 0.2 amplitude 5\n"
+     "fix r2 all move/mesh mesh m rotate origin 0 0 0 axis 0 0 1 period 2\n",
+     "LINE 8 turns it while another move/mesh turns it: one wall/rigid has one rotation"),
+    "a translation made while a rotation runs (its origin stays in space)":
     ("fix r all move/mesh mesh m riggle origin 0 0 0 axis 0 0 1 period 0.2 amplitude 5\n"
      "fix a all move/mesh mesh m linear 0 0 1\n",
-     "LINE 8 moves it while another move/mesh turns it"),
+     "LINE 8 moves it while move/mesh r turns it, and r comes first among the mesh's "
+     "movers: LIGGGHTS then turns the mesh about r's origin fixed in space"),
     "two rotation axes":
     ("fix r all move/mesh mesh m riggle origin 0 0 0 axis 0 0 1 period 0.2 amplitude 5\n"
      "run 10\nunfix r\n"
      "fix r2 all move/mesh mesh m vibrot origin 0 0 0 axis 1 0 0 order 1 amplitude 0.1 "
      "phase 0 period 0.2\n", "LINE 10 turns it about another axis"),
+    "a second rotation after a translation running since the first carried it on":
+    ("fix a all move/mesh mesh m linear 0 0 1\n"
+     "fix r all move/mesh mesh m rotate origin 0 0 0 axis 0 0 1 period 2\nrun 10\n"
+     "unfix r\nfix r2 all move/mesh mesh m rotate origin 0 0 0 axis 0 0 1 period 3\n",
+     "LINE 11 turns it about another axis, or after it moved on since its first rotation"),
     "the time origin in a restart file":
     ("read_restart a.restart\n"
      "fix a all move/mesh mesh m wiggle amplitude 0 0 0.1 period 0.3\n",
@@ -391,6 +423,20 @@ for name, (tail, want) in CANNOT.items():
     rc, out, err = run(deck)
     check("reported: " + name, rc == 3 and "LINE 5: fix w: mesh m (LINE 4): " + want in err
           and "LINE 5: fix w: the wall is kept as LIGGGHTS's" in err and out == deck, err)
+
+# a rotation made while a translation runs turns about an origin the translation carries
+# (LIGGGHTS's FixMesh::move carries the movers made after the caller): wall/rigid's move +
+# rotate, the origin LIGGGHTS's fixed point less the translation before it
+deck = head + ("fix a all move/mesh mesh m linear 0.5 0 0\nrun 100\n"
+               "fix r all move/mesh mesh m rotate origin 0.1 0.2 0.3 axis 0 1 0 period 2\n"
+               "run 10\n")
+rc, out, err = run(deck)
+flat = out.replace(" &\n    ", " ")
+check("a rotation made while a translation runs: move linear and rotate about the origin "
+      "less the translation so far",
+      rc == 0 and "move linear v_rs_m_vx v_rs_m_vy v_rs_m_vz rotate origin 0.095 0.2 0.3 "
+      "axis 0 1 0 omega v_rs_m_om" in flat and "variable rs_m_vx equal 0.5" in flat and
+      "variable rs_m_om equal 2*PI/(2)" in flat, out + err)
 
 # wall/gran shear of primitive walls: in the tangent plane it is surface_vel
 SHEAR = {"zplane 0 shear x 0.5": "surface_vel 0.5 0 0",
@@ -421,6 +467,14 @@ if check("docs/migration.md shows the tool's output for a deck", m is not None) 
                                         p.stdout.splitlines(True), name, name + ".rigid", n=0))
     check("the doc's shown output equals the tool's", m.group(2) == p.stderr + diff,
           "\n--- tool\n%s%s" % (p.stderr, diff))
+# each migrate-example of the page: the second block is the tool's output for the first
+examples = re.findall(r"<!-- migrate-example .*?-->\n```\n(.*?)```\n```\n(.*?)```\n", doc,
+                      re.S)
+check("docs/migration.md shows examples of the tool's output", len(examples) > 0)
+for deck, want in examples:
+    rc, out, err = run(deck)
+    check("the doc's example is the tool's output (%s)" % deck.splitlines()[2][:40],
+          rc == 0 and out == want, "\n--- tool\n%s%s" % (out, err))
 p = subprocess.run([EXE], capture_output=True, text=True)
 check("no argument: usage, exit 2", p.returncode == 2 and "usage" in p.stderr, p.stderr)
 

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The oscillating `fix move/mesh` styles (wiggle, viblin, riggle, vibrot), superposed
-translations and `wall/gran ... shear`, run by stock LIGGGHTS as written and by
-liggghts-rigidsurf as rigidsurf-migrate rewrites them.
+translations, a rotation superposed on a translation and `wall/gran ... shear`, run by
+stock LIGGGHTS as written and by liggghts-rigidsurf as rigidsurf-migrate rewrites them.
 
 Each deck: an STL plate (the square |x|, |y| <= 0.1 at z = 0, two triangles, wall type
 2), two spheres of radius 5 mm set on it, gravity -z, law hertz. The spheres settle for
@@ -28,7 +28,8 @@ model's 1e-9 relative: TOL = 1e-8 relative (positions against R, velocities agai
 1 m/s, spins against 1/R) leaves a factor 10 over the mesh contact's agreement, and is
 1e5 times smaller than the control's disagreement.
 
-On a turning plate (riggle, vibrot) that holds for the motion, checked without friction
+On a turning plate (riggle, vibrot, and a rotation made while a translation runs,
+`linear_rotate`, whose origin the translation carries) that holds for the motion, checked without friction
 (`_mu0`: the normal contact alone, no tangential history). With friction the contact
 models differ on a turning wall, apart from the motion: wall/rigid carries a contact's
 shear history with the wall's frame where LIGGGHTS projects it onto the new tangent
@@ -53,7 +54,7 @@ SETTLE, MOVE, EVERY = 2000, 10000, 100
 TOL = 1e-8
 # The turning plates (riggle, vibrot) run twice: without friction to TOL, with friction
 # (mu 0.5) to TOL_TURNING, the contact model's difference on a turning wall.
-TURNING = ("riggle", "vibrot")
+TURNING = ("riggle", "vibrot", "linear_rotate")
 TOL_TURNING = 1e-3
 SCALES = {"x": R, "y": R, "z": R, "vx": 1.0, "vy": 1.0, "vz": 1.0,
           "omegax": 1.0 / R, "omegay": 1.0 / R, "omegaz": 1.0 / R}
@@ -73,6 +74,11 @@ CASES = {
     "superposed": (["fix mv1 all move/mesh mesh plate linear 0.02 0 0",
                     "fix mv2 all move/mesh mesh plate wiggle amplitude 0 0 3e-4 period 0.05"],
                    3e-4),
+    # a rotation made while a translation runs turns about an origin the translation
+    # carries: the plate tilts about the line through (0.01 + 0.02 t, *, 0) along y
+    "linear_rotate": (["fix mv1 all move/mesh mesh plate linear 0.02 0 0",
+                       "fix mv2 all move/mesh mesh plate rotate origin 0.01 0 0 axis 0 1 0 "
+                       "period 20"], 1e-3),
 }
 
 
