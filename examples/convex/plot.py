@@ -1,7 +1,9 @@
-"""Plots the bodies of examples/convex (bodies.csv): the height of each body's centre
-(y, gravity along -y) and the angle of its body z axis from the drum's axis against
-time, into convex.png in the same folder."""
+"""Plots the bodies of examples/convex: in the drum (bodies.csv) the height of each
+body's centre (y, gravity along -y) and the angle of its body z axis from the drum's
+axis against time, into convex.png; down the chute (chute.csv) each body's distance
+against time with the closed forms, into chute.png."""
 import csv
+import math
 import sys
 
 import matplotlib
@@ -26,3 +28,21 @@ ax2.set_xlabel("time (s)")
 fig.tight_layout()
 fig.savefig(f"{out}/convex.png", dpi=100)
 print(f"{out}/convex.png")
+
+with open(f"{out}/chute.csv", newline="") as f:
+    rows = list(csv.DictReader(f))
+t = [float(r["t"]) for r in rows]
+g, th, mu = 9.81, math.radians(30.0), 0.3
+fig, ax = plt.subplots(figsize=(8, 4))
+for name in ("tablet", "die", "capsule"):
+    ax.plot(t, [1000 * float(r[name]) for r in rows], label=name)
+a = g * (math.sin(th) - mu * math.cos(th))
+s0 = float(rows[0]["tablet"])
+ax.plot(t, [1000 * (s0 + 0.5 * a * x * x) for x in t], "k:", label="g (sin - mu cos) t^2 / 2")
+ax.set_xlabel("time (s)")
+ax.set_ylabel("distance down the slope (mm)")
+ax.set_title("down a faceted chute at 30 degrees, friction 0.3")
+ax.legend()
+fig.tight_layout()
+fig.savefig(f"{out}/chute.png", dpi=100)
+print(f"{out}/chute.png")
