@@ -3,11 +3,13 @@
  *   bench_convex [--bodies N] [--reps R]
  *
  * N bodies of each shape (about 1 cm across, random orientations) are pressed 0.1 mm
- * into the floor z = 0, given two ways: a CYLINDER plane (rs_body_surface_contacts, the
- * fixed point through the kind's queries) and one large triangle (rs_convex_triangle:
- * GJK, libccd's MPR and its refinement). The reference is the sphere's own path: the
- * same N spheres in one rs_surface_query block. Reported: ns per contact (median of the
- * repetitions, thread CPU time) and the ratio to the sphere query. */
+ * into the floor z = 0, given three ways: a CYLINDER plane and a MESH of two triangles
+ * through rs_body_query (a body as a slave: its manifold, what the driver asks), and
+ * one large triangle through rs_convex_triangle alone (GJK, libccd's MPR and its
+ * refinement). The reference is the sphere's own path: the same N spheres in one
+ * rs_surface_query block. Reported: ns per contact (median of the repetitions, thread
+ * CPU time), the ratio to the sphere query, the contacts per body, and on the MESH the
+ * calls of libccd's MPR and of our GJK per contact (the link wraps both and counts). */
 #define _POSIX_C_SOURCE 200809L
 #include "rigidsurf/convex.h"
 #include "rigidsurf/vec.h"
@@ -19,6 +21,29 @@
 #include <string.h>
 
 #include "bench_rng.h"
+#include "gjk.h"
+
+#include <ccd/ccd.h>
+
+/* The calls of libccd's MPR and of rs_gjk_distance, counted (-Wl,--wrap). */
+static long mpr_calls, gjk_calls;
+int __real_ccdMPRPenetration(const void *o1, const void *o2, const ccd_t *ccd,
+                             ccd_real_t *depth, ccd_vec3_t *dir, ccd_vec3_t *pos);
+int __wrap_ccdMPRPenetration(const void *o1, const void *o2, const ccd_t *ccd,
+                             ccd_real_t *depth, ccd_vec3_t *dir, ccd_vec3_t *pos);
+int __wrap_ccdMPRPenetration(const void *o1, const void *o2, const ccd_t *ccd,
+                             ccd_real_t *depth, ccd_vec3_t *dir, ccd_vec3_t *pos)
+{
+    mpr_calls++;
+    return __real_ccdMPRPenetration(o1, o2, ccd, depth, dir, pos);
+}
+void __real_rs_gjk_distance(const rs_cvx *a, const rs_cvx *b, double stop, rs_gjk *res);
+void __wrap_rs_gjk_distance(const rs_cvx *a, const rs_cvx *b, double stop, rs_gjk *res);
+void __wrap_rs_gjk_distance(const rs_cvx *a, const rs_cvx *b, double stop, rs_gjk *res)
+{
+    gjk_calls++;
+    __real_rs_gjk_distance(a, b, stop, res);
+}
 
 static const char *PLANE = "*SURFACE, TYPE=CYLINDER, NAME=floor\n"
                            "0, 0, 0, 1, 0, 0\n0, -1, 0\nSTART, -10, 0\nLINE, 10, 0\n";
@@ -112,9 +137,20 @@ int main(int argc, char **argv)
     const double sphere_ns = 1e9 * rs_bench_median(t, reps);
     printf("sphere query (rs_surface_query, a block of %d): %.1f ns per contact\n", n,
            sphere_ns);
-    printf("%-14s %14s %8s %14s %8s\n", "shape", "plane ns", "ratio", "triangle ns",
-           "ratio");
+    const double fxyz[12] = {-10, -10, 0, 10, -10, 0, 10, 10, 0, -10, 10, 0};
+    const int ftri[6] = {0, 1, 2, 0, 2, 3};
+    const rs_mesh_def def = RS_MESH_DEF_INIT;
+    rs_surface floor_mesh;
+    if (rs_surface_make_mesh(fxyz, 4, ftri, 2, &def, &floor_mesh, &e) != RS_OK) {
+        fprintf(stderr, "bench_convex: %s\n", e.msg);
+        return 1;
+    }
+    printf("%-14s %9s %6s %6s %9s %6s %6s %6s %6s %9s %6s\n", "shape", "plane ns", "ratio",
+           "c/body", "mesh ns", "ratio", "c/body", "MPR/c", "GJK/c", "tri ns", "ratio");
 
+    rs_contacts bq;
+    memset(&bq, 0, sizeof bq);
+    bq.witness = 1;
     for (int s = 0; s < 8; s++) {
         rs_shape sh;
         const char *name;
@@ -133,19 +169,19 @@ int main(int argc, char **argv)
             rs_body_support(&b[i], down, low);
             b[i].x[2] = -low[2] - 1e-4;
         }
-        double med[2];
-        long found[2] = {0, 0};
-        for (int way = 0; way < 2; way++) {
+        double med[3];
+        long found[3] = {0, 0, 0}, mpr = 0, gjk = 0;
+        for (int way = 0; way < 3; way++) {
             for (int k = 0; k < reps; k++) {
                 long m = 0;
+                mpr_calls = gjk_calls = 0;
                 const double t0 = rs_bench_thread_now();
                 for (int i = 0; i < n; i++) {
-                    if (way == 0) {
-                        rs_body_contact bc[4];
-                        int nb = 0;
-                        rs_body_surface_contacts(&plane, NULL, &b[i], 0.0, bc, 4, &nb,
-                                                 NULL);
-                        m += nb;
+                    if (way < 2) {
+                        bq.n = 0;
+                        rs_body_query(way ? &floor_mesh : &plane, NULL, &b[i], 0, 0.005, 0.0,
+                                      &bq, NULL);
+                        m += bq.n;
                     } else {
                         rs_convex_contact cc;
                         rs_convex_triangle(&b[i], tri, 0.0, &cc, NULL);
@@ -154,15 +190,21 @@ int main(int argc, char **argv)
                 }
                 t[k] = (rs_bench_thread_now() - t0) / (double)(m ? m : 1);
                 found[way] = m;
+                if (way == 1)
+                    mpr = mpr_calls, gjk = gjk_calls;
             }
             med[way] = 1e9 * rs_bench_median(t, reps);
         }
-        printf("%-14s %11.1f %s %8.1f %11.1f %s %8.1f\n", name, med[0],
-               found[0] == n ? "   " : "(!)", med[0] / sphere_ns, med[1],
-               found[1] == n ? "   " : "(!)", med[1] / sphere_ns);
+        const double cm = found[1] ? (double)found[1] : 1.0;
+        printf("%-14s %9.1f %6.1f %6.2f %9.1f %6.1f %6.2f %6.2f %6.2f %9.1f %6.1f%s\n", name,
+               med[0], med[0] / sphere_ns, (double)found[0] / n, med[1], med[1] / sphere_ns,
+               (double)found[1] / n, mpr / cm, gjk / cm, med[2], med[2] / sphere_ns,
+               found[2] == n ? "" : " (!)");
         rs_shape_free(&sh);
     }
-    printf("(!): not every body found its one contact\n");
+    rs_contacts_free(&bq);
+    rs_surface_free(&floor_mesh);
+    printf("c/body: contacts a body (its manifold); (!): not every body met the triangle\n");
     rs_contacts_free(&c);
     rs_surface_free(&plane);
     free(t), free(b), free(x), free(y), free(z), free(r);

@@ -166,7 +166,7 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
     const double rr = rs_shape_core_radius(b->shape), reach = rs_body_reach(b);
     rs_contacts pc;
     memset(&pc, 0, sizeof pc);
-    const int k0 = c->n;
+    const int k0 = c->n, mesh = rs_surface_has_facets(s);
     for (int f = 0; f < nf && rc == RS_OK; f++) {
         const rs_body_contact *o = &fc[f];
         if (o->feature >= RS_MANIFOLD_STRIDE) {
@@ -207,12 +207,19 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
             const double h = rs_dot3(o->normal, cw) - rr - rs_dot3(o->normal, o->xs);
             if (h > o->depth + gap_max + reach)
                 continue; /* too high above the deepest point to reach the wall */
-            /* the core point's rounding ball, as a sphere meets the wall */
-            const int j = rs_body_point_contact(s, pose, cw, rr, 2.0 * reach + gap_max,
-                                                RS_FEATURE_BASE(o->feature), &pc, err, &rc);
+            /* the core point's rounding ball, as a sphere meets the wall; on a MESH, whose
+             * two sides answer a point by the side it is on, the ball grown by lift
+             * about its point moved as far out along the pair's normal, so that its
+             * centre is on the body's side (the same depth on the facets' planes) */
+            const double lift = mesh ? fmax(o->depth, 0.0) + 1e-9 * reach : 0.0;
+            const double cl[3] = {cw[0] + lift * o->normal[0], cw[1] + lift * o->normal[1],
+                                  cw[2] + lift * o->normal[2]};
+            const int j =
+                rs_body_point_contact(s, pose, cl, rr + lift, 2.0 * reach + gap_max,
+                                      RS_FEATURE_BASE(o->feature), &pc, err, &rc);
             if (rc != RS_OK || j < 0 || !same_wall(&pc, j, o, reach))
                 continue;
-            const double depth = rr - pc.dist[j];
+            const double depth = rr + lift - pc.dist[j];
             if (!(-depth <= gap_max))
                 continue;
             if (depth >= o->depth - 1e-12 * reach)
