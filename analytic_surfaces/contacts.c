@@ -45,7 +45,8 @@ int rs_contacts_reserve(rs_contacts *c, int cap, rs_error *err)
     free(c->feature);
     c->point = np;
     c->feature = nf;
-    for (int i = 0; i < nd_used; i++) {
+    for (int i = 0; i < ND; i++) { /* xs of a list without witness points: dropped, so
+                                    * that xs is either absent or as long as the rest */
         free(*dv[i]);
         *dv[i] = nd_[i];
     }

@@ -224,7 +224,7 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
                              rs_error *err);
 
 /// Most owning features of one body that rs_body_query answers.
-#define RS_BODY_FEATURES_MAX 16
+#define RS_BODY_FEATURES_MAX 32
 /// Most points of one body's manifold on one feature.
 #define RS_MANIFOLD_MAX 4
 /// The ids of a feature's manifold points: 0 for the body's deepest point, 1 .. 30 for

@@ -274,7 +274,9 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
     if (rc == RS_OK && m > 1) {
         for (int k = k0; k < c->n; k++) {
             const double d = c->dist[k];
-            c->share[k] = d > 0.0 && d < radius ? (radius - d) * (radius + d) : 1.0;
+            c->share[k] = k - k0 < RS_SHARE_MAX && d > 0.0 && d < radius
+                              ? (radius - d) * (radius + d)
+                              : 1.0; /* beyond RS_SHARE_MAX: whole, as a sphere's */
         }
         rs_contacts_patch_shares(c, k0, m, radius);
         for (int k = k0; k < c->n; k++)

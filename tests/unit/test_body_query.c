@@ -290,6 +290,26 @@ static void test_a_block_of_spheres_and_bodies_is_one_query(void)
     rs_surface_free(&s);
 }
 
+/* A list that keeps witness points and then, grown without them, keeps them again has
+ * them as long as its other arrays (the sanitizer build checks the writes). */
+static void test_witness_points_follow_the_list(void)
+{
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    c.witness = 1;
+    ENSURE(rs_contacts_reserve(&c, 4, NULL) == RS_OK);
+    ENSURE(c.xs[0] != NULL);
+    c.witness = 0;
+    ENSURE(rs_contacts_reserve(&c, 100, NULL) == RS_OK);
+    ENSURE(c.xs[0] == NULL);
+    c.witness = 1;
+    ENSURE(rs_contacts_reserve(&c, 100, NULL) == RS_OK);
+    ENSURE(c.xs[0] != NULL && c.cap >= 100);
+    for (int d = 0; d < 3; d++)
+        c.xs[d][c.cap - 1] = 1.0;
+    rs_contacts_free(&c);
+}
+
 static void test_refusals(void)
 {
     rs_surface s;
@@ -318,6 +338,7 @@ int main(void)
     RS_RUN(test_capsule_in_a_fillet_of_its_own_radius_rests_on_its_ends);
     RS_RUN(test_fine_polyhedron_agrees_with_its_sphere_within_the_sagitta);
     RS_RUN(test_a_block_of_spheres_and_bodies_is_one_query);
+    RS_RUN(test_witness_points_follow_the_list);
     RS_RUN(test_refusals);
     return rs_test_summary();
 }
