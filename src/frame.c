@@ -48,6 +48,8 @@ RS_INLINE void faceted_block(int n, const double *restrict n0, const double *res
 RS_MULTIVERSION
 void rs_frame_orient(rs_frame_convention conv, rs_contacts *c, int k0, int k1)
 {
+    if (k1 <= k0) /* nothing to turn; a list never grown has no arrays */
+        return;
     switch (conv) {
     case RS_FRAME_TRAVEL: /* the principal frame is the contact frame */
         break;
