@@ -29,7 +29,7 @@ static double line_distance(const double y0[3], const double u[3], const double 
  * radius of the disc where the sphere cuts its tangent plane) times the product over those
  * lines of min(1, s / kappa), s the distance from its foot to L; rs_contacts_patch_shares
  * makes the weights shares. */
-static void group_shares(rs_contacts *c, int a, int m, const double P[3], double R)
+static void group_shares(rs_contacts *c, int a, int m, const double *P, double R)
 {
     double v[RS_SHARE_MAX], rad[RS_SHARE_MAX];
     int nfront = 0;
@@ -67,7 +67,13 @@ static void group_shares(rs_contacts *c, int a, int m, const double P[3], double
             rs_cross3(ni, u, mi);
             const double y0[3] = {xi[0] + si * mi[0], xi[1] + si * mi[1],
                                   xi[2] + si * mi[2]};
-            const double dl = line_distance(y0, u, P), k2 = (R - dl) * (R + dl);
+            /* a body's centre for the pair: the midpoint of the centres of the spheres of
+             * radius R on its two witness points (a sphere's own centre for a sphere) */
+            double Pb[3];
+            for (int d = 0; P == NULL && d < 3; d++)
+                Pb[d] = 0.5 *
+                        (xi[d] + c->dist[ci] * ni[d] + c->xm[d][cj] + c->dist[cj] * nj[d]);
+            const double dl = line_distance(y0, u, P ? P : Pb), k2 = (R - dl) * (R + dl);
             if (!(k2 > 0.0))
                 continue; /* the sphere does not reach the fold line */
             const double kappa = sqrt(k2);
@@ -112,6 +118,19 @@ void rs_contacts_fold_shares(const rs_query *q, rs_contacts *c, int k0)
                 c->shared |= sh[k] != 1.0;
         }
         a = b;
+    }
+}
+
+void rs_contacts_body_shares(rs_contacts *c, int a, int m, double R)
+{
+    for (int k = a; k < a + m; k++)
+        c->share[k] = 1.0;
+    if (m > RS_SHARE_MAX)
+        m = RS_SHARE_MAX;
+    if (m >= 2 && R > 0.0) {
+        group_shares(c, a, m, NULL, R);
+        for (int k = a; k < a + m; k++)
+            c->shared |= c->share[k] != 1.0;
     }
 }
 

@@ -179,6 +179,14 @@ int rs_surface_adjacent(const rs_surface *s, int fa, int fb)
     return s->ops->adjacent(s, RS_FEATURE_OWNER(fa), RS_FEATURE_OWNER(fb));
 }
 
+int rs_surface_fold(const rs_surface *s, int fa, int fb)
+{
+    if (!s || !s->ops || !s->ops->fold ||
+        fa / RS_MANIFOLD_STRIDE != fb / RS_MANIFOLD_STRIDE)
+        return 0;
+    return s->ops->fold(s, RS_FEATURE_OWNER(fa), RS_FEATURE_OWNER(fb));
+}
+
 void rs_surface_bounds(const rs_surface *s, double lo[3], double hi[3])
 {
     if (!s || !s->ops || !s->ops->bounds) {

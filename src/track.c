@@ -23,6 +23,31 @@
  * an axis; the minimal rotation is then the half turn about the carried t1. */
 #define RS_ANTIPARALLEL 1e-12
 
+/* A body's new contacts (bit q of fresh) that begin overlapping beside a held contact of
+ * the same manifold point on a face across a concave fold (a facet of a drum that the
+ * body moves onto, where the two contacts share its patch) continue that
+ * contact's history: its slot is copied into the new one, which is free (so an error
+ * later in pass 1 leaves the history as it was), and the entry (e0 + q) is listed in
+ * out->seeded for pass 2 to read as live. */
+static void seed_body_slots(const rs_surface *s, const rs_particles *p, int i,
+                            const rs_contacts *c, const int *kk, const int *sl, int nk,
+                            uint64_t fresh, double *h, ptrdiff_t stride, rs_track_out *out,
+                            int e0)
+{
+    const double rad = p->radius ? p->radius[i] : 0.0;
+    for (int q = 0; q < nk; q++) {
+        if (!(fresh >> q & 1u) || !(c->dist[kk[q]] < rad))
+            continue;
+        for (int r = 0; r < nk; r++)
+            if (!(fresh >> r & 1u) &&
+                rs_surface_fold(s, c->feature[kk[r]], c->feature[kk[q]])) {
+                memcpy(h + sl[q] * stride, h + sl[r] * stride, (size_t)stride * sizeof *h);
+                out->seeded[out->nseeded++] = e0 + q;
+                break;
+            }
+    }
+}
+
 /* Pass 1 for one particle: slots for its contacts kb..ke-1 (written to out entries from
  * *ne on) and its leaving slots. out->point holds the contact index for a contact entry
  * and -1 - i for a leaving slot of particle i until pass 2 decodes it. */
@@ -91,6 +116,7 @@ static int assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_part
                 }
         }
         /* New contacts take free slots; orphans keep theirs for the leaving call. */
+        uint64_t fresh = 0;
         for (int q = 0; q < nk; q++) {
             if (sl[q] >= 0)
                 continue;
@@ -102,7 +128,10 @@ static int assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_part
                 goto full;
             sl[q] = js;
             used |= (uint64_t)1 << js;
+            fresh |= (uint64_t)1 << q;
         }
+        if (fresh && s && p->body && p->body[i].shape)
+            seed_body_slots(s, p, i, c, kk, sl, nk, fresh, h, stride, out, *ne);
     }
 
     for (int q = 0; q < nk; q++) {
@@ -651,7 +680,7 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
                         int ne, int ident, const int nd)
 {
     track_run r;
-    int e = 0;
+    int e = 0, sc = 0; /* sc: the next of out->seeded */
     while (e < ne) {
         const int k0 = out->point[e];
         if (k0 < 0) {
@@ -673,12 +702,19 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
             }
         }
         run_gather(&r, m, out, e0);
+        const int s0 = sc; /* seeded entries of this run: live, from the copied slot */
+        for (; sc < out->nseeded && out->seeded[sc] < e0 + m; sc++)
+            r.live[out->seeded[sc] - e0] = 1.0;
         if (c->witness && c->xs[0])
             run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, mr->belt, 1);
         else if (mr->belt)
             run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 1, 0);
         else
             run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 0, 0);
+        for (int q = s0; q < sc; q++) { /* its own normal increment, as a new contact's */
+            const int j = out->seeded[q] - e0;
+            r.drd1[j] = -r.vn[j] * dt;
+        }
         run_outputs(&r, m, c, k0, out, e0, nd);
         run_store(&r, m, tr, c, k0, out, e0);
     }
@@ -711,6 +747,7 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
 
     out->n = 0;
     out->nleave = 0;
+    out->nseeded = 0;
     out->ndir = tr->ndir;
     out->shared = c && c->share && c->shared;
     /* Pass 1, grouping the contacts by particle: it takes every contact exactly when

@@ -19,6 +19,7 @@ void rs_track_out_free(rs_track_out *o)
     free(o->vrel);
     free(o->curv);
     free(o->share);
+    free(o->seeded);
     memset(o, 0, sizeof *o);
 }
 
@@ -36,16 +37,16 @@ int rs_track_out_reserve(rs_track_out *o, int n, rs_error *err)
     if (n <= o->cap)
         return RS_OK;
     size_t c = (size_t)n, d = sizeof(double);
-    int ok = grow((void **)&o->point, c * sizeof(int)) &&
-             grow((void **)&o->feature, c * sizeof(int)) &&
-             grow((void **)&o->slot, c * sizeof(double *)) &&
-             grow((void **)&o->dir, c * sizeof(double *)) &&
-             grow((void **)&o->rdisp, 3 * c * d) && grow((void **)&o->drdisp, 3 * c * d) &&
-             grow((void **)&o->drot, 4 * c * d) &&
-             grow((void **)&o->alocaldir, 9 * c * d) &&
-             grow((void **)&o->coordslv, 3 * c * d) &&
-             grow((void **)&o->coordmst, 3 * c * d) && grow((void **)&o->vrel, 3 * c * d) &&
-             grow((void **)&o->curv, 2 * c * d) && grow((void **)&o->share, c * d);
+    int ok =
+        grow((void **)&o->point, c * sizeof(int)) &&
+        grow((void **)&o->feature, c * sizeof(int)) &&
+        grow((void **)&o->slot, c * sizeof(double *)) &&
+        grow((void **)&o->dir, c * sizeof(double *)) &&
+        grow((void **)&o->rdisp, 3 * c * d) && grow((void **)&o->drdisp, 3 * c * d) &&
+        grow((void **)&o->drot, 4 * c * d) && grow((void **)&o->alocaldir, 9 * c * d) &&
+        grow((void **)&o->coordslv, 3 * c * d) && grow((void **)&o->coordmst, 3 * c * d) &&
+        grow((void **)&o->vrel, 3 * c * d) && grow((void **)&o->curv, 2 * c * d) &&
+        grow((void **)&o->share, c * d) && grow((void **)&o->seeded, c * sizeof(int));
     if (!ok)
         return rs_error_set(err, RS_ERR_NOMEM,
                             "rs_track_update: out of memory for %d contacts", n);

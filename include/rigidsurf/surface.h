@@ -110,6 +110,10 @@ typedef struct rs_surface_ops {
     /// 1 when a contact may hand its history from feature fa to feature fb (the normal
     /// is continuous across the junction), 0 otherwise.
     int (*adjacent)(const struct rs_surface *s, int fa, int fb);
+    /// 1 when features fa and fb are faces that meet at a concave fold (a body's contact
+    /// that begins on one beside its contact on the other continues its history), 0
+    /// otherwise; NULL for kinds without such folds between features.
+    int (*fold)(const struct rs_surface *s, int fa, int fb);
     /// Axis-aligned bounds in the reference configuration; +-INFINITY where unbounded.
     void (*bounds)(const struct rs_surface *s, double lo[3], double hi[3]);
     /// 1 with a point and a unit axis when the surface is invariant under rotation about
@@ -277,6 +281,12 @@ void rs_contacts_patch_shares(rs_contacts *c, int a, int m, double R);
 /// tangent planes (docs/conventions.md, "Shares at concave folds"), for a kind whose
 /// closest operation does not set them (rs_surface_ops.shares = 0).
 void rs_contacts_fold_shares(const rs_query *q, rs_contacts *c, int k0);
+/// The shares of contacts a .. a + m - 1, all of one convex body of characteristic
+/// radius R (docs/conventions.md, "Convex bodies"): the fold rule of
+/// rs_contacts_fold_shares, each contact taken as the sphere of radius R on its witness
+/// point (centre xm + dist n), a fold line reached from the midpoint of the two
+/// contacts' centres.
+void rs_contacts_body_shares(rs_contacts *c, int a, int m, double R);
 /// Frees the arrays and zeroes c.
 void rs_contacts_free(rs_contacts *c);
 
@@ -318,6 +328,9 @@ void rs_cands_free(rs_cands *c);
 /// 1 when history may pass from feature fa to feature fb (see rs_surface_ops); 0 for a
 /// surface without a kind.
 int rs_surface_adjacent(const rs_surface *s, int fa, int fb);
+/// 1 when fa and fb are contacts of one manifold point (RS_FEATURE_MANIFOLD) on two faces
+/// that meet at a concave fold (see rs_surface_ops); 0 otherwise.
+int rs_surface_fold(const rs_surface *s, int fa, int fb);
 
 /// 1 when the surface's kind has facets (rs_surface_ops.facet and facet_count: a faceted
 /// master, whose facets' nodes a VUINTER sees), else 0 (the analytic kinds).

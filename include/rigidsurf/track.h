@@ -17,7 +17,12 @@
  * count as gone.
  * - A contact whose feature is gone hands its history to an adjacent feature found
  *   this call (rs_surface_adjacent). Otherwise it is emitted once more with RS_MAXVAL in
- *   rdisp, drdisp and drot, then its slot is freed by rs_track_commit. */
+ *   rdisp, drdisp and drot, then its slot is freed by rs_track_commit.
+ * - A convex body's new contact that begins overlapping on a face across a concave fold
+ *   from a held contact of the same manifold point (rs_surface_fold: the next facet of a
+ *   drum it moves onto) starts from a copy of that contact's history, carried into its
+ *   frame by drot like a held one's, with drdisp(1) = -v_rel.n dt as a new contact's
+ *   (out->seeded lists these entries). */
 #ifndef RIGIDSURF_TRACK_H
 #define RIGIDSURF_TRACK_H
 
@@ -123,6 +128,10 @@ typedef struct rs_track_out {
     double *share;     ///< the contact's share (rs_contacts.share; 1 when leaving): the
                        ///< engine applies share times what the law returns
     int shared;        ///< nonzero when a share may differ from 1 (rs_contacts.shared)
+    int *seeded;       ///< the entries (ascending) of a body's contacts that began beside
+                       ///< a live contact of the same manifold point on an adjacent
+                       ///< feature, their slots seeded with its history (nseeded of them)
+    int nseeded;
 } rs_track_out;
 
 void rs_track_out_free(rs_track_out *o);

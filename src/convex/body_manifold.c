@@ -267,20 +267,11 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
     }
     rs_contacts_free(&pc);
     /* Contacts on features that fold concavely under the body (two facets of a drum)
-     * overlap one patch of it: their shares, as a sphere's of radius R (weights a^2,
-     * a = sqrt(R^2 - dist^2), docs/conventions.md, "Shares at concave folds"). Corners
-     * apart by more than their patches keep 1. */
-    const int m = c->n - k0;
-    if (rc == RS_OK && m > 1) {
-        for (int k = k0; k < c->n; k++) {
-            const double d = c->dist[k];
-            c->share[k] = k - k0 < RS_SHARE_MAX && d > 0.0 && d < radius
-                              ? (radius - d) * (radius + d)
-                              : 1.0; /* beyond RS_SHARE_MAX: whole, as a sphere's */
-        }
-        rs_contacts_patch_shares(c, k0, m, radius);
-        for (int k = k0; k < c->n; k++)
-            c->shared |= c->share[k] != 1.0;
-    }
+     * overlap one patch of it: their shares, as a sphere's of radius R on each witness
+     * point (docs/conventions.md, "Shares at concave folds"): weights a^2, a = sqrt(R^2 -
+     * dist^2), cut to 0 where a contact's foot is on the fold line it begins or ends at.
+     * Corners apart by more than their patches keep 1. */
+    if (rc == RS_OK && c->n - k0 > 1)
+        rs_contacts_body_shares(c, k0, c->n - k0, radius);
     return rc;
 }

@@ -188,6 +188,42 @@ static int region_face(const rs_surface *s, const rs_pose *p, const rs_body *b,
  * pressed on an edge. */
 #define RS_BODY_HOLD_REL 0.1
 
+/* How much shallower than the body's deepest point along a face's normal the pair's
+ * witness may be and still be one of the deepest (a flat side of the body on the face),
+ * relative to the body's reach. */
+#define RS_BODY_TIE_REL 1e-9
+
+/* Is candidate k's face, whose pair's witness is not the body's deepest point along its
+ * normal n, one that the body meets only across a concave fold: the foot of the body's
+ * deepest point lies beyond a CONCAVE edge of the face's region? A sphere there has no
+ * contact with the face until its centre crosses the fold (docs/conventions.md, "Shares
+ * at concave folds"); nor has a body until its deepest point does, when region_face
+ * answers for the face. */
+static int over_a_fold(const rs_surface *s, const rs_pose *p, const rs_body *b,
+                       const cand *c, int nc, int k, const double n[3])
+{
+    const cand *ck = c + k;
+    const double down[3] = {-n[0], -n[1], -n[2]}, *a0 = ck->tri;
+    double xs[3], foot[3], F[3];
+    rs_body_support(b, down, xs);
+    const double depth =
+        (a0[0] - xs[0]) * n[0] + (a0[1] - xs[1]) * n[1] + (a0[2] - xs[2]) * n[2];
+    if (!(depth > ck->cc.depth + RS_BODY_TIE_REL * rs_body_reach(b)))
+        return 0;
+    for (int d = 0; d < 3; d++)
+        foot[d] = xs[d] + depth * n[d];
+    rs_pose_to_local(p, foot, F);
+    int beyond = 0;
+    for (int j = 0; j < nc; j++) {
+        if (c[j].region != ck->region)
+            continue;
+        if (rs_mesh_triangle_holds(s, c[j].t, F))
+            return 0;
+        beyond |= rs_mesh_beyond_concave(s, c[j].t, F);
+    }
+    return beyond;
+}
+
 /* The contact of candidate k from the pair's witness on its triangle, owned by the
  * feature whose cone holds the pair's normal there, if any. */
 static int witness_contact(const rs_surface *s, const rs_pose *p, const rs_body *b,
@@ -220,6 +256,8 @@ static int witness_contact(const rs_surface *s, const rs_pose *p, const rs_body 
         return 0; /* behind a one-sided face, along no face's normal */
     const double sg = along < 0.0 ? -1.0 : 1.0;
     const double n[3] = {sg * ck->nf[0], sg * ck->nf[1], sg * ck->nf[2]};
+    if (over_a_fold(s, p, b, c, nc, k, n))
+        return 0;
     set_contact(g, f, cc->depth, n, cc->pb, cc->pa, ck->region, 0);
     return 1;
 }

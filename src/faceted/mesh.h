@@ -141,6 +141,9 @@ int rs_mesh_triangle(const rs_surface *s, int t, double xyz[9], double n[3]);
 /// Does x, a point of t's plane, lie in triangle t (on the inner side of each of its
 /// edges' planes, ties included)?
 int rs_mesh_triangle_holds(const rs_surface *s, int t, const double x[3]);
+/// Does x, a point of t's plane, lie beyond a CONCAVE edge of t: outside its line, and
+/// between the perpendiculars at its ends?
+int rs_mesh_beyond_concave(const rs_surface *s, int t, const double x[3]);
 /// The feature that owns the unit direction n (from the mesh toward a body) at the point
 /// x of triangle t, by the point query's Voronoi rules at x + n, ties to the face: x
 /// within 1e-8 of t's longest edge from an edge's plane lies on that edge. x inside t, or

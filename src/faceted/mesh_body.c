@@ -54,6 +54,23 @@ int rs_mesh_triangle_holds(const rs_surface *s, int t, const double x[3])
            side_of(m, t, 2, x) >= 0.0;
 }
 
+int rs_mesh_beyond_concave(const rs_surface *s, int t, const double x[3])
+{
+    const rs_mesh *m = s->impl;
+    const rs_mtri *r = m->rec + t;
+    for (int j = 0; j < 3; j++) {
+        if (r->kind[j] != RS_EDGE_CONCAVE || !(side_of(m, t, j, x) < 0.0))
+            continue;
+        const int v = r->v[j], w = r->v[(j + 1) % 3];
+        const double *pv = m->xyz + 3 * v, *pw = m->xyz + 3 * w;
+        const double u[3] = {pw[0] - pv[0], pw[1] - pv[1], pw[2] - pv[2]};
+        const double a = along(m, v, w, x);
+        if (a >= 0.0 && a <= rs_dot3(u, u))
+            return 1;
+    }
+    return 0;
+}
+
 /* Does vertex v own direction n strictly: n.(w - v) < -tol |w - v| for each neighbour w
  * (the products of vertex_owns at v + n, away from the cone's border)? */
 static int vertex_cone(const rs_mesh *m, int v, const double n[3])

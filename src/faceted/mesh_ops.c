@@ -59,6 +59,25 @@ static int mesh_adjacent(const rs_surface *s, int fa, int fb)
     return 0;
 }
 
+/* Two faces that share a CONCAVE edge. */
+static int mesh_fold(const rs_surface *s, int fa, int fb)
+{
+    const rs_mesh *m = s->impl;
+    if (!m || fa < 0 || fb < 0 || fa == fb || RS_FEATURE_TYPE(fa) != RS_FEAT_FACE ||
+        RS_FEATURE_TYPE(fb) != RS_FEAT_FACE)
+        return 0;
+    const int ia = RS_FEATURE_INDEX(fa), ib = RS_FEATURE_INDEX(fb);
+    if (ia >= m->nel || ib >= m->nel)
+        return 0;
+    for (int t = m->el_t0[ia]; t < m->el_t0[ia + 1]; t++)
+        for (int j = 0; j < 3; j++) {
+            const int e = m->tedge[3 * t + j];
+            if (m->edge_kind[e] == RS_EDGE_CONCAVE && element_has(m, ib, m->tedge, e))
+                return 1;
+        }
+    return 0;
+}
+
 static void mesh_bounds(const rs_surface *s, double lo[3], double hi[3])
 {
     const rs_mesh *m = s->impl;
@@ -116,6 +135,7 @@ const rs_surface_ops rs_mesh_ops = {.name = "MESH",
                                     .closest = rs_mesh_closest,
                                     .shares = 1,
                                     .adjacent = mesh_adjacent,
+                                    .fold = mesh_fold,
                                     .bounds = mesh_bounds,
                                     .spin_axis = mesh_spin_axis,
                                     .triangulate = mesh_triangulate,
