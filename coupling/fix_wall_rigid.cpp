@@ -2,7 +2,7 @@
  * step: construction, init, setup, the step hooks and blocks. Syntax, keywords and
  * output: docs/fix_wall_rigid.md. Conventions: docs/conventions.md. Arguments:
  * fix_wall_rigid_args.cpp; candidates: fix_wall_rigid_candidates.cpp; a block's gather,
- * law and scatter: fix_wall_rigid_block.cpp; per-atom state, exchange and restart:
+ * law and loads: fix_wall_rigid_block.cpp; per-atom state, exchange and restart:
  * fix_wall_rigid_state.cpp; outputs: fix_wall_rigid_output.cpp. */
 #include "fix_wall_rigid.h"
 #include "liggghts_law.h"
@@ -568,8 +568,6 @@ void FixWallRigid::init_scratch()
     btype_.resize(np);
     bpred_.resize(np * npred), bdpred_.resize(np * npred);
     leaving_.resize(nc);
-    nleave_ = 0;
-    ident_ = false;
     cb_.area_mode = area_mode_ == AREA_CONSTANT    ? RS_AREA_CONSTANT
                     : area_mode_ == AREA_PROJECTED ? RS_AREA_PROJECTED
                                                    : RS_AREA_NODE;

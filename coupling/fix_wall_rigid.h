@@ -113,8 +113,6 @@ class FixWallRigid : public Fix
     void law_inputs(const int *idx, int n, int ne, bool setup_call);
     void liggghts_block(const int *idx, int n, int ne, bool setup_call);
     double liggghts_reach() const;
-    template <int ND, bool LEAVE, bool UNITA>
-    void scatter(const int *idx, int n, int ne, bool setup_call);
     /// A per-atom output row: rdisp and stress of the block's contact e (nd values each;
     /// the third 0 for nd = 2), zeros for e < 0 (no contact).
     void put_output(double *o, int e, int nd) const
@@ -346,11 +344,10 @@ class FixWallRigid : public Fix
     std::vector<double> saved_rows_; // setup call: each particle's row, then its slots
     std::vector<char> leaving_, take_;
     std::vector<int> deepest_;
+    bool ident_ = false; // the block's contact e is particle e's only contact, for all e
     std::vector<double> area_w_; // the block's areas times shares, when shared
-    const double *scatter_area_ =
-        nullptr;       // the areas the scatter applies: cb_.area or area_w_
-    int nleave_;       // leaving contacts of the block
-    bool ident_;       // contact e is particle e's only contact, for all e
+    const double *load_area_ =
+        nullptr; // each contact's area times its share, for the facets: cb_.area or area_w_
     rs_law_block blk_; // the law block's fields that stay for the run
     /* per particle of a block: mass, type, heat capacity, temperature and its
      * increment, predefined fields and their increments (npred per particle) */

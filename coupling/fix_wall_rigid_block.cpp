@@ -1,5 +1,6 @@
 /* fix wall/rigid: one block of particles per call: gather, surface query, tracker, the
- * law on the contact block (rs_cblock_inputs, rs_cblock_call), scatter. */
+ * law on the contact block (rs_cblock_inputs, rs_cblock_call), the loads onto the
+ * particles (rs_cblock_add_loads). */
 #include "fix_wall_rigid.h"
 #include "rigidsurf/vec.h"
 
@@ -55,7 +56,7 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         qh[k] = slot0(i);
         rmax = std::max(rmax, R);
         /* asked for now, read after the query: the directory and the slot's head by the
-         * tracker, the output row by the scatter */
+         * tracker, the output row by the loads */
         __builtin_prefetch(row_[i], 0, 3);
         __builtin_prefetch(qh[k], 0, 3);
         __builtin_prefetch(qh[k] + 8, 0, 3);
@@ -232,34 +233,52 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     if (!setup_call)
         rs_law_requests_merge(&requests_, &req);
 
-    /* The scatter also stores each live contact's sed in its slot (leaving: 0). A unit
-     * area (the default) drops the products with A, which are exact. Where contacts
-     * share a patch at a concave fold, each applies w A (docs/conventions.md). */
-    bool unit =
-        area_mode_ == AREA_NODE || (area_mode_ == AREA_CONSTANT && area_const_ == 1.0);
-    scatter_area_ = cb_.area;
-    if (tout_.shared) {
+    /* Forces and torques onto LIGGGHTS's rows, the wall's totals, energies and heat, in
+     * one pass (rs_cblock_add_loads); where contacts share a patch at a concave fold,
+     * each applies w A (docs/conventions.md). */
+    double origin[3];
+    rs_pose_to_global(&motion_.pose, surf_.a, origin);
+    rs_load_rows rows = rs_load_rows();
+    rows.row = idx;
+    rows.f = atom->f;
+    rows.t = atom->torque;
+    rows.fstore = wallforce_;
+    rows.q = !setup_call && fix_heatflux_ ? fix_heatflux_->vector_atom : NULL;
+    rows.deepest = ident_ ? NULL : deepest_.data(); /* else contact k is particle k's */
+    rs_wall_load wl;
+    rs_cblock_add_loads(&cb_, &tout_, &pblk_, origin, &rows, &wl);
+    for (int c = 0; c < 3; c++) {
+        f_wall_[c] += wl.force[c];
+        m_wall_[c] += wl.moment[c];
+    }
+    ncontact_ += wl.ncontact;
+    se_now_ += wl.se;
+    if (!setup_call) { /* a setup call's history is restored: it dissipates nothing */
+        diss_[0] += wl.fd;
+        diss_[1] += wl.pd;
+        diss_[2] += wl.vd;
+        diss_[3] += wl.cd;
+        heat_step_ += wl.flux_mst;
+    }
+    /* Per-atom output: the deepest live contact of each particle with this wall, zeros
+     * for a particle without one. */
+    if (ident_) {
+        const char *__restrict leaving = leaving_.data();
+        for (int k = 0; k < n; k++)
+            put_output(array_atom[idx[k]], leaving[k] ? -1 : k, nd);
+    } else {
+        for (int k = 0; k < n; k++)
+            put_output(array_atom[idx[k]], deepest_[k], nd);
+    }
+
+    /* the facets' loads take each contact's area times its share */
+    load_area_ = cb_.area;
+    if (facets_ && tout_.shared) {
         if (area_w_.size() < (size_t)ne)
             area_w_.resize((size_t)ne);
         for (int e = 0; e < ne; e++)
-            area_w_[e] = (unit ? 1.0 : cb_.area[e]) * tout_.share[e];
-        scatter_area_ = area_w_.data();
-        unit = false;
-    }
-    if (nd == 3) {
-        if (unit)
-            nleave_ ? scatter<3, true, true>(idx, n, ne, setup_call)
-                    : scatter<3, false, true>(idx, n, ne, setup_call);
-        else
-            nleave_ ? scatter<3, true, false>(idx, n, ne, setup_call)
-                    : scatter<3, false, false>(idx, n, ne, setup_call);
-    } else {
-        if (unit)
-            nleave_ ? scatter<2, true, true>(idx, n, ne, setup_call)
-                    : scatter<2, false, true>(idx, n, ne, setup_call);
-        else
-            nleave_ ? scatter<2, true, false>(idx, n, ne, setup_call)
-                    : scatter<2, false, false>(idx, n, ne, setup_call);
+            area_w_[e] = cb_.area[e] * tout_.share[e];
+        load_area_ = area_w_.data();
     }
     if (conduction_)
         conduct(idx, ne, setup_call);
@@ -316,7 +335,8 @@ void FixWallRigid::keep_tracked(const int *idx, int n, double dist_min)
 
 /* The law's per-contact inputs (rs_cblock_inputs) from the block's particles, with their
  * heat capacities, temperatures and predefined fields; then each contact's sed from its
- * slot, and the leaving flags. */
+ * slot, the leaving flags (for the heat and the facets) and whether contact e is
+ * particle e's, one each (ident_). */
 void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call)
 {
     const double *cp = fix_heatcap_ ? fix_heatcap_->get_values() : NULL;
@@ -362,138 +382,10 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call)
     const int *__restrict pt = tout_.point;
     double *const *__restrict dir = tout_.dir;
     char *__restrict leaving = leaving_.data();
-    int nleave = 0;
-    bool ident = true;
+    bool ident = ne == n;
     for (int e = 0; e < ne; e++) {
-        const char lv = RS_DIR_IS_LEAVING(*dir[e]);
-        leaving[e] = lv;
-        nleave += lv;
+        leaving[e] = RS_DIR_IS_LEAVING(*dir[e]);
         ident &= pt[e] == e;
     }
-    nleave_ = nleave;
-    ident_ = ident && ne == n;
-}
-
-/* Scatter: F = A (s1 n - s2 t1 - s3 t2) on the particle at x_cp (A: scatter_area_, the
- * contact's area times its share), -F on the wall; the wall's sums, energies (times A),
- * each contact's sed into its slot and the per-atom output of the block's particles. ND =
- * 2: the plane is z = const, t2 = -ez and the contact point keeps the particle's z. LEAVE:
- * some contacts are leaving (they apply nothing). UNITA: every area is 1. */
-template <int ND, bool LEAVE, bool UNITA>
-void FixWallRigid::scatter(const int *idx, int n, int ne, bool setup_call)
-{
-    double **f = atom->f, **torque = atom->torque, **wf = wallforce_;
-    double origin[3];
-    rs_pose_to_global(&motion_.pose, surf_.a, origin);
-    const double o0 = origin[0], o1 = origin[1], o2 = origin[2];
-    const int *__restrict pt = tout_.point;
-    const char *__restrict leaving = leaving_.data();
-    const double *__restrict px = bx_.data(), *__restrict py = by_.data(),
-                             *__restrict pz = bz_.data();
-    const double *__restrict alocal = tout_.alocaldir, *__restrict coord = tout_.coordslv,
-                             *__restrict rdisp = tout_.rdisp;
-    const double *__restrict stress = cb_.stress, *__restrict area = scatter_area_;
-    const bool track_deepest = !ident_;
-    int *__restrict deepest = deepest_.data();
-    if (track_deepest)
-        for (int k = 0; k < n; k++)
-            deepest[k] = -1;
-
-    double fw0 = f_wall_[0], fw1 = f_wall_[1], fw2 = f_wall_[2];
-    double mw0 = m_wall_[0], mw1 = m_wall_[1], mw2 = m_wall_[2];
-    int ncontact = ncontact_;
-    for (int e = 0; e < ne; e++) {
-        if (LEAVE && leaving[e])
-            continue;
-        const int k = pt[e];
-        const double A = UNITA ? 1.0 : area[e];
-        const double *s = stress + (size_t)e * ND;
-        const double *L = alocal + (size_t)e * ND * ND; // columns n, t1[, t2]
-        const double *xc = coord + (size_t)e * ND;
-        double F0, F1, F2, xc0, xc1, xc2;
-        if (ND == 3) {
-            F0 = A * (s[0] * L[0] - s[1] * L[3] - s[2] * L[6]);
-            F1 = A * (s[0] * L[1] - s[1] * L[4] - s[2] * L[7]);
-            F2 = A * (s[0] * L[2] - s[1] * L[5] - s[2] * L[8]);
-            xc0 = xc[0], xc1 = xc[1], xc2 = xc[2];
-        } else {
-            /* n = (L0, L1, 0), t1 = (L2, L3, 0), t2 = (0, 0, -1) */
-            F0 = A * (s[0] * L[0] - s[1] * L[2] - 0.0 * 0.0);
-            F1 = A * (s[0] * L[1] - s[1] * L[3] - 0.0 * 0.0);
-            F2 = A * (s[0] * 0.0 - s[1] * 0.0 - 0.0 * -1.0);
-            xc0 = xc[0], xc1 = xc[1], xc2 = pz[k];
-        }
-        const double r0 = xc0 - px[k], r1 = xc1 - py[k], r2 = xc2 - pz[k];
-        const double rw0 = xc0 - o0, rw1 = xc1 - o1, rw2 = xc2 - o2;
-        const double Fw0 = -F0, Fw1 = -F1, Fw2 = -F2;
-        double *fi = f[idx[k]], *ti = torque[idx[k]];
-        fi[0] += F0, fi[1] += F1, fi[2] += F2;
-        if (wf) {
-            double *wi = wf[idx[k]];
-            wi[0] += F0, wi[1] += F1, wi[2] += F2;
-        }
-        ti[0] += r1 * F2 - r2 * F1;
-        ti[1] += r2 * F0 - r0 * F2;
-        ti[2] += r0 * F1 - r1 * F0;
-        fw0 += Fw0, fw1 += Fw1, fw2 += Fw2;
-        mw0 += rw1 * Fw2 - rw2 * Fw1;
-        mw1 += rw2 * Fw0 - rw0 * Fw2;
-        mw2 += rw0 * Fw1 - rw1 * Fw0;
-        const double rd1 = rdisp[(size_t)e * ND];
-        ncontact += rd1 > 0.0;
-        if (track_deepest) {
-            const int d = deepest[k];
-            if (d < 0 || rd1 > rdisp[(size_t)d * ND])
-                deepest[k] = e;
-        }
-    }
-    f_wall_[0] = fw0, f_wall_[1] = fw1, f_wall_[2] = fw2;
-    m_wall_[0] = mw0, m_wall_[1] = mw1, m_wall_[2] = mw2;
-    ncontact_ = ncontact;
-
-    /* Energies, heat, and sed into the slots (not in a setup call: its history is
-     * restored). */
-    const double *__restrict sed = cb_.sed;
-    double se = se_now_;
-    if (setup_call) {
-        for (int e = 0; e < ne; e++)
-            if (!(LEAVE && leaving[e]))
-                se += sed[e] * area[e];
-    } else {
-        const double *__restrict sfd = cb_.sfd, *__restrict spd = cb_.spd,
-                                 *__restrict svd = cb_.svd, *__restrict scd = cb_.scd,
-                                 *__restrict fmst = cb_.flux_mst;
-        double d0 = diss_[0], d1 = diss_[1], d2 = diss_[2], d3 = diss_[3];
-        double heat = heat_step_;
-        for (int e = 0; e < ne; e++) {
-            if (LEAVE && leaving[e])
-                continue;
-            const double A = UNITA ? 1.0 : area[e];
-            se += sed[e] * A;
-            d0 += sfd[e] * A;
-            d1 += spd[e] * A;
-            d2 += svd[e] * A;
-            d3 += scd[e] * A;
-            heat += fmst[e] * A;
-        }
-        diss_[0] = d0, diss_[1] = d1, diss_[2] = d2, diss_[3] = d3;
-        heat_step_ = heat;
-        if (fix_heatflux_) {
-            double *heatflux = fix_heatflux_->vector_atom;
-            const double *fslv = cb_.flux_slv;
-            for (int e = 0; e < ne; e++)
-                if (!(LEAVE && leaving[e]))
-                    heatflux[idx[pt[e]]] += fslv[e] * area[e];
-        }
-    }
-    se_now_ = se;
-
-    /* Per-atom output: the deepest live contact of each particle with this wall, zeros
-     * for a particle without one. */
-    for (int k = 0; k < n; k++)
-        put_output(array_atom[idx[k]],
-                   track_deepest           ? deepest[k]
-                   : (LEAVE && leaving[k]) ? -1
-                                           : k,
-                   ND);
+    ident_ = ident;
 }

@@ -90,7 +90,7 @@ void FixWallRigid::facet_pass(const int *idx, int ne, bool setup_call)
         if (el < 0)
             continue;
         const int k = tout_.point[e];
-        const double A = scatter_area_[e]; // area times share
+        const double A = load_area_[e]; // area times share
         const double *s = cb_.stress + (size_t)e * nd;
         const double *L = tout_.alocaldir + (size_t)e * nd * nd; // columns n, t1, t2
         double F[3];                                             // on the particle

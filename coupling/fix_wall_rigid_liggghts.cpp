@@ -1,5 +1,5 @@
 /* fix wall/rigid, law liggghts: one block's contacts through LIGGGHTS's contact model
- * (liggghts_law.h), in place of the law call and the stress scatter. */
+ * (liggghts_law.h), in place of the law call and the loads from the stress. */
 #include "fix_wall_rigid.h"
 #include "liggghts_law.h"
 
@@ -99,7 +99,7 @@ void FixWallRigid::liggghts_block(const int *idx, int n, int ne, bool setup_call
         if (dk < 0 || c.overlap > tout_.rdisp[(size_t)dk * nd])
             deepest_[k] = e;
     }
-    scatter_area_ = area_w_.data();
+    load_area_ = area_w_.data();
 
     /* Per-atom output: the deepest contact that applied a force, zeros otherwise. */
     for (int k = 0; k < n; k++)

@@ -1,54 +1,174 @@
-/* What one call's contacts do (rs_cblock_loads): each contact's force and torque on its
- * particle, the wall's force and moment, and the energies and heat, from the law's
- * stress in the tracker's frame; the engine then only scatters them. */
+/* What one call's contacts do: each contact's force and torque on its particle, the
+ * wall's force and moment, and the energies and heat, from the law's stress in the
+ * tracker's frame. rs_cblock_loads gives them per contact; rs_cblock_add_loads adds them
+ * onto the engine's per-particle rows in the same pass. One kernel (loads) does both. */
 #include "rigidsurf/contact_block.h"
 #include "rigidsurf/vec.h"
 
+#include "rs_compiler.h"
+
 #include <string.h>
+
+/* Every contact's area is 1 and every share 1: the products with w A are dropped (they
+ * are exact). */
+static int unit_area(const rs_contact_block *cb, const rs_track_out *o,
+                     const rs_particle_block *p)
+{
+    return !(o->shared && o->share) && !p->area &&
+           (cb->area_mode == RS_AREA_NODE ||
+            (cb->area_mode == RS_AREA_CONSTANT && cb->area_const == 1.0));
+}
+
+/* The kernel: ND the tracker's ndir (2: the plane z = const, t2 = -ez, the contact point
+ * keeps the particle's z); LEAVE: some contacts are leaving (they apply nothing); UNIT:
+ * unit_area; ROWS: add onto rows (else write per contact into f, t, q). Each is a
+ * constant in each copy. */
+RS_INLINE void loads(const rs_contact_block *cb, const rs_track_out *o,
+                     const rs_particle_block *p, const double origin[3], double *f,
+                     double *t, double *q, const rs_load_rows *rows, rs_wall_load *w,
+                     const int ND, const int LEAVE, const int UNIT, const int ROWS)
+{
+    const int ne = o->n;
+    const int *restrict pt = o->point;
+    const double *restrict px = p->x, *restrict py = p->y, *restrict pz = p->z;
+    const double *restrict L0 = o->alocaldir, *restrict X0 = o->coordslv,
+                           *restrict rdisp = o->rdisp, *restrict stress = cb->stress;
+    const double *restrict area = cb->area, *restrict share = o->share;
+    const double *restrict sed = cb->sed, *restrict sfd = cb->sfd, *restrict spd = cb->spd,
+                           *restrict svd = cb->svd, *restrict scd = cb->scd,
+                           *restrict fslv = cb->flux_slv, *restrict fmst = cb->flux_mst;
+    const int *restrict row = ROWS ? rows->row : NULL;
+    double *const *fr = ROWS ? rows->f : NULL, *const *tr = ROWS ? rows->t : NULL,
+                  *const *sr = ROWS ? rows->fstore : NULL;
+    double *restrict qr = ROWS ? rows->q : NULL;
+    int *restrict deepest = ROWS ? rows->deepest : NULL;
+    if (deepest)
+        for (int k = 0; k < p->n; k++)
+            deepest[k] = -1;
+    const double o0 = origin[0], o1 = origin[1], o2 = origin[2];
+    double fw0 = 0.0, fw1 = 0.0, fw2 = 0.0, mw0 = 0.0, mw1 = 0.0, mw2 = 0.0;
+    double se = 0.0, fd = 0.0, pd = 0.0, vd = 0.0, cd = 0.0, qs = 0.0, qm = 0.0;
+    int ncontact = 0;
+    for (int e = 0; e < ne; e++) {
+        if (LEAVE && RS_DIR_IS_LEAVING(*o->dir[e])) {
+            if (!ROWS) {
+                double *fe = f + 3 * (size_t)e, *te = t + 3 * (size_t)e;
+                fe[0] = fe[1] = fe[2] = te[0] = te[1] = te[2] = 0.0;
+                if (q)
+                    q[e] = 0.0;
+            }
+            continue;
+        }
+        const int k = pt[e];
+        const double A = UNIT ? 1.0 : area[e] * share[e]; /* its share of its area */
+        const double *s = stress + (size_t)e * ND;
+        const double *L = L0 + (size_t)e * ND * ND; /* columns n, t1[, t2] */
+        const double *xc = X0 + (size_t)e * ND;
+        double F0, F1, F2, x0, x1, x2;
+        if (ND == 3) {
+            F0 = A * (s[0] * L[0] - s[1] * L[3] - s[2] * L[6]);
+            F1 = A * (s[0] * L[1] - s[1] * L[4] - s[2] * L[7]);
+            F2 = A * (s[0] * L[2] - s[1] * L[5] - s[2] * L[8]);
+            x0 = xc[0], x1 = xc[1], x2 = xc[2];
+        } else {
+            F0 = A * (s[0] * L[0] - s[1] * L[2]);
+            F1 = A * (s[0] * L[1] - s[1] * L[3]);
+            F2 = 0.0;
+            x0 = xc[0], x1 = xc[1], x2 = pz[k];
+        }
+        const double r0 = x0 - px[k], r1 = x1 - py[k], r2 = x2 - pz[k];
+        const double T0 = r1 * F2 - r2 * F1, T1 = r2 * F0 - r0 * F2, T2 = r0 * F1 - r1 * F0;
+        const double rw0 = x0 - o0, rw1 = x1 - o1, rw2 = x2 - o2;
+        fw0 -= F0, fw1 -= F1, fw2 -= F2;
+        mw0 -= rw1 * F2 - rw2 * F1;
+        mw1 -= rw2 * F0 - rw0 * F2;
+        mw2 -= rw0 * F1 - rw1 * F0;
+        const double qe = A * fslv[e];
+        if (ROWS) {
+            const int rk = row ? row[k] : k;
+            double *fi = fr[rk], *ti = tr[rk];
+            fi[0] += F0, fi[1] += F1, fi[2] += F2;
+            ti[0] += T0, ti[1] += T1, ti[2] += T2;
+            if (sr) {
+                double *si = sr[rk];
+                si[0] += F0, si[1] += F1, si[2] += F2;
+            }
+            if (qr)
+                qr[rk] += qe;
+        } else {
+            double *fe = f + 3 * (size_t)e, *te = t + 3 * (size_t)e;
+            fe[0] = F0, fe[1] = F1, fe[2] = F2;
+            te[0] = T0, te[1] = T1, te[2] = T2;
+            if (q)
+                q[e] = qe;
+        }
+        se += A * sed[e];
+        fd += A * sfd[e];
+        pd += A * spd[e];
+        vd += A * svd[e];
+        cd += A * scd[e];
+        qs += qe;
+        qm += A * fmst[e];
+        const double rd1 = rdisp[(size_t)e * ND];
+        ncontact += rd1 > 0.0;
+        if (deepest) {
+            const int d = deepest[k];
+            if (d < 0 || rd1 > rdisp[(size_t)d * ND])
+                deepest[k] = e;
+        }
+    }
+    w->force[0] = fw0, w->force[1] = fw1, w->force[2] = fw2;
+    w->moment[0] = mw0, w->moment[1] = mw1, w->moment[2] = mw2;
+    w->se = se, w->fd = fd, w->pd = pd, w->vd = vd, w->cd = cd;
+    w->flux_slv = qs, w->flux_mst = qm;
+    w->ncontact = ncontact;
+}
+
+/* The kernel's copies for each ndir, leaving and unit area (one loop for both kinds of
+ * block, testing for leaving contacts, executes an eighth more in the fix). */
+RS_INLINE void dispatch(const rs_contact_block *cb, const rs_track_out *o,
+                        const rs_particle_block *p, const double origin[3], double *f,
+                        double *t, double *q, const rs_load_rows *rows, rs_wall_load *w,
+                        const int ROWS)
+{
+    switch ((o->ndir == 3) << 2 | (o->nleave > 0) << 1 | unit_area(cb, o, p)) {
+    case 0:
+        loads(cb, o, p, origin, f, t, q, rows, w, 2, 0, 0, ROWS);
+        break;
+    case 1:
+        loads(cb, o, p, origin, f, t, q, rows, w, 2, 0, 1, ROWS);
+        break;
+    case 2:
+        loads(cb, o, p, origin, f, t, q, rows, w, 2, 1, 0, ROWS);
+        break;
+    case 3:
+        loads(cb, o, p, origin, f, t, q, rows, w, 2, 1, 1, ROWS);
+        break;
+    case 4:
+        loads(cb, o, p, origin, f, t, q, rows, w, 3, 0, 0, ROWS);
+        break;
+    case 5:
+        loads(cb, o, p, origin, f, t, q, rows, w, 3, 0, 1, ROWS);
+        break;
+    case 6:
+        loads(cb, o, p, origin, f, t, q, rows, w, 3, 1, 0, ROWS);
+        break;
+    default:
+        loads(cb, o, p, origin, f, t, q, rows, w, 3, 1, 1, ROWS);
+        break;
+    }
+}
 
 void rs_cblock_loads(const rs_contact_block *cb, const rs_track_out *o,
                      const rs_particle_block *p, const double origin[3], double *f,
                      double *t, double *q, rs_wall_load *w)
 {
-    memset(w, 0, sizeof *w);
-    const int nd = o->ndir;
-    for (int e = 0; e < o->n; e++) {
-        double *fe = f + 3 * (size_t)e, *te = t + 3 * (size_t)e;
-        fe[0] = fe[1] = fe[2] = te[0] = te[1] = te[2] = 0.0;
-        if (q)
-            q[e] = 0.0;
-        if (RS_DIR_IS_LEAVING(*o->dir[e]))
-            continue;
-        const int i = o->point[e];
-        const double a = cb->area[e] * o->share[e]; /* the contact's share of its area */
-        const double *s = cb->stress + (size_t)e * nd;
-        const double *L = o->alocaldir + (size_t)e * nd * nd; /* columns n, t1[, t2] */
-        const double *xc = o->coordslv + (size_t)e * nd;
-        double x[3] = {xc[0], xc[1], nd == 3 ? xc[2] : p->z[i]};
-        for (int c = 0; c < nd; c++) {
-            double fc = s[0] * L[c];
-            for (int j = 1; j < nd; j++)
-                fc -= s[j] * L[j * nd + c];
-            fe[c] = a * fc;
-        }
-        const double r[3] = {x[0] - p->x[i], x[1] - p->y[i], x[2] - p->z[i]};
-        rs_cross3(r, fe, te);
-        const double rw[3] = {x[0] - origin[0], x[1] - origin[1], x[2] - origin[2]};
-        double mw[3];
-        rs_cross3(rw, fe, mw);
-        for (int c = 0; c < 3; c++) {
-            w->force[c] -= fe[c];
-            w->moment[c] -= mw[c];
-        }
-        if (q)
-            q[e] = a * cb->flux_slv[e];
-        w->flux_slv += a * cb->flux_slv[e];
-        w->flux_mst += a * cb->flux_mst[e];
-        w->se += a * cb->sed[e];
-        w->fd += a * cb->sfd[e];
-        w->pd += a * cb->spd[e];
-        w->vd += a * cb->svd[e];
-        w->cd += a * cb->scd[e];
-        w->ncontact += RS_A2(o->rdisp, nd, 0, e) > 0.0;
-    }
+    dispatch(cb, o, p, origin, f, t, q, NULL, w, 0);
+}
+
+void rs_cblock_add_loads(const rs_contact_block *cb, const rs_track_out *o,
+                         const rs_particle_block *p, const double origin[3],
+                         const rs_load_rows *rows, rs_wall_load *w)
+{
+    dispatch(cb, o, p, origin, NULL, NULL, NULL, rows, w, 1);
 }

@@ -113,6 +113,25 @@ void rs_cblock_loads(const rs_contact_block *cb, const rs_track_out *o,
                      const rs_particle_block *p, const double origin[3], double *f,
                      double *t, double *q, rs_wall_load *w);
 
+/// Where rs_cblock_add_loads puts each particle's loads: the engine's own per-particle
+/// rows (LIGGGHTS's atom->f, atom->torque), particle k of the block at row[k].
+typedef struct rs_load_rows {
+    const int *row;        ///< per block particle, its row (NULL: row k for particle k)
+    double *const *f;      ///< force rows (3 each): += F
+    double *const *t;      ///< torque rows (3 each): += (x_cp - x_i) x F
+    double *const *fstore; ///< NULL, or rows that also take += F (a stored wall force)
+    double *q;             ///< NULL, or heat flow per row: += w A fluxSlv
+    int *deepest;          ///< NULL, or per block particle (p->n) its live contact entry of
+                           ///< largest rdisp1, -1 for none
+} rs_load_rows;
+
+/// rs_cblock_loads in one pass onto the engine's rows: each live contact's F and torque
+/// (and heat flow) added onto its particle's rows, the wall's totals into *w (which it
+/// sets, as rs_cblock_loads does). The same numbers, bit for bit.
+void rs_cblock_add_loads(const rs_contact_block *cb, const rs_track_out *o,
+                         const rs_particle_block *p, const double origin[3],
+                         const rs_load_rows *rows, rs_wall_load *w);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,17 +1,53 @@
 /* rs_cblock_loads against the contact force written out by hand: F = w A (s1 n - s2 t1 -
  * s3 t2) at the contact point, its torque about the particle's centre, the wall's
  * force and moment, the energies and heat, and a leaving contact that carries none; in
- * 3D and for SEGMENTS (nDir 2, the contact point at the particle's z). */
+ * 3D and for SEGMENTS (nDir 2, the contact point at the particle's z). rs_cblock_add_loads
+ * against rs_cblock_loads summed per particle by hand, bit for bit, onto rows in another
+ * order, with unit and given areas. */
 #include "rigidsurf/contact_block.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
+
+/* The tracker's output of n contacts as the loads read it. */
+static rs_track_out track_out(int n, int ndir, int nleave, int *point, double **dir,
+                              double *rdisp, double *alocal, double *coord, double *share)
+{
+    const rs_track_out o = {.n = n,
+                            .ndir = ndir,
+                            .nleave = nleave,
+                            .shared = 1,
+                            .point = point,
+                            .dir = dir,
+                            .rdisp = rdisp,
+                            .alocaldir = alocal,
+                            .coordslv = coord,
+                            .share = share};
+    return o;
+}
+
+/* The law's results the loads read: e[0 .. 6] are sed, sfd, spd, svd, scd, fluxSlv and
+ * fluxMst per contact. */
+static rs_contact_block law_results(double *stress, double *area, double *const e[7])
+{
+    const rs_contact_block cb = {.stress = stress,
+                                 .area = area,
+                                 .sed = e[0],
+                                 .sfd = e[1],
+                                 .spd = e[2],
+                                 .svd = e[3],
+                                 .scd = e[4],
+                                 .flux_slv = e[5],
+                                 .flux_mst = e[6]};
+    return cb;
+}
 
 static void test_loads_in_3d(void)
 {
     /* particle 0 at (1, 2, 3); contact 0 on it: n = z, t1 = x, t2 = y; contact 1
      * leaving; contact 2 on particle 1 at the origin: n = x, t1 = y, t2 = z */
     const double px[2] = {1, 0}, py[2] = {2, 0}, pz[2] = {3, 0};
-    const rs_particle_block p = {.n = 2, .x = px, .y = py, .z = pz};
+    const double pa[2] = {2, 1}; /* areas: 2 on particle 0, 1 on particle 1 */
+    const rs_particle_block p = {.n = 2, .x = px, .y = py, .z = pz, .area = pa};
     double live = RS_DIR_LIVE(4), gone = RS_DIR_LEAVING(5);
     double *dir[3] = {&live, &gone, &live};
     int point[3] = {0, 0, 1};
@@ -21,26 +57,12 @@ static void test_loads_in_3d(void)
     double coord[9] = {1, 2, 2.5, 0, 0, 0, 0.5, 0, 0};
     double rdisp[9] = {1e-3, 0, 0, 7, 0, 0, -1e-4, 0, 0};
     double share[3] = {0.5, 1, 1};
-    rs_track_out o = {.n = 3,
-                      .ndir = 3,
-                      .point = point,
-                      .dir = dir,
-                      .rdisp = rdisp,
-                      .alocaldir = alocal,
-                      .coordslv = coord,
-                      .share = share};
+    rs_track_out o = track_out(3, 3, 1, point, dir, rdisp, alocal, coord, share);
     double stress[9] = {10, 2, -3, 99, 99, 99, 4, 1, 0};
     double area[3] = {2, 2, 1}, sed[3] = {1, 50, 2}, sfd[3] = {0.5, 50, 0};
     double zero[3] = {0, 0, 0}, fs[3] = {3, 50, 1}, fm[3] = {-1, 50, 4};
-    rs_contact_block cb = {.stress = stress,
-                           .area = area,
-                           .sed = sed,
-                           .sfd = sfd,
-                           .spd = zero,
-                           .svd = zero,
-                           .scd = zero,
-                           .flux_slv = fs,
-                           .flux_mst = fm};
+    double *const e[7] = {sed, sfd, zero, zero, zero, fs, fm};
+    rs_contact_block cb = law_results(stress, area, e);
     double f[9], t[9], q[3];
     rs_wall_load w;
     const double origin[3] = {0, 0, 1};
@@ -90,24 +112,10 @@ static void test_loads_of_segments(void)
     /* n = (0, 1), t1 = (1, 0) in the plane; the contact at (1, 0.5) */
     double alocal[4] = {0, 1, 1, 0}, coord[2] = {1, 0.5}, rdisp[2] = {1e-3, 0};
     double share[1] = {1};
-    rs_track_out o = {.n = 1,
-                      .ndir = 2,
-                      .point = point,
-                      .dir = dir,
-                      .rdisp = rdisp,
-                      .alocaldir = alocal,
-                      .coordslv = coord,
-                      .share = share};
+    rs_track_out o = track_out(1, 2, 0, point, dir, rdisp, alocal, coord, share);
     double stress[2] = {5, 1}, area[1] = {1}, zero[1] = {0};
-    rs_contact_block cb = {.stress = stress,
-                           .area = area,
-                           .sed = zero,
-                           .sfd = zero,
-                           .spd = zero,
-                           .svd = zero,
-                           .scd = zero,
-                           .flux_slv = zero,
-                           .flux_mst = zero};
+    double *const e[7] = {zero, zero, zero, zero, zero, zero, zero};
+    rs_contact_block cb = law_results(stress, area, e);
     double f[3], t[3];
     rs_wall_load w;
     const double origin[3] = {0, 0, 0};
@@ -123,9 +131,104 @@ static void test_loads_of_segments(void)
     ENSURE_NEAR(w.moment[2], -(1 * 5 - 0.5 * -1), 1e-15);
 }
 
+/* Three particles, rows in reverse order; particle 0 has two live contacts (shares 0.6
+ * and 0.4) and a leaving one, particle 1 none, particle 2 one. Each row gets the sum of
+ * rs_cblock_loads's contacts added onto what it held, in the contacts' order. */
+static void add_loads_case(int unit)
+{
+    const double px[3] = {1, 5, 0}, py[3] = {2, 5, 0}, pz[3] = {3, 5, 0};
+    const double pa[3] = {2, 1, 3};
+    const rs_particle_block p = {
+        .n = 3, .x = px, .y = py, .z = pz, .area = unit ? NULL : pa};
+    double live = RS_DIR_LIVE(4), gone = RS_DIR_LEAVING(5);
+    double *dir[4] = {&live, &gone, &live, &live};
+    int point[4] = {0, 0, 0, 2};
+    double alocal[36] = {0,   0, 1, 1, 0, 0,   0,    1, 0, /* leaving */ 9,
+                         9,   9, 9, 9, 9, 9,   9,    9, 0, 0.6,
+                         0.8, 1, 0, 0, 0, 0.8, -0.6, 1, 0, 0,
+                         0,   1, 0, 0, 0, 1};
+    double coord[12] = {1, 2, 2.5, 9, 9, 9, 1.1, 2.3, 2.6, 0.5, 0, 0};
+    double rdisp[12] = {1e-3, 0, 0, 7, 0, 0, 2e-3, 0, 0, -1e-4, 0, 0};
+    double share[4] = {0.6, 1, 0.4, 1};
+    rs_track_out o = track_out(4, 3, 1, point, dir, rdisp, alocal, coord, share);
+    o.shared = !unit;
+    double stress[12] = {10, 2, -3, 99, 99, 99, 7, -1, 0.5, 4, 1, 0};
+    double area[4] = {2, 2, 2, 3}, one[4] = {1, 1, 1, 1};
+    double sed[4] = {1, 50, 3, 2}, sfd[4] = {0.5, 50, 0.25, 0}, spd[4] = {0, 9, 1, 2};
+    double svd[4] = {3, 9, 0, 1}, scd[4] = {0, 9, 0, 0.5};
+    double fs[4] = {3, 50, 2, 1}, fm[4] = {-1, 50, 0.5, 4};
+    double *const e[7] = {sed, sfd, spd, svd, scd, fs, fm};
+    rs_contact_block cb = law_results(stress, unit ? one : area, e);
+    const double origin[3] = {0, 0, 1};
+    double f[12], t[12], q[4];
+    rs_wall_load w, wa;
+    rs_cblock_loads(&cb, &o, &p, origin, f, t, q, &w);
+
+    /* rows: particle k at row 2 - k, each row starting from its own values */
+    double F[3][3], T[3][3], S[3][3], Q[3], Fh[3][3], Th[3][3], Sh[3][3], Qh[3];
+    for (int r = 0; r < 3; r++) {
+        for (int c = 0; c < 3; c++) {
+            F[r][c] = Fh[r][c] = 0.1 * r + c;
+            T[r][c] = Th[r][c] = -0.2 * r + c;
+            S[r][c] = Sh[r][c] = 0.3 * r - c;
+        }
+        Q[r] = Qh[r] = r;
+    }
+    const int row[3] = {2, 1, 0};
+    for (int e = 0; e < 4; e++) { /* by hand: the contacts' order, leaving ones add 0 */
+        if (e == 1)
+            continue;
+        const int r = row[point[e]];
+        for (int c = 0; c < 3; c++) {
+            Fh[r][c] += f[3 * e + c];
+            Th[r][c] += t[3 * e + c];
+            Sh[r][c] += f[3 * e + c];
+        }
+        Qh[r] += q[e];
+    }
+    double *fr[3] = {F[0], F[1], F[2]}, *tr[3] = {T[0], T[1], T[2]},
+           *sr[3] = {S[0], S[1], S[2]};
+    int deepest[3];
+    const rs_load_rows rows = {
+        .row = row, .f = fr, .t = tr, .fstore = sr, .q = Q, .deepest = deepest};
+    rs_cblock_add_loads(&cb, &o, &p, origin, &rows, &wa);
+    for (int r = 0; r < 3; r++) {
+        for (int c = 0; c < 3; c++) {
+            ENSURE(F[r][c] == Fh[r][c]);
+            ENSURE(T[r][c] == Th[r][c]);
+            ENSURE(S[r][c] == Sh[r][c]);
+        }
+        ENSURE(Q[r] == Qh[r]);
+    }
+    ENSURE(deepest[0] == 2 && deepest[1] == -1 && deepest[2] == 3);
+    for (int c = 0; c < 3; c++) {
+        ENSURE(wa.force[c] == w.force[c]);
+        ENSURE(wa.moment[c] == w.moment[c]);
+    }
+    ENSURE(wa.se == w.se && wa.fd == w.fd && wa.pd == w.pd && wa.vd == w.vd &&
+           wa.cd == w.cd && wa.flux_slv == w.flux_slv && wa.flux_mst == w.flux_mst &&
+           wa.ncontact == w.ncontact && w.ncontact == 2);
+    /* and the sums themselves, written out: w A per contact */
+    const double wA[4] = {unit ? 1 : 1.2, 0, unit ? 1 : 0.8, unit ? 1 : 3};
+    double se = 0, qm = 0;
+    for (int e = 0; e < 4; e++) {
+        se += wA[e] * sed[e];
+        qm += wA[e] * fm[e];
+    }
+    ENSURE_NEAR(w.se, se, 1e-14);
+    ENSURE_NEAR(w.flux_mst, qm, 1e-14);
+}
+
+static void test_add_loads_onto_rows(void)
+{
+    add_loads_case(0);
+    add_loads_case(1);
+}
+
 int main(void)
 {
     RS_RUN(test_loads_in_3d);
     RS_RUN(test_loads_of_segments);
+    RS_RUN(test_add_loads_onto_rows);
     return rs_test_summary();
 }
