@@ -1,6 +1,7 @@
 /* The fuzz target's third reading of an input: its bytes as convex bodies (convex.h): a
  * shape of every kind with its dimensions and rounding, a pose, then a second body or a
- * triangle, or a plane or a drum the body meets as a slave (rs_body_query). Either a
+ * triangle, or a plane, a drum or that drum's MESH the body meets as a slave
+ * (rs_body_query). Either a
  * maker or rs_body_init refuses with a code and a message, or the pair query answers
  * with a state and finite values: the depth always, and the normal (unit) and witness
  * points of a contact within reach; the wall's contacts are finite throughout. */
@@ -128,7 +129,8 @@ static int check(int rc, const rs_error *e, const rs_convex_contact *c, const ch
     return bad;
 }
 
-/* The analytic surfaces a body meets: a plane and the main job's drum (fillets). */
+/* The surfaces a body meets: a plane, the main job's drum (fillets) and, third, that
+ * drum's display triangulation as a MESH (concave folds between its facets). */
 static const char *const WALLS[2] = {
     "*SURFACE, TYPE=CYLINDER, NAME=floor\n0, 0, 0, 1, 0, 0\n0, -1, 0\nSTART, -10, 0\n"
     "LINE, 10, 0\n",
@@ -139,12 +141,24 @@ static const char *const WALLS[2] = {
  * contacts whose values are all finite, normals unit, shares in (0, 1]. */
 static int wall_contacts(const rs_body *a, unsigned which, double gap_max)
 {
-    static rs_surface walls[2];
-    static int made[2];
+    static rs_surface walls[3];
+    static int made[3];
     rs_error e;
     rs_error_clear(&e);
     if (!made[which]) {
-        if (rs_surface_parse(WALLS[which], "fuzz", NULL, &walls[which], &e) != RS_OK) {
+        int rc = rs_surface_parse(WALLS[which % 2], "fuzz", NULL, &walls[which], &e);
+        if (rc == RS_OK && which == 2) {
+            rs_surface drum = walls[which];
+            rs_trimesh tm;
+            const rs_mesh_def def = RS_MESH_DEF_INIT;
+            rc = rs_surface_triangulate(&drum, 0.02, 24, &tm, &e);
+            if (rc == RS_OK)
+                rc = rs_surface_make_mesh(tm.xyz, tm.nvert, tm.tri, tm.ntri, &def,
+                                          &walls[which], &e);
+            rs_trimesh_free(&tm);
+            rs_surface_free(&drum);
+        }
+        if (rc != RS_OK) {
             fprintf(stderr, "fuzz_bodies: wall %u: %s\n", which, e.msg);
             return 1;
         }
@@ -193,7 +207,7 @@ int rs_fuzz_bodies_one(const uint8_t *data, size_t size)
         rs_convex_contact c;
         rs_error e;
         rs_error_clear(&e);
-        const unsigned pick = next(&b) % 4;
+        const unsigned pick = next(&b) % 5;
         if (pick >= 2) {
             fail = wall_contacts(&a, pick - 2, gap_max);
         } else if (pick) {
