@@ -1,5 +1,7 @@
 /* Convex bodies in the standalone driver (rs_driver_set_body, rs_body_query) against
  * closed forms of rigid-body mechanics on the plane z = 0, with the linear law hooke:
+ * - an ellipsoid held in any orientation comes to rest at its support value along the
+ *   normal, less the law's overlap;
  * - a cube dropped flat rests on its four corners (overlap v0 sqrt(m / 4 kn)) and
  *   rebounds at its speed without spin; dropped on an edge, it leaves with the velocity
  *   and spin of a frictionless elastic impact at that edge;
@@ -103,6 +105,45 @@ static void test_cube_dropped_flat_rests_on_four_corners_and_rebounds(void)
     ENSURE_SMALL(d.vy[0], 1e-12);
     rs_driver_free(&d);
     rs_surface_free(&s);
+}
+
+/* An ellipsoid (semi-axes D) held in an orientation (no moments of inertia: it keeps its
+ * zero spin) let down onto the plane under gravity, damped: it comes to rest with its
+ * centre at the support value along the normal, h = |diag(D) R^T e_z|, less the law's
+ * overlap m g / kn, in any orientation. */
+static void test_ellipsoid_rests_at_its_support_height(void)
+{
+    const double D[3] = {0.02, 0.012, 0.01}, g = 9.81, kn = 1e5;
+    const double law[5] = {kn, kn, 0.7, 0.7, 0.0};
+    const double axes[4][4] = {{0.0, 1, 0, 0},
+                               {0.7, 1, 0, 0},
+                               {1.1, 0.3, -0.5, 0.8},
+                               {2.5, -0.2, 0.9, 0.4}}; /* angle, axis */
+    rs_shape ell;
+    ENSURE(rs_shape_make_ellipsoid(&ell, D[0], D[1], D[2], 0.0, NULL) == RS_OK);
+    for (int c = 0; c < 4; c++) {
+        rs_surface s;
+        rs_driver d;
+        ENSURE(setup(&d, &s, 1, law, 2e-5));
+        ENSURE(rs_driver_set_body(&d, 0, &ell, 1000.0, NULL) == RS_OK);
+        quat_axis(axes[c][0], axes[c] + 1, d.q);
+        double R[9];
+        rs_quat_matrix(d.q, R);
+        const double h = sqrt(D[0] * D[0] * R[6] * R[6] + D[1] * D[1] * R[7] * R[7] +
+                              D[2] * D[2] * R[8] * R[8]);
+        for (int k = 0; k < 3; k++)
+            d.inertia[k] = 0.0;
+        d.z[0] = h + 5e-5;
+        d.fext[2] = -g * d.mass[0];
+        for (int k = 0; k < 10000; k++)
+            ENSURE(step(&d));
+        const double delta = d.mass[0] * g / kn; /* about 1e-6 */
+        ENSURE(d.trk.n == 1);
+        ENSURE_NEAR(d.z[0], h - delta, 1e-6 * delta);
+        ENSURE_SMALL(d.vz[0], 1e-9);
+        rs_driver_free(&d);
+        rs_surface_free(&s);
+    }
 }
 
 /* A cube turned by phi about x dropped at v0 on its lowest edge, frictionless and
@@ -541,6 +582,7 @@ int main(void)
 {
     RS_RUN(test_cube_dropped_flat_rests_on_four_corners_and_rebounds);
     RS_RUN(test_cube_dropped_on_an_edge_leaves_with_the_impulse_about_it);
+    RS_RUN(test_ellipsoid_rests_at_its_support_height);
     RS_RUN(test_elastic_bodies_keep_their_energy);
     RS_RUN(test_box_on_a_slope_sticks_slides_and_tips);
     RS_RUN(test_cylinder_and_capsule_roll_at_two_thirds_g_sin);
