@@ -248,10 +248,8 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
          * its deepest iterate */
         if (o->iterations < 0 && ncp > 0)
             deep_is_core = 1;
-        const mpoint *first = deep_is_core ? m + 1 : m;
-        int count = deep_is_core ? nm - 1 : nm;
-        mpoint keep[CAND_MAX];
-        memcpy(keep, first, (size_t)count * sizeof *keep);
+        mpoint *keep = deep_is_core ? m + 1 : m;
+        const int count = deep_is_core ? nm - 1 : nm;
         qsort(keep, (size_t)count, sizeof *keep, by_depth);
         /* two kept points of one id (a polyhedron's vertices i and i + 30): the deeper */
         int nk = 0;

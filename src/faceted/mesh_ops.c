@@ -16,6 +16,18 @@ static int element_has(const rs_mesh *m, int k, const int *tab, int x)
     return 0;
 }
 
+/* Do elements ia and ib share an edge of the given kind? */
+static int faces_share(const rs_mesh *m, int ia, int ib, int kind)
+{
+    for (int t = m->el_t0[ia]; t < m->el_t0[ia + 1]; t++)
+        for (int j = 0; j < 3; j++) {
+            const int e = m->tedge[3 * t + j];
+            if (m->edge_kind[e] == kind && element_has(m, ib, m->tedge, e))
+                return 1;
+        }
+    return 0;
+}
+
 /* History passes where the contact normal is continuous: between faces across a flat
  * edge, between a face and its own edges and vertices, and between an edge and its
  * nodes. */
@@ -38,17 +50,8 @@ static int mesh_adjacent(const rs_surface *s, int fa, int fb)
     }
     if (ta == RS_FEAT_FACE && ia >= m->nel)
         return 0;
-    if (ta == RS_FEAT_FACE && tb == RS_FEAT_FACE) {
-        if (ib >= m->nel)
-            return 0;
-        for (int t = m->el_t0[ia]; t < m->el_t0[ia + 1]; t++)
-            for (int j = 0; j < 3; j++) {
-                const int e = m->tedge[3 * t + j];
-                if (m->edge_kind[e] == RS_EDGE_FLAT && element_has(m, ib, m->tedge, e))
-                    return 1;
-            }
-        return 0;
-    }
+    if (ta == RS_FEAT_FACE && tb == RS_FEAT_FACE)
+        return ib < m->nel && faces_share(m, ia, ib, RS_EDGE_FLAT);
     if (ta == RS_FEAT_FACE && tb == RS_FEAT_EDGE)
         return ib < m->ne && element_has(m, ia, m->tedge, ib);
     if (ta == RS_FEAT_FACE && tb == RS_FEAT_VERTEX)
@@ -67,15 +70,7 @@ static int mesh_fold(const rs_surface *s, int fa, int fb)
         RS_FEATURE_TYPE(fb) != RS_FEAT_FACE)
         return 0;
     const int ia = RS_FEATURE_INDEX(fa), ib = RS_FEATURE_INDEX(fb);
-    if (ia >= m->nel || ib >= m->nel)
-        return 0;
-    for (int t = m->el_t0[ia]; t < m->el_t0[ia + 1]; t++)
-        for (int j = 0; j < 3; j++) {
-            const int e = m->tedge[3 * t + j];
-            if (m->edge_kind[e] == RS_EDGE_CONCAVE && element_has(m, ib, m->tedge, e))
-                return 1;
-        }
-    return 0;
+    return ia < m->nel && ib < m->nel && faces_share(m, ia, ib, RS_EDGE_CONCAVE);
 }
 
 static void mesh_bounds(const rs_surface *s, double lo[3], double hi[3])
