@@ -3,6 +3,7 @@
  * is independent of the surface query. */
 #include "rigidsurf/track.h"
 #include "rs_test.h"
+#include "rs_test_contacts.h"
 #include "rs_test_geom.h"
 
 #include <stdlib.h>
@@ -10,7 +11,7 @@
 #define NS 2 /* state variables per contact in these tests */
 #define HS RS_HIST_SIZE(NS)
 #define CAP 4
-#define MAXC 96
+#define MAXC RS_TEST_MAXC
 
 /* ---- small vector helpers (the test's own) ---- */
 static void axpy(double *y, double a, const double x[3], const double b[3])
@@ -82,62 +83,21 @@ static void block_set(block *b, int i, const double x[3], const double v[3],
     b->r[i] = r;
 }
 
-typedef struct clist {
-    int point[MAXC], feature[MAXC];
-    double xm[3][MAXC], nrm[3][MAXC], t1[3][MAXC], t2[3][MAXC], dist[MAXC], curv[2][MAXC];
-    rs_contacts c;
-} clist;
-
-static void clist_init(clist *l)
-{
-    memset(l, 0, sizeof *l);
-    l->c.cap = MAXC;
-    l->c.point = l->point;
-    l->c.feature = l->feature;
-    for (int d = 0; d < 3; d++) {
-        l->c.xm[d] = l->xm[d];
-        l->c.nrm[d] = l->nrm[d];
-        l->c.t1[d] = l->t1[d];
-        l->c.t2[d] = l->t2[d];
-    }
-    l->c.dist = l->dist;
-    l->c.curv[0] = l->curv[0];
-    l->c.curv[1] = l->curv[1];
-}
-
-static void clist_add(clist *l, int point, int feature, const double xm[3],
-                      const double n[3], const double t1[3], const double t2[3],
-                      double dist)
-{
-    int k = l->c.n++;
-    l->point[k] = point;
-    l->feature[k] = feature;
-    for (int d = 0; d < 3; d++) {
-        l->xm[d][k] = xm[d];
-        l->nrm[d][k] = n[d];
-        l->t1[d][k] = t1[d];
-        l->t2[d][k] = t2[d];
-    }
-    l->dist[k] = dist;
-    l->curv[0][k] = 0.0;
-    l->curv[1][k] = 0.0;
-}
-
 /* Contact of a sphere centre x with the plane through P with unit normal n. */
-static void add_plane(clist *l, int point, int feature, const double x[3],
+static void add_plane(rs_test_clist *l, int point, int feature, const double x[3],
                       const double P[3], const double n[3], const double t1[3],
                       const double t2[3])
 {
     double d[3] = {x[0] - P[0], x[1] - P[1], x[2] - P[2]}, xm[3];
     double dist = rs_dot3(d, n);
     axpy(xm, -dist, n, x);
-    clist_add(l, point, feature, xm, n, t1, t2, dist);
+    rs_test_clist_add(l, point, feature, xm, n, t1, t2, dist);
 }
 
 /* Contact of a point x inside a drum: cylinder through A along unit g, radius Rc. The
  * normal points inward (-e_r); CYLINDER frame t1 = g, t2 = n x t1. */
-static void add_drum(clist *l, int point, int feature, const double x[3], const double A[3],
-                     const double g[3], double Rc)
+static void add_drum(rs_test_clist *l, int point, int feature, const double x[3],
+                     const double A[3], const double g[3], double Rc)
 {
     double d[3] = {x[0] - A[0], x[1] - A[1], x[2] - A[2]}, rad[3], n[3], t2[3], xm[3];
     double h = rs_dot3(d, g);
@@ -148,7 +108,7 @@ static void add_drum(clist *l, int point, int feature, const double x[3], const 
         xm[i] = A[i] + h * g[i] + Rc * rad[i] / r;
     }
     rs_cross3(n, g, t2);
-    clist_add(l, point, feature, xm, n, g, t2, Rc - r);
+    rs_test_clist_add(l, point, feature, xm, n, g, t2, Rc - r);
 }
 
 static rs_tracker tracker(int ndir)
@@ -171,7 +131,7 @@ static int drot_is(const rs_track_out *o, int e, double a, double b, double c, d
 typedef struct fixture {
     rs_tracker tr;
     block b;
-    clist l;
+    rs_test_clist l;
     rs_track_out o;
     rs_error err;
 } fixture;
@@ -209,7 +169,7 @@ static void check_rigid_contact(const rs_track_out *o, double pen)
 static int drum_call(fixture *fx, const rs_motion *m, double dt, int feature,
                      const double x[3], const double A[3], const double g[3], double Rc)
 {
-    clist_init(&fx->l);
+    rs_test_clist_init(&fx->l);
     add_drum(&fx->l, 0, feature, x, A, g, Rc);
     return track_call(fx, NULL, m, dt);
 }
@@ -220,7 +180,7 @@ static int plane_call(fixture *fx, const rs_surface *s, const rs_motion *m, doub
                       int feature, const double x[3], const double P[3], const double n[3],
                       const double t1[3], const double t2[3])
 {
-    clist_init(&fx->l);
+    rs_test_clist_init(&fx->l);
     add_plane(&fx->l, 0, feature, x, P, n, t1, t2);
     return track_call(fx, s, m, dt);
 }
@@ -392,7 +352,7 @@ static void test_previous_stress_shear_carried_by_drot(void)
     rs_track_commit(&fx.tr, &fx.o, sl, sv);
 
     /* Leaving: the stored stress comes back as it is (drot holds 1e30). */
-    clist_init(&fx.l);
+    rs_test_clist_init(&fx.l);
     ENSURE(track_call(&fx, NULL, NULL, dt) == RS_OK);
     ENSURE(fx.o.n == 1 && RS_DROT(fx.o.drot, 0, 0, 0) == RS_MAXVAL);
     double sl2[3];
@@ -654,7 +614,7 @@ static void test_leaving_slot_between_held_contacts(void)
     const double R = 0.01, z[3] = {0.0095, 0.0097, 0.0099};
     block_init(&fx.b, 3, &fx.tr);
     for (int step = 0; step < 3; step++) {
-        clist_init(&fx.l);
+        rs_test_clist_init(&fx.l);
         for (int i = 0; i < 3; i++) {
             /* step 2: particle 1 at gap 1.1e-3 > tracking 1e-3 */
             double x[3] = {0.1 * i, 0, step == 2 && i == 1 ? R + 1.1e-3 : z[i]};
@@ -756,7 +716,7 @@ static void test_capacity_error_names_particle(void)
     fx.b.id[1] = 4711;
     block_set(&fx.b, 0, x, zero, zero, 0.01);
     block_set(&fx.b, 1, x, zero, zero, 0.01);
-    clist_init(&fx.l);
+    rs_test_clist_init(&fx.l);
     add_plane(&fx.l, 0, 0, x, P, n, t1, t2);
     add_plane(&fx.l, 1, 0, x, P, n, t1, t2);
     ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_OK);
@@ -766,7 +726,7 @@ static void test_capacity_error_names_particle(void)
     memcpy(before, fx.b.hist, sizeof before);
     memcpy(dbefore, fx.b.dir, sizeof dbefore);
     /* Particle 4711: feature 0 leaves, features 4 and 8 arrive: 3 slots needed, 2 held. */
-    clist_init(&fx.l);
+    rs_test_clist_init(&fx.l);
     add_plane(&fx.l, 0, 0, x, P, n, t1, t2);
     add_plane(&fx.l, 1, 4, x, P, n, t1, t2);
     add_plane(&fx.l, 1, 8, x, P, n, t1, t2);
@@ -781,7 +741,7 @@ static void test_capacity_error_names_particle(void)
     block_init(&fx.b, 1, &fx.tr);
     fx.b.id[0] = 99;
     block_set(&fx.b, 0, x, zero, zero, 0.01);
-    clist_init(&fx.l);
+    rs_test_clist_init(&fx.l);
     for (int f = 0; f < 3; f++)
         add_plane(&fx.l, 0, RS_FEATURE(RS_FEAT_FACE, f), x, P, n, t1, t2);
     ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_ERR_CAPACITY);
@@ -806,8 +766,8 @@ static void test_ndir2_drot_identity(void)
         double n[3] = {-er[0], -er[1], 0}, t1[3], xm[3] = {Rw * er[0], Rw * er[1], 0};
         rs_cross3(mz, n, t1);
         block_set(&fx.b, 0, x, v, zero, R);
-        clist_init(&fx.l);
-        clist_add(&fx.l, 0, RS_FEATURE(RS_FEAT_FACE, 0), xm, n, t1, mz, Rw - rho);
+        rs_test_clist_init(&fx.l);
+        rs_test_clist_add(&fx.l, 0, RS_FEATURE(RS_FEAT_FACE, 0), xm, n, t1, mz, Rw - rho);
         ENSURE(track_call(&fx, NULL, NULL, dt) == RS_OK);
         ENSURE(fx.o.n == 1 && fx.o.ndir == 2);
         ENSURE(drot_is(&fx.o, 0, 1, 0, 0, 1, 0.0));
@@ -874,7 +834,7 @@ static void test_alocaldir_columns_and_contact_point(void)
     block_init(&fx.b, 2, &fx.tr);
     block_set(&fx.b, 0, x0, zero, zero, R);
     block_set(&fx.b, 1, x1, zero, zero, R);
-    clist_init(&fx.l);
+    rs_test_clist_init(&fx.l);
     add_plane(&fx.l, 0, 0, x0, P, fr[0][0], fr[0][1], fr[0][2]);
     add_plane(&fx.l, 0, 4, x0, P, fr[1][0], fr[1][1], fr[1][2]);
     add_plane(&fx.l, 1, 0, x1, P, fr[0][0], fr[0][1], fr[0][2]);
@@ -936,8 +896,8 @@ static void test_slot_major_layout_matches_contiguous(void)
     unsigned long long rng = 0x5eed1234abcdULL;
     int mismatch = 0, steps_with_contacts = 0, leaving_seen = 0;
     for (int step = 0; step < 60; step++) {
-        clist l;
-        clist_init(&l);
+        rs_test_clist l;
+        rs_test_clist_init(&l);
         for (int i = 0; i < NP; i++) {
             /* particle 0: feature 2 on or off; the others up to three of 0, 2, 4, 6 */
             int nf = 0, feats[3];
@@ -1023,12 +983,12 @@ static void test_rejects_unordered_contacts(void)
     double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0}, P[3] = {0, 0, 0};
     double x[3] = {0, 0, 0.0099};
     block_init(&fx.b, 2, &fx.tr);
-    clist_init(&fx.l);
+    rs_test_clist_init(&fx.l);
     add_plane(&fx.l, 1, 0, x, P, n, t1, t2);
     add_plane(&fx.l, 0, 0, x, P, n, t1, t2);
     ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_ERR_ARG);
     ENSURE(strstr(fx.err.msg, "block order") != NULL);
-    clist_init(&fx.l);
+    rs_test_clist_init(&fx.l);
     add_plane(&fx.l, 2, 0, x, P, n, t1, t2);
     ENSURE(track_call(&fx, NULL, NULL, 1e-3) == RS_ERR_ARG);
     fixture_free(&fx);
@@ -1051,7 +1011,7 @@ typedef struct cloud37 {
 } cloud37;
 
 /* Particle i's contacts at increment step, appended with point index pt. */
-static void contacts37(clist *l, const cloud37 *cl, int pt, int i, int step)
+static void contacts37(rs_test_clist *l, const cloud37 *cl, int pt, int i, int step)
 {
     const double A[3] = {0, 0, 0}, g[3] = {0, 0, 1}, P[3] = {0, 0, 0};
     const double n[3] = {0, 0, 1}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0};
@@ -1115,8 +1075,8 @@ static void block_vs_single(int nd)
         memcpy(b.wz, a.wz, sizeof a.wz);
         memcpy(b.r, a.r, sizeof a.r);
 
-        clist l;
-        clist_init(&l);
+        rs_test_clist l;
+        rs_test_clist_init(&l);
         for (int i = 0; i < NB; i++)
             contacts37(&l, &a, i, i, step);
         rs_particles pa = {.n = NB,
@@ -1150,8 +1110,8 @@ static void block_vs_single(int nd)
             twin += oa.point[e] == oa.point[e - 1];
 
         for (int i = 0, ea = 0; i < NB; i++) {
-            clist li;
-            clist_init(&li);
+            rs_test_clist li;
+            rs_test_clist_init(&li);
             contacts37(&li, &b, 0, i, step);
             rs_particles pb = {.n = 1,
                                .x = b.x + i,

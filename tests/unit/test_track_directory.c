@@ -4,55 +4,24 @@
 #include "rigidsurf/track.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
+#include "rs_test_contacts.h"
 
 #include <stdlib.h>
 
 #define NS 2
 #define HS RS_HIST_SIZE(NS)
 #define NP 3
-#define MAXC 8
-
-typedef struct plist {
-    int point[MAXC], feature[MAXC];
-    double xm[3][MAXC], nrm[3][MAXC], t1[3][MAXC], t2[3][MAXC], dist[MAXC], curv[2][MAXC];
-    rs_contacts c;
-} plist;
-
-static void plist_init(plist *l)
-{
-    memset(l, 0, sizeof *l);
-    l->c.cap = MAXC;
-    l->c.point = l->point;
-    l->c.feature = l->feature;
-    for (int d = 0; d < 3; d++) {
-        l->c.xm[d] = l->xm[d];
-        l->c.nrm[d] = l->nrm[d];
-        l->c.t1[d] = l->t1[d];
-        l->c.t2[d] = l->t2[d];
-    }
-    l->c.dist = l->dist;
-    l->c.curv[0] = l->curv[0];
-    l->c.curv[1] = l->curv[1];
-}
 
 /* The contact of centre x with the plane through the origin with unit normal n and
  * tangents t1, t2 = n x t1. */
-static void add_plane(plist *l, int point, int feature, const double x[3],
+static void add_plane(rs_test_clist *l, int point, int feature, const double x[3],
                       const double n[3], const double t1[3])
 {
-    const int k = l->c.n++;
     double t2[3];
     rs_cross3(n, t1, t2);
     const double dist = rs_dot3(x, n);
-    l->point[k] = point;
-    l->feature[k] = feature;
-    for (int d = 0; d < 3; d++) {
-        l->xm[d][k] = x[d] - dist * n[d];
-        l->nrm[d][k] = n[d];
-        l->t1[d][k] = t1[d];
-        l->t2[d][k] = t2[d];
-    }
-    l->dist[k] = dist;
+    const double xm[3] = {x[0] - dist * n[0], x[1] - dist * n[1], x[2] - dist * n[2]};
+    rs_test_clist_add(l, point, feature, xm, n, t1, t2, dist);
 }
 
 /* NP spheres whose directories and slots come from calloc, never cleared. */
@@ -147,8 +116,8 @@ static void test_zeroed_directory_is_empty(void)
             b.vy[i] = v[1];
             b.vz[i] = v[2];
         }
-        plist l;
-        plist_init(&l);
+        rs_test_clist l;
+        rs_test_clist_init(&l);
         for (int i = 0; i < NP; i++) {
             const double x[3] = {b.x[i], b.y[i], b.z[i]};
             if (i != 1)
@@ -167,7 +136,7 @@ static void test_zeroed_directory_is_empty(void)
 
         /* Next call: particle 0 has moved by v dt and now also touches the wall x = 0
          * with the same penetration. */
-        plist_init(&l);
+        rs_test_clist_init(&l);
         for (int i = 0; i < NP; i++) {
             b.x[i] += v[0] * dt;
             b.y[i] += v[1] * dt;
@@ -222,8 +191,8 @@ static void test_feature_in_two_slots_is_error(void)
             memset(&o, 0, sizeof o);
             rs_error err;
             rs_error_clear(&err);
-            plist l;
-            plist_init(&l);
+            rs_test_clist l;
+            rs_test_clist_init(&l);
             for (int i = 0; i < NP; i++) {
                 b.x[i] = 0.5 * i;
                 b.z[i] = R - pen;

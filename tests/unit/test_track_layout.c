@@ -7,6 +7,7 @@
 #include "rigidsurf/track.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
+#include "rs_test_contacts.h"
 
 #include <stdlib.h>
 
@@ -21,9 +22,7 @@ typedef struct scene {
     int id[2];
     double *dir[2], *hist[2];
     rs_particles p;
-    int point[MAXC], feature[MAXC];
-    double xm[3][MAXC], nrm[3][MAXC], t1[3][MAXC], t2[3][MAXC], dist[MAXC], curv[2][MAXC];
-    rs_contacts c;
+    rs_test_clist l;
     rs_track_out out;
 } scene;
 
@@ -55,18 +54,7 @@ static void scene_init(scene *s, unsigned drop)
                           .id = s->id,
                           .dir = s->dir,
                           .hist = s->hist};
-    s->c.cap = MAXC;
-    s->c.point = s->point;
-    s->c.feature = s->feature;
-    for (int d = 0; d < 3; d++) {
-        s->c.xm[d] = s->xm[d];
-        s->c.nrm[d] = s->nrm[d];
-        s->c.t1[d] = s->t1[d];
-        s->c.t2[d] = s->t2[d];
-    }
-    s->c.dist = s->dist;
-    s->c.curv[0] = s->curv[0];
-    s->c.curv[1] = s->curv[1];
+    rs_test_clist_init(&s->l);
 }
 
 static void scene_free(scene *s)
@@ -81,20 +69,12 @@ static void scene_free(scene *s)
 static void add_plane(scene *s, int point, int feature, const double n[3],
                       const double t1[3])
 {
-    const int k = s->c.n++;
     const double x[3] = {s->x[point], s->y[point], s->z[point]};
     double t2[3];
     rs_cross3(n, t1, t2);
     const double dist = rs_dot3(x, n);
-    s->point[k] = point;
-    s->feature[k] = feature;
-    for (int d = 0; d < 3; d++) {
-        s->xm[d][k] = x[d] - dist * n[d];
-        s->nrm[d][k] = n[d];
-        s->t1[d][k] = t1[d];
-        s->t2[d][k] = t2[d];
-    }
-    s->dist[k] = dist;
+    const double xm[3] = {x[0] - dist * n[0], x[1] - dist * n[1], x[2] - dist * n[2]};
+    rs_test_clist_add(&s->l, point, feature, xm, n, t1, t2, dist);
 }
 
 /* One call: the contacts of both spheres, the tracker, a stand-in law (stress, statev,
@@ -102,13 +82,13 @@ static void add_plane(scene *s, int point, int feature, const double n[3],
 static int step(scene *s, double dt, double *stress_in, double *statev_out, double *sed_in)
 {
     const double nf[3] = {0, 0, 1}, af[3] = {1, 0, 0}, nw[3] = {1, 0, 0}, aw[3] = {0, 1, 0};
-    s->c.n = 0;
+    s->l.c.n = 0;
     add_plane(s, 0, RS_FEATURE(RS_FEAT_FACE, 0), nf, af);
     add_plane(s, 0, RS_FEATURE(RS_FEAT_FACE, 1), nw, aw);
     add_plane(s, 1, RS_FEATURE(RS_FEAT_FACE, 0), nf, af);
     rs_error err;
     rs_error_clear(&err);
-    if (rs_track_update(&s->tr, NULL, NULL, dt, &s->p, &s->c, &s->out, &err) != RS_OK)
+    if (rs_track_update(&s->tr, NULL, NULL, dt, &s->p, &s->l.c, &s->out, &err) != RS_OK)
         return -1;
     const int n = s->out.n;
     double stress[3 * MAXC], statev[NS * MAXC], sed[MAXC], fs[MAXC], fm[MAXC];
