@@ -18,6 +18,26 @@ static inline void unit(double v[3])
     v[2] /= l;
 }
 
+/// q = (a, b, c, d) / |(a, b, c, d)|: a unit quaternion (w, x, y, z).
+static inline void unit_quat(double a, double b, double c, double d, double q[4])
+{
+    const double n = sqrt(a * a + b * b + c * c + d * d);
+    q[0] = a / n, q[1] = b / n, q[2] = c / n, q[3] = d / n;
+}
+
+/// An ellipsoid of semi-axes D turned by R (row-major, body to world): v = R D^2 R^T ez,
+/// so its lowest point along z is the centre less v / h, and h = sqrt(v_z), returned, is
+/// the centre's height above that point.
+static inline double ellipsoid_low(const double R[9], const double D[3], double v[3])
+{
+    for (int i = 0; i < 3; i++) {
+        v[i] = 0.0;
+        for (int j = 0; j < 3; j++)
+            v[i] += R[3 * i + j] * D[j] * D[j] * R[6 + j];
+    }
+    return sqrt(v[2]);
+}
+
 /// Parses the first surface of txt; prints the error message on failure.
 static inline int parse(const char *txt, rs_surface *s)
 {

@@ -11,6 +11,7 @@
 #include "rigidsurf/motion.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
+#include "rs_test_geom.h"
 
 #include <stdlib.h>
 
@@ -117,12 +118,6 @@ static int uv_sphere(double rad, int nlat, int nlon, rs_surface *s)
                 add_tri(&m, a, d, c);
         }
     return make(&m, 0, s);
-}
-
-static void unit_quat(double a, double b, double c, double d, double q[4])
-{
-    const double n = sqrt(a * a + b * b + c * c + d * d);
-    q[0] = a / n, q[1] = b / n, q[2] = c / n, q[3] = d / n;
 }
 
 /* The contacts of a sphere of radius R at x by the mesh's sphere query. */
@@ -246,12 +241,8 @@ static void test_bodies_across_the_diagonal(void)
             double q[4], R[9];
             unit_quat(quats[t][0], quats[t][1], quats[t][2], quats[t][3], q);
             rs_quat_matrix(q, R);
-            /* the ellipsoid: lowest point at height z - sqrt(ez^T R D^2 R^T ez) */
-            double v[3] = {0, 0, 0};
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++)
-                    v[i] += R[3 * i + j] * D[j] * D[j] * R[6 + j];
-            const double h = sqrt(v[2]);
+            double v[3];
+            const double h = ellipsoid_low(R, D, v); /* its lowest point at z - h */
             const double x[3] = {at[p][0], at[p][1], h - 0.01};
             rs_body b;
             rs_body_contact c[4];

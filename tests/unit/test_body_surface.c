@@ -6,6 +6,7 @@
 #include "rigidsurf/convex.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
+#include "rs_test_geom.h"
 
 #include <stdlib.h>
 
@@ -18,19 +19,6 @@ static const char *PLANE = "*SURFACE, TYPE=CYLINDER, NAME=floor\n"
 static const char *DRUM = "*SURFACE, TYPE=REVOLUTION, NAME=drum, FILLET RADIUS=0.05\n"
                           "0, 0, 0, 0, 0, 1\nSTART, 0, -0.3\nLINE, 0.5, -0.3\n"
                           "LINE, 0.5, 0.3\n";
-
-static void unit_quat(double a, double b, double c, double d, double q[4])
-{
-    const double n = sqrt(a * a + b * b + c * c + d * d);
-    q[0] = a / n, q[1] = b / n, q[2] = c / n, q[3] = d / n;
-}
-
-static int parse(const char *text, rs_surface *s)
-{
-    rs_error e;
-    rs_error_clear(&e);
-    return rs_surface_parse(text, "test", NULL, s, &e);
-}
 
 /* An ellipsoid of semi-axes D over the plane: its lowest point has height
  * z - sqrt(n^T R D^2 R^T n) with n = ez, at x - R D^2 R^T n / sqrt(...). */
@@ -47,12 +35,8 @@ static void test_ellipsoid_on_plane(void)
         double q[4], R[9];
         unit_quat(quats[t][0], quats[t][1], quats[t][2], quats[t][3], q);
         rs_quat_matrix(q, R);
-        /* R D^2 R^T ez: column j of R^T ez is R[6 + j] */
-        double v[3] = {0, 0, 0};
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++)
-                v[i] += R[3 * i + j] * D[j] * D[j] * R[6 + j];
-        const double h = sqrt(v[2]);
+        double v[3]; /* R D^2 R^T ez */
+        const double h = ellipsoid_low(R, D, v);
         const double x[3] = {0.1, -0.2, h - 0.01}; /* 1 cm into the floor */
         rs_body b;
         ENSURE(rs_body_init(&b, &sh, 1000.0, x, q, NULL) == RS_OK);

@@ -19,6 +19,7 @@
 #include "rigidsurf/driver.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
+#include "rs_test_geom.h"
 
 /* the plane z = 0, normal +z (a CYLINDER whose profile is one LINE) */
 static const char *PLANE = "*SURFACE, TYPE=CYLINDER, NAME=floor\n"
@@ -109,8 +110,8 @@ static void test_cube_dropped_flat_rests_on_four_corners_and_rebounds(void)
 
 /* An ellipsoid (semi-axes D) held in an orientation (no moments of inertia: it keeps its
  * zero spin) let down onto the plane under gravity, damped: it comes to rest with its
- * centre at the support value along the normal, h = |diag(D) R^T e_z|, less the law's
- * overlap m g / kn, in any orientation. */
+ * centre at the support value along the normal, h = sqrt(e_z^T R D^2 R^T e_z), less the
+ * law's overlap m g / kn, in any orientation. */
 static void test_ellipsoid_rests_at_its_support_height(void)
 {
     const double D[3] = {0.02, 0.012, 0.01}, g = 9.81, kn = 1e5;
@@ -129,8 +130,8 @@ static void test_ellipsoid_rests_at_its_support_height(void)
         quat_axis(axes[c][0], axes[c] + 1, d.q);
         double R[9];
         rs_quat_matrix(d.q, R);
-        const double h = sqrt(D[0] * D[0] * R[6] * R[6] + D[1] * D[1] * R[7] * R[7] +
-                              D[2] * D[2] * R[8] * R[8]);
+        double v[3];
+        const double h = ellipsoid_low(R, D, v);
         for (int k = 0; k < 3; k++)
             d.inertia[k] = 0.0;
         d.z[0] = h + 5e-5;
