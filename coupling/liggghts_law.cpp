@@ -4,6 +4,7 @@
  * a wall/rigid contact and a wall/gran contact of the same geometry get the same force. */
 #include "liggghts_law.h"
 
+#include "atom.h"
 #include "contact_models.h"
 #include "error.h"
 #include "force.h"
@@ -251,6 +252,20 @@ double LiggghtsLaw::close_factor() const
     return lmp_->neighbor->contactDistanceFactor;
 }
 
+void LiggghtsLaw::wall_rows()
+{
+    Atom *atom = lmp_->atom;
+    if (atom->v == vsrc_ && atom->omega == wsrc_ && atom->nmax == rows_nmax_)
+        return;
+    vsrc_ = atom->v;
+    wsrc_ = atom->omega;
+    rows_nmax_ = atom->nmax;
+    vrows_.assign(vsrc_, vsrc_ + rows_nmax_);
+    wrows_.assign(wsrc_, wsrc_ + rows_nmax_);
+    vrows_.push_back(NULL);
+    wrows_.push_back(wall_spin_);
+}
+
 bool LiggghtsLaw::contact(const LiggghtsContact &c, double F[3], double T[3])
 {
     F[0] = F[1] = F[2] = T[0] = T[1] = T[2] = 0.0;
@@ -273,8 +288,15 @@ bool LiggghtsLaw::contact(const LiggghtsContact &c, double F[3], double T[3])
         sd.en[d] = c.normal[d];
     }
     sd.area_ratio = 1.0;
+    /* The wall is j, a row past the atoms that holds its velocity and no spin: the close
+     * branches of the capillary bridges (easo, washino) read the wall's velocity as
+     * atom->v[j] and atom->omega[j]. (LIGGGHTS's primitive walls pass j = -type, which
+     * reads before those arrays; its mesh walls pass the triangle's index, which reads
+     * the velocity of the atom of that number.) */
+    wall_rows();
+    vrows_[rows_nmax_] = const_cast<double *>(c.vwall);
     sd.i = c.i;
-    sd.j = -c.jtype; /* a wall without triangles, as LIGGGHTS's primitive walls */
+    sd.j = rows_nmax_;
     sd.itype = c.itype;
     sd.jtype = c.jtype;
     sd.contact_flags = NULL;
@@ -288,6 +310,9 @@ bool LiggghtsLaw::contact(const LiggghtsContact &c, double F[3], double T[3])
     sd.shearupdate = c.update_history ? 1 : 0;
 
     LCM::ForceData fi, fj;
+    Atom *atom = lmp_->atom;
+    atom->v = vrows_.data();
+    atom->omega = wrows_.data();
     if (touching) {
         model_->surfacesIntersect(sd, fi, fj);
         model_->endSurfacesIntersect(sd, fi, fj);
@@ -296,6 +321,8 @@ bool LiggghtsLaw::contact(const LiggghtsContact &c, double F[3], double T[3])
         sd.has_force_update = false;
         model_->surfacesClose(sd, fi, fj);
     }
+    atom->v = vsrc_;
+    atom->omega = wsrc_;
     if (!sd.has_force_update)
         return false;
     for (int d = 0; d < 3; d++) {

@@ -75,11 +75,19 @@ class LiggghtsLaw final : public LIGGGHTS::IContactHistorySetup
     int add_history_value(std::string name, std::string newtonflag) override;
 
   private:
+    /// atom->v and atom->omega with one row more, at atom->nmax, for the wall (see
+    /// contact()); rebuilt when the atom arrays move or grow.
+    void wall_rows();
+
     LAMMPS *lmp_;
     std::string desc_;
     struct Model;
     Model *model_;
     int nhist_;
+    std::vector<double *> vrows_, wrows_;
+    double **vsrc_ = nullptr, **wsrc_ = nullptr;
+    int rows_nmax_ = -1;
+    double wall_spin_[3] = {0.0, 0.0, 0.0};
 };
 
 } // namespace LAMMPS_NS

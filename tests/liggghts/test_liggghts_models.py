@@ -41,11 +41,15 @@ relative (scales R, 1 m/s, 1/R rad/s).
 Mesh walls. hertz/history with each cohesion and each rolling model on a flat STL
 floor of two triangles (fix mesh/surface + wall/gran mesh) against `surface inline
 mesh` of the same file, one deck each (LIGGGHTS allows one mesh wall/gran per deck).
-The sphere lands next to the floor's diagonal edge and slides across it. Measured: the
-trajectories agree to 3.8e-5 relative (MESH_TOL 1e-4); a sphere that stays on one
-triangle agrees to 3e-16. The difference at the edge is not explained here (LIGGGHTS's
-mesh walls keep a contact per triangle and hand it over at the edge; rigidsurf has one
-contact on the flat pair).
+The sphere crosses the floor's diagonal edge, lands, slides and is pulled off; every
+trajectory equals LIGGGHTS's to 1e-9 (measured 1e-16), but for one stretch named here.
+easo/capillary/viscous's bridge, once the sphere has left the floor, damps by the
+velocity of "atom j" (atom->v[j]): LIGGGHTS's mesh walls pass j = the triangle's index
+(fix_wall_gran_base.h), so its bridge to a triangle takes the velocity of the atom of
+that number; fix wall/rigid passes the wall's own velocity (as LIGGGHTS's primitive
+walls mean to: theirs pass j = -type, a read before the atom arrays that valgrind
+reports). There the two differ, so easo's trajectory is compared until the reference
+sphere leaves the floor; after it the difference is reported (3.8e-5), not checked.
 
 A particle with several contacts at a concave fold (the shares of docs/conventions.md)
 under law liggghts: test_liggghts_folds.py.
@@ -71,7 +75,7 @@ R, RHO, DT = 0.005, 2500.0, 1.0e-5
 MASS = RHO * 4.0 / 3.0 * math.pi * R ** 3
 G = 9.81
 TOL = 1e-9
-MESH_TOL = 1e-4           # the flat mesh's diagonal edge: see the docstring
+BRIDGE_ATOM_J = "easo/capillary/viscous"  # reads atom j's velocity: see the docstring
 RESTITUTION = 0.3         # the sphere settles early in phase 1
 SCALES = {"x": R, "y": R, "z": R, "vx": 1.0, "vy": 1.0, "vz": 1.0,
           "omegax": 1.0 / R, "omegay": 1.0 / R, "omegaz": 1.0 / R}
@@ -403,7 +407,7 @@ def run_mesh(s, lists, report):
     s.write("floor.stl", L.stl_text(tris))
     # the sphere starts over the triangle y > x and slides across the diagonal y = x
     starts = [((-0.0001, 0.0001, R + GAP), (0.1, -0.05, -0.05))]
-    worst, bad_touch, bad_cross = 0.0, [], []
+    worst, bridge, bad_touch, bad_cross = 0.0, 0.0, [], []
     for k, c in enumerate(combos):
         tag = "mesh%d" % k
         ref = ["fix floor all mesh/surface file floor.stl type 2",
@@ -418,6 +422,17 @@ def run_mesh(s, lists, report):
             bad_touch.append(words(c))
         if not any(at[1]["y"] < at[1]["x"] for _, at in fb):
             bad_cross.append(words(c))
+        if c[2] == BRIDGE_ATOM_J:
+            # until the reference sphere leaves the floor in the pull (phase 2)
+            off = next((st for st, at in fb if st > N1 and at[1]["z"] > R), None)
+            if off is None:
+                bad_touch.append(words(c) + " (never left the floor)")
+                off = 0
+            w = L.compare_frames(fa, fb, SCALES)
+            after = max(v[0] for v in w.values()) if w else float("inf")
+            bridge = max(bridge, after)
+            fa = [f for f in fa if f[0] < off]
+            fb = [f for f in fb if f[0] < off]
         w = L.compare_frames(fa, fb, SCALES)
         d = max(v[0] for v in w.values()) if w else float("inf")
         worst = max(worst, d)
@@ -426,8 +441,10 @@ def run_mesh(s, lists, report):
     s.ck.check("mesh floor: every reference sphere crossed the diagonal edge",
                not bad_cross, why="; ".join(bad_cross[:5]))
     s.ck.check("mesh floor, hertz/history x %d cohesion x rolling: trajectories equal "
-               "LIGGGHTS's to %g" % (len(combos), MESH_TOL), worst <= MESH_TOL,
-               "worst rel %.3g" % worst)
+               "LIGGGHTS's to %g (%s until the sphere leaves the floor; after it, with "
+               "LIGGGHTS's atom-j velocity, %.3g)" % (len(combos), TOL, BRIDGE_ATOM_J,
+                                                      bridge),
+               worst <= TOL, "worst rel %.3g" % worst)
     report["mesh"] = worst
 
 

@@ -9,7 +9,8 @@ malformed fix line (the error path); spheres in an open STL box (MESH: face, edg
 corner contacts) that turns, with its facets' wear and VTK, and an empty mesh file (its
 error path); a VUINTER given as its Fortran source, which calls the utility routines;
 law liggghts with cohesion and rolling friction in the drum (LIGGGHTS's submodels,
-created and freed by the law).
+created and freed by the law), and a capillary bridge (easo/capillary/viscous) pulled
+off a plane, whose close branch reads the wall's velocity as an atom's.
 
 What counts: every memcheck error (invalid read/write/free, uninitialised value,
 mismatched free), and every definitely or indirectly lost block whose allocation stack
@@ -24,6 +25,7 @@ import os
 import re
 
 import liglib as L
+import test_liggghts_models as M
 
 R, RHO = 0.004, 2500.0
 # Our frames, by function or by source file; never by the executable's path (the
@@ -179,6 +181,16 @@ def body(s):
             "history cohesion sjkr rolling_friction epsd2 type 2 rotate origin 0 0 0 axis "
             "0 0 1 omega 3\nfix integr all nve/sphere\nrun 300\n")
     runs.append(("law_liggghts", lig, 0))
+    # law liggghts with a capillary bridge (easo/capillary/viscous) pulled off a plane:
+    # the bridge's close branch reads the wall's velocity and spin as atom j's, which
+    # the law puts in a row past the atoms (read before the atom arrays, it would be an
+    # invalid read)
+    s.write("bridge.inp", L.plane_z(0.0, 0.2))
+    bridge = M.deck([((0.0, 0.0, M.R + M.GAP), (0.1, 0.0, -0.05))],
+                    ["fix w all wall/rigid surface bridge.inp law liggghts model hertz "
+                     "tangential history cohesion easo/capillary/viscous type 2"],
+                    "bridge", normal="hertz")
+    runs.append(("law_liggghts_bridge", bridge, 0))
     for tag, deck, want_rc in runs:
         rc, out = s.run(tag, deck, expect_ok=False, prefix=VALGRIND, timeout=600)
         s.ck.check(tag + ": exit status %d" % want_rc, rc == want_rc, "%s" % rc,
