@@ -92,6 +92,20 @@ static void group_shares(rs_contacts *c, int a, int m, const double *P, double R
     rs_contacts_patch_shares(c, a, m, R);
 }
 
+/* The shares of the m contacts from a of one slave of radius R (P its centre, NULL for
+ * a body's), whose shares hold 1: group_shares over at most RS_SHARE_MAX of them, the
+ * list marked shared where one differs from 1. */
+static void slave_shares(rs_contacts *c, int a, int m, const double *P, double R)
+{
+    if (m > RS_SHARE_MAX)
+        m = RS_SHARE_MAX;
+    if (m < 2 || !(R > 0.0))
+        return;
+    group_shares(c, a, m, P, R);
+    for (int k = a; k < a + m; k++)
+        c->shared |= c->share[k] != 1.0;
+}
+
 void rs_contacts_fold_shares(const rs_query *q, rs_contacts *c, int k0)
 {
     const int n = c->n;
@@ -110,13 +124,8 @@ void rs_contacts_fold_shares(const rs_query *q, rs_contacts *c, int k0)
             b++;
         const int i = pt[a];
         const double R = q->slave.radius[i];
-        if (b - a >= 2 && R > 0.0) {
-            const double P[3] = {q->slave.x[i], q->slave.y[i], q->slave.z[i]};
-            const int m = b - a < RS_SHARE_MAX ? b - a : RS_SHARE_MAX;
-            group_shares(c, a, m, P, R);
-            for (int k = a; k < a + m; k++)
-                c->shared |= sh[k] != 1.0;
-        }
+        const double P[3] = {q->slave.x[i], q->slave.y[i], q->slave.z[i]};
+        slave_shares(c, a, b - a, P, R);
         a = b;
     }
 }
@@ -125,13 +134,7 @@ void rs_contacts_body_shares(rs_contacts *c, int a, int m, double R)
 {
     for (int k = a; k < a + m; k++)
         c->share[k] = 1.0;
-    if (m > RS_SHARE_MAX)
-        m = RS_SHARE_MAX;
-    if (m >= 2 && R > 0.0) {
-        group_shares(c, a, m, NULL, R);
-        for (int k = a; k < a + m; k++)
-            c->shared |= c->share[k] != 1.0;
-    }
+    slave_shares(c, a, m, NULL, R);
 }
 
 void rs_contacts_patch_shares(rs_contacts *c, int a, int m, double R)

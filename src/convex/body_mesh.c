@@ -122,6 +122,22 @@ static int cmp_member(const void *pa, const void *pb)
  * beyond it. */
 #define RS_BODY_FACE_COS 0.5
 
+/* The body's deepest point xs along -n below the plane through a0 with unit normal n
+ * (toward the body): its depth (a0 - xs).n, its foot on the plane, and the foot in the
+ * mesh's reference configuration F. */
+static double deepest_along(const rs_body *b, const rs_pose *p, const double n[3],
+                            const double a0[3], double xs[3], double foot[3], double F[3])
+{
+    const double down[3] = {-n[0], -n[1], -n[2]};
+    rs_body_support(b, down, xs);
+    const double depth =
+        (a0[0] - xs[0]) * n[0] + (a0[1] - xs[1]) * n[1] + (a0[2] - xs[2]) * n[2];
+    for (int d = 0; d < 3; d++)
+        foot[d] = xs[d] + depth * n[d];
+    rs_pose_to_local(p, foot, F);
+    return depth;
+}
+
 /* Does a triangle of the region (candidates ru[0 .. nr)) hold the reference point X? */
 static int region_holds(const rs_surface *s, const cand *c, const member *ru, int nr,
                         const double X[3])
@@ -158,16 +174,10 @@ static int region_face(const rs_surface *s, const rs_pose *p, const rs_body *b,
         (b->x[0] - a0[0]) * nf[0] + (b->x[1] - a0[1]) * nf[1] + (b->x[2] - a0[2]) * nf[2];
     const double side = s->sides != 2 || h >= 0.0 ? 1.0 : -1.0;
     const double ns[3] = {side * nf[0], side * nf[1], side * nf[2]};
-    const double down[3] = {-ns[0], -ns[1], -ns[2]};
     double xs[3], foot[3], F[3];
-    rs_body_support(b, down, xs);
-    const double depth =
-        (a0[0] - xs[0]) * ns[0] + (a0[1] - xs[1]) * ns[1] + (a0[2] - xs[2]) * ns[2];
+    const double depth = deepest_along(b, p, ns, a0, xs, foot, F);
     if (!(depth >= -gap_max))
         return 0;
-    for (int d = 0; d < 3; d++)
-        foot[d] = xs[d] + depth * ns[d];
-    rs_pose_to_local(p, foot, F);
     const int k = region_holds(s, c, ru, nr, F);
     if (k < 0)
         return 0;
@@ -203,16 +213,10 @@ static int over_a_fold(const rs_surface *s, const rs_pose *p, const rs_body *b,
                        const cand *c, int nc, int k, const double n[3])
 {
     const cand *ck = c + k;
-    const double down[3] = {-n[0], -n[1], -n[2]}, *a0 = ck->tri;
     double xs[3], foot[3], F[3];
-    rs_body_support(b, down, xs);
-    const double depth =
-        (a0[0] - xs[0]) * n[0] + (a0[1] - xs[1]) * n[1] + (a0[2] - xs[2]) * n[2];
+    const double depth = deepest_along(b, p, n, ck->tri, xs, foot, F);
     if (!(depth > ck->cc.depth + RS_BODY_TIE_REL * rs_body_reach(b)))
         return 0;
-    for (int d = 0; d < 3; d++)
-        foot[d] = xs[d] + depth * n[d];
-    rs_pose_to_local(p, foot, F);
     int beyond = 0;
     for (int j = 0; j < nc; j++) {
         if (c[j].region != ck->region)
