@@ -548,6 +548,7 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
 {
     track_run r;
     int e = 0, sc = 0; /* sc: the next of out->seeded */
+    const int nseeded = out->nseeded, *const seeded = out->seeded;
     while (e < ne) {
         const int k0 = out->point[e];
         if (k0 < 0) {
@@ -570,8 +571,9 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
         }
         run_gather(&r, m, out, e0);
         const int s0 = sc; /* seeded entries of this run: live, from the copied slot */
-        for (; sc < out->nseeded && out->seeded[sc] < e0 + m; sc++)
-            r.live[out->seeded[sc] - e0] = 1.0;
+        if (nseeded)
+            for (; sc < nseeded && seeded[sc] < e0 + m; sc++)
+                r.live[seeded[sc] - e0] = 1.0;
         if (c->witness && c->xs[0])
             run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, mr->belt, 1);
         else if (mr->belt)
@@ -579,7 +581,7 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
         else
             run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 0, 0);
         for (int q = s0; q < sc; q++) { /* its own normal increment, as a new contact's */
-            const int j = out->seeded[q] - e0;
+            const int j = seeded[q] - e0;
             r.drd1[j] = -r.vn[j] * dt;
         }
         run_outputs(&r, m, c, k0, out, e0, nd);

@@ -4,26 +4,28 @@
  * neighbour's history across a concave fold), leaving slots listed. */
 #include "track_slots.h"
 
+#include "rs_compiler.h"
+
 #include <stdint.h>
 #include <string.h>
 
-/* A body's new contacts (bit q of fresh) that begin overlapping beside a held contact of
- * the same manifold point on a face across a concave fold (a facet of a drum that the
- * body moves onto, where the two contacts share its patch) continue that
+/* A body's new contacts (their slots sl[q] were free: not in active) that begin overlapping
+ * beside a held contact of the same manifold point on a face across a concave fold (a facet
+ * of a drum that the body moves onto, where the two contacts share its patch) continue that
  * contact's history: its slot is copied into the new one, which is free (so an error
  * later in pass 1 leaves the history as it was), and the entry (e0 + q) is listed in
  * out->seeded for pass 2 to read as live. */
-static void seed_body_slots(const rs_surface *s, const rs_particles *p, int i,
-                            const rs_contacts *c, const int *kk, const int *sl, int nk,
-                            uint64_t fresh, double *h, ptrdiff_t stride, rs_track_out *out,
-                            int e0)
+static RS_NOINLINE void seed_body_slots(const rs_surface *s, const rs_particles *p, int i,
+                                        const rs_contacts *c, const int *kk, const int *sl,
+                                        int nk, uint64_t active, double *h,
+                                        ptrdiff_t stride, rs_track_out *out, int e0)
 {
     const double rad = p->radius ? p->radius[i] : 0.0;
     for (int q = 0; q < nk; q++) {
-        if (!(fresh >> q & 1u) || !(c->dist[kk[q]] < rad))
+        if ((active >> sl[q] & 1u) || !(c->dist[kk[q]] < rad))
             continue;
         for (int r = 0; r < nk; r++)
-            if (!(fresh >> r & 1u) &&
+            if ((active >> sl[r] & 1u) &&
                 rs_surface_fold(s, c->feature[kk[r]], c->feature[kk[q]])) {
                 memcpy(h + sl[q] * stride, h + sl[r] * stride, (size_t)stride * sizeof *h);
                 out->seeded[out->nseeded++] = e0 + q;
@@ -97,7 +99,6 @@ int rs_track_assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_pa
                 }
         }
         /* New contacts take free slots; orphans keep theirs for the leaving call. */
-        uint64_t fresh = 0;
         for (int q = 0; q < nk; q++) {
             if (sl[q] >= 0)
                 continue;
@@ -109,10 +110,9 @@ int rs_track_assign_slots(const rs_tracker *tr, const rs_surface *s, const rs_pa
                 goto full;
             sl[q] = js;
             used |= (uint64_t)1 << js;
-            fresh |= (uint64_t)1 << q;
         }
-        if (fresh && s && p->body && p->body[i].shape)
-            seed_body_slots(s, p, i, c, kk, sl, nk, fresh, h, stride, out, *ne);
+        if (s && p->body && p->body[i].shape)
+            seed_body_slots(s, p, i, c, kk, sl, nk, active, h, stride, out, *ne);
     }
 
     for (int q = 0; q < nk; q++) {
