@@ -26,8 +26,11 @@ bool FixWallRigid::wall_moved_beyond_skin() const
     double bound = std::sqrt(dd);
     const double dphi = std::fabs(motion_.phi - phi_at_build_);
     if (dphi > 0.0 && !spin_invariant_) {
+        /* a material point at x moved by (R' R^T - I)(x - C - D) besides D' - D, for
+         * either centre (motion.h) */
         double c[3], rmax2 = 0.0;
-        rs_motion_center(&motion_, c);
+        for (int d = 0; d < 3; d++)
+            c[d] = motion_.center0[d] + motion_.disp[d];
         for (int k = 0; k < 8; k++) {
             const double p[3] = {(k & 1) ? domain->boxhi[0] : domain->boxlo[0],
                                  (k & 2) ? domain->boxhi[1] : domain->boxlo[1],

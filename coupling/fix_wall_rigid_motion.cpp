@@ -23,8 +23,9 @@ int rates_callback(double t, double vel[3], double *omega, void *ctx)
 
 } // namespace
 
-/* move linear VX VY VZ | rotate origin X Y Z axis AX AY AZ (omega W | period P).
- * A value may be v_NAME, an equal-style variable evaluated every step. */
+/* move linear VX VY VZ | rotate origin X Y Z axis AX AY AZ (omega W | period P)
+ * [centre moving|fixed]. A value may be v_NAME, an equal-style variable evaluated every
+ * step. */
 int FixWallRigid::parse_motion(int narg, char **arg, int iarg)
 {
     auto value = [&](const char *kw, const char *what, std::string &var) -> double {
@@ -91,6 +92,18 @@ int FixWallRigid::parse_motion(int narg, char **arg, int iarg)
         rs_error_clear(&err);
         if (rs_motion_set_rotation(&motion_, origin, axis, omega, &err) != RS_OK)
             fail(err.msg);
+        if (iarg < narg && std::strcmp(arg[iarg], "centre") == 0) {
+            iarg++;
+            if (iarg < narg && std::strcmp(arg[iarg], "fixed") == 0)
+                rs_motion_set_center_fixed(&motion_, 1);
+            else if (iarg < narg && std::strcmp(arg[iarg], "moving") == 0)
+                rs_motion_set_center_fixed(&motion_, 0);
+            else
+                fail(std::string("keyword 'rotate ... centre' expects 'moving' or 'fixed', "
+                                 "got '") +
+                     (iarg < narg ? arg[iarg] : "(end of line)") + "'");
+            iarg++;
+        }
     }
     moving_ = true;
     bool vars = !var_omega_.empty();

@@ -2,6 +2,7 @@
  * phi, D and t are accumulated with compensated summation and the pose
  * is rebuilt from phi each step, so a constant rotation does not drift. */
 #include "rigidsurf/motion.h"
+#include "rigidsurf/vec.h"
 
 #include <math.h>
 #include <string.h>
@@ -171,18 +172,32 @@ int rs_motion_advance(rs_motion *m, double dt, rs_error *err)
     }
     double dphi = m->omega * dt;
     kahan_add(&m->phi, &m->phi_err, dphi);
-    for (int i = 0; i < 3; i++)
-        kahan_add(&m->disp[i], &m->disp_err[i], m->vel[i] * dt);
-    kahan_add(&m->t, &m->t_err, dt);
     rs_rotation_matrix(m->axis, dphi, m->dQ);
+    if (m->center_fixed && dphi != 0.0) { /* the translation so far turns about C */
+        double d[3], e[3];
+        rs_matvec3(m->dQ, m->disp, d);
+        rs_matvec3(m->dQ, m->disp_err, e);
+        memcpy(m->disp, d, sizeof d);
+        memcpy(m->disp_err, e, sizeof e);
+    }
+    for (int i = 0; i < 3; i++) {
+        m->step_disp[i] = m->vel[i] * dt;
+        kahan_add(&m->disp[i], &m->disp_err[i], m->step_disp[i]);
+    }
+    kahan_add(&m->t, &m->t_err, dt);
     motion_update_pose(m);
     return RS_OK;
+}
+
+void rs_motion_set_center_fixed(rs_motion *m, int fixed)
+{
+    m->center_fixed = fixed != 0;
 }
 
 void rs_motion_center(const rs_motion *m, double c[3])
 {
     for (int i = 0; i < 3; i++)
-        c[i] = m->center0[i] + m->disp[i];
+        c[i] = m->center0[i] + (m->center_fixed ? m->step_disp[i] : m->disp[i]);
 }
 
 void rs_motion_velocity_at(const rs_motion *m, const double p[3], double v[3])

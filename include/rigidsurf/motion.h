@@ -5,6 +5,10 @@
  * angular speed omega about a fixed unit axis through a point C that moves with the
  * translation. Both are superposed:
  *     x(t) = C + D(t) + R(axis, phi(t)) (X - C),   D' = V,   phi' = omega.
+ * With the centre fixed in space (rs_motion_set_center_fixed) the rotation turns the
+ * wall about C where it stands, translation included, and the translation is added
+ * after it (LIGGGHTS's rotation made before a translation of the same mesh): the same
+ * pose with D' = omega axis x D + V, each step D <- dQ D + V dt.
  * Rotations are integrated through the accumulated angle phi, so a constant rotation
  * has no drift however long the run. Rates can change in time through a callback. */
 #ifndef RIGIDSURF_MOTION_H
@@ -55,7 +59,9 @@ typedef struct rs_motion {
                     ///< while its shape stays (a conveyor belt); see rs_motion_belt_at
     double dQ[9];   ///< incremental rotation of the last rs_motion_advance (row-major)
     double t_err, phi_err,
-        disp_err[3]; ///< compensated-summation remainders of t, phi, disp
+        disp_err[3];     ///< compensated-summation remainders of t, phi, disp
+    int center_fixed;    ///< nonzero: the rotation's centre stays at C in space
+    double step_disp[3]; ///< V dt of the last rs_motion_advance
 } rs_motion;
 
 /// No motion: identity pose, zero rates, axis = z, centre at the origin.
@@ -74,13 +80,21 @@ void rs_motion_set_translation(rs_motion *m, const double vel[3]);
 /// angular speed. Returns RS_ERR_ARG for a zero or non-finite axis.
 int rs_motion_set_rotation(rs_motion *m, const double center[3], const double axis[3],
                            double omega, rs_error *err);
+/// fixed != 0: the rotation's centre C stays where it is in space while the wall
+/// translates, so D turns with the rotation (D' = omega axis x D + V); 0 (the default):
+/// C moves with the translation (D' = V).
+void rs_motion_set_center_fixed(rs_motion *m, int fixed);
 /// Advances time by dt: rates are taken at mid-step (t + dt/2), then phi and D are
-/// integrated and pose and dQ updated.
+/// integrated and pose and dQ updated; with the centre fixed, D turns by this step's
+/// rotation before this step's translation is added.
 int rs_motion_advance(rs_motion *m, double dt, rs_error *err);
 /// Current velocity of the master material point at spatial point p:
-/// v = V + omega axis x (p - (C + D)).
+/// v = V + omega axis x (p - c), c the centre (rs_motion_center).
 void rs_motion_velocity_at(const rs_motion *m, const double p[3], double v[3]);
-/// Current position of the rotation centre, C + D.
+/// The point about which the current velocity field turns: C + D; with the centre
+/// fixed in space, C + V dt of the last step (the rotation's velocity is that of the
+/// wall as turned, before the step's translation moved it, as LIGGGHTS takes a rotating
+/// mesh's node velocities when a translation comes after the rotation).
 void rs_motion_center(const rs_motion *m, double c[3]);
 
 #ifdef __cplusplus

@@ -560,7 +560,11 @@ class Migration:
         if s["lin_used"]:
             words += ["move", "linear"] + ["v_rs_%s_%s" % (m["id"], k) for k in ("vx", "vy",
                                                                               "vz")]
-        if s["rot"] is not None:
+        if s["rot"] is not None and s["centre"] == "fixed":
+            # the origin where LIGGGHTS's first mover keeps it, in space
+            words += ["rotate", "origin"] + list(s["rot"][4]) + ["axis"] + list(s["rot"][1]) \
+                + ["omega", "v_rs_%s_om" % m["id"], "centre", "fixed"]
+        elif s["rot"] is not None:
             words += ["rotate", "origin"] + list(s["rot"][0]) + ["axis"] + list(s["rot"][1]) \
                 + ["omega", "v_rs_%s_om" % m["id"]]
         used = (["vx", "vy", "vz"] if s["lin_used"] else []) + (["om"] if s["rot"] else [])

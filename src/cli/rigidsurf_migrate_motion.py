@@ -24,10 +24,12 @@ displacement and velocity): the rate is the sum of the active fixes' rates.
 
 Several movers of one mesh act in the order they were made (FixMesh::move and ::rotate):
 each moves the mesh, then carries the reference point (a rotation's origin) of itself and
-of the movers made after it. A rotation made while translations run therefore turns
-about an origin the translations carry, which is wall/rigid's `move` + `rotate` (its
-origin moves with the translation); a translation made while a rotation runs leaves that
-rotation's origin in place in space, which wall/rigid cannot express.
+of the movers made after it; the first mover's point is put back each step
+(FixMoveMesh::get_reference_point). A rotation made while translations run therefore
+turns about an origin the translations carry, which is wall/rigid's `move` + `rotate`
+(its origin moves with the translation); a rotation made while no other mover runs
+comes first, and a translation made while it runs leaves its origin in place in space:
+`rotate ... centre fixed`. One wall has one of the two.
 """
 import math
 import re
@@ -191,7 +193,7 @@ def follow(mg, Numbers, FLOW, fmt):
     num, dt, step, restart = Numbers(), None, 0.0, None
     st = {mid: dict(active={}, wall=False, D=[0.0, 0.0, 0.0], D_rot=None, rot=None,
                     lin_used=False, lin_since_rot=False, assigned=set(), pre_wall=set(),
-                    lines={})
+                    lines={}, centre=None)
           for mid in mg.meshes}
     mg.motion_state = st
     for i, c in enumerate(mg.cmds):
@@ -268,12 +270,9 @@ def move(i, c, num, s, m, restart, fmt):
     if mo["kind"] == "linear":
         if "rotate" in kinds:
             rid = [f for f, x in s["active"].items() if x["kind"] == "rotate"][0]
-            m["reasons"].append(
-                "LINE %d moves it while move/mesh %s turns it, and %s comes first among the "
-                "mesh's movers: LIGGGHTS then turns the mesh about %s's origin fixed in space "
-                "(a mover carries the origins of the movers made after it only), wall/rigid "
-                "about an origin that moves with the wall's translation" % (
-                    c.lineno, rid, rid, rid))
+            # the rotation came first: its origin stays in space; else a translation
+            # that ran when it was made carries its origin, and so does this one
+            centre(c, s, m, "fixed" if s["active"][rid]["first"] else "moving", rid)
         s["lin_used"] = True
         if s["rot"] is not None:
             s["lin_since_rot"] = True
@@ -283,12 +282,31 @@ def move(i, c, num, s, m, restart, fmt):
                                 "wall/rigid has one rotation" % c.lineno)
         # a rotation made while translations run: they come first among the mesh's movers
         # and carry its origin (FixMesh::move), as wall/rigid's translation carries the
-        # rotation's origin
+        # rotation's origin; made alone, it is the first mover
+        mo["first"] = not s["active"]
+        if "linear" in kinds:
+            centre(c, s, m, "moving", None)
         rotation(c, num, s, m, mo, fmt)
     s["active"][fid] = mo
     pre = ["variable rs_%s_t0 equal $(time)" % fid] if mo["t0"] else []
     s["lines"][i] = pre + rate_lines(mid, s["active"], mo["kind"])
     s["assigned"] |= set(LIN if mo["kind"] == "linear" else ROT)
+
+
+def centre(c, s, m, mode, rid):
+    """The wall's rotation centre, 'moving' with its translation or 'fixed' in space, as
+    the movers running together at LINE c ask; one wall has one."""
+    if s["centre"] not in (None, mode):
+        m["reasons"].append(
+            "LINE %d makes a translation and a rotation run together with the rotation's "
+            "origin %s, where before it was %s: one wall/rigid turns about an origin "
+            "that is fixed in space or moves with the wall, not both" % (
+                c.lineno, "carried by the translation" if mode == "moving"
+                else "fixed in space (move/mesh %s came first)" % rid,
+                "carried by the translation" if s["centre"] == "moving"
+                else "fixed in space"))
+        return
+    s["centre"] = mode
 
 
 def rotation(c, num, s, m, mo, fmt):
@@ -308,7 +326,7 @@ def rotation(c, num, s, m, mo, fmt):
             o = [fmt(p - d) for p, d in zip(origin, s["D"])]
         else:
             o = mo["origin"]
-        s["rot"] = (o, mo["axis"], origin, axis)
+        s["rot"] = (o, mo["axis"], origin, axis, mo["origin"])
         s["D_rot"] = list(s["D"]) if s["D"] is not None else None
     elif s["lin_since_rot"] or s["D"] != s["D_rot"] or origin != s["rot"][2] \
             or axis != s["rot"][3] or None in origin + axis:

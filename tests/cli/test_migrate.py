@@ -394,11 +394,12 @@ CANNOT = {
     ("fix r all move/mesh mesh m riggle origin 0 0 0 axis 0 0 1 period 0.2 amplitude 5\n"
      "fix r2 all move/mesh mesh m rotate origin 0 0 0 axis 0 0 1 period 2\n",
      "LINE 8 turns it while another move/mesh turns it: one wall/rigid has one rotation"),
-    "a translation made while a rotation runs (its origin stays in space)":
+    "a rotation's origin fixed in space, then carried by a translation":
     ("fix r all move/mesh mesh m riggle origin 0 0 0 axis 0 0 1 period 0.2 amplitude 5\n"
-     "fix a all move/mesh mesh m linear 0 0 1\n",
-     "LINE 8 moves it while move/mesh r turns it, and r comes first among the mesh's "
-     "movers: LIGGGHTS then turns the mesh about r's origin fixed in space"),
+     "fix a all move/mesh mesh m linear 0 0 1\nrun 10\nunfix r\n"
+     "fix r2 all move/mesh mesh m rotate origin 0 0 0 axis 0 0 1 period 2\n",
+     "LINE 11 makes a translation and a rotation run together with the rotation's origin "
+     "carried by the translation, where before it was fixed in space"),
     "two rotation axes":
     ("fix r all move/mesh mesh m riggle origin 0 0 0 axis 0 0 1 period 0.2 amplitude 5\n"
      "run 10\nunfix r\n"
@@ -437,6 +438,20 @@ check("a rotation made while a translation runs: move linear and rotate about th
       rc == 0 and "move linear v_rs_m_vx v_rs_m_vy v_rs_m_vz rotate origin 0.095 0.2 0.3 "
       "axis 0 1 0 omega v_rs_m_om" in flat and "variable rs_m_vx equal 0.5" in flat and
       "variable rs_m_om equal 2*PI/(2)" in flat, out + err)
+
+# a translation made while a rotation runs, the rotation the mesh's first mover: the
+# rotation's origin stays where LIGGGHTS puts it back each step, in space, the
+# translation before the rotation included (rotate ... centre fixed)
+deck = head + ("fix a all move/mesh mesh m linear 0.5 0 0\nrun 100\nunfix a\n"
+               "fix r all move/mesh mesh m rotate origin 0.1 0.2 0.3 axis 0 1 0 period 2\n"
+               "fix b all move/mesh mesh m linear 0 0 0.25\nrun 10\n")
+rc, out, err = run(deck)
+flat = out.replace(" &\n    ", " ")
+check("a translation made while the first mover rotates it: rotate about the origin as "
+      "given, centre fixed",
+      rc == 0 and "move linear v_rs_m_vx v_rs_m_vy v_rs_m_vz rotate origin 0.1 0.2 0.3 "
+      "axis 0 1 0 omega v_rs_m_om centre fixed" in flat and
+      "variable rs_m_vz equal 0.25" in flat, out + err)
 
 # wall/gran shear of primitive walls: in the tangent plane it is surface_vel
 SHEAR = {"zplane 0 shear x 0.5": "surface_vel 0.5 0 0",

@@ -41,6 +41,8 @@ CASES = [
      ["'omega W' or 'period P'", "speed"]),
     ("rotate period 0", BASE + " rotate origin 0 0 0 axis 0 0 1 period 0",
      ["non-zero period"]),
+    ("rotate centre unknown", BASE + " rotate origin 0 0 0 axis 0 0 1 omega 1 centre still",
+     ["'rotate ... centre' expects 'moving' or 'fixed'", "still"]),
     ("move not linear", BASE + " move circular 1 0 0", ["'move' expects 'linear VX VY VZ'"]),
     ("inline profile without end", "fix w all wall/rigid law hertz type 2 surface inline "
      "revolution origin 0 0 0 axis 0 0 1 profile START 0.05 -1 LINE 0.05 1",

@@ -28,8 +28,10 @@ model's 1e-9 relative: TOL = 1e-8 relative (positions against R, velocities agai
 1 m/s, spins against 1/R) leaves a factor 10 over the mesh contact's agreement, and is
 1e5 times smaller than the control's disagreement.
 
-On a turning plate (riggle, vibrot, and a rotation made while a translation runs,
-`linear_rotate`, whose origin the translation carries) that holds for the motion, checked without friction
+On a turning plate (riggle, vibrot, a rotation made while a translation runs,
+`linear_rotate`, whose origin the translation carries, and a translation made while a
+rotation runs, `rotate_linear`, whose origin stays in space) that holds for the motion,
+checked without friction
 (`_mu0`: the normal contact alone, no tangential history). With friction the contact
 models differ on a turning wall, apart from the motion: wall/rigid carries a contact's
 shear history with the wall's frame where LIGGGHTS projects it onto the new tangent
@@ -54,7 +56,7 @@ SETTLE, MOVE, EVERY = 2000, 10000, 100
 TOL = 1e-8
 # The turning plates (riggle, vibrot) run twice: without friction to TOL, with friction
 # (mu 0.5) to TOL_TURNING, the contact model's difference on a turning wall.
-TURNING = ("riggle", "vibrot", "linear_rotate")
+TURNING = ("riggle", "vibrot", "linear_rotate", "rotate_linear")
 TOL_TURNING = 1e-3
 SCALES = {"x": R, "y": R, "z": R, "vx": 1.0, "vy": 1.0, "vz": 1.0,
           "omegax": 1.0 / R, "omegay": 1.0 / R, "omegaz": 1.0 / R}
@@ -79,6 +81,12 @@ CASES = {
     "linear_rotate": (["fix mv1 all move/mesh mesh plate linear 0.02 0 0",
                        "fix mv2 all move/mesh mesh plate rotate origin 0.01 0 0 axis 0 1 0 "
                        "period 20"], 1e-3),
+    # a translation made while a rotation runs, the rotation first among the movers: the
+    # plate tilts about the line through (0.01, *, 0) fixed in space, and the translation
+    # made so far turns with it (wall/rigid's rotate ... centre fixed)
+    "rotate_linear": (["fix mv1 all move/mesh mesh plate rotate origin 0.01 0 0 axis 0 1 0 "
+                       "period 20",
+                       "fix mv2 all move/mesh mesh plate linear 0.02 0 0"], 1e-3),
 }
 
 
@@ -174,6 +182,22 @@ def body(s):
             d = max(v[0] for v in worst.values()) if worst else 0.0
             s.ck.check("control: the wiggle with its time origin at 0 (WRONG_T0) is out by "
                        "more than 1e5 TOL", d > 1e5 * TOL, "worst rel %.3g" % d)
+        if tag == "rotate_linear_mu0":
+            # the control: the same migrated deck with the rotation's centre carried by
+            # the translation, as when the rotation comes after it
+            ok = s.ck.check("rotate_linear: the tool keeps the rotation's centre fixed",
+                            "centre fixed" in rigid,
+                            " ".join(ln.strip() for ln in rigid.splitlines()
+                                     if "omega v_rs_" in ln))
+            if ok:
+                moving = rigid.replace(" centre fixed", "").replace("rotate_linear_mu0_rigid",
+                                                                     "moving_rigid")
+                s.run("moving_rigid", moving)
+                worst = L.compare_frames(L.read_dump(s.path("moving_rigid.dump")),
+                                         L.read_dump(s.path(tag + "_ref.dump")), SCALES)
+                d = max(v[0] for v in worst.values()) if worst else 0.0
+                s.ck.check("control: rotate_linear with the centre moving with the translation "
+                           "is out by more than 1e5 TOL", d > 1e5 * TOL, "worst rel %.3g" % d)
     # shear of a primitive plane: LIGGGHTS's wall velocity, wall/rigid's surface_vel
     shear_wall = ("fix floor all wall/gran model hertz tangential history primitive type 2 "
                   "zplane 0 shear x 0.05")

@@ -121,6 +121,73 @@ static void test_motion_superposed_translation_rotation(void)
     }
 }
 
+/* A rotation about a centre fixed in space with a translation after it, as LIGGGHTS
+ * moves a mesh whose rotate mover comes before its linear mover: each step every node
+ * turns by omega dt about C where it stands, then moves by V dt. The pose after N steps
+ * equals that node update, iterated here point by point with the quaternion formula,
+ * to 1e-11; its centre stays at C, and the velocity is V + omega axis x (x - V dt -
+ * C), the rotation's velocity taken on the wall as turned, before the step's
+ * translation (the node velocities LIGGGHTS gives such a mesh). The
+ * translation made so far turns with the wall: as dt -> 0 the motion is the screw about
+ * the axis through C' = C + (W x V)/|W|^2 with W = omega axis, x(t) = C' + V_par t +
+ * R(omega t)(X - C'), which the discrete motion meets to O(omega dt). */
+static void test_motion_center_fixed(void)
+{
+    rs_motion m;
+    rs_error err;
+    double axis[3] = {0.3, -1.0, 0.6}, C[3] = {0.4, -0.2, 0.1}, V[3] = {0.7, 0.2, -0.5};
+    const double omega = 2.5, dt = 1e-4;
+    const int N = 4000;
+    rs_motion_init(&m);
+    rs_motion_set_translation(&m, V);
+    ENSURE(rs_motion_set_rotation(&m, C, axis, omega, &err) == RS_OK);
+    rs_motion_set_center_fixed(&m, 1);
+    unit(axis);
+    const double pts[3][3] = {{0, 0, 0}, {1.5, -2.5, 0.5}, {-3, 1, 4}};
+    double node[3][3];
+    memcpy(node, pts, sizeof node);
+    for (int k = 0; k < N; k++) {
+        ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+        for (int q = 0; q < 3; q++) {
+            double d[3] = {node[q][0] - C[0], node[q][1] - C[1], node[q][2] - C[2]}, r[3];
+            quat_rotate(axis, omega * dt, d, r);
+            for (int i = 0; i < 3; i++)
+                node[q][i] = C[i] + r[i] + V[i] * dt;
+        }
+    }
+    double c[3];
+    rs_motion_center(&m, c);
+    for (int i = 0; i < 3; i++)
+        ENSURE_NEAR(c[i], C[i] + V[i] * dt, 1e-16);
+    const double t = N * dt, W[3] = {omega * axis[0], omega * axis[1], omega * axis[2]};
+    double WxV[3], Cs[3], Vpar[3];
+    rs_cross3(W, V, WxV);
+    const double va = rs_dot3(V, axis);
+    for (int i = 0; i < 3; i++) {
+        Cs[i] = C[i] + WxV[i] / (omega * omega);
+        Vpar[i] = va * axis[i] * t;
+    }
+    for (int q = 0; q < 3; q++) {
+        double x[3], xs[3], v[3], r[3];
+        rs_pose_to_global(&m.pose, pts[q], x);
+        for (int i = 0; i < 3; i++)
+            ENSURE_NEAR(x[i], node[q][i], 1e-11);
+        closed_form(Cs, Vpar, axis, omega * t, pts[q], xs);
+        for (int i = 0; i < 3; i++) /* the screw, to the steps' O(omega dt) |V| t */
+            ENSURE_NEAR(x[i], xs[i], 2.0 * omega * dt * rs_norm3(V) * t);
+        rs_motion_velocity_at(&m, x, v);
+        const double rel[3] = {x[0] - V[0] * dt - C[0], x[1] - V[1] * dt - C[1],
+                               x[2] - V[2] * dt - C[2]};
+        rs_cross3(W, rel, r);
+        for (int i = 0; i < 3; i++)
+            ENSURE_NEAR(v[i], V[i] + r[i], 1e-14);
+    }
+    /* the default keeps the centre moving with the translation */
+    rs_motion_set_center_fixed(&m, 0);
+    rs_motion_center(&m, c);
+    ENSURE(fabs(c[0] - C[0]) > 1e-3);
+}
+
 /* Rates from a callback are taken at mid-step, which integrates linear rates exactly:
  * omega = a + b t gives phi = a t + b t^2 / 2; V = (c t, 0, 0) gives D = (c t^2 / 2, 0, 0).
  */
@@ -250,6 +317,7 @@ int main(void)
     RS_RUN(test_motion_no_drift);
     RS_RUN(test_motion_velocity_at);
     RS_RUN(test_motion_superposed_translation_rotation);
+    RS_RUN(test_motion_center_fixed);
     RS_RUN(test_motion_rates_callback);
     RS_RUN(test_motion_rejects_zero_axis);
     RS_RUN(test_rotation_matrix_matches_quaternion);
