@@ -45,13 +45,14 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       tracking_given_(false), area_mode_(AREA_NODE), area_const_(1.0), temp_given_(false),
       temp_wall_(0.0), dtemp_wall_(0.0), capacity_wall_(0.0), heat_wall_(0.0),
       heat_step_(0.0), fix_temp_(NULL), fix_heatflux_(NULL), fix_heatcap_(NULL),
-      conduction_(false), th_cond_(NULL), deltan_ratio_(NULL), store_force_(false),
-      wallforce_clear_(true), wallforce_(NULL), vtk_every_(0), vtk_mesh_ok_(false),
-      wear_(false), facets_(false), stress_step_(false), nfacet_(0), step_checked_(false),
-      row_(NULL), hist_(NULL), nmax_(0), rebuild_(true), lookahead_(0.0), rglob_(0.0),
-      bounds_ok_(false), list_bounds_(false), se_now_(0.0), ncontact_(0), out_step_(-1),
-      out_valid_(false), kstep_(0), run_time0_(0.0), pnewdt_stop_(false),
-      routine_step_warned_(false), behind_(0), behind_warned_(false)
+      conduction_(false), carea_mode_(CAREA_OVERLAP), carea_const_(0.0),
+      carea_given_(false), conduct_ready_(false), th_cond_(NULL), deltan_ratio_(NULL),
+      store_force_(false), wallforce_clear_(true), wallforce_(NULL), vtk_every_(0),
+      vtk_mesh_ok_(false), wear_(false), facets_(false), stress_step_(false), nfacet_(0),
+      step_checked_(false), row_(NULL), hist_(NULL), nmax_(0), rebuild_(true),
+      lookahead_(0.0), rglob_(0.0), bounds_ok_(false), list_bounds_(false), se_now_(0.0),
+      ncontact_(0), out_step_(-1), out_valid_(false), kstep_(0), run_time0_(0.0),
+      pnewdt_stop_(false), routine_step_warned_(false), behind_(0), behind_warned_(false)
 {
     std::memset(&surf_, 0, sizeof surf_);
     std::memset(&loaded_, 0, sizeof loaded_);
@@ -467,6 +468,7 @@ void FixWallRigid::setup(int vflag)
     if (!step_checked_)
         check_step();
     compute(true);
+    conduct_ready_ = true;
     if (vtk_every_ > 0 && update->ntimestep % vtk_every_ == 0)
         write_vtk();
 }

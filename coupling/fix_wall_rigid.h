@@ -266,7 +266,14 @@ class FixWallRigid : public Fix
      * between the wall at its temperature and each touching particle
      * (fix_wall_rigid_heat.cpp) */
     bool conduction_;
-    const double *th_cond_;             // thermalConductivity per atom type
+    /* conduction's contact area, LIGGGHTS's contact_area: pi (R^2 - (R - delta)^2),
+     * pi R^2 or a constant */
+    enum { CAREA_OVERLAP, CAREA_PROJECTION, CAREA_CONSTANT } carea_mode_;
+    double carea_const_;
+    bool carea_given_;
+    bool conduct_ready_;    // a setup call has been made: LIGGGHTS's walls conduct in later
+                            // ones
+    const double *th_cond_; // thermalConductivity per atom type
     double const *const *deltan_ratio_; // heat/gran/conduction's area correction, or NULL
     void init_conduction();
     void conduct(const int *idx, int ne, bool setup_call);

@@ -99,10 +99,11 @@ int FixWallRigid::integer(const char *keyword, const char *what, const char *s)
 bool FixWallRigid::is_keyword(const char *s) const
 {
     static const char *const kw[] = {
-        "surface",  "name",       "law",        "props",  "type",        "statev",
-        "tracking", "area",       "contacts",   "move",   "rotate",      "temperature",
-        "predef",   "vtk",        "curvature",  "pnewdt", "surface_vel", "wear",
-        "servo",    "conduction", "store_force"};
+        "surface",     "name",        "law",    "props",    "type",
+        "statev",      "tracking",    "area",   "contacts", "move",
+        "rotate",      "temperature", "predef", "vtk",      "curvature",
+        "pnewdt",      "surface_vel", "wear",   "servo",    "conduction",
+        "store_force", "contact_area"};
     for (const char *k : kw)
         if (std::strcmp(s, k) == 0)
             return true;
@@ -274,6 +275,31 @@ void FixWallRigid::parse(int narg, char **arg)
                     std::string("keyword 'conduction' expects 'liggghts' or 'off', got '") +
                     arg[iarg + 1] + "'");
             iarg += 2;
+        } else if (std::strcmp(kw, "contact_area") == 0) {
+            need(1, "'overlap', 'projection' or 'constant A'");
+            const char *m = arg[iarg + 1];
+            if (std::strcmp(m, "overlap") == 0) {
+                carea_mode_ = CAREA_OVERLAP;
+            } else if (std::strcmp(m, "projection") == 0) {
+                carea_mode_ = CAREA_PROJECTION;
+            } else if (std::strcmp(m, "constant") == 0) {
+                need(2, "'constant A' with an area A > 0");
+                carea_const_ =
+                    number("contact_area constant", "an area > 0", arg[iarg + 2]);
+                if (!(carea_const_ > 0.0))
+                    fail(std::string("keyword 'contact_area constant' expects an area > 0, "
+                                     "got ") +
+                         arg[iarg + 2]);
+                carea_mode_ = CAREA_CONSTANT;
+                iarg++;
+            } else {
+                fail(
+                    std::string("keyword 'contact_area' expects 'overlap', 'projection' or "
+                                "'constant A', got '") +
+                    m + "'");
+            }
+            carea_given_ = true;
+            iarg += 2;
         } else if (std::strcmp(kw, "store_force") == 0) {
             need(1, "'yes', 'no' or 'into ID'");
             wallforce_id_.clear();
@@ -333,7 +359,7 @@ void FixWallRigid::parse(int narg, char **arg)
             fail(std::string("unknown keyword '") + kw +
                  "'; expected surface, name, law, props, type, statev, tracking, area, "
                  "contacts, move, rotate, servo, surface_vel, temperature, conduction, "
-                 "predef, vtk, curvature, wear, store_force or pnewdt");
+                 "contact_area, predef, vtk, curvature, wear, store_force or pnewdt");
         }
     }
 
@@ -341,6 +367,9 @@ void FixWallRigid::parse(int narg, char **arg)
         fail("missing 'surface FILE' (or 'surface inline ...')");
     if (conduction_ && !temp_given_)
         fail("keyword 'conduction liggghts' needs the wall's 'temperature T'");
+    if (carea_given_ && !conduction_)
+        fail("keyword 'contact_area' sets the area of 'conduction liggghts', which is not "
+             "given");
     if (!have_law)
         fail("missing 'law LAW'");
 

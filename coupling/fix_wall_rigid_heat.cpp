@@ -37,13 +37,18 @@ void FixWallRigid::init_conduction()
 
 /* Each touching contact of the block (overlap delta >= 0, not leaving): the contact area
  * A = pi (R^2 - (R - delta)^2), delta times the area correction of the particle and wall
- * types; the conductance h = 4 k_p k_w / (k_p + k_w) sqrt(A) (0 when either
+ * types (contact_area overlap, the default), or pi R^2 (projection), or the constant
+ * given; the conductance h = 4 k_p k_w / (k_p + k_w) sqrt(A) (0 when either
  * conductivity is below 1e-12); the heat flow w h (T_wall - T_p) into the particle's
  * heatFlux (w: the contact's share, 1 but at a concave fold), and its opposite into the
- * wall (not in a setup call, whose heat is not accumulated). LIGGGHTS adds the flow to
- * heatFlux in the setup call too; fix heat/gran clears heatFlux before the step. */
+ * wall (not in a setup call, whose heat is not accumulated). LIGGGHTS's wall starts to
+ * conduct at the end of its first setup (FixWallGran::setup calls init_heattransfer after
+ * its forces), so it adds the flow to heatFlux in the setup calls of later runs only;
+ * fix heat/gran clears heatFlux before the step. */
 void FixWallRigid::conduct(const int *idx, int ne, bool setup_call)
 {
+    if (setup_call && !conduct_ready_)
+        return;
     const int nd = ndir_;
     const int *type = atom->type;
     const double *Temp = fix_temp_->vector_atom;
@@ -58,12 +63,19 @@ void FixWallRigid::conduct(const int *idx, int ne, bool setup_call)
         const int k = tout_.point[e];
         const int i = idx[k];
         const int itype = type[i];
-        double delta = delta0;
-        if (deltan_ratio_)
-            delta *= deltan_ratio_[itype - 1][wall_type_ - 1];
         const double ri = brad_[k];
-        const double r = ri - delta;
-        const double area = (ri * ri - r * r) * M_PI * 1.0;
+        double area;
+        if (carea_mode_ == CAREA_OVERLAP) {
+            double delta = delta0;
+            if (deltan_ratio_)
+                delta *= deltan_ratio_[itype - 1][wall_type_ - 1];
+            const double r = ri - delta;
+            area = (ri * ri - r * r) * M_PI * 1.0;
+        } else if (carea_mode_ == CAREA_PROJECTION) {
+            area = M_PI * ri * ri;
+        } else {
+            area = carea_const_;
+        }
         const double tcop = th_cond_[itype - 1];
         double hc;
         if (std::fabs(tcop) < small || std::fabs(tcowall) < small)

@@ -14,7 +14,7 @@ Rewrites the walls of a LIGGGHTS deck into `fix wall/rigid` (docs/migration.md):
   rates (`v_rs_MESH_vx` ...; rigidsurf_migrate_motion.py);
 - `shear` of a primitive wall along a plane or a cylinder's axis becomes `surface_vel`;
 - a wall's `temperature` under `fix heat/gran` gets `conduction liggghts` (LIGGGHTS's wall
-  conduction), `store_force yes` becomes `store_force yes` (`store_force into ID` on the
+  conduction) with the wall/gran's `contact_area`, `store_force yes` becomes `store_force yes` (`store_force into ID` on the
   walls of a wall/gran's meshes), so `f_force_ID[1-3]` read the same vector;
 - `dump mesh/gran/VTK` of one migrated mesh becomes the wall's `vtk FILE N`.
 
@@ -386,6 +386,13 @@ class Migration:
             if key == "temperature" and k + 1 < len(rest):
                 opts["temperature"] = [rest[k + 1]]
                 k += 2
+            elif key == "contact_area" and rest[k + 1:k + 2] in (["overlap"], ["projection"]):
+                opts["contact_area"] = [rest[k + 1]]
+                k += 2
+            elif key == "contact_area" and rest[k + 1:k + 2] == ["constant"] and \
+                    k + 2 < len(rest):
+                opts["contact_area"] = rest[k + 1:k + 3]
+                k += 3
             elif key == "store_force" and k + 1 < len(rest) and rest[k + 1] == "yes":
                 opts["store_force"] = ["yes"]
                 k += 2
@@ -524,14 +531,19 @@ class Migration:
         words = ["fix", wall["id"], wall["group"], "wall/rigid", "surface", "inline"] + \
             surf + ["law"] + wall["law"].split() + ["type", wall["type"]]
         for key, vals in wall["opts"].items():
-            words += [key] + vals
-        words += self.conduction(wall["opts"])
+            if key != "contact_area":
+                words += [key] + vals
+        words += self.conduction(wall["opts"], wall["opts"])
         return lines + [wrap(words)]
 
-    def conduction(self, opts):
+    def conduction(self, opts, wall_opts):
         """A wall's temperature under fix heat/gran conducts heat into the particles that
-        touch it (fix_wall_gran.cpp, addHeatFlux): wall/rigid's conduction liggghts."""
-        return ["conduction", "liggghts"] if "temperature" in opts and self.heat else []
+        touch it (fix_wall_gran.cpp, addHeatFlux): wall/rigid's conduction liggghts, with
+        the wall/gran's contact_area (which sets that conduction's area only)."""
+        if "temperature" not in opts or not self.heat:
+            return []
+        area = wall_opts.get("contact_area")
+        return ["conduction", "liggghts"] + (["contact_area"] + area if area else [])
 
     def mesh_wall(self, wall, m):
         s = self.motion_state[m["id"]]
@@ -546,7 +558,7 @@ class Migration:
         words += ["law"] + wall["law"].split() + ["type", m["type"]]
         for key, vals in m["opts"].items():
             words += [key] + vals
-        words += self.conduction(m["opts"])
+        words += self.conduction(m["opts"], wall["opts"])
         if wall["opts"].get("store_force"):
             # wall/gran keeps one force_ID for all its meshes: each mesh's wall adds to it
             words += ["store_force", "into", wall["id"]]

@@ -43,6 +43,12 @@ CASES = [
      ["non-zero period"]),
     ("rotate centre unknown", BASE + " rotate origin 0 0 0 axis 0 0 1 omega 1 centre still",
      ["'rotate ... centre' expects 'moving' or 'fixed'", "still"]),
+    ("contact_area without conduction", BASE + " contact_area projection",
+     ["'contact_area' sets the area of 'conduction liggghts'"]),
+    ("contact_area constant 0", BASE + " temperature 400 conduction liggghts contact_area "
+     "constant 0", ["'contact_area constant' expects an area > 0", "got 0"]),
+    ("contact_area unknown", BASE + " contact_area circle", ["'contact_area' expects "
+     "'overlap', 'projection' or 'constant A'", "circle"]),
     ("move not linear", BASE + " move circular 1 0 0", ["'move' expects 'linear VX VY VZ'"]),
     ("inline profile without end", "fix w all wall/rigid law hertz type 2 surface inline "
      "revolution origin 0 0 0 axis 0 0 1 profile START 0.05 -1 LINE 0.05 1",

@@ -141,6 +141,15 @@ def body(s):
             "history primitive type 2 zplane 0 temperature 400",
             "heat/gran/conduction initial_temperature 300 area_correction yes",
             "fix ymo all property/global youngsModulusOriginal peratomtype 5e9 2e10\n"),
+        # contact_area: the conduction's area pi R^2, or a constant, in place of the
+        # overlap's
+        "heat_projection": heat_deck("heat_projection", "fix floor all wall/gran model hertz "
+                                     "tangential history primitive type 2 zplane 0 "
+                                     "temperature 400 contact_area projection"),
+        "heat_constant": heat_deck("heat_constant", "fix plate all mesh/surface file "
+                                   "plate.stl type 2 temperature 400\nfix w all wall/gran "
+                                   "model hertz tangential history mesh n_meshes 1 meshes "
+                                   "plate contact_area constant 2e-6"),
         # a model only law liggghts has (rolling friction): the conduction beside it
         "heat_liggghts": heat_deck(
             "heat_liggghts", "fix floor all wall/gran model hertz tangential history "
@@ -161,11 +170,22 @@ def body(s):
             s.ck.check("heat_plane: the heat into the wall (f_ID[14]) is -m c (T - T0)",
                        q and L.rel_diff(q[-1], want, 0) <= TOL,
                        "%r vs %r J" % (q[-1] if q else None, want))
-    # the area correction changes the answer: the two plane runs differ
+    # the area correction and contact_area change the answer: each run differs from
+    # the plane's with the overlap's area
     a = L.read_dump(s.path("heat_plane_ref.dump"))[-1][1][1]["f_Temp[0]"]
-    b = L.read_dump(s.path("heat_area_correction_ref.dump"))[-1][1][1]["f_Temp[0]"]
-    s.ck.check("the area correction changes LIGGGHTS's heating (so it is tested)",
-               abs(a - b) > 1.0, "%.6f vs %.6f K" % (a, b))
+    for tag in ("heat_area_correction", "heat_projection", "heat_constant"):
+        b = L.read_dump(s.path(tag + "_ref.dump"))[-1][1][1]["f_Temp[0]"]
+        s.ck.check("%s changes LIGGGHTS's heating (so it is tested)" % tag,
+                   abs(a - b) > 1.0, "%.6f vs %.6f K" % (a, b))
+    # the migrated decks carry the area
+    for tag, want in (("heat_projection", "contact_area projection"),
+                      ("heat_constant", "contact_area constant 2e-6")):
+        with open(s.path(tag + "_rigid.in")) as f:
+            text = f.read()
+        walls = [ln for ln in text.replace(" &\n    ", " ").splitlines()
+                 if "wall/rigid" in ln]
+        s.ck.check(tag + ": the migrated wall/rigid has '%s'" % want,
+                   walls and all(want in ln for ln in walls), "\n".join(walls))
 
 
 SES = L.Session(__doc__)
