@@ -38,7 +38,8 @@ using namespace FixConst;
 
 FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg), surf_ok_(false), ndir_(3), moving_(false), belt_(false),
-      ivar_omega_(-1), rot_by_period_(false), period_(0.0), phi_at_build_(0.0),
+      ivar_omega_(-1), rot_by_period_(false), period_(0.0), ivar_spin_(-1),
+      spin_by_period_(false), phi_at_build_(0.0), spin_at_build_(0.0),
       spin_invariant_(false), law_kind_(LAW_BUILTIN), law_(NULL), loaded_ok_(false),
       props_given_(false), hertz_(false), hooke_(false), lig_(NULL), nstatev_(0),
       statev_given_(false), wall_type_(1), capacity_(4), tracking_(0.0),
@@ -245,7 +246,8 @@ void FixWallRigid::init()
         const double scale = std::max(1.0, std::sqrt(domain->xprd * domain->xprd +
                                                      domain->yprd * domain->yprd +
                                                      domain->zprd * domain->zprd));
-        spin_invariant_ = rs_norm3(ax) < 1e-12 && rs_norm3(rx) < 1e-12 * scale;
+        spin_invariant_ =
+            rs_norm3(ax) < 1e-12 && rs_norm3(rx) < 1e-12 * scale && !motion_.spin_on;
     }
     /* Distance bounds hold while the surface stays where it is in space: at rest, or
      * spun about its own axis without translation. A kind with candidate lists (MESH)
@@ -349,6 +351,7 @@ void FixWallRigid::init_variables()
     for (int d = 0; d < 3; d++)
         ivar_vel_[d] = var_vel_[d].empty() ? -1 : find(var_vel_[d]);
     ivar_omega_ = var_omega_.empty() ? -1 : find(var_omega_);
+    ivar_spin_ = var_spin_.empty() ? -1 : find(var_spin_);
 }
 
 void FixWallRigid::init_heat()

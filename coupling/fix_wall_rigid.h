@@ -68,6 +68,7 @@ class FixWallRigid : public Fix
 
     /// Used by the motion rates callback: the current values of the v_ variables.
     void motion_rates(double vel[3], double *omega);
+    void spin_rate(double *omega);
 
   private:
     /* Global vector: 1-3 force on the wall, 4-6 moment on the wall about the surface
@@ -202,7 +203,10 @@ class FixWallRigid : public Fix
     int ivar_vel_[3], ivar_omega_;
     bool rot_by_period_;
     double period_;
-    double disp_at_build_[3], phi_at_build_;
+    std::string var_spin_; // the spin's rate: v_ name ("" = constant), by period or not
+    int ivar_spin_;
+    bool spin_by_period_;
+    double disp_at_build_[3], phi_at_build_, spin_at_build_;
     bool spin_invariant_; // spun about the surface's own spin axis (rs_surface_spin_axis)
 
     /* law */

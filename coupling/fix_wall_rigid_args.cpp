@@ -99,11 +99,11 @@ int FixWallRigid::integer(const char *keyword, const char *what, const char *s)
 bool FixWallRigid::is_keyword(const char *s) const
 {
     static const char *const kw[] = {
-        "surface",     "name",        "law",    "props",    "type",
-        "statev",      "tracking",    "area",   "contacts", "move",
-        "rotate",      "temperature", "predef", "vtk",      "curvature",
-        "pnewdt",      "surface_vel", "wear",   "servo",    "conduction",
-        "store_force", "contact_area"};
+        "surface",     "name",         "law",    "props",    "type",
+        "statev",      "tracking",     "area",   "contacts", "move",
+        "rotate",      "temperature",  "predef", "vtk",      "curvature",
+        "pnewdt",      "surface_vel",  "wear",   "servo",    "conduction",
+        "store_force", "contact_area", "spin"};
     for (const char *k : kw)
         if (std::strcmp(s, k) == 0)
             return true;
@@ -220,13 +220,14 @@ void FixWallRigid::parse(int narg, char **arg)
             iarg += 2;
         } else if (std::strcmp(kw, "servo") == 0) {
             if (moving_ || servo_.on)
-                fail("keyword 'servo' moves the wall itself; it takes no 'move' or "
-                     "'rotate' and is given once");
+                fail("keyword 'servo' moves the wall itself; it takes no 'move', 'rotate' "
+                     "or 'spin' and is given once");
             iarg = parse_servo(narg, arg, iarg + 1);
-        } else if (std::strcmp(kw, "move") == 0 || std::strcmp(kw, "rotate") == 0) {
+        } else if (std::strcmp(kw, "move") == 0 || std::strcmp(kw, "rotate") == 0 ||
+                   std::strcmp(kw, "spin") == 0) {
             if (servo_.on)
-                fail("keyword 'servo' moves the wall itself; it takes no 'move' or "
-                     "'rotate'");
+                fail("keyword 'servo' moves the wall itself; it takes no 'move', 'rotate' "
+                     "or 'spin'");
             iarg = parse_motion(narg, arg, iarg);
         } else if (std::strcmp(kw, "wear") == 0) {
             need(1, "'finnie' or 'off'");
@@ -358,7 +359,8 @@ void FixWallRigid::parse(int narg, char **arg)
         } else {
             fail(std::string("unknown keyword '") + kw +
                  "'; expected surface, name, law, props, type, statev, tracking, area, "
-                 "contacts, move, rotate, servo, surface_vel, temperature, conduction, "
+                 "contacts, move, rotate, spin, servo, surface_vel, temperature, "
+                 "conduction, "
                  "contact_area, predef, vtk, curvature, wear, store_force or pnewdt");
         }
     }

@@ -19,13 +19,15 @@ namespace
 {
 
 /* Restart layout version (global record). */
-/* 6: directory entries are RS_DIR_LIVE(f) = f + 1, empty 0, leaving -(f + 1) (5: f, -1
+/* 7: the global record ends with the spin's angle, its remainder, rate and orientation
+ * S (12 doubles; absent in 6, read as no spin so far);
+ * 6: directory entries are RS_DIR_LIVE(f) = f + 1, empty 0, leaving -(f + 1) (5: f, -1
  * and -2 - f, so an entry of 5 is one less: read and converted), and the global record
  * ends with the servo's controller state (integral of the error, last process value;
  * absent in 5); 4: a slot ends with the contact's sed, fluxSlv and fluxMst; 3: each
  * atom's record starts with the capacity it was written with (the capacity grows during
  * a run); 2: directory in the row, slots after it */
-const double kRestartVersion = 6.0;
+const double kRestartVersion = 7.0;
 /* The oldest version read: 5, its directories converted (unpack_restart). */
 const double kRestartOldest = 5.0;
 
@@ -102,12 +104,16 @@ void FixWallRigid::write_restart(FILE *fp)
     if (nwear)
         MPI_Allreduce(wear_el_.data(), wear.data() + 1, nwear, MPI_DOUBLE, MPI_SUM, world);
     const double servo[2] = {servo_.sum_err, servo_.old_pv};
+    /* then the spin (from version 7): its angle, remainder, rate and the orientation S */
+    double spin[12] = {motion_.spin_phi, motion_.spin_phi_err, motion_.spin_omega};
+    std::memcpy(spin + 3, motion_.S, sizeof motion_.S);
     if (comm->me == 0) {
-        int size = (RST_COUNT + 1 + nwear + 2) * sizeof(double);
+        int size = (RST_COUNT + 1 + nwear + 2 + 12) * sizeof(double);
         std::fwrite(&size, sizeof(int), 1, fp);
         std::fwrite(list, sizeof(double), RST_COUNT, fp);
         std::fwrite(wear.data(), sizeof(double), (size_t)nwear + 1, fp);
         std::fwrite(servo, sizeof(double), 2, fp);
+        std::fwrite(spin, sizeof(double), 12, fp);
     }
 }
 
@@ -152,6 +158,16 @@ void FixWallRigid::restart(char *buf)
     motion_.phi_err = list[RST_PHI_ERR];
     if (!var_omega_.empty())
         motion_.omega = list[RST_OMEGA];
+    /* the spin, when both the file (version 7 on) and this fix have one */
+    const int nw = std::max((int)list[RST_COUNT], 0);
+    const double *spin = list + RST_COUNT + 1 + nw + 2;
+    if (version >= 7.0 && motion_.spin_on) {
+        motion_.spin_phi = spin[0];
+        motion_.spin_phi_err = spin[1];
+        if (!var_spin_.empty())
+            motion_.spin_omega = spin[2];
+        std::memcpy(motion_.S, spin + 3, sizeof motion_.S);
+    }
     /* The pose from the restored phi and D: a zero step with the rates switched off. */
     rs_motion_rates_fn rates = motion_.rates;
     motion_.rates = NULL;

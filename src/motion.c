@@ -80,6 +80,8 @@ static void kahan_add(double *sum, double *err, double x)
     two_sum(s, *err + e, sum, err);
 }
 
+/* The pose of the motion without the spin; with it, x = P + S (X - P0), P the point P0
+ * moved by that motion. */
 static void motion_update_pose(rs_motion *m)
 {
     double RC[3];
@@ -87,14 +89,42 @@ static void motion_update_pose(rs_motion *m)
     rs_pose_rotate(&m->pose, m->center0, RC);
     for (int i = 0; i < 3; i++)
         m->pose.T[i] = m->center0[i] + m->disp[i] - RC[i];
+    if (m->spin_on) {
+        double P[3], SP[3];
+        rs_pose_to_global(&m->pose, m->spin_point0, P);
+        memcpy(m->pose.R, m->S, sizeof m->S);
+        rs_matvec3(m->S, m->spin_point0, SP);
+        for (int i = 0; i < 3; i++)
+            m->pose.T[i] = P[i] - SP[i];
+    }
+}
+
+/* c = a b, 3 x 3 row-major (c distinct from a and b). */
+static void matmul3(const double a[9], const double b[9], double c[9])
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            c[3 * i + j] =
+                a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
+}
+
+/* The two axes are parallel (either sense): the rotations commute, and S has its closed
+ * form. */
+static int spin_parallel(const rs_motion *m)
+{
+    double c[3];
+    rs_cross3(m->axis, m->spin_axis, c);
+    return rs_dot3(c, c) < 1e-28;
 }
 
 void rs_motion_init(rs_motion *m)
 {
     memset(m, 0, sizeof *m);
     m->axis[2] = 1.0;
+    m->spin_axis[2] = 1.0;
     rs_pose_identity(&m->pose);
     m->dQ[0] = m->dQ[4] = m->dQ[8] = 1.0;
+    m->S[0] = m->S[4] = m->S[8] = 1.0;
 }
 
 void rs_motion_set_surface_velocity(rs_motion *m, const double U[3])
@@ -147,6 +177,33 @@ int rs_motion_set_rotation(rs_motion *m, const double center[3], const double ax
     return RS_OK;
 }
 
+int rs_motion_set_spin(rs_motion *m, const double point0[3], const double axis[3],
+                       double omega, rs_error *err)
+{
+    double len = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+    if (!isfinite(len) || len == 0.0)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_motion_set_spin: axis (%g, %g, %g) must be a finite "
+                            "non-zero vector",
+                            axis[0], axis[1], axis[2]);
+    if (!isfinite(point0[0]) || !isfinite(point0[1]) || !isfinite(point0[2]) ||
+        !isfinite(omega))
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_motion_set_spin: point and angular speed must be finite");
+    for (int i = 0; i < 3; i++) {
+        m->spin_axis[i] = axis[i] / len;
+        m->spin_point0[i] = point0[i];
+    }
+    m->spin_omega = omega;
+    m->spin_phi = m->spin_phi_err = 0.0;
+    m->spin_on = 0;
+    motion_update_pose(m); /* the orientation so far, without the spin */
+    memcpy(m->S, m->pose.R, sizeof m->S);
+    m->spin_on = 1;
+    motion_update_pose(m);
+    return RS_OK;
+}
+
 int rs_motion_advance(rs_motion *m, double dt, rs_error *err)
 {
     if (!isfinite(dt))
@@ -170,6 +227,21 @@ int rs_motion_advance(rs_motion *m, double dt, rs_error *err)
         memcpy(m->vel, vel, sizeof vel);
         m->omega = omega;
     }
+    if (m->spin_on && m->spin_rates) {
+        double tmid = m->t + 0.5 * dt, omega = m->spin_omega;
+        int rc = m->spin_rates(tmid, &omega, m->ctx);
+        if (rc != 0)
+            return rs_error_set(err, RS_ERR_ARG,
+                                "rs_motion_advance: spin rate callback stopped the run at "
+                                "t = %g (returned %d)",
+                                tmid, rc);
+        if (!isfinite(omega))
+            return rs_error_set(err, RS_ERR_NONFINITE,
+                                "rs_motion_advance: spin rate callback returned a "
+                                "non-finite rate at t = %g",
+                                tmid);
+        m->spin_omega = omega;
+    }
     double dphi = m->omega * dt;
     kahan_add(&m->phi, &m->phi_err, dphi);
     rs_rotation_matrix(m->axis, dphi, m->dQ);
@@ -185,6 +257,24 @@ int rs_motion_advance(rs_motion *m, double dt, rs_error *err)
         kahan_add(&m->disp[i], &m->disp_err[i], m->step_disp[i]);
     }
     kahan_add(&m->t, &m->t_err, dt);
+    if (m->spin_on) { /* then the spin: dQ = R_s dQ, S = dQ S */
+        const double dphi2 = m->spin_omega * dt;
+        double R2[9], dQ[9];
+        kahan_add(&m->spin_phi, &m->spin_phi_err, dphi2);
+        rs_rotation_matrix(m->spin_axis, dphi2, R2);
+        matmul3(R2, m->dQ, dQ);
+        memcpy(m->dQ, dQ, sizeof dQ);
+        if (spin_parallel(m)) {
+            double Rs[9], Rb[9];
+            rs_rotation_matrix(m->spin_axis, m->spin_phi, Rs);
+            rs_rotation_matrix(m->axis, m->phi, Rb);
+            matmul3(Rs, Rb, m->S);
+        } else {
+            double S[9];
+            matmul3(dQ, m->S, S);
+            memcpy(m->S, S, sizeof S);
+        }
+    }
     motion_update_pose(m);
     return RS_OK;
 }
@@ -200,15 +290,35 @@ void rs_motion_center(const rs_motion *m, double c[3])
         c[i] = m->center0[i] + (m->center_fixed ? m->step_disp[i] : m->disp[i]);
 }
 
+void rs_motion_field(const rs_motion *m, double V[3], double W[3], double C[3])
+{
+    rs_motion_center(m, C);
+    for (int i = 0; i < 3; i++) {
+        V[i] = m->vel[i];
+        W[i] = m->omega * m->axis[i];
+    }
+    if (!m->spin_on)
+        return;
+    /* about the spin's point P: the motion without the spin moves P with V + W x (P - C) */
+    double P[3], r[3], wr[3];
+    rs_pose_to_global(&m->pose, m->spin_point0, P);
+    for (int i = 0; i < 3; i++)
+        r[i] = P[i] - C[i];
+    rs_cross3(W, r, wr);
+    for (int i = 0; i < 3; i++) {
+        V[i] += wr[i];
+        W[i] += m->spin_omega * m->spin_axis[i];
+        C[i] = P[i];
+    }
+}
+
 void rs_motion_velocity_at(const rs_motion *m, const double p[3], double v[3])
 {
-    double c[3], r[3];
-    rs_motion_center(m, c);
+    double V[3], W[3], C[3], r[3], wr[3];
+    rs_motion_field(m, V, W, C);
     for (int i = 0; i < 3; i++)
-        r[i] = p[i] - c[i];
-    double wx = m->omega * m->axis[0], wy = m->omega * m->axis[1],
-           wz = m->omega * m->axis[2];
-    v[0] = m->vel[0] + wy * r[2] - wz * r[1];
-    v[1] = m->vel[1] + wz * r[0] - wx * r[2];
-    v[2] = m->vel[2] + wx * r[1] - wy * r[0];
+        r[i] = p[i] - C[i];
+    rs_cross3(W, r, wr);
+    for (int i = 0; i < 3; i++)
+        v[i] = V[i] + wr[i];
 }

@@ -674,15 +674,12 @@ int rs_track_update(const rs_tracker *tr, const rs_surface *s, const rs_motion *
     memset(&mr, 0, sizeof mr);
     if (m) {
         memcpy(mr.Q, m->dQ, sizeof mr.Q);
-        for (int b = 0; b < 3; b++) {
-            mr.V[b] = m->vel[b];
-            mr.W[b] = m->omega * m->axis[b];
+        rs_motion_field(m, mr.V, mr.W, mr.C);
+        for (int b = 0; b < 3; b++)
             mr.U[b] = m->belt[b];
-        }
         mr.Umag = sqrt(rs_dot3(mr.U, mr.U));
         mr.belt = mr.Umag > 0.0;
         mr.m = m;
-        rs_motion_center(m, mr.C);
     } else {
         mr.Q[0] = mr.Q[4] = mr.Q[8] = 1.0;
     }

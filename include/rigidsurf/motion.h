@@ -9,6 +9,13 @@
  * wall about C where it stands, translation included, and the translation is added
  * after it (LIGGGHTS's rotation made before a translation of the same mesh): the same
  * pose with D' = omega axis x D + V, each step D <- dQ D + V dt.
+ * A second rotation, the spin (rs_motion_set_spin), turns the wall after that each step
+ * about an axis of fixed direction through a point P of the wall that the motion above
+ * carries (LIGGGHTS's rotation made while another rotation of the same mesh runs): with
+ * P0 the point in the reference configuration and S the wall's orientation,
+ *     x = P(t) + S (X - P0),   P(t) = the motion above applied to P0,
+ *     S <- R(spin axis, omega_s dt) dQ S each step (dQ the motion above's increment);
+ * S = R(spin axis, phi_s) R(axis, phi) when the two axes are parallel.
  * Rotations are integrated through the accumulated angle phi, so a constant rotation
  * has no drift however long the run. Rates can change in time through a callback. */
 #ifndef RIGIDSURF_MOTION_H
@@ -43,6 +50,8 @@ void rs_rotation_matrix(const double axis[3], double angle, double R[9]);
 /// Optional time-varying rates: fill vel[3] and *omega at time t. Return 0 on success,
 /// non-zero to stop the run (err filled by the callback's owner).
 typedef int (*rs_motion_rates_fn)(double t, double vel[3], double *omega, void *ctx);
+/// The spin's angular speed at time t, likewise.
+typedef int (*rs_motion_spin_fn)(double t, double *omega, void *ctx);
 
 typedef struct rs_motion {
     double t;                 ///< current time
@@ -62,6 +71,13 @@ typedef struct rs_motion {
         disp_err[3];     ///< compensated-summation remainders of t, phi, disp
     int center_fixed;    ///< nonzero: the rotation's centre stays at C in space
     double step_disp[3]; ///< V dt of the last rs_motion_advance
+    int spin_on;         ///< nonzero: the spin below turns the wall after the motion above
+    double spin_axis[3]; ///< unit, fixed in space
+    double spin_omega;   ///< angular speed of the spin (rad/time)
+    double spin_point0[3];         ///< P0: the spin axis's point, reference configuration
+    double spin_phi, spin_phi_err; ///< accumulated spin angle and its remainder
+    double S[9];                   ///< the wall's orientation with the spin (row-major)
+    rs_motion_spin_fn spin_rates;  ///< NULL for a constant spin (ctx as rates)
 } rs_motion;
 
 /// No motion: identity pose, zero rates, axis = z, centre at the origin.
@@ -84,12 +100,20 @@ int rs_motion_set_rotation(rs_motion *m, const double center[3], const double ax
 /// translates, so D turns with the rotation (D' = omega axis x D + V); 0 (the default):
 /// C moves with the translation (D' = V).
 void rs_motion_set_center_fixed(rs_motion *m, int fixed);
+/// Adds the spin: angular speed omega about the unit axis direction (normalised here,
+/// fixed in space) through the wall's point P0 (reference configuration). RS_ERR_ARG for
+/// a zero or non-finite axis or a non-finite point or speed.
+int rs_motion_set_spin(rs_motion *m, const double point0[3], const double axis[3],
+                       double omega, rs_error *err);
+/// The wall's rigid velocity field: v(p) = V + W x (p - C), with the spin's part.
+void rs_motion_field(const rs_motion *m, double V[3], double W[3], double C[3]);
 /// Advances time by dt: rates are taken at mid-step (t + dt/2), then phi and D are
 /// integrated and pose and dQ updated; with the centre fixed, D turns by this step's
 /// rotation before this step's translation is added.
 int rs_motion_advance(rs_motion *m, double dt, rs_error *err);
 /// Current velocity of the master material point at spatial point p:
-/// v = V + omega axis x (p - c), c the centre (rs_motion_center).
+/// v = V + omega axis x (p - c), c the centre (rs_motion_center), plus the spin's
+/// omega_s spin_axis x (p - P) (rs_motion_field).
 void rs_motion_velocity_at(const rs_motion *m, const double p[3], double v[3]);
 /// The point about which the current velocity field turns: C + D; with the centre
 /// fixed in space, C + V dt of the last step (the rotation's velocity is that of the

@@ -579,7 +579,11 @@ class Migration:
         elif s["rot"] is not None:
             words += ["rotate", "origin"] + list(s["rot"][0]) + ["axis"] + list(s["rot"][1]) \
                 + ["omega", "v_rs_%s_om" % m["id"]]
-        used = (["vx", "vy", "vz"] if s["lin_used"] else []) + (["om"] if s["rot"] else [])
+        if s["spin"] is not None:
+            words += ["spin", "origin"] + list(s["spin"][0]) + ["axis"] + list(s["spin"][1]) \
+                + ["omega", "v_rs_%s_om2" % m["id"]]
+        used = (["vx", "vy", "vz"] if s["lin_used"] else []) + (["om"] if s["rot"] else []) \
+            + (["om2"] if s["spin"] is not None else [])
         for k in used:
             if k not in s["pre_wall"]:
                 pre.append("variable rs_%s_%s equal 0" % (m["id"], k))

@@ -29,14 +29,16 @@ of the movers made after it; the first mover's point is put back each step
 turns about an origin the translations carry, which is wall/rigid's `move` + `rotate`
 (its origin moves with the translation); a rotation made while no other mover runs
 comes first, and a translation made while it runs leaves its origin in place in space:
-`rotate ... centre fixed`. One wall has one of the two.
+`rotate ... centre fixed`. One wall has one of the two. A rotation made while the
+mesh's first mover, a rotation, runs turns about an origin that rotation carries, its
+axis keeping its direction in space: wall/rigid's `spin`.
 """
 import math
 import re
 
 TRANSLATIONS = ("linear", "linear/variable", "wiggle", "viblin")
 ROTATIONS = ("rotate", "rotate/variable", "riggle", "vibrot")
-LIN, ROT = ("vx", "vy", "vz"), ("om",)
+LIN, ROT, SPIN = ("vx", "vy", "vz"), ("om",), ("om2",)
 # The longest run over which the tool sums an oscillating translation's steps.
 MAX_SUM_STEPS = 10 ** 7
 NUMBER = re.compile(r"(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
@@ -182,7 +184,7 @@ def total(active, kind, key):
 
 
 def rate_lines(mid, active, kind):
-    keys = LIN if kind == "linear" else ROT
+    keys = keys_of(kind)
     return ["variable rs_%s_%s equal %s" % (mid, k, total(active, kind, k)) for k in keys]
 
 
@@ -193,7 +195,7 @@ def follow(mg, Numbers, FLOW, fmt):
     num, dt, step, restart = Numbers(), None, 0.0, None
     st = {mid: dict(active={}, wall=False, D=[0.0, 0.0, 0.0], D_rot=None, rot=None,
                     lin_used=False, lin_since_rot=False, assigned=set(), pre_wall=set(),
-                    lines={}, centre=None)
+                    lines={}, centre=None, spin=None)
           for mid in mg.meshes}
     mg.motion_state = st
     for i, c in enumerate(mg.cmds):
@@ -268,6 +270,9 @@ def move(i, c, num, s, m, restart, fmt):
                             "takes the time since the fix was made from the restart file"
                             % (c.lineno, style, restart))
     if mo["kind"] == "linear":
+        if "spin" in kinds or s["spin"] is not None:
+            m["reasons"].append("LINE %d moves it while a second rotation of the mesh turns "
+                                "it (wall/rigid's spin): not translated" % c.lineno)
         if "rotate" in kinds:
             rid = [f for f, x in s["active"].items() if x["kind"] == "rotate"][0]
             # the rotation came first: its origin stays in space; else a translation
@@ -276,10 +281,12 @@ def move(i, c, num, s, m, restart, fmt):
         s["lin_used"] = True
         if s["rot"] is not None:
             s["lin_since_rot"] = True
+    elif "rotate" in kinds:
+        spin(c, s, m, mo)
     else:
-        if "rotate" in kinds:
-            m["reasons"].append("LINE %d turns it while another move/mesh turns it: one "
-                                "wall/rigid has one rotation" % c.lineno)
+        if "spin" in kinds:
+            m["reasons"].append("LINE %d turns it while a second rotation turns it: "
+                                "wall/rigid has a rotation and a spin" % c.lineno)
         # a rotation made while translations run: they come first among the mesh's movers
         # and carry its origin (FixMesh::move), as wall/rigid's translation carries the
         # rotation's origin; made alone, it is the first mover
@@ -290,7 +297,30 @@ def move(i, c, num, s, m, restart, fmt):
     s["active"][fid] = mo
     pre = ["variable rs_%s_t0 equal $(time)" % fid] if mo["t0"] else []
     s["lines"][i] = pre + rate_lines(mid, s["active"], mo["kind"])
-    s["assigned"] |= set(LIN if mo["kind"] == "linear" else ROT)
+    s["assigned"] |= set(keys_of(mo["kind"]))
+
+
+def keys_of(kind):
+    return LIN if kind == "linear" else SPIN if kind == "spin" else ROT
+
+
+def spin(c, s, m, mo):
+    """A rotation made while another runs: LIGGGHTS's second mover, whose origin the
+    first carries (FixMesh::rotate) and whose axis keeps its direction in space, is
+    wall/rigid's spin. The first must be the mesh's first mover (its origin fixed in
+    space), the wall not yet turned nor translated, so the origin as given is the spin's
+    point in the wall's reference configuration."""
+    first = [x for x in s["active"].values() if x["kind"] == "rotate"][0]
+    if s["spin"] is not None or len(s["active"]) != 1 or not first["first"] or \
+            first["k"] != 0 or s["lin_used"]:
+        m["reasons"].append(
+            "LINE %d turns it while another move/mesh turns it, where wall/rigid's spin "
+            "needs the other to be the mesh's only mover, made at the same point of the "
+            "deck, and the mesh not translated before" % c.lineno)
+        return
+    mo["kind"] = "spin"
+    mo["rates"] = {"om2": mo["rates"]["om"]}
+    s["spin"] = (mo["origin"], mo["axis"])
 
 
 def centre(c, s, m, mode, rid):

@@ -390,10 +390,10 @@ check("riggle and vibrot turn the wall about LIGGGHTS's fixed point less the tra
 
 # what one wall/rigid cannot do: said with the line, the wall kept
 CANNOT = {
-    "two rotations at once":
+    "a second rotation made after the first turned the wall":
     ("fix r all move/mesh mesh m riggle origin 0 0 0 axis 0 0 1 period 0.2 amplitude 5\n"
-     "fix r2 all move/mesh mesh m rotate origin 0 0 0 axis 0 0 1 period 2\n",
-     "LINE 8 turns it while another move/mesh turns it: one wall/rigid has one rotation"),
+     "run 10\nfix r2 all move/mesh mesh m rotate origin 0.1 0 0 axis 0 0 1 period 2\n",
+     "LINE 9 turns it while another move/mesh turns it, where wall/rigid's spin needs"),
     "a rotation's origin fixed in space, then carried by a translation":
     ("fix r all move/mesh mesh m riggle origin 0 0 0 axis 0 0 1 period 0.2 amplitude 5\n"
      "fix a all move/mesh mesh m linear 0 0 1\nrun 10\nunfix r\n"
@@ -452,6 +452,19 @@ check("a translation made while the first mover rotates it: rotate about the ori
       rc == 0 and "move linear v_rs_m_vx v_rs_m_vy v_rs_m_vz rotate origin 0.1 0.2 0.3 "
       "axis 0 1 0 omega v_rs_m_om centre fixed" in flat and
       "variable rs_m_vz equal 0.25" in flat, out + err)
+
+# two rotations at once: the second turns about an origin the first carries, its axis
+# fixed in direction (LIGGGHTS's FixMesh::rotate): wall/rigid's rotate and spin
+deck = head + ("fix r all move/mesh mesh m rotate origin 0 0 0 axis 0 0 1 period 4\n"
+               "fix r2 all move/mesh mesh m riggle origin 0.1 0 0 axis 1 0 0 period 0.2 "
+               "amplitude 5\nrun 10\nunfix r2\nrun 10\n")
+rc, out, err = run(deck)
+flat = out.replace(" &\n    ", " ")
+check("two rotations at once: rotate and spin, each with its rate",
+      rc == 0 and "rotate origin 0 0 0 axis 0 0 1 omega v_rs_m_om spin origin 0.1 0 0 "
+      "axis 1 0 0 omega v_rs_m_om2" in flat and "variable rs_m_om equal 2*PI/(4)" in flat
+      and "variable rs_m_om2 equal 5*PI/180*" in flat and
+      "variable rs_m_om2 equal 0" in flat.split("unfix r2")[0] + flat, out + err)
 
 # wall/gran shear of primitive walls: in the tangent plane it is surface_vel
 SHEAR = {"zplane 0 shear x 0.5": "surface_vel 0.5 0 0",

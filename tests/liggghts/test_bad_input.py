@@ -43,6 +43,11 @@ CASES = [
      ["non-zero period"]),
     ("rotate centre unknown", BASE + " rotate origin 0 0 0 axis 0 0 1 omega 1 centre still",
      ["'rotate ... centre' expects 'moving' or 'fixed'", "still"]),
+    ("spin twice", BASE + " spin origin 0 0 0 axis 1 0 0 omega 1 spin origin 0 0 0 axis "
+     "1 0 0 omega 2", ["'spin' is given once"]),
+    ("spin zero axis", BASE + " spin origin 0 0 0 axis 0 0 0 omega 1", ["axis", "non-zero"]),
+    ("spin without omega", BASE + " spin origin 0 0 0 axis 0 0 1", ["'spin' expects "
+     "'omega W' or 'period P' after the axis"]),
     ("contact_area without conduction", BASE + " contact_area projection",
      ["'contact_area' sets the area of 'conduction liggghts'"]),
     ("contact_area constant 0", BASE + " temperature 400 conduction liggghts contact_area "

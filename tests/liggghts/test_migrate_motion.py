@@ -29,8 +29,9 @@ model's 1e-9 relative: TOL = 1e-8 relative (positions against R, velocities agai
 1e5 times smaller than the control's disagreement.
 
 On a turning plate (riggle, vibrot, a rotation made while a translation runs,
-`linear_rotate`, whose origin the translation carries, and a translation made while a
-rotation runs, `rotate_linear`, whose origin stays in space) that holds for the motion,
+`linear_rotate`, whose origin the translation carries, a translation made while a
+rotation runs, `rotate_linear`, whose origin stays in space, and two rotations at once,
+`rotate_spin`, the second about an origin the first carries) that holds for the motion,
 checked without friction
 (`_mu0`: the normal contact alone, no tangential history). With friction the contact
 models differ on a turning wall, apart from the motion: wall/rigid carries a contact's
@@ -56,7 +57,7 @@ SETTLE, MOVE, EVERY = 2000, 10000, 100
 TOL = 1e-8
 # The turning plates (riggle, vibrot) run twice: without friction to TOL, with friction
 # (mu 0.5) to TOL_TURNING, the contact model's difference on a turning wall.
-TURNING = ("riggle", "vibrot", "linear_rotate", "rotate_linear")
+TURNING = ("riggle", "vibrot", "linear_rotate", "rotate_linear", "rotate_spin")
 TOL_TURNING = 1e-3
 SCALES = {"x": R, "y": R, "z": R, "vx": 1.0, "vy": 1.0, "vz": 1.0,
           "omegax": 1.0 / R, "omegay": 1.0 / R, "omegaz": 1.0 / R}
@@ -87,6 +88,13 @@ CASES = {
     "rotate_linear": (["fix mv1 all move/mesh mesh plate rotate origin 0.01 0 0 axis 0 1 0 "
                        "period 20",
                        "fix mv2 all move/mesh mesh plate linear 0.02 0 0"], 1e-3),
+    # two rotations at once: the plate tilts about y through (0.01, *, 0), and about x
+    # through (*, 0.02, 0), a point the first rotation carries, the axis keeping its
+    # direction in space (wall/rigid's rotate and spin)
+    "rotate_spin": (["fix mv1 all move/mesh mesh plate rotate origin 0.01 0 0 axis 0 1 0 "
+                     "period 20",
+                     "fix mv2 all move/mesh mesh plate rotate origin 0 0.02 0 axis 1 0 0 "
+                     "period 30"], 1e-3),
 }
 
 

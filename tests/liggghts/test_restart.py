@@ -31,6 +31,8 @@ Fifth case, the slot's layout: a file written with hertz as a loaded C law (its 
 keep the last call's stress and energies: 17 doubles) is read by law hertz (11) and the
 run continues identically. Sixth, law liggghts with rolling friction epsd2: the model's
 own history (shear and rolling torque) comes through the restart, identically.
+Seventh, a drum that turns and spins about a crossed axis at a rate that changes in
+time: the spin's state comes through the restart, identically.
 """
 import math
 import os
@@ -110,6 +112,19 @@ def body(s):
     version_case(s)
     layout_case(s)
     liggghts_case(s)
+    spin_case(s)
+
+
+def spin_case(s):
+    """A drum that turns and spins about a crossed axis through one of its points (the
+    wall's orientation S accumulated step by step): the spin's angle, rate and S come
+    through the restart (layout version 7), so the restarted run is identical."""
+    wall = ("fix w all wall/rigid surface drum.inp law hertz type 2 rotate origin 0 0 0 "
+            "axis 0 0 1 omega 6 spin origin 0 0 0.01 axis 1 0 0 omega v_ws")
+    # of step, not time: LIGGGHTS's time starts again from 0 after read_restart
+    lines = ("variable ws equal 0.2+1e-4*step\n" + setup_lines(wall) +
+             "variable nc equal f_w[7]\n")
+    restart_case(s, "spin", deck_atoms(), lines, 3, "three contacts")
 
 
 def liggghts_case(s):
@@ -219,10 +234,10 @@ def version_case(s):
     with open(s.path("ours.restart"), "rb") as f:
         data = bytearray(f.read())
     cap = 4.0
-    head = struct.pack("<2d", 6.0, cap)
+    head = struct.pack("<2d", 7.0, cap)
     at = [k for k in range(len(data)) if data.startswith(head, k)]
     nstatev, npred = struct.unpack_from("<2d", data, at[0] + 16) if at else (-1, -1)
-    s.ck.check("version: one wall/rigid global record of version 6 in the file",
+    s.ck.check("version: one wall/rigid global record of version 7 in the file",
                len(at) == 1 and nstatev >= 0 and npred == 0, "at %s" % at)
     if len(at) != 1:
         return
@@ -257,7 +272,7 @@ def version_case(s):
     rc, out = s.run("v4_restarted", restarted_deck("v4.restart", setup) + "run 10\n",
                     expect_ok=False)
     s.ck.check("version: a file of layout version 4 is refused, naming what is read",
-               rc != 0 and "layout version 4;" in out and "versions 5 to 6" in out,
+               rc != 0 and "layout version 4;" in out and "versions 5 to 7" in out,
                [l for l in out.splitlines() if "ERROR" in l][-1:].__repr__())
 
 
