@@ -110,6 +110,7 @@ class FixWallRigid : public Fix
         return surf_.sides != 2 && !behind_warned_;
     }
     bool wall_moved_beyond_skin() const;
+    double box_reach(const double c[3]) const;
     void process_block(const int *idx, int n, bool setup_call);
     void law_inputs(const int *idx, int n, int ne, bool setup_call);
     void liggghts_block(const int *idx, int n, int ne, bool setup_call);

@@ -16,6 +16,23 @@
 
 using namespace LAMMPS_NS;
 
+/* The largest distance from c to a corner of the box: how far a point of the box lies
+ * from c at most. */
+double FixWallRigid::box_reach(const double c[3]) const
+{
+    double rmax2 = 0.0;
+    for (int k = 0; k < 8; k++) {
+        const double p[3] = {(k & 1) ? domain->boxhi[0] : domain->boxlo[0],
+                             (k & 2) ? domain->boxhi[1] : domain->boxlo[1],
+                             (k & 4) ? domain->boxhi[2] : domain->boxlo[2]};
+        double r2 = 0.0;
+        for (int d = 0; d < 3; d++)
+            r2 += (p[d] - c[d]) * (p[d] - c[d]);
+        rmax2 = std::max(rmax2, r2);
+    }
+    return std::sqrt(rmax2);
+}
+
 bool FixWallRigid::wall_moved_beyond_skin() const
 {
     if (!moving_)
@@ -28,40 +45,22 @@ bool FixWallRigid::wall_moved_beyond_skin() const
     if (dphi > 0.0 && !spin_invariant_) {
         /* a material point at x moved by (R' R^T - I)(x - C - D) besides D' - D, for
          * either centre (motion.h) */
-        double c[3], rmax2 = 0.0;
+        double c[3];
         for (int d = 0; d < 3; d++)
             c[d] = motion_.center0[d] + motion_.disp[d];
-        for (int k = 0; k < 8; k++) {
-            const double p[3] = {(k & 1) ? domain->boxhi[0] : domain->boxlo[0],
-                                 (k & 2) ? domain->boxhi[1] : domain->boxlo[1],
-                                 (k & 4) ? domain->boxhi[2] : domain->boxlo[2]};
-            double r2 = 0.0;
-            for (int d = 0; d < 3; d++)
-                r2 += (p[d] - c[d]) * (p[d] - c[d]);
-            rmax2 = std::max(rmax2, r2);
-        }
-        bound += dphi * std::sqrt(rmax2);
+        bound += dphi * box_reach(c);
     }
     const double dspin = std::fabs(motion_.spin_phi - spin_at_build_);
     if (motion_.spin_on && (dspin > 0.0 || dphi > 0.0)) {
         /* x = P + S (X - P0): P moved as a point of the motion without the spin, by at
          * most |D' - D| + dphi |P - C - D|, and x - P turned by at most dphi + dspin */
-        double P[3], rmax2 = 0.0, pc2 = 0.0;
+        double P[3], pc2 = 0.0;
         rs_pose_to_global(&motion_.pose, motion_.spin_point0, P);
         for (int d = 0; d < 3; d++) {
             const double r = P[d] - motion_.center0[d] - motion_.disp[d];
             pc2 += r * r;
         }
-        for (int k = 0; k < 8; k++) {
-            const double p[3] = {(k & 1) ? domain->boxhi[0] : domain->boxlo[0],
-                                 (k & 2) ? domain->boxhi[1] : domain->boxlo[1],
-                                 (k & 4) ? domain->boxhi[2] : domain->boxlo[2]};
-            double r2 = 0.0;
-            for (int d = 0; d < 3; d++)
-                r2 += (p[d] - P[d]) * (p[d] - P[d]);
-            rmax2 = std::max(rmax2, r2);
-        }
-        bound = std::sqrt(dd) + dphi * std::sqrt(pc2) + (dphi + dspin) * std::sqrt(rmax2);
+        bound = std::sqrt(dd) + dphi * std::sqrt(pc2) + (dphi + dspin) * box_reach(P);
     }
     return bound > 0.5 * neighbor->skin;
 }
