@@ -270,9 +270,13 @@ def move(i, c, num, s, m, restart, fmt):
                             "takes the time since the fix was made from the restart file"
                             % (c.lineno, style, restart))
     if mo["kind"] == "linear":
-        if "spin" in kinds or s["spin"] is not None:
-            m["reasons"].append("LINE %d moves it while a second rotation of the mesh turns "
-                                "it (wall/rigid's spin): not translated" % c.lineno)
+        if "spin" in kinds:
+            # a mover carries the origins of the movers made after it only: this
+            # translation leaves the spin's origin where the first rotation puts it,
+            # where wall/rigid's move carries the spin's point
+            m["reasons"].append("LINE %d moves it while two rotations turn it: LIGGGHTS's "
+                                "translation, made after them, does not carry the second "
+                                "one's origin, which wall/rigid's would" % c.lineno)
         if "rotate" in kinds:
             rid = [f for f, x in s["active"].items() if x["kind"] == "rotate"][0]
             # the rotation came first: its origin stays in space; else a translation

@@ -390,6 +390,12 @@ check("riggle and vibrot turn the wall about LIGGGHTS's fixed point less the tra
 
 # what one wall/rigid cannot do: said with the line, the wall kept
 CANNOT = {
+    "a translation made while two rotations run":
+    ("fix r all move/mesh mesh m rotate origin 0 0 0 axis 0 0 1 period 4\n"
+     "fix r2 all move/mesh mesh m rotate origin 0.1 0 0 axis 0 0 1 period 2\n"
+     "fix a all move/mesh mesh m linear 0 0 1\n",
+     "LINE 9 moves it while two rotations turn it: LIGGGHTS's translation, made after "
+     "them, does not carry the second one's origin"),
     "a second rotation made after the first turned the wall":
     ("fix r all move/mesh mesh m riggle origin 0 0 0 axis 0 0 1 period 0.2 amplitude 5\n"
      "run 10\nfix r2 all move/mesh mesh m rotate origin 0.1 0 0 axis 0 0 1 period 2\n",
