@@ -85,6 +85,7 @@ class FixWallRigid : public Fix
     int parse_law(int narg, char **arg, int iarg);
     int parse_motion(int narg, char **arg, int iarg);
     double number(const char *keyword, const char *what, const char *s);
+    double positive(const char *keyword, const char *what, const char *s);
     int integer(const char *keyword, const char *what, const char *s);
     bool is_keyword(const char *s) const;
     [[noreturn]] void fail(const std::string &msg);

@@ -86,6 +86,15 @@ double FixWallRigid::number(const char *keyword, const char *what, const char *s
     return v;
 }
 
+/* A number > 0 (what says so): number's errors, or "expects WHAT, got S" for one <= 0. */
+double FixWallRigid::positive(const char *keyword, const char *what, const char *s)
+{
+    const double v = number(keyword, what, s);
+    if (!(v > 0.0))
+        fail(std::string("keyword '") + keyword + "' expects " + what + ", got " + s);
+    return v;
+}
+
 int FixWallRigid::integer(const char *keyword, const char *what, const char *s)
 {
     char *end = NULL;
@@ -258,11 +267,7 @@ void FixWallRigid::parse(int narg, char **arg)
                     fail("keyword 'capacity' expects a wall heat capacity > 0 (energy per "
                          "kelvin)");
                 capacity_wall_ =
-                    number("capacity", "a wall heat capacity > 0", arg[iarg + 1]);
-                if (!(capacity_wall_ > 0.0))
-                    fail(std::string("keyword 'capacity' expects a wall heat capacity > 0, "
-                                     "got ") +
-                         arg[iarg + 1]);
+                    positive("capacity", "a wall heat capacity > 0", arg[iarg + 1]);
                 iarg += 2;
             }
         } else if (std::strcmp(kw, "conduction") == 0) {
@@ -286,11 +291,7 @@ void FixWallRigid::parse(int narg, char **arg)
             } else if (std::strcmp(m, "constant") == 0) {
                 need(2, "'constant A' with an area A > 0");
                 carea_const_ =
-                    number("contact_area constant", "an area > 0", arg[iarg + 2]);
-                if (!(carea_const_ > 0.0))
-                    fail(std::string("keyword 'contact_area constant' expects an area > 0, "
-                                     "got ") +
-                         arg[iarg + 2]);
+                    positive("contact_area constant", "an area > 0", arg[iarg + 2]);
                 carea_mode_ = CAREA_CONSTANT;
                 iarg++;
             } else {

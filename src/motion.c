@@ -154,46 +154,63 @@ void rs_motion_set_translation(rs_motion *m, const double vel[3])
     m->vel[2] = vel[2];
 }
 
-int rs_motion_set_rotation(rs_motion *m, const double center[3], const double axis[3],
-                           double omega, rs_error *err)
+/* A rotation's axis, point and speed checked (fn and point: the caller's names for the
+ * error), the axis normalised into unit. */
+static int turn_checked(const char *fn, const char *point, const double axis[3],
+                        const double p[3], double omega, double unit[3], rs_error *err)
 {
     double len = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
     if (!isfinite(len) || len == 0.0)
         return rs_error_set(err, RS_ERR_ARG,
-                            "rs_motion_set_rotation: axis (%g, %g, %g) must be a finite "
-                            "non-zero vector",
+                            "%s: axis (%g, %g, %g) must be a finite non-zero vector", fn,
                             axis[0], axis[1], axis[2]);
-    if (!isfinite(center[0]) || !isfinite(center[1]) || !isfinite(center[2]) ||
-        !isfinite(omega))
-        return rs_error_set(err, RS_ERR_ARG,
-                            "rs_motion_set_rotation: centre and angular speed must be "
-                            "finite");
-    for (int i = 0; i < 3; i++) {
-        m->axis[i] = axis[i] / len;
+    if (!isfinite(p[0]) || !isfinite(p[1]) || !isfinite(p[2]) || !isfinite(omega))
+        return rs_error_set(err, RS_ERR_ARG, "%s: %s and angular speed must be finite", fn,
+                            point);
+    for (int i = 0; i < 3; i++)
+        unit[i] = axis[i] / len;
+    return RS_OK;
+}
+
+int rs_motion_set_rotation(rs_motion *m, const double center[3], const double axis[3],
+                           double omega, rs_error *err)
+{
+    const int rc =
+        turn_checked("rs_motion_set_rotation", "centre", axis, center, omega, m->axis, err);
+    if (rc != RS_OK)
+        return rc;
+    for (int i = 0; i < 3; i++)
         m->center0[i] = center[i];
-    }
     m->omega = omega;
     motion_update_pose(m);
+    return RS_OK;
+}
+
+/* What a rates callback (which: its name) gave at tmid: RS_OK, or why the run stops. */
+static int rates_checked(int rc, int finite, const char *which, double tmid, rs_error *err)
+{
+    if (rc != 0)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_motion_advance: %s callback stopped the run at t = %g "
+                            "(returned %d)",
+                            which, tmid, rc);
+    if (!finite)
+        return rs_error_set(err, RS_ERR_NONFINITE,
+                            "rs_motion_advance: %s callback returned a non-finite rate at "
+                            "t = %g",
+                            which, tmid);
     return RS_OK;
 }
 
 int rs_motion_set_spin(rs_motion *m, const double point0[3], const double axis[3],
                        double omega, rs_error *err)
 {
-    double len = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
-    if (!isfinite(len) || len == 0.0)
-        return rs_error_set(err, RS_ERR_ARG,
-                            "rs_motion_set_spin: axis (%g, %g, %g) must be a finite "
-                            "non-zero vector",
-                            axis[0], axis[1], axis[2]);
-    if (!isfinite(point0[0]) || !isfinite(point0[1]) || !isfinite(point0[2]) ||
-        !isfinite(omega))
-        return rs_error_set(err, RS_ERR_ARG,
-                            "rs_motion_set_spin: point and angular speed must be finite");
-    for (int i = 0; i < 3; i++) {
-        m->spin_axis[i] = axis[i] / len;
+    const int rc =
+        turn_checked("rs_motion_set_spin", "point", axis, point0, omega, m->spin_axis, err);
+    if (rc != RS_OK)
+        return rc;
+    for (int i = 0; i < 3; i++)
         m->spin_point0[i] = point0[i];
-    }
     m->spin_omega = omega;
     m->spin_phi = m->spin_phi_err = 0.0;
     m->spin_on = 0;
@@ -209,37 +226,25 @@ int rs_motion_advance(rs_motion *m, double dt, rs_error *err)
     if (!isfinite(dt))
         return rs_error_set(err, RS_ERR_ARG, "rs_motion_advance: dt = %g is not finite",
                             dt);
+    const double tmid = m->t + 0.5 * dt;
     if (m->rates) {
-        double tmid = m->t + 0.5 * dt, vel[3], omega;
+        double vel[3], omega = m->omega;
         memcpy(vel, m->vel, sizeof vel);
-        omega = m->omega;
-        int rc = m->rates(tmid, vel, &omega, m->ctx);
-        if (rc != 0)
-            return rs_error_set(err, RS_ERR_ARG,
-                                "rs_motion_advance: rates callback stopped the run at "
-                                "t = %g (returned %d)",
-                                tmid, rc);
-        if (!isfinite(vel[0]) || !isfinite(vel[1]) || !isfinite(vel[2]) || !isfinite(omega))
-            return rs_error_set(err, RS_ERR_NONFINITE,
-                                "rs_motion_advance: rates callback returned a non-finite "
-                                "rate at t = %g",
-                                tmid);
+        const int rc = m->rates(tmid, vel, &omega, m->ctx);
+        const int finite =
+            isfinite(vel[0]) && isfinite(vel[1]) && isfinite(vel[2]) && isfinite(omega);
+        const int ok = rates_checked(rc, finite, "rates", tmid, err);
+        if (ok != RS_OK)
+            return ok;
         memcpy(m->vel, vel, sizeof vel);
         m->omega = omega;
     }
     if (m->spin_on && m->spin_rates) {
-        double tmid = m->t + 0.5 * dt, omega = m->spin_omega;
-        int rc = m->spin_rates(tmid, &omega, m->ctx);
-        if (rc != 0)
-            return rs_error_set(err, RS_ERR_ARG,
-                                "rs_motion_advance: spin rate callback stopped the run at "
-                                "t = %g (returned %d)",
-                                tmid, rc);
-        if (!isfinite(omega))
-            return rs_error_set(err, RS_ERR_NONFINITE,
-                                "rs_motion_advance: spin rate callback returned a "
-                                "non-finite rate at t = %g",
-                                tmid);
+        double omega = m->spin_omega;
+        const int rc = m->spin_rates(tmid, &omega, m->ctx);
+        const int ok = rates_checked(rc, isfinite(omega), "spin rate", tmid, err);
+        if (ok != RS_OK)
+            return ok;
         m->spin_omega = omega;
     }
     double dphi = m->omega * dt;
