@@ -10,7 +10,8 @@ corner contacts) that turns, with its facets' wear and VTK, and an empty mesh fi
 error path); a VUINTER given as its Fortran source, which calls the utility routines;
 law liggghts with cohesion and rolling friction in the drum (LIGGGHTS's submodels,
 created and freed by the law), and a capillary bridge (easo/capillary/viscous) pulled
-off a plane, whose close branch reads the wall's velocity as an atom's.
+off a plane, whose close branch reads the wall's velocity as an atom's; a floor that turns
+and spins, conducting heat under heat/gran, with a servo plate pressing on the spheres.
 
 What counts: every memcheck error (invalid read/write/free, uninitialised value,
 mismatched free), and every definitely or indirectly lost block whose allocation stack
@@ -191,6 +192,25 @@ def body(s):
                      "tangential history cohesion easo/capillary/viscous type 2"],
                     "bridge", normal="hertz")
     runs.append(("law_liggghts_bridge", bridge, 0))
+    # a floor that turns and spins about its normal, conducting as LIGGGHTS's walls do
+    # (heat/gran, contact_area projection), and a servo plate pressing the spheres on it
+    moved = L.header((-0.05, 0.05, -0.05, 0.05, -0.01, 0.05), 1e-5, extra_props=(
+        "fix ftco all property/global thermalConductivity peratomtype 1000 5000\n"
+        "fix ftca all property/global thermalCapacity peratomtype 10 10\n"))
+    for k in range(3):
+        moved += L.sphere(k + 1, (0.01 * (k - 1), 0.002, R), R, RHO)
+    moved += ("fix heat all heat/gran initial_temperature 300\n"
+              "fix grav all gravity 9.81 vector 0 0 -1\n"
+              "fix wf all wall/rigid surface inline cylinder a 0 0 0 b 1 0 0 c 0 -1 0 "
+              "profile START -1 0 LINE 1 0 end law hertz type 2 temperature 400 "
+              "conduction liggghts contact_area projection rotate origin 0 0 0 axis 0 0 1 "
+              "omega 1 spin origin 0.005 0 0 axis 0 0 1 omega 2\n"
+              "fix wp all wall/rigid surface inline cylinder a 0 0 0.00805 b 1 0 0.00805 "
+              "c 0 1 0.00805 profile START -1 0 LINE 1 0 end law hertz type 2 servo com 0 0 "
+              "0.00805 ctrlPV force axis 0 0 1 target_val -0.5 vel_max 0.05 kp 5 ki 0.5\n"
+              "fix integr all nve/sphere\nthermo 100\n"
+              "thermo_style custom step f_wp[3] f_wf[14]\nrun 300\n")
+    runs.append(("moved_heat_servo", moved, 0))
     for tag, deck, want_rc in runs:
         rc, out = s.run(tag, deck, expect_ok=False, prefix=VALGRIND, timeout=600)
         s.ck.check(tag + ": exit status %d" % want_rc, rc == want_rc, "%s" % rc,
