@@ -27,6 +27,7 @@ import re
 
 import liglib as L
 import test_liggghts_models as M
+import test_migrate_store_heat as H
 
 R, RHO = 0.004, 2500.0
 # Our frames, by function or by source file; never by the executable's path (the
@@ -194,9 +195,8 @@ def body(s):
     runs.append(("law_liggghts_bridge", bridge, 0))
     # a floor that turns and spins about its normal, conducting as LIGGGHTS's walls do
     # (heat/gran, contact_area projection), and a servo plate pressing the spheres on it
-    moved = L.header((-0.05, 0.05, -0.05, 0.05, -0.01, 0.05), 1e-5, extra_props=(
-        "fix ftco all property/global thermalConductivity peratomtype 1000 5000\n"
-        "fix ftca all property/global thermalCapacity peratomtype 10 10\n"))
+    moved = L.header((-0.05, 0.05, -0.05, 0.05, -0.01, 0.05), 1e-5,
+                     extra_props=H.HEAT_PROPS)
     for k in range(3):
         moved += L.sphere(k + 1, (0.01 * (k - 1), 0.002, R), R, RHO)
     moved += ("fix heat all heat/gran initial_temperature 300\n"
