@@ -323,6 +323,7 @@ int rs_cblock_call(rs_contact_block *cb, const rs_law *law, const rs_law_block *
                    const rs_track_out *o, rs_error *err)
 {
     const int nd = cb->ndir, ns = cb->nstatev, np = cb->npred;
+    const int xm_dropped = (rs_law_drops(law) & RS_DROP_COORDMST) != 0;
     for (int k0 = 0; k0 < o->n; k0 += RS_BLOCK) {
         const int nk = o->n - k0 < RS_BLOCK ? o->n - k0 : RS_BLOCK;
         const size_t u0 = (size_t)k0;
@@ -334,7 +335,7 @@ int rs_cblock_call(rs_contact_block *cb, const rs_law *law, const rs_law_block *
         b.drdisp = o->drdisp + u0 * nd;
         b.drot = o->drot + u0 * 4;
         b.coordSlv = o->coordslv + u0 * nd;
-        b.coordMst = o->coordmst + u0 * nd;
+        b.coordMst = xm_dropped ? NULL : o->coordmst + u0 * nd;
         b.alocaldir = o->alocaldir + u0 * nd * nd;
         b.vrel = o->vrel + u0 * nd;
         b.curv = o->curv + u0 * 2;

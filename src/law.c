@@ -325,5 +325,7 @@ unsigned rs_law_drops(const rs_law *law)
         drop |= RS_DROP_STRESS;
     if (law && (law->skips & RS_LAW_SKIPS_ENERGY))
         drop |= RS_DROP_ENERGY;
+    if (law && (law->skips & RS_LAW_SKIPS_COORDMST))
+        drop |= RS_DROP_COORDMST;
     return drop;
 }

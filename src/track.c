@@ -384,16 +384,17 @@ RS_INLINE void put_cols(double *restrict dst, int m, const int nd, const double 
     }
 }
 
-/* The Abaqus-layout outputs of a run at entries e0 .. e0+m-1. */
+/* The Abaqus-layout outputs of a run at entries e0 .. e0+m-1 (coordmst unless xm is 0). */
 RS_INLINE void run_outputs(const track_run *restrict r, int m, const rs_contacts *c, int k0,
-                           rs_track_out *o, int e0, const int nd)
+                           rs_track_out *o, int e0, const int nd, const int xm)
 {
     const size_t e = (size_t)e0;
     put_cols(o->rdisp + e * nd, m, nd, r->rd1, r->s1, r->s2);
     put_cols(o->drdisp + e * nd, m, nd, r->drd1, r->ds1, r->ds2);
     put_cols(o->vrel + e * nd, m, nd, r->vn, r->v1, r->v2);
     put_cols(o->coordslv + e * nd, m, nd, r->px, r->py, r->pz);
-    put_cols(o->coordmst + e * nd, m, nd, c->xm[0] + k0, c->xm[1] + k0, c->xm[2] + k0);
+    if (xm)
+        put_cols(o->coordmst + e * nd, m, nd, c->xm[0] + k0, c->xm[1] + k0, c->xm[2] + k0);
     put_cols(o->curv + 2 * e, m, 2, c->curv[0] + k0, c->curv[1] + k0, NULL);
     if (c->share)
         memcpy(o->share + e, c->share + k0, (size_t)m * sizeof(double));
@@ -525,7 +526,8 @@ static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
         RS_A2(o->rdisp, nd, b, e) = RS_MAXVAL;
         RS_A2(o->drdisp, nd, b, e) = RS_MAXVAL;
         RS_A2(o->coordslv, nd, b, e) = xcp[b];
-        RS_A2(o->coordmst, nd, b, e) = xcp[b];
+        if (!(tr->drop & RS_DROP_COORDMST))
+            RS_A2(o->coordmst, nd, b, e) = xcp[b];
     }
     for (int b = 0; b < 4; b++)
         o->drot[(size_t)e * 4 + b] = RS_MAXVAL;
@@ -584,7 +586,7 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
             const int j = seeded[q] - e0;
             r.drd1[j] = -r.vn[j] * dt;
         }
-        run_outputs(&r, m, c, k0, out, e0, nd);
+        run_outputs(&r, m, c, k0, out, e0, nd, !(tr->drop & RS_DROP_COORDMST));
         run_store(&r, m, tr, c, k0, out, e0);
     }
 }

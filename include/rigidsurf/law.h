@@ -94,7 +94,8 @@ typedef struct rs_law_block {
     const double *condDflt;   ///< (n) default conductance, rs_law_default_conductance
     const double *shape;      ///< (nFacNod, n) master shape functions (1)
     const double *coordSlv;   ///< (nDir, n) contact point on the particle
-    const double *coordMst;   ///< (nDir, n) closest master point
+    const double *coordMst;   ///< (nDir, n) closest master point (NULL for a law that
+                              ///< skips it, RS_LAW_SKIPS_COORDMST)
     const double *alocaldir;  ///< (nDir, nDir, n) columns n, t1[, t2] (global)
     const double *props;      ///< (nProps) law properties
     const double *areaSlv;    ///< (n) area per contact (1: stress is force)
@@ -218,10 +219,12 @@ struct rs_law {
 /* What a law declares it does not read on entry, so that the contact's history need not
  * keep it (the tracker's slot layout follows, rs_law_drops): the stress of the last call
  * (the law computes its stress from its own state variables), and the sed, fluxSlv and
- * fluxMst of the last call. A law that skips one gets zeros there. Loaded laws read
+ * fluxMst of the last call. A law that skips one gets zeros there. A law that skips
+ * coordMst gets NULL there, and the tracker does not compute it. Loaded laws read
  * everything. */
 #define RS_LAW_SKIPS_STRESS 1u
 #define RS_LAW_SKIPS_ENERGY 2u
+#define RS_LAW_SKIPS_COORDMST 4u
 
 /// The tracker's RS_DROP_ flags for law (track.h): what its contacts' slots need not keep.
 unsigned rs_law_drops(const rs_law *law);

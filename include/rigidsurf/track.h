@@ -64,9 +64,11 @@ extern "C" {
 
 /// What a tracker does not keep in its slots (rs_tracker.drop): the stress of the last
 /// call (the law's stress on entry is then zero), the sed, fluxSlv and fluxMst of the
-/// last call (zero on entry).
+/// last call (zero on entry); and what it does not write at all: the closest master
+/// points (rs_track_out.coordmst is left as it was).
 #define RS_DROP_STRESS 1u
 #define RS_DROP_ENERGY 2u
+#define RS_DROP_COORDMST 4u
 
 #define RS_DIR_EMPTY 0.0                       ///< a free slot (zeroed memory)
 #define RS_DIR_LIVE(f) ((double)(f) + 1.0)     ///< the slot holds feature f (f >= 0)
@@ -122,7 +124,8 @@ typedef struct rs_track_out {
     double *drot;      ///< drot(2, 2, n)
     double *alocaldir; ///< alocaldir(ndir, ndir, n): columns n, t1[, t2]
     double *coordslv;  ///< contact point x_cp (ndir, n)
-    double *coordmst;  ///< closest master point x_m (ndir, n)
+    double *coordmst;  ///< closest master point x_m (ndir, n); not written when the
+                       ///< tracker drops it (RS_DROP_COORDMST)
     double *vrel;      ///< relative velocity of x_cp in (n, t1[, t2]) (ndir, n)
     double *curv;      ///< principal curvatures (2, n)
     double *share;     ///< the contact's share (rs_contacts.share; 1 when leaving): the

@@ -145,4 +145,5 @@ const rs_law rs_law_bonded_interface = {
     .init = rs_bonded_init,
     .update = rs_bonded_update,
     .critical_step = rs_bonded_critical_step,
+    .skips = RS_LAW_SKIPS_COORDMST,
 };

@@ -97,4 +97,5 @@ const rs_law rs_law_coulomb = {
     .update = rs_coulomb_update,
     .critical_step = rs_coulomb_critical_step,
     .reach = rs_law_reach_touching,
+    .skips = RS_LAW_SKIPS_COORDMST,
 };

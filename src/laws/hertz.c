@@ -209,5 +209,5 @@ const rs_law rs_law_hertz = {
     .update = rs_hertz_update,
     .critical_step = rs_hertz_critical_step,
     .reach = rs_law_reach_touching,
-    .skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY,
+    .skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_COORDMST,
 };

@@ -173,5 +173,5 @@ const rs_law rs_law_hooke = {
     .update = rs_hooke_update,
     .critical_step = rs_hooke_critical_step,
     .reach = rs_law_reach_touching,
-    .skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY,
+    .skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_COORDMST,
 };

@@ -53,4 +53,5 @@ const rs_law rs_law_linear_softening = {
     .update = rs_linear_softening_update,
     .critical_step = rs_linear_softening_critical_step,
     .reach = rs_law_reach_touching,
+    .skips = RS_LAW_SKIPS_COORDMST,
 };

@@ -3,12 +3,14 @@
  * keeps the same kinematics and state variables as one that keeps everything, gives the
  * law zeros where it dropped, and keeps what it keeps from one call to the next. The
  * reference is the same tracker with nothing dropped, on the same contacts. */
+#include "rigidsurf/contact_block.h"
 #include "rigidsurf/law.h"
 #include "rigidsurf/track.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
 #include "rs_test_contacts.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 #define NS 2
@@ -128,9 +130,17 @@ static void test_sizes(void)
     ENSURE(rs_track_slot_size(&lean) == RS_H_RDISP1 + 1 + 3);
     ENSURE(rs_track_statev_at(&lean) == RS_H_RDISP1 + 1);
     /* the built-in hertz and hooke read neither; a loaded law (skips 0) reads both */
-    ENSURE(rs_law_drops(rs_law_find("hertz")) == (RS_DROP_STRESS | RS_DROP_ENERGY));
-    ENSURE(rs_law_drops(rs_law_find("hooke")) == (RS_DROP_STRESS | RS_DROP_ENERGY));
-    ENSURE(rs_law_drops(rs_law_find("bonded_interface")) == 0);
+    const unsigned lean_law = RS_DROP_STRESS | RS_DROP_ENERGY | RS_DROP_COORDMST;
+    ENSURE(rs_law_drops(rs_law_find("hertz")) == lean_law);
+    ENSURE(rs_law_drops(rs_law_find("hooke")) == lean_law);
+    /* no built-in law reads the closest master points */
+    ENSURE(rs_law_drops(rs_law_find("bonded_interface")) == RS_DROP_COORDMST);
+    ENSURE(rs_law_drops(rs_law_find("coulomb")) == RS_DROP_COORDMST);
+    ENSURE(rs_law_drops(rs_law_find("linear_softening")) == RS_DROP_COORDMST);
+    /* dropping them changes no slot */
+    rs_tracker noxm = all;
+    noxm.drop = RS_DROP_COORDMST;
+    ENSURE(rs_track_slot_size(&noxm) == RS_HIST_SIZE(3));
     rs_law loaded;
     memset(&loaded, 0, sizeof loaded);
     ENSURE(rs_law_drops(&loaded) == 0);
@@ -189,9 +199,110 @@ static void test_dropped_fields(void)
     }
 }
 
+/* A tracker that drops coordMst writes everything else as one that keeps it, bit for
+ * bit, and leaves coordmst as it was; the one that keeps it writes each contact's foot
+ * on its plane. */
+static void test_coordmst_dropped(void)
+{
+    scene ref, lean;
+    scene_init(&ref, 0);
+    scene_init(&lean, RS_DROP_COORDMST);
+    double sa[3 * MAXC], sb[3 * MAXC], va[NS * MAXC], vb[NS * MAXC], ea[MAXC], eb[MAXC];
+    ENSURE(step(&ref, 1e-3, sa, va, ea) == 3 && step(&lean, 1e-3, sb, vb, eb) == 3);
+    const double sentinel = 12345.0;
+    for (int k = 0; k < 3 * lean.out.cap; k++)
+        lean.out.coordmst[k] = sentinel;
+    int same = 1, untouched = 1, foot = 1;
+    for (int it = 0; it < 4; it++) {
+        /* the feet of this call's contacts, before step moves the spheres */
+        const double x[2] = {ref.x[0], ref.x[1]}, y[2] = {ref.y[0], ref.y[1]},
+                     z[2] = {ref.z[0], ref.z[1]};
+        ENSURE(step(&ref, 1e-3, sa, va, ea) == 3 && step(&lean, 1e-3, sb, vb, eb) == 3);
+        const int n = ref.out.n;
+        for (int k = 0; k < 3 * n; k++) {
+            same &= ref.out.rdisp[k] == lean.out.rdisp[k];
+            same &= ref.out.drdisp[k] == lean.out.drdisp[k];
+            same &= ref.out.vrel[k] == lean.out.vrel[k];
+            same &= ref.out.coordslv[k] == lean.out.coordslv[k];
+            untouched &= lean.out.coordmst[k] == sentinel;
+        }
+        for (int k = 0; k < 9 * n; k++)
+            same &= ref.out.alocaldir[k] == lean.out.alocaldir[k];
+        for (int k = 0; k < 4 * n; k++)
+            same &= ref.out.drot[k] == lean.out.drot[k];
+        for (int k = 0; k < NS * n; k++)
+            same &= va[k] == vb[k];
+        for (int e = 0; e < n; e++) {
+            const int i = ref.out.point[e];
+            const int floor = ref.out.feature[e] == RS_FEATURE(RS_FEAT_FACE, 0);
+            /* floor z = 0: the foot is (x, y, 0); wall x = 0: (0, y, z) */
+            const double want[3] = {floor ? x[i] : 0.0, y[i], floor ? 0.0 : z[i]};
+            for (int d = 0; d < 3; d++)
+                foot &= fabs(RS_A2(ref.out.coordmst, 3, d, e) - want[d]) < 1e-15;
+        }
+    }
+    ENSURE(same);
+    ENSURE(untouched);
+    ENSURE(foot);
+    scene_free(&ref);
+    scene_free(&lean);
+}
+
+/* What a law's block call hands it: coordMst NULL for a law that skips it. */
+static const double *seen_xm;
+static int xm_probe(const rs_law *law, rs_law_block *b, rs_error *err)
+{
+    (void)law, (void)err;
+    seen_xm = b->coordMst;
+    for (int k = 0; k < 3 * b->nSlvNod; k++)
+        b->stress[k] = 0.0;
+    return RS_OK;
+}
+
+static void test_law_sees_no_coordmst(void)
+{
+    scene s;
+    scene_init(&s, 0);
+    double sa[3 * MAXC], va[NS * MAXC], ea[MAXC];
+    ENSURE(step(&s, 1e-3, sa, va, ea) == 3);
+    rs_contact_block cb;
+    memset(&cb, 0, sizeof cb);
+    cb.ndir = 3;
+    cb.nstatev = NS;
+    cb.area_mode = RS_AREA_NODE;
+    rs_error err;
+    rs_error_clear(&err);
+    ENSURE(rs_cblock_reserve(&cb, MAXC, &err) == RS_OK);
+    const double mass[2] = {1e-3, 2e-3};
+    s.p.mass = mass;
+    rs_cblock_inputs(&cb, &s.out, &s.p, 1e-3);
+    rs_law probe;
+    memset(&probe, 0, sizeof probe);
+    probe.name = "xm_probe";
+    probe.nprops = 0;
+    probe.update = xm_probe;
+    rs_law_block tmpl;
+    rs_law_block_init(&tmpl);
+    tmpl.nDir = 3;
+    tmpl.nStateVar = NS;
+    for (int v = 0; v < 2; v++) {
+        probe.skips = v ? RS_LAW_SKIPS_COORDMST : 0u;
+        seen_xm = (const double *)&seen_xm;
+        ENSURE(rs_cblock_call(&cb, &probe, &tmpl, &s.out, &err) == RS_OK);
+        if (v)
+            ENSURE(seen_xm == NULL);
+        else
+            ENSURE(seen_xm == s.out.coordmst);
+    }
+    rs_cblock_free(&cb);
+    scene_free(&s);
+}
+
 int main(void)
 {
     RS_RUN(test_sizes);
     RS_RUN(test_dropped_fields);
+    RS_RUN(test_coordmst_dropped);
+    RS_RUN(test_law_sees_no_coordmst);
     return rs_test_summary();
 }
