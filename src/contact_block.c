@@ -324,6 +324,7 @@ int rs_cblock_call(rs_contact_block *cb, const rs_law *law, const rs_law_block *
 {
     const int nd = cb->ndir, ns = cb->nstatev, np = cb->npred;
     const int xm_dropped = (rs_law_drops(law) & RS_DROP_COORDMST) != 0;
+    cb->law_sets = law ? law->sets : 0u;
     for (int k0 = 0; k0 < o->n; k0 += RS_BLOCK) {
         const int nk = o->n - k0 < RS_BLOCK ? o->n - k0 : RS_BLOCK;
         const size_t u0 = (size_t)k0;

@@ -19,14 +19,24 @@ static int unit_area(const rs_contact_block *cb, const rs_track_out *o,
             (cb->area_mode == RS_AREA_CONSTANT && cb->area_const == 1.0));
 }
 
+/* The law of the last call wrote zero heat flows and zero creep and plastic dissipation
+ * for every contact (rs_law.sets): their sums are zero without reading them. */
+static int lean_law(const rs_contact_block *cb)
+{
+    const unsigned both = RS_LAW_SETS_NO_HEAT | RS_LAW_SETS_NO_CREEP_PLASTIC;
+    return (cb->law_sets & both) == both;
+}
+
 /* The kernel: ND the tracker's ndir (2: the plane z = const, t2 = -ez, the contact point
  * keeps the particle's z); LEAVE: some contacts are leaving (they apply nothing); UNIT:
- * unit_area; ROWS: add onto rows (else write per contact into f, t, q). Each is a
- * constant in each copy. */
+ * unit_area; LEAN: lean_law (fluxSlv, fluxMst, scd, spd are zero and not read); ROWS:
+ * add onto rows (else write per contact into f, t, q). Each is a constant in each
+ * copy. */
 RS_INLINE void loads(const rs_contact_block *cb, const rs_track_out *o,
                      const rs_particle_block *p, const double origin[3], double *f,
                      double *t, double *q, const rs_load_rows *rows, rs_wall_load *w,
-                     const int ND, const int LEAVE, const int UNIT, const int ROWS)
+                     const int ND, const int LEAVE, const int UNIT, const int LEAN,
+                     const int ROWS)
 {
     const int ne = o->n;
     const int *restrict pt = o->point;
@@ -83,7 +93,7 @@ RS_INLINE void loads(const rs_contact_block *cb, const rs_track_out *o,
         mw0 -= rw1 * F2 - rw2 * F1;
         mw1 -= rw2 * F0 - rw0 * F2;
         mw2 -= rw0 * F1 - rw1 * F0;
-        const double qe = A * fslv[e];
+        const double qe = LEAN ? 0.0 : A * fslv[e];
         if (ROWS) {
             const int rk = row ? row[k] : k;
             double *fi = fr[rk], *ti = tr[rk];
@@ -93,7 +103,7 @@ RS_INLINE void loads(const rs_contact_block *cb, const rs_track_out *o,
                 double *si = sr[rk];
                 si[0] += F0, si[1] += F1, si[2] += F2;
             }
-            if (qr)
+            if (!LEAN && qr)
                 qr[rk] += qe;
         } else {
             double *fe = f + 3 * (size_t)e, *te = t + 3 * (size_t)e;
@@ -104,11 +114,13 @@ RS_INLINE void loads(const rs_contact_block *cb, const rs_track_out *o,
         }
         se += A * sed[e];
         fd += A * sfd[e];
-        pd += A * spd[e];
         vd += A * svd[e];
-        cd += A * scd[e];
-        qs += qe;
-        qm += A * fmst[e];
+        if (!LEAN) {
+            pd += A * spd[e];
+            cd += A * scd[e];
+            qs += qe;
+            qm += A * fmst[e];
+        }
         const double rd1 = rdisp[(size_t)e * ND];
         ncontact += rd1 > 0.0;
         if (deepest) {
@@ -124,39 +136,61 @@ RS_INLINE void loads(const rs_contact_block *cb, const rs_track_out *o,
     w->ncontact = ncontact;
 }
 
-/* The kernel's copies for each ndir, leaving and unit area (one loop for both kinds of
- * block, testing for leaving contacts, executes an eighth more in the fix). */
+/* The kernel's copies for each ndir, leaving, unit area and (3D) lean law (one loop for
+ * both kinds of block, testing for leaving contacts, executes an eighth more in the
+ * fix). */
 RS_INLINE void dispatch(const rs_contact_block *cb, const rs_track_out *o,
                         const rs_particle_block *p, const double origin[3], double *f,
                         double *t, double *q, const rs_load_rows *rows, rs_wall_load *w,
                         const int ROWS)
 {
-    switch ((o->ndir == 3) << 2 | (o->nleave > 0) << 1 | unit_area(cb, o, p)) {
+#define RS_LOADS(ND, LEAVE, UNIT, LEAN)                                                   \
+    loads(cb, o, p, origin, f, t, q, rows, w, ND, LEAVE, UNIT, LEAN, ROWS)
+    const int leave = o->nleave > 0, unit = unit_area(cb, o, p);
+    if (o->ndir == 2) {
+        switch (leave << 1 | unit) {
+        case 0:
+            RS_LOADS(2, 0, 0, 0);
+            break;
+        case 1:
+            RS_LOADS(2, 0, 1, 0);
+            break;
+        case 2:
+            RS_LOADS(2, 1, 0, 0);
+            break;
+        default:
+            RS_LOADS(2, 1, 1, 0);
+            break;
+        }
+        return;
+    }
+    switch (lean_law(cb) << 2 | leave << 1 | unit) {
     case 0:
-        loads(cb, o, p, origin, f, t, q, rows, w, 2, 0, 0, ROWS);
+        RS_LOADS(3, 0, 0, 0);
         break;
     case 1:
-        loads(cb, o, p, origin, f, t, q, rows, w, 2, 0, 1, ROWS);
+        RS_LOADS(3, 0, 1, 0);
         break;
     case 2:
-        loads(cb, o, p, origin, f, t, q, rows, w, 2, 1, 0, ROWS);
+        RS_LOADS(3, 1, 0, 0);
         break;
     case 3:
-        loads(cb, o, p, origin, f, t, q, rows, w, 2, 1, 1, ROWS);
+        RS_LOADS(3, 1, 1, 0);
         break;
     case 4:
-        loads(cb, o, p, origin, f, t, q, rows, w, 3, 0, 0, ROWS);
+        RS_LOADS(3, 0, 0, 1);
         break;
     case 5:
-        loads(cb, o, p, origin, f, t, q, rows, w, 3, 0, 1, ROWS);
+        RS_LOADS(3, 0, 1, 1);
         break;
     case 6:
-        loads(cb, o, p, origin, f, t, q, rows, w, 3, 1, 0, ROWS);
+        RS_LOADS(3, 1, 0, 1);
         break;
     default:
-        loads(cb, o, p, origin, f, t, q, rows, w, 3, 1, 1, ROWS);
+        RS_LOADS(3, 1, 1, 1);
         break;
     }
+#undef RS_LOADS
 }
 
 void rs_cblock_loads(const rs_contact_block *cb, const rs_track_out *o,

@@ -180,12 +180,13 @@ int rs_law_call(const rs_law *law, rs_law_block *b, rs_error *err)
     }
     const int n = b->nSlvNod;
     /* Write-only outputs start at zero, so a law sets only the energies it has. */
-    for (int k = 0; k < n; ++k) {
-        b->sfd[k] = 0.0;
-        b->scd[k] = 0.0;
-        b->spd[k] = 0.0;
-        b->svd[k] = 0.0;
-    }
+    if (!(law->sets & RS_LAW_SETS_ENERGIES))
+        for (int k = 0; k < n; ++k) {
+            b->sfd[k] = 0.0;
+            b->scd[k] = 0.0;
+            b->spd[k] = 0.0;
+            b->svd[k] = 0.0;
+        }
     rc = law->update(law, b, err);
     if (rc != RS_OK) {
         return rc;

@@ -43,6 +43,8 @@ typedef struct rs_contact_block {
     int *uid, *type;
     double *stiff, *cond, *area, *radius, *mass, *reff, *temp, *dtemp, *pred, *dpred;
     double *stress, *statev, *flux_slv, *flux_mst, *sed, *sfd, *scd, *spd, *svd;
+    unsigned law_sets; ///< rs_law.sets of the law of the last rs_cblock_call: the loads
+                       ///< leave out the outputs it declares zero
     int has_type, has_temp; ///< the last rs_cblock_inputs had types, temperatures
     /* Contacts [0, uni_n) hold the values of the key (R, m, A, k1, k2, dt) of a block
      * whose contacts all share it (a monodisperse bed on one feature): the next block

@@ -214,6 +214,8 @@ struct rs_law {
     rs_law_critical_step_fn critical_step; ///< optional: the time-step check
     rs_law_reach_fn reach;                 ///< optional: the default tracking thickness
     unsigned skips; ///< RS_LAW_SKIPS_ flags: inputs the law never reads (0: it reads all)
+    unsigned sets;  ///< RS_LAW_SETS_ flags: what the law writes of every contact's
+                    ///< outputs (0: nothing is promised)
 };
 
 /* What a law declares it does not read on entry, so that the contact's history need not
@@ -225,6 +227,17 @@ struct rs_law {
 #define RS_LAW_SKIPS_STRESS 1u
 #define RS_LAW_SKIPS_ENERGY 2u
 #define RS_LAW_SKIPS_COORDMST 4u
+
+/* What a law declares it writes for every contact of a call (rs_law.sets):
+ * - RS_LAW_SETS_ENERGIES: sfd, scd, spd and svd, so rs_law_call does not zero them
+ *   first (a law without it may set only the energies it has);
+ * - RS_LAW_SETS_NO_HEAT: fluxSlv = fluxMst = 0, and RS_LAW_SETS_NO_CREEP_PLASTIC: scd =
+ *   spd = 0 (the law writes the zeros), so the engine's sums leave them out
+ *   (rs_cblock_add_loads).
+ * Loaded laws promise nothing. */
+#define RS_LAW_SETS_ENERGIES 1u
+#define RS_LAW_SETS_NO_HEAT 2u
+#define RS_LAW_SETS_NO_CREEP_PLASTIC 4u
 
 /// The tracker's RS_DROP_ flags for law (track.h): what its contacts' slots need not keep.
 unsigned rs_law_drops(const rs_law *law);

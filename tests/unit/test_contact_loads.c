@@ -5,6 +5,7 @@
  * against rs_cblock_loads summed per particle by hand, bit for bit, onto rows in another
  * order, with unit and given areas. */
 #include "rigidsurf/contact_block.h"
+#include "rigidsurf/law.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
 
@@ -225,10 +226,75 @@ static void test_add_loads_onto_rows(void)
     add_loads_case(1);
 }
 
+/* The loads of a law that declares zero heat flows and zero creep and plastic
+ * dissipation (rs_law.sets, recorded by rs_cblock_call in cb.law_sets): the same rows
+ * and totals, bit for bit, as the full sums over those zeros, and the four arrays are
+ * not read (what they hold does not matter). */
+static void lean_loads(rs_contact_block *cb, const rs_track_out *o,
+                       const rs_particle_block *p, double rows_out[12], rs_wall_load *w)
+{
+    double F[2][3] = {{1, 2, 3}, {4, 5, 6}}, T[2][3] = {{0}}, Q[2] = {0.5, -0.5};
+    double *fr[2] = {F[0], F[1]}, *tr[2] = {T[0], T[1]};
+    const int row[2] = {1, 0};
+    const rs_load_rows rows = {.row = row, .f = fr, .t = tr, .q = Q};
+    const double origin[3] = {0, 0, 1};
+    rs_cblock_add_loads(cb, o, p, origin, &rows, w);
+    for (int r = 0; r < 2; r++)
+        for (int c = 0; c < 3; c++) {
+            rows_out[6 * r + c] = F[r][c];
+            rows_out[6 * r + 3 + c] = T[r][c];
+        }
+    ENSURE(Q[0] == 0.5 && Q[1] == -0.5); /* no heat */
+}
+
+static void test_loads_of_a_lean_law(void)
+{
+    const double px[2] = {1, 0}, py[2] = {2, 0}, pz[2] = {3, 0};
+    const rs_particle_block p = {.n = 2, .x = px, .y = py, .z = pz};
+    double live = RS_DIR_LIVE(4), gone = RS_DIR_LEAVING(5);
+    double *dir[3] = {&live, &gone, &live};
+    int point[3] = {0, 0, 1};
+    double alocal[27] = {0, 0, 1, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0,
+                         0, 0, 1, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    double coord[9] = {1, 2, 2.5, 0, 0, 0, 0.5, 0, 0};
+    double rdisp[9] = {1e-3, 0, 0, 7, 0, 0, 2e-4, 0, 0};
+    double share[3] = {1, 1, 1};
+    for (int nleave = 0; nleave < 2; nleave++) {
+        double alive = RS_DIR_LIVE(5);
+        dir[1] = nleave ? &gone : &alive;
+        rs_track_out o = track_out(3, 3, nleave, point, dir, rdisp, alocal, coord, share);
+        o.shared = 0;
+        double stress[9] = {10, 2, -3, 5, 1, 1, 4, 1, 0.5};
+        double area[3] = {1, 1, 1}, sed[3] = {1, 50, 2}, sfd[3] = {0.5, 50, 0};
+        double svd[3] = {3, 9, 0.25}, zero[4][3] = {{0}};
+        double *const e[7] = {sed, sfd, zero[0], svd, zero[1], zero[2], zero[3]};
+        rs_contact_block full = law_results(stress, area, e), lean = full;
+        full.area_mode = lean.area_mode = RS_AREA_NODE;
+        lean.law_sets = RS_LAW_SETS_NO_HEAT | RS_LAW_SETS_NO_CREEP_PLASTIC;
+        double rf[12], rl[12];
+        rs_wall_load wf, wl;
+        lean_loads(&full, &o, &p, rf, &wf);
+        for (int k = 0; k < 4; k++) /* not read by the lean loads */
+            for (int c = 0; c < 3; c++)
+                zero[k][c] = 1e3 * (k + 1) + c;
+        lean_loads(&lean, &o, &p, rl, &wl);
+        for (int k = 0; k < 12; k++)
+            ENSURE(rl[k] == rf[k]);
+        for (int c = 0; c < 3; c++)
+            ENSURE(wl.force[c] == wf.force[c] && wl.moment[c] == wf.moment[c]);
+        ENSURE(wl.se == wf.se && wl.fd == wf.fd && wl.vd == wf.vd);
+        ENSURE(wl.pd == 0.0 && wl.cd == 0.0 && wl.flux_slv == 0.0 && wl.flux_mst == 0.0);
+        ENSURE(wf.pd == 0.0 && wf.cd == 0.0 && wf.flux_slv == 0.0 && wf.flux_mst == 0.0);
+        ENSURE(wl.ncontact == wf.ncontact && wf.ncontact == 3 - nleave);
+        ENSURE(wf.se != 0.0 && wf.vd != 0.0);
+    }
+}
+
 int main(void)
 {
     RS_RUN(test_loads_in_3d);
     RS_RUN(test_loads_of_segments);
     RS_RUN(test_add_loads_onto_rows);
+    RS_RUN(test_loads_of_a_lean_law);
     return rs_test_summary();
 }

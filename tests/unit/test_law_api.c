@@ -228,6 +228,41 @@ static void test_law_call_zeroes_write_only_energies(void)
     }
 }
 
+/* A law that declares it sets every energy (RS_LAW_SETS_ENERGIES) gets them as they
+ * were: the call does not zero them first. */
+static int energies_update(const rs_law *law, rs_law_block *b, rs_error *err)
+{
+    (void)law, (void)err;
+    for (int k = 0; k < b->nSlvNod; ++k) {
+        for (int i = 0; i < b->nDir; ++i)
+            RS_A2(b->stress, b->nDir, i, k) = 0.0;
+        b->fluxSlv[k] = b->fluxMst[k] = 0.0;
+        b->svd[k] += 1.0;
+    }
+    return RS_OK;
+}
+
+static void test_law_call_leaves_energies_to_a_law_that_sets_them(void)
+{
+    const rs_law sets = {.name = "sets_energies",
+                         .nprops = -1,
+                         .update = energies_update,
+                         .sets = RS_LAW_SETS_ENERGIES};
+    const rs_law plain = {.name = "plain", .nprops = -1, .update = energies_update};
+    rs_error err;
+    for (int v = 0; v < 2; v++) {
+        law_fix_init(&F, v ? &sets : &plain, NULL, 0, 3, 3);
+        for (int k = 0; k < 3; ++k)
+            F.sfd[k] = F.scd[k] = F.spd[k] = F.svd[k] = 7.0;
+        ENSURE(rs_law_call(v ? &sets : &plain, &F.b, &err) == RS_OK);
+        for (int k = 0; k < 3; ++k) {
+            const double kept = v ? 7.0 : 0.0;
+            ENSURE(F.sfd[k] == kept && F.scd[k] == kept && F.spd[k] == kept);
+            ENSURE(F.svd[k] == kept + 1.0);
+        }
+    }
+}
+
 static void test_law_block_init_sets_abaqus_defaults(void)
 {
     rs_law_block b;
@@ -302,6 +337,7 @@ int main(void)
     RS_RUN(test_law_call_nan_guard_names_particle_and_feature);
     RS_RUN(test_law_call_rejects_malformed_block);
     RS_RUN(test_law_call_zeroes_write_only_energies);
+    RS_RUN(test_law_call_leaves_energies_to_a_law_that_sets_them);
     RS_RUN(test_law_block_init_sets_abaqus_defaults);
     RS_RUN(test_law_default_stiffness_ten_times_under_stability_limit);
     RS_RUN(test_law_default_conductance_keeps_explicit_heat_step_monotone);

@@ -292,6 +292,40 @@ static void test_hertz_restitution_matches_input(void)
     }
 }
 
+/* hertz declares that it writes every contact's sfd, scd, spd and svd, and zeros for
+ * fluxSlv, fluxMst, scd and spd (rs_law.sets): called directly, past rs_law_call's
+ * zeroing, on a block of every kind of contact, with NaN in those outputs before the
+ * call, in an increment and in a setup call. */
+static void test_hertz_sets_what_it_declares(void)
+{
+    const rs_law *h = law();
+    ENSURE(h->sets == (RS_LAW_SETS_ENERGIES | RS_LAW_SETS_NO_HEAT |
+                       RS_LAW_SETS_NO_CREEP_PLASTIC));
+    enum { N = 11 };
+    static law_fix B;
+    for (int setup = 0; setup < 2; setup++) {
+        law_fix_init(&B, h, P, 7, N, 3);
+        B.b.setup = setup;
+        for (int k = 0; k < N; ++k) {
+            mixed_contact(&B, k, k);
+            B.sfd[k] = B.scd[k] = B.spd[k] = B.svd[k] = NAN;
+            B.fluxSlv[k] = B.fluxMst[k] = NAN;
+        }
+        rs_error err;
+        ENSURE(h->update(h, &B.b, &err) == RS_OK);
+        int set = 1, zero = 1, some = 0;
+        for (int k = 0; k < N; ++k) {
+            set &= isfinite(B.sfd[k]) && isfinite(B.svd[k]);
+            zero &= B.scd[k] == 0.0 && B.spd[k] == 0.0;
+            zero &= B.fluxSlv[k] == 0.0 && B.fluxMst[k] == 0.0;
+            some += B.svd[k] > 0.0 || B.sfd[k] > 0.0;
+        }
+        ENSURE(set);
+        ENSURE(zero);
+        ENSURE(setup ? some == 0 : some > 0);
+    }
+}
+
 int main(void)
 {
     RS_RUN(test_hertz_plane_step_matches_liggghts_formulas);
@@ -304,5 +338,6 @@ int main(void)
     RS_RUN(test_hertz_setup_call_does_not_advance_history);
     RS_RUN(test_hertz_block_equals_contacts_one_by_one);
     RS_RUN(test_hertz_restitution_matches_input);
+    RS_RUN(test_hertz_sets_what_it_declares);
     return rs_test_summary();
 }
