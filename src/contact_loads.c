@@ -144,7 +144,7 @@ RS_INLINE void dispatch(const rs_contact_block *cb, const rs_track_out *o,
                         double *t, double *q, const rs_load_rows *rows, rs_wall_load *w,
                         const int ROWS)
 {
-#define RS_LOADS(ND, LEAVE, UNIT, LEAN)                                                   \
+#define RS_LOADS(ND, LEAVE, UNIT, LEAN)                                                    \
     loads(cb, o, p, origin, f, t, q, rows, w, ND, LEAVE, UNIT, LEAN, ROWS)
     const int leave = o->nleave > 0, unit = unit_area(cb, o, p);
     if (o->ndir == 2) {

@@ -299,8 +299,8 @@ static void test_hertz_restitution_matches_input(void)
 static void test_hertz_sets_what_it_declares(void)
 {
     const rs_law *h = law();
-    ENSURE(h->sets == (RS_LAW_SETS_ENERGIES | RS_LAW_SETS_NO_HEAT |
-                       RS_LAW_SETS_NO_CREEP_PLASTIC));
+    ENSURE(h->sets ==
+           (RS_LAW_SETS_ENERGIES | RS_LAW_SETS_NO_HEAT | RS_LAW_SETS_NO_CREEP_PLASTIC));
     enum { N = 11 };
     static law_fix B;
     for (int setup = 0; setup < 2; setup++) {
