@@ -136,61 +136,39 @@ RS_INLINE void loads(const rs_contact_block *cb, const rs_track_out *o,
     w->ncontact = ncontact;
 }
 
-/* The kernel's copies for each ndir, leaving, unit area and (3D) lean law (one loop for
- * both kinds of block, testing for leaving contacts, executes an eighth more in the
- * fix). */
+/* The kernel's copies for leaving and unit area, for one ND and LEAN (one loop for both
+ * kinds of block, testing for leaving contacts, executes an eighth more in the fix). */
+RS_INLINE void by_leave_unit(const rs_contact_block *cb, const rs_track_out *o,
+                             const rs_particle_block *p, const double origin[3], double *f,
+                             double *t, double *q, const rs_load_rows *rows,
+                             rs_wall_load *w, const int ND, const int LEAN, const int ROWS)
+{
+    const int unit = unit_area(cb, o, p);
+    if (o->nleave > 0) {
+        if (unit)
+            loads(cb, o, p, origin, f, t, q, rows, w, ND, 1, 1, LEAN, ROWS);
+        else
+            loads(cb, o, p, origin, f, t, q, rows, w, ND, 1, 0, LEAN, ROWS);
+    } else {
+        if (unit)
+            loads(cb, o, p, origin, f, t, q, rows, w, ND, 0, 1, LEAN, ROWS);
+        else
+            loads(cb, o, p, origin, f, t, q, rows, w, ND, 0, 0, LEAN, ROWS);
+    }
+}
+
+/* ...and for each ndir and (3D) lean law. */
 RS_INLINE void dispatch(const rs_contact_block *cb, const rs_track_out *o,
                         const rs_particle_block *p, const double origin[3], double *f,
                         double *t, double *q, const rs_load_rows *rows, rs_wall_load *w,
                         const int ROWS)
 {
-#define RS_LOADS(ND, LEAVE, UNIT, LEAN)                                                    \
-    loads(cb, o, p, origin, f, t, q, rows, w, ND, LEAVE, UNIT, LEAN, ROWS)
-    const int leave = o->nleave > 0, unit = unit_area(cb, o, p);
-    if (o->ndir == 2) {
-        switch (leave << 1 | unit) {
-        case 0:
-            RS_LOADS(2, 0, 0, 0);
-            break;
-        case 1:
-            RS_LOADS(2, 0, 1, 0);
-            break;
-        case 2:
-            RS_LOADS(2, 1, 0, 0);
-            break;
-        default:
-            RS_LOADS(2, 1, 1, 0);
-            break;
-        }
-        return;
-    }
-    switch (lean_law(cb) << 2 | leave << 1 | unit) {
-    case 0:
-        RS_LOADS(3, 0, 0, 0);
-        break;
-    case 1:
-        RS_LOADS(3, 0, 1, 0);
-        break;
-    case 2:
-        RS_LOADS(3, 1, 0, 0);
-        break;
-    case 3:
-        RS_LOADS(3, 1, 1, 0);
-        break;
-    case 4:
-        RS_LOADS(3, 0, 0, 1);
-        break;
-    case 5:
-        RS_LOADS(3, 0, 1, 1);
-        break;
-    case 6:
-        RS_LOADS(3, 1, 0, 1);
-        break;
-    default:
-        RS_LOADS(3, 1, 1, 1);
-        break;
-    }
-#undef RS_LOADS
+    if (o->ndir == 2)
+        by_leave_unit(cb, o, p, origin, f, t, q, rows, w, 2, 0, ROWS);
+    else if (lean_law(cb))
+        by_leave_unit(cb, o, p, origin, f, t, q, rows, w, 3, 1, ROWS);
+    else
+        by_leave_unit(cb, o, p, origin, f, t, q, rows, w, 3, 0, ROWS);
 }
 
 void rs_cblock_loads(const rs_contact_block *cb, const rs_track_out *o,
