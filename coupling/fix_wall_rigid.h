@@ -118,13 +118,14 @@ class FixWallRigid : public Fix
     double liggghts_reach() const;
     /// A per-atom output row: rdisp and stress of the block's contact e (nd values each;
     /// the third 0 for nd = 2), zeros for e < 0 (no contact).
-    void put_output(double *o, int e, int nd) const
+    static void put_output(double *__restrict o, int e, int nd,
+                           const double *__restrict stress, const double *__restrict rdisp)
     {
         if (e < 0) {
             o[0] = o[1] = o[2] = o[3] = o[4] = o[5] = 0.0;
             return;
         }
-        const double *s = cb_.stress + (size_t)e * nd, *rd = tout_.rdisp + (size_t)e * nd;
+        const double *s = stress + (size_t)e * nd, *rd = rdisp + (size_t)e * nd;
         o[0] = rd[0];
         o[1] = rd[1];
         o[2] = nd == 3 ? rd[2] : 0.0;
@@ -132,6 +133,9 @@ class FixWallRigid : public Fix
         o[4] = s[1];
         o[5] = nd == 3 ? s[2] : 0.0;
     }
+    /// put_output for each particle k of a block: its contact e[k] (e NULL: contact k,
+    /// or none where leaving[k]).
+    void put_outputs(const int *idx, int n, int nd, const int *e, const char *leaving);
     void write_vtk();
     void update_previous_fields();
     void begin_wallforce();

@@ -40,6 +40,12 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     double **__restrict qh = bhist_.data();
     double *__restrict qm = bmass_.data();
     int *__restrict qt = btype_.data();
+    /* The members the loop reads, as locals: its stores through double * could alias
+     * them, so the compiler would load them again for every particle. */
+    double *const *__restrict dirs = row_;
+    double *const hist = hist_;
+    const size_t ss = (size_t)slot_size();
+    double *const *__restrict out_rows = array_atom;
     double rmax = radius[idx[0]];
     for (int k = 0; k < n; k++) {
         const int i = idx[k];
@@ -52,15 +58,16 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         qm[k] = m;
         qt[k] = type[i];
         qid[k] = tag[i];
-        qd[k] = row_[i];
-        qh[k] = slot0(i);
+        double *const d = dirs[i], *const h = hist + (size_t)i * ss;
+        qd[k] = d;
+        qh[k] = h;
         rmax = std::max(rmax, R);
         /* asked for now, read after the query: the directory and the slot's head by the
          * tracker, the output row by the loads */
-        __builtin_prefetch(row_[i], 0, 3);
-        __builtin_prefetch(qh[k], 0, 3);
-        __builtin_prefetch(qh[k] + 8, 0, 3);
-        __builtin_prefetch(array_atom[i], 1, 3);
+        __builtin_prefetch(d, 0, 3);
+        __builtin_prefetch(h, 0, 3);
+        __builtin_prefetch(h + 8, 0, 3);
+        __builtin_prefetch(out_rows[i], 1, 3);
     }
     if (setup_call) {
         saved_rows_.resize((size_t)n * as);
@@ -262,14 +269,10 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     }
     /* Per-atom output: the deepest live contact of each particle with this wall, zeros
      * for a particle without one. */
-    if (ident_) {
-        const char *__restrict leaving = leaving_.data();
-        for (int k = 0; k < n; k++)
-            put_output(array_atom[idx[k]], leaving[k] ? -1 : k, nd);
-    } else {
-        for (int k = 0; k < n; k++)
-            put_output(array_atom[idx[k]], deepest_[k], nd);
-    }
+    if (ident_)
+        put_outputs(idx, n, nd, NULL, leaving_.data());
+    else
+        put_outputs(idx, n, nd, deepest_.data(), NULL);
 
     /* the facets' loads take each contact's area times its share */
     load_area_ = cb_.area;
@@ -292,6 +295,19 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     }
     rs_track_commit_energy(&tracker_, &tout_, cb_.sed, cb_.flux_slv, cb_.flux_mst);
     rs_track_commit(&tracker_, &tout_, cb_.stress, ns ? cb_.statev : NULL);
+}
+
+void FixWallRigid::put_outputs(const int *idx, int n, int nd, const int *e,
+                               const char *leaving)
+{
+    double *const *__restrict out = array_atom;
+    const double *const stress = cb_.stress, *const rdisp = tout_.rdisp;
+    if (e)
+        for (int k = 0; k < n; k++)
+            put_output(out[idx[k]], e[k], nd, stress, rdisp);
+    else
+        for (int k = 0; k < n; k++)
+            put_output(out[idx[k]], leaving[k] ? -1 : k, nd, stress, rdisp);
 }
 
 /* The query looked ahead beyond the tracking thickness, and behind the surface to the

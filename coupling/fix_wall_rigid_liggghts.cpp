@@ -102,8 +102,7 @@ void FixWallRigid::liggghts_block(const int *idx, int n, int ne, bool setup_call
     load_area_ = area_w_.data();
 
     /* Per-atom output: the deepest contact that applied a force, zeros otherwise. */
-    for (int k = 0; k < n; k++)
-        put_output(array_atom[idx[k]], deepest_[k], nd);
+    put_outputs(idx, n, nd, deepest_.data(), NULL);
 }
 
 /* The default tracking thickness of law liggghts: LIGGGHTS calls its model for contacts
