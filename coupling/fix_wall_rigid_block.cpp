@@ -157,8 +157,10 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
                 unpack_atom(idx[k], &saved_rows_[(size_t)k * as]);
         return;
     }
-    /* Stress of the previous increment in this increment's basis, and the law state. */
-    rs_track_load(&tracker_, &tout_, cb_.stress, ns ? cb_.statev : NULL);
+    /* Stress of the previous increment in this increment's basis (none for a law that
+     * neither reads it nor leaves any unwritten), and the law state. */
+    rs_track_load(&tracker_, &tout_, rs_law_stress_in(law_) ? cb_.stress : NULL,
+                  ns ? cb_.statev : NULL);
     if (lig_) {
         liggghts_block(idx, n, ne, setup_call);
         if (conduction_)

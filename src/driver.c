@@ -255,7 +255,8 @@ static int grow_contacts(rs_driver *d, int nc, int nd, rs_error *err)
 static int call_law(rs_driver *d, const rs_particle_block *p, int nd, rs_error *err)
 {
     const int ns = d->nstatev;
-    rs_track_load(&d->tracker, &d->trk, d->cb.stress, ns ? d->cb.statev : NULL);
+    rs_track_load(&d->tracker, &d->trk, rs_law_stress_in(d->law) ? d->cb.stress : NULL,
+                  ns ? d->cb.statev : NULL);
     rs_cblock_inputs(&d->cb, &d->trk, p, d->dt);
     rs_track_load_energy(&d->tracker, &d->trk, d->cb.sed, d->cb.flux_slv, d->cb.flux_mst);
 

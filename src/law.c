@@ -330,3 +330,8 @@ unsigned rs_law_drops(const rs_law *law)
         drop |= RS_DROP_COORDMST;
     return drop;
 }
+
+int rs_law_stress_in(const rs_law *law)
+{
+    return !(law && (law->skips & RS_LAW_SKIPS_STRESS) && (law->sets & RS_LAW_SETS_STRESS));
+}

@@ -233,14 +233,22 @@ struct rs_law {
  *   first (a law without it may set only the energies it has);
  * - RS_LAW_SETS_NO_HEAT: fluxSlv = fluxMst = 0, and RS_LAW_SETS_NO_CREEP_PLASTIC: scd =
  *   spd = 0 (the law writes the zeros), so the engine's sums leave them out
- *   (rs_cblock_add_loads).
+ *   (rs_cblock_add_loads);
+ * - RS_LAW_SETS_STRESS: stress(1:nDir), so that a law that also skips the stress on
+ *   entry (RS_LAW_SKIPS_STRESS) gets the array as it is, not zeroed (rs_law_stress_in).
  * Loaded laws promise nothing. */
 #define RS_LAW_SETS_ENERGIES 1u
 #define RS_LAW_SETS_NO_HEAT 2u
 #define RS_LAW_SETS_NO_CREEP_PLASTIC 4u
+#define RS_LAW_SETS_STRESS 8u
 
 /// The tracker's RS_DROP_ flags for law (track.h): what its contacts' slots need not keep.
 unsigned rs_law_drops(const rs_law *law);
+
+/// Whether an engine fills the law's stress array before a call: the last call's stress
+/// or zeros (rs_track_load). 0 for a law that neither reads it on entry nor leaves any of
+/// it unwritten (RS_LAW_SKIPS_STRESS and RS_LAW_SETS_STRESS); 1 otherwise, and for NULL.
+int rs_law_stress_in(const rs_law *law);
 
 /* Registry of built-in laws (props in order; statev count; src/laws/ documents each):
  *   bonded_interface  gap_cutoff E nu yield_stress hardening thickness conductivity; 3

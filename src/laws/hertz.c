@@ -210,5 +210,6 @@ const rs_law rs_law_hertz = {
     .critical_step = rs_hertz_critical_step,
     .reach = rs_law_reach_touching,
     .skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_COORDMST,
-    .sets = RS_LAW_SETS_ENERGIES | RS_LAW_SETS_NO_HEAT | RS_LAW_SETS_NO_CREEP_PLASTIC,
+    .sets = RS_LAW_SETS_ENERGIES | RS_LAW_SETS_NO_HEAT | RS_LAW_SETS_NO_CREEP_PLASTIC |
+            RS_LAW_SETS_STRESS,
 };

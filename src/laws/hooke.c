@@ -174,4 +174,5 @@ const rs_law rs_law_hooke = {
     .critical_step = rs_hooke_critical_step,
     .reach = rs_law_reach_touching,
     .skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_COORDMST,
+    .sets = RS_LAW_SETS_STRESS,
 };

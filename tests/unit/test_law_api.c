@@ -4,6 +4,7 @@
 #include "test_law_fixture.h"
 
 #include <math.h>
+#include <string.h>
 
 static law_fix F;
 
@@ -263,6 +264,35 @@ static void test_law_call_leaves_energies_to_a_law_that_sets_them(void)
     }
 }
 
+/* An engine fills the stress before a call unless the law neither reads it on entry nor
+ * leaves any of it unwritten; among the built-in laws, hertz and hooke. */
+static void test_law_stress_in_follows_skips_and_sets(void)
+{
+    const rs_law skips = {.name = "skips",
+                          .nprops = -1,
+                          .update = energies_update,
+                          .skips = RS_LAW_SKIPS_STRESS};
+    const rs_law sets = {.name = "sets",
+                         .nprops = -1,
+                         .update = energies_update,
+                         .sets = RS_LAW_SETS_STRESS};
+    const rs_law both = {.name = "both",
+                         .nprops = -1,
+                         .update = energies_update,
+                         .skips = RS_LAW_SKIPS_STRESS,
+                         .sets = RS_LAW_SETS_STRESS};
+    ENSURE(rs_law_stress_in(NULL) == 1);
+    ENSURE(rs_law_stress_in(&skips) == 1);
+    ENSURE(rs_law_stress_in(&sets) == 1);
+    ENSURE(rs_law_stress_in(&both) == 0);
+    const char *names[] = {"bonded_interface", "linear_softening", "hertz", "hooke",
+                           "coulomb"};
+    for (int i = 0; i < 5; ++i) {
+        const int lean = !strcmp(names[i], "hertz") || !strcmp(names[i], "hooke");
+        ENSURE(rs_law_stress_in(rs_law_find(names[i])) == !lean);
+    }
+}
+
 static void test_law_block_init_sets_abaqus_defaults(void)
 {
     rs_law_block b;
@@ -338,6 +368,7 @@ int main(void)
     RS_RUN(test_law_call_rejects_malformed_block);
     RS_RUN(test_law_call_zeroes_write_only_energies);
     RS_RUN(test_law_call_leaves_energies_to_a_law_that_sets_them);
+    RS_RUN(test_law_stress_in_follows_skips_and_sets);
     RS_RUN(test_law_block_init_sets_abaqus_defaults);
     RS_RUN(test_law_default_stiffness_ten_times_under_stability_limit);
     RS_RUN(test_law_default_conductance_keeps_explicit_heat_step_monotone);

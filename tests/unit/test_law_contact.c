@@ -56,6 +56,39 @@ static void test_hooke_critical_damping_from_particle_mass(void)
     }
 }
 
+/* hooke declares that it writes every contact's stress (rs_law.sets), and it skips the
+ * stress on entry: an engine then gives it the array as it is (rs_law_stress_in). Called
+ * directly on a block of a sticking, a sliding, an open and a leaving contact with NaN
+ * stress before the call, in an increment and in a setup call, every stress is written,
+ * and the force of the two touching contacts is there. */
+static void test_hooke_sets_every_stress(void)
+{
+    const rs_law *law = rs_law_find("hooke");
+    ENSURE(law->sets == RS_LAW_SETS_STRESS);
+    ENSURE(rs_law_stress_in(law) == 0);
+    for (int setup = 0; setup < 2; ++setup) {
+        law_fix_init(&F, law, HK, 5, 4, 3);
+        F.b.setup = setup;
+        const double h[4] = {1e-4, 2e-4, -1e-4, RS_MAXVAL};
+        for (int c = 0; c < 4; ++c) {
+            RS_A2(F.rdisp, 3, 0, c) = h[c];
+            RS_A2(F.drdisp, 3, 1, c) = c == 1 ? 1e-2 : 1e-7; /* contact 1 slides */
+            RS_A2(F.vrel, 3, 1, c) = 0.1;
+            for (int i = 0; i < 3; ++i)
+                RS_A2(F.stress, 3, i, c) = NAN;
+        }
+        rs_error err;
+        ENSURE(law->update(law, &F.b, &err) == RS_OK);
+        for (int c = 0; c < 4; ++c)
+            for (int i = 0; i < 3; ++i)
+                ENSURE(isfinite(RS_A2(F.stress, 3, i, c)));
+        ENSURE(RS_A2(F.stress, 3, 0, 0) > 0.0 && RS_A2(F.stress, 3, 0, 1) > 0.0);
+        for (int c = 2; c < 4; ++c)
+            for (int i = 0; i < 3; ++i)
+                ENSURE(RS_A2(F.stress, 3, i, c) == 0.0);
+    }
+}
+
 /* 1-DOF impact on hooke (velocity Verlet); returns the exit over entry speed, or 0 when
  * the particle has not left after 'periods' undamped periods. */
 static double hooke_restitution(double zeta, double periods)
@@ -170,6 +203,7 @@ int main(void)
 {
     RS_RUN(test_softening_pressure_is_k_times_overclosure);
     RS_RUN(test_hooke_critical_damping_from_particle_mass);
+    RS_RUN(test_hooke_sets_every_stress);
     RS_RUN(test_hooke_restitution_of_spring_dashpot);
     RS_RUN(test_coulomb_sticks_below_mu_p_and_slips_above);
     RS_RUN(test_coulomb_steady_sliding_dissipates_mu_p_times_slip);

@@ -292,15 +292,16 @@ static void test_hertz_restitution_matches_input(void)
     }
 }
 
-/* hertz declares that it writes every contact's sfd, scd, spd and svd, and zeros for
- * fluxSlv, fluxMst, scd and spd (rs_law.sets): called directly, past rs_law_call's
+/* hertz declares that it writes every contact's stress, sfd, scd, spd and svd, and zeros
+ * for fluxSlv, fluxMst, scd and spd (rs_law.sets): called directly, past rs_law_call's
  * zeroing, on a block of every kind of contact, with NaN in those outputs before the
  * call, in an increment and in a setup call. */
 static void test_hertz_sets_what_it_declares(void)
 {
     const rs_law *h = law();
-    ENSURE(h->sets ==
-           (RS_LAW_SETS_ENERGIES | RS_LAW_SETS_NO_HEAT | RS_LAW_SETS_NO_CREEP_PLASTIC));
+    ENSURE(h->sets == (RS_LAW_SETS_ENERGIES | RS_LAW_SETS_NO_HEAT |
+                       RS_LAW_SETS_NO_CREEP_PLASTIC | RS_LAW_SETS_STRESS));
+    ENSURE(rs_law_stress_in(h) == 0);
     enum { N = 11 };
     static law_fix B;
     for (int setup = 0; setup < 2; setup++) {
@@ -310,12 +311,15 @@ static void test_hertz_sets_what_it_declares(void)
             mixed_contact(&B, k, k);
             B.sfd[k] = B.scd[k] = B.spd[k] = B.svd[k] = NAN;
             B.fluxSlv[k] = B.fluxMst[k] = NAN;
+            B.stress[3 * k] = B.stress[3 * k + 1] = B.stress[3 * k + 2] = NAN;
         }
         rs_error err;
         ENSURE(h->update(h, &B.b, &err) == RS_OK);
         int set = 1, zero = 1, some = 0;
         for (int k = 0; k < N; ++k) {
             set &= isfinite(B.sfd[k]) && isfinite(B.svd[k]);
+            for (int i = 0; i < 3; ++i)
+                set &= isfinite(B.stress[3 * k + i]);
             zero &= B.scd[k] == 0.0 && B.spd[k] == 0.0;
             zero &= B.fluxSlv[k] == 0.0 && B.fluxMst[k] == 0.0;
             some += B.svd[k] > 0.0 || B.sfd[k] > 0.0;
