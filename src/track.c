@@ -479,7 +479,12 @@ RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *t
             for (int b = RS_H_RDISP1 + 1; b < hs; b++)
                 h[b] = 0.0;
         h[RS_H_RDISP1] = r->rd1[j];
-        *o->dir[e] = RS_DIR_LIVE(c->feature[k]);
+        /* Stored only when it changes (a new contact, a handover): a held contact's entry
+         * already names its feature, and its directory's line then stays clean, which
+         * saves writing it back to memory in a large bed. */
+        const double live = RS_DIR_LIVE(c->feature[k]);
+        if (*o->dir[e] != live)
+            *o->dir[e] = live;
     }
     int *restrict op = o->point + e0, *restrict of = o->feature + e0;
     for (j = 0; j < m; j++) {
