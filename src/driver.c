@@ -330,10 +330,9 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     if (rc)
         return rc;
     const rs_contact_block *cb = &d->cb;
-    rs_track_commit_energy(&d->tracker, &d->trk, cb->sed, cb->flux_slv, cb->flux_mst);
-    rs_track_commit(&d->tracker, &d->trk, cb->stress, d->nstatev ? cb->statev : NULL);
 
-    /* contact forces and torques, heat and energies (rs_cblock_loads), scattered */
+    /* contact forces and torques, heat and energies (rs_cblock_loads), scattered; before
+     * the commit, which frees the slots of leaving contacts (they apply nothing) */
     const int ne = d->trk.n;
     if (ne > d->load_cap) {
         double *grown = realloc(d->load, 7 * (size_t)ne * sizeof(double));
@@ -348,6 +347,8 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     rs_pose_to_global(&d->motion.pose, d->surface->a, origin);
     rs_wall_load wl;
     rs_cblock_loads(cb, &d->trk, &p, origin, lf, lt, lq, &wl);
+    rs_track_commit_energy(&d->tracker, &d->trk, cb->sed, cb->flux_slv, cb->flux_mst);
+    rs_track_commit(&d->tracker, &d->trk, cb->stress, d->nstatev ? cb->statev : NULL);
     memset(d->fcon, 0, 3 * (size_t)n * sizeof(double));
     memset(d->tcon, 0, 3 * (size_t)n * sizeof(double));
     double *qslv = d->temp_prev; /* reused below after the old temperatures are saved */

@@ -108,12 +108,9 @@ int main(void)
         b.analytic_master = !rs_surface_has_facets(&floor);
         if (rs_cblock_call(&cb, law, &b, &trk, &err) != RS_OK)
             return fail(&err);
-        /* 4. stress, state, energies into history; leaving contacts' slots freed */
-        rs_track_commit_energy(&tr, &trk, cb.sed, cb.flux_slv, cb.flux_mst);
-        rs_track_commit(&tr, &trk, cb.stress, cb.statev);
-
-        /* 5. F = w A (s1 n - s2 t1 - s3 t2) at the contact point and its torque per
-         * contact (and the floor's totals), scattered onto the spheres */
+        /* 4. F = w A (s1 n - s2 t1 - s3 t2) at the contact point and its torque per
+         * contact (and the floor's totals), scattered onto the spheres; before the
+         * commit, which frees the slots of leaving contacts (they apply nothing) */
         double fe[N * CAP][3], te[N * CAP][3], f[N][3] = {{0}}, t[N][3] = {{0}};
         const double origin[3] = {0, 0, 0};
         rs_wall_load wall;
@@ -123,6 +120,10 @@ int main(void)
                 f[trk.point[e]][k] += fe[e][k];
                 t[trk.point[e]][k] += te[e][k];
             }
+        /* 5. stress, state, energies into history; leaving contacts' slots freed */
+        rs_track_commit_energy(&tr, &trk, cb.sed, cb.flux_slv, cb.flux_mst);
+        rs_track_commit(&tr, &trk, cb.stress, cb.statev);
+
         /* 6. explicit integration (symplectic Euler), gravity along -z */
         for (int i = 0; i < N; i++) {
             const double I = 0.4 * m[i] * r[i] * r[i];

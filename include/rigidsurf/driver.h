@@ -19,7 +19,9 @@
  *  4. Contact force on node i: F = areaSlv (s1 n - s2 t1 - s3 t2) summed over its
  *     contacts, and contact torque (x_cp - x) x F about its centre, x_cp the contact
  *     point (docs/conventions.md, "Stress, flux, energy signs"), by rs_cblock_loads,
- *     which also gives the master's force and moment (fwall, mwall).
+ *     which also gives the master's force and moment (fwall, mwall). A contact that
+ *     left (rdisp = RS_MAXVAL) applies nothing and counts in no energy total, whatever
+ *     the law wrote for it. Then the law's results go into the history.
  *  5. v_{k+1/2} = v_{k-1/2} + dt (F + f_ext) / m for free components; prescribed
  *     components take vpres. x_{k+1} = x_k + dt v_{k+1/2}.
  *     Rotation (rs_rotation_step): the torque kicks the angular momentum, L_{k+1/2} =

@@ -4,6 +4,8 @@
 #include "rigidsurf/driver.h"
 #include "rs_test.h"
 
+#include <string.h>
+
 static const char *flat = "*SURFACE, TYPE=SEGMENTS, NAME=FLAT\n"
                           "START, -10.0, 0.0\n"
                           "LINE, 10.0, 0.0\n";
@@ -76,6 +78,65 @@ static void test_driver_energy_totals_are_area_weighted(void)
     rs_surface_free(&s);
 }
 
+/* A law that writes the same stress and energies for every contact, a leaving one
+ * (rdisp = RS_MAXVAL) too. */
+static int constant_update(const rs_law *law, rs_law_block *b, rs_error *err)
+{
+    (void)law, (void)err;
+    for (int k = 0; k < b->nSlvNod; ++k) {
+        for (int c = 0; c < b->nDir; ++c)
+            b->stress[k * b->nDir + c] = c == 0 ? 7.0 : 0.0;
+        b->sed[k] = 1.0;
+        b->sfd[k] = 0.5;
+        b->fluxSlv[k] = b->fluxMst[k] = 0.0;
+    }
+    return RS_OK;
+}
+
+/* A contact that leaves applies nothing in the increment that reports it (the Abaqus
+ * convention: its stress is not used), whatever the law writes for it, and counts in no
+ * energy total; the increments before it apply the law's stress. */
+static void test_driver_leaving_contact_applies_nothing(void)
+{
+    rs_surface s;
+    rs_driver d;
+    rs_error err;
+    ENSURE(rs_surface_parse(flat, "flat", NULL, &s, &err) == RS_OK);
+    ENSURE(rs_driver_init(&d, &s, 1, &err) == RS_OK);
+    rs_law law;
+    memset(&law, 0, sizeof law);
+    law.name = "constant";
+    law.update = constant_update;
+    ENSURE(rs_driver_set_law(&d, &law, NULL, 0, 0, &err) == RS_OK);
+    d.dt = 1e-3;
+    d.tracking = 0.01;
+    d.y[0] = -1e-3;
+    d.vy[0] = d.vpres[1] = 2.0; /* away from the floor, 2 mm an increment */
+    for (int c = 0; c < 3; ++c)
+        d.fixed[c] = 1;
+    int live = 0, left = 0;
+    double fd_before = 0.0;
+    for (int i = 0; i < 12; ++i) {
+        fd_before = d.energy.allfd;
+        ENSURE(rs_driver_step(&d, &err) == RS_OK);
+        if (d.trk.n == 0)
+            continue;
+        ENSURE(d.trk.n == 1);
+        if (d.trk.nleave == 0) {
+            live++;
+            ENSURE(d.fcon[1] == 7.0 && d.energy.allse == 1.0);
+        } else {
+            left++;
+            ENSURE(d.fcon[0] == 0.0 && d.fcon[1] == 0.0 && d.fcon[2] == 0.0);
+            ENSURE(d.fwall[1] == 0.0 && d.energy.allse == 0.0);
+            ENSURE(d.energy.allfd == fd_before);
+        }
+    }
+    ENSURE(live >= 3 && left == 1);
+    rs_driver_free(&d);
+    rs_surface_free(&s);
+}
+
 static void test_driver_rejects_bad_setup(void)
 {
     rs_surface s;
@@ -107,5 +168,6 @@ int main(void)
     RS_RUN(test_driver_central_difference_free_flight);
     RS_RUN(test_driver_energy_totals_are_area_weighted);
     RS_RUN(test_driver_rejects_bad_setup);
+    RS_RUN(test_driver_leaving_contact_applies_nothing);
     return rs_test_summary();
 }
