@@ -1,7 +1,8 @@
 /* The block query against an independent brute-force distance to the profile, on blocks
  * larger than the query's internal chunk, with a pose, radii and points on the axis; a
  * block answers exactly as its points queried one at a time; and the compact form of
- * the query data (profile.h) answers exactly as the stored one. */
+ * the query data (profile.h) answers exactly as the stored one, also through the whole
+ * query of a REVOLUTION of one LINE. */
 #include "profile.h"
 #include "rigidsurf/motion.h"
 #include "rigidsurf/surface.h"
@@ -381,6 +382,96 @@ static void test_query_compact_form_is_stored_form(void)
     }
 }
 
+/* A REVOLUTION whose profile is one LINE (a cylinder's mantle, a cone) answers through
+ * the stored form's one-LINE path (closest.c, points_one_line) exactly as through the
+ * compact form, which takes each point alone (rs_pcache_hits): the whole query (rings
+ * about the axis, frames, shares), value for value. Blocks of points near the line only
+ * (every point of a run a face contact), of points half of them beyond reach, and of
+ * points all around (end vertices, behind a one-sided face, the axis), in a pose. */
+static void check_one_line(const char *deck)
+{
+    rs_surface s;
+    ENSURE(parse(deck, &s) == 0);
+    ENSURE(s.profile.nseg == 1 && s.profile.seg[0].type == RS_LINE);
+    rs_pcache *cp = NULL;
+    ENSURE(rs_pcache_build_as(&s, 1, &cp, NULL) == 0 && !cp->ps);
+    const rs_segment *g = &s.profile.seg[0];
+    const double size = hypot(g->p1[0] - g->p0[0], g->p1[1] - g->p0[1]);
+    enum { N = 700 };
+    static double x[N], y[N], z[N], r[N];
+    for (int kind = 0; kind < 3; kind++) {
+        rs_pose pose;
+        random_pose(&pose, size);
+        for (int i = 0; i < N; i++) {
+            double u, v;
+            const double tau = kind == 2 ? 1.4 * urand() - 0.2 : 0.05 + 0.9 * urand();
+            /* a point off the line along its normal, within its reach or (kind 1, every
+             * other point) beyond it */
+            const double ex = (g->p1[0] - g->p0[0]) / size,
+                         ey = (g->p1[1] - g->p0[1]) / size;
+            const double off = kind == 2   ? 0.6 * size * (urand() - 0.5)
+                               : kind == 1 ? (i % 2 ? 0.01 : 0.2) * size * urand()
+                                           : 0.01 * size * urand();
+            u = fabs(g->p0[0] + tau * (g->p1[0] - g->p0[0]) - off * ey);
+            v = g->p0[1] + tau * (g->p1[1] - g->p0[1]) + off * ex;
+            if (kind == 2 && i % 17 == 0)
+                u = 0.0; /* on the axis */
+            const double th = 2.0 * RS_PI * urand();
+            const double L[3] = {u * cos(th), u * sin(th), v};
+            double X[3];
+            for (int d = 0; d < 3; d++)
+                X[d] = s.a[d] + L[0] * s.ex[d] + L[1] * s.ey[d] + L[2] * s.ez[d];
+            x[i] = pose.R[0] * X[0] + pose.R[1] * X[1] + pose.R[2] * X[2] + pose.T[0];
+            y[i] = pose.R[3] * X[0] + pose.R[4] * X[1] + pose.R[5] * X[2] + pose.T[1];
+            z[i] = pose.R[6] * X[0] + pose.R[7] * X[1] + pose.R[8] * X[2] + pose.T[2];
+            r[i] = 0.02 * size * (0.5 + urand());
+        }
+        rs_query q = {.n = N,
+                      .slave = {.x = x, .y = y, .z = z, .radius = r},
+                      .pose = &pose,
+                      .gap_max = (kind == 2 ? 0.3 : 0.01) * size,
+                      .dist_min = -(kind == 2 ? 0.3 : 0.05) * size};
+        rs_contacts a = {0}, c = {0};
+        ENSURE(rs_surface_query(&s, &q, &a, NULL) == 0);
+        void *stored = s.impl;
+        s.impl = cp;
+        ENSURE(rs_surface_query(&s, &q, &c, NULL) == 0);
+        s.impl = stored;
+        ENSURE(a.n == c.n && a.n > N / 4);
+        int same = 1;
+        for (int k = 0; k < a.n && k < c.n; k++) {
+            same &= a.point[k] == c.point[k] && a.feature[k] == c.feature[k];
+            for (int d = 0; d < 3; d++)
+                same &= a.xm[d][k] == c.xm[d][k] && a.nrm[d][k] == c.nrm[d][k] &&
+                        a.t1[d][k] == c.t1[d][k] && a.t2[d][k] == c.t2[d][k];
+            same &= a.dist[k] == c.dist[k] && a.curv[0][k] == c.curv[0][k] &&
+                    a.curv[1][k] == c.curv[1][k];
+            same &= (a.share ? a.share[k] : 1.0) == (c.share ? c.share[k] : 1.0);
+        }
+        ENSURE(same);
+        rs_contacts_free(&a);
+        rs_contacts_free(&c);
+    }
+    free(cp);
+    rs_surface_free(&s);
+}
+
+static void test_query_one_line_revolution_is_compact_form(void)
+{
+    /* a cylinder's mantle seen from inside, from both sides, and in a pose of its own */
+    check_one_line("*SURFACE, TYPE=REVOLUTION, NAME=m\n0,0,0, 0,0,1\n"
+                   "START, 0.15, 0.05\nLINE, 0.15, -0.05\n");
+    check_one_line("*SURFACE, TYPE=REVOLUTION, NAME=m, SIDES=2\n0,0,0, 0,0,1\n"
+                   "START, 0.15, 0.05\nLINE, 0.15, -0.05\n");
+    check_one_line("*SURFACE, TYPE=REVOLUTION, NAME=m\n0.1,-0.2,0.3, 0.6,0,0.8\n"
+                   "START, 0.15, 0.05\nLINE, 0.15, -0.05\n");
+    /* a cone, and a cone from the axis (a funnel's tip) */
+    check_one_line("*SURFACE, TYPE=REVOLUTION, NAME=c\n0,0,0, 0,0,1\n"
+                   "START, 0.2, 0.1\nLINE, 0.05, -0.1\n");
+    check_one_line("*SURFACE, TYPE=REVOLUTION, NAME=c, SIDES=2\n0,0,0, 0,0,1\n"
+                   "START, 0.2, 0.1\nLINE, 0, -0.1\n");
+}
+
 /* A REVOLUTION profile about z: a cap from the axis to (r0, -H), npc collinear LINE
  * pieces to (r1, H), a cap back to the axis. */
 static void parse_chain(int sides, double r0, double r1, double H, int npc, rs_surface *s)
@@ -549,6 +640,7 @@ int main(void)
     RS_RUN(test_query_block_open_lines_and_arcs_is_brute_force_closest);
     RS_RUN(test_query_large_profile_is_brute_force_closest);
     RS_RUN(test_query_compact_form_is_stored_form);
+    RS_RUN(test_query_one_line_revolution_is_compact_form);
     RS_RUN(test_query_collinear_chain_gives_one_face_contact);
     RS_RUN(test_query_oblique_chain_gives_one_face_contact);
     return rs_test_summary();
