@@ -93,9 +93,9 @@ static int constant_update(const rs_law *law, rs_law_block *b, rs_error *err)
     return RS_OK;
 }
 
-/* A contact that leaves applies nothing in the increment that reports it (the Abaqus
- * convention: its stress is not used), whatever the law writes for it, and counts in no
- * energy total; the increments before it apply the law's stress. */
+/* A contact that leaves applies nothing in the increment that reports it, whatever the
+ * law writes for it, and counts in no energy total, as in the LIGGGHTS fix
+ * (docs/coupling.md); the increments before it apply the law's stress. */
 static void test_driver_leaving_contact_applies_nothing(void)
 {
     rs_surface s;

@@ -70,6 +70,19 @@ static void random_pose(rs_pose *p, double scale)
         p->T[d] = scale * (urand() - 0.5);
 }
 
+/* The point of local coordinates L (along the surface's ex, ey, ez from a) in the
+ * current configuration of pose. */
+static void to_world(const rs_surface *s, const rs_pose *pose, const double L[3], double *x,
+                     double *y, double *z)
+{
+    double X[3];
+    for (int d = 0; d < 3; d++)
+        X[d] = s->a[d] + L[0] * s->ex[d] + L[1] * s->ey[d] + L[2] * s->ez[d];
+    *x = pose->R[0] * X[0] + pose->R[1] * X[1] + pose->R[2] * X[2] + pose->T[0];
+    *y = pose->R[3] * X[0] + pose->R[4] * X[1] + pose->R[5] * X[2] + pose->T[1];
+    *z = pose->R[6] * X[0] + pose->R[7] * X[1] + pose->R[8] * X[2] + pose->T[2];
+}
+
 /* Every point of a block of 1000 (several internal chunks) gets its contacts, in block
  * order, the smallest |dist| of a point's contacts is its brute-force distance to the
  * profile, and each contact's xm lies |dist| from the point. */
@@ -107,12 +120,7 @@ static void check_block_against_brute_force(const char *deck, int revolution)
         }
         pu[i] = u;
         pv[i] = v;
-        double X[3];
-        for (int d = 0; d < 3; d++)
-            X[d] = s.a[d] + L[0] * s.ex[d] + L[1] * s.ey[d] + L[2] * s.ez[d];
-        x[i] = pose.R[0] * X[0] + pose.R[1] * X[1] + pose.R[2] * X[2] + pose.T[0];
-        y[i] = pose.R[3] * X[0] + pose.R[4] * X[1] + pose.R[5] * X[2] + pose.T[1];
-        z[i] = pose.R[6] * X[0] + pose.R[7] * X[1] + pose.R[8] * X[2] + pose.T[2];
+        to_world(&s, &pose, L, x + i, y + i, z + i);
         r[i] = 0.01 * size * urand();
     }
     /* gap_max beyond the sampling box: every point reaches its closest feature */
@@ -418,12 +426,7 @@ static void check_one_line(const char *deck)
                 u = 0.0; /* on the axis */
             const double th = 2.0 * RS_PI * urand();
             const double L[3] = {u * cos(th), u * sin(th), v};
-            double X[3];
-            for (int d = 0; d < 3; d++)
-                X[d] = s.a[d] + L[0] * s.ex[d] + L[1] * s.ey[d] + L[2] * s.ez[d];
-            x[i] = pose.R[0] * X[0] + pose.R[1] * X[1] + pose.R[2] * X[2] + pose.T[0];
-            y[i] = pose.R[3] * X[0] + pose.R[4] * X[1] + pose.R[5] * X[2] + pose.T[1];
-            z[i] = pose.R[6] * X[0] + pose.R[7] * X[1] + pose.R[8] * X[2] + pose.T[2];
+            to_world(&s, &pose, L, x + i, y + i, z + i);
             r[i] = 0.02 * size * (0.5 + urand());
         }
         rs_query q = {.n = N,
