@@ -2,6 +2,7 @@
  * stiffness and conductance, and block defaults (Abaqus VUINTER conventions). */
 #include "rigidsurf/law.h"
 #include "rigidsurf/track.h"
+#include "laws/builtin.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -87,22 +88,28 @@ static const char *rs_feature_kind(int f)
     }
 }
 
-static int rs_law_nonfinite(const rs_law *law, const rs_law_block *b, int k,
-                            const char *what, double value, rs_error *err)
+int rs_law_nonfinite_error(const rs_law *law, int pid, int f, int k, int n, const char *what,
+                           double value, rs_error *err)
 {
-    int pid = b->jSlvUid[k];
-    int f = b->jConMstid[(size_t)k * (size_t)b->nFacNod];
     if (f < 0) {
         return rs_error_set(err, RS_ERR_NONFINITE,
                             "law '%s' returned %s = %g for particle %d, feature %d "
                             "(contact %d of %d)",
-                            rs_law_name(law), what, value, pid, f, k + 1, b->nSlvNod);
+                            rs_law_name(law), what, value, pid, f, k + 1, n);
     }
     return rs_error_set(err, RS_ERR_NONFINITE,
                         "law '%s' returned %s = %g for particle %d, feature %d (%s %d) "
                         "(contact %d of %d)",
                         rs_law_name(law), what, value, pid, f, rs_feature_kind(f),
-                        RS_FEATURE_INDEX(f), k + 1, b->nSlvNod);
+                        RS_FEATURE_INDEX(f), k + 1, n);
+}
+
+static int rs_law_nonfinite(const rs_law *law, const rs_law_block *b, int k,
+                            const char *what, double value, rs_error *err)
+{
+    return rs_law_nonfinite_error(law, b->jSlvUid[k],
+                                  b->jConMstid[(size_t)k * (size_t)b->nFacNod], k, b->nSlvNod,
+                                  what, value, err);
 }
 
 static int rs_law_check_block(const rs_law *law, const rs_law_block *b, rs_error *err)
