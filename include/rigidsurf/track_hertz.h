@@ -1,0 +1,37 @@
+/* rigidsurf: the usual block in one pass. Spheres, each with one contact with the wall,
+ * and the built-in hertz law: the tracker's kinematics, the law and the loads onto the
+ * engine's rows run together over each run of contacts, whose values then stay in
+ * registers and the first-level cache, instead of stage after stage over the block
+ * (track.h, contact_block.h, law.h). The same numbers, bit for bit. */
+#ifndef RIGIDSURF_TRACK_HERTZ_H
+#define RIGIDSURF_TRACK_HERTZ_H
+
+#include "rigidsurf/contact_block.h"
+#include "rigidsurf/track.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// rs_track_update on the block; then, when the block qualifies, the built-in hertz law
+/// (props: its 7 properties; areaSlv 1), the law's state into the slots (rs_track_commit)
+/// and the loads onto rows (rs_cblock_add_loads with unit areas and shares) and into *w,
+/// with each particle's per-atom row (out6, by the rows' index: rdisp(1:3) and stress(1:3);
+/// NULL for none), and *done = 1: the same numbers, bit for bit, as those calls in turn
+/// (rs_track_load, rs_cblock_inputs and rs_cblock_call between them). The block qualifies
+/// when every particle has exactly one contact, held or new (no leaving slot, no
+/// handover), nDir is 3, the particles are spheres (radius and mass given), the master
+/// has no surface velocity, every share is 1, the tracker keeps the slots of hertz (2 state
+/// variables, RS_DROP_STRESS and RS_DROP_ENERGY) and the curvature flag is 0. Otherwise
+/// *done = 0, out is what rs_track_update gives, and the caller goes on with the staged
+/// calls. Errors: rs_track_update's, and RS_ERR_NONFINITE, as rs_law_call, when the law
+/// returns a stress that is NaN or Inf.
+int rs_track_hertz(const rs_tracker *tr, const rs_surface *s, const rs_motion *m, double dt,
+                   const rs_particles *p, const rs_contacts *c, rs_track_out *out,
+                   const double *props, const double origin[3], const rs_load_rows *rows,
+                   double *const *out6, rs_wall_load *w, int *done, rs_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
