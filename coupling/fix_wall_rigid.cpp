@@ -41,8 +41,8 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       ivar_omega_(-1), rot_by_period_(false), period_(0.0), ivar_spin_(-1),
       spin_by_period_(false), phi_at_build_(0.0), spin_at_build_(0.0),
       spin_invariant_(false), law_kind_(LAW_BUILTIN), law_(NULL), loaded_ok_(false),
-      props_given_(false), hertz_(false), hooke_(false), lig_(NULL), nstatev_(0),
-      statev_given_(false), wall_type_(1), capacity_(4), tracking_(0.0),
+      props_given_(false), hertz_(false), hooke_(false), one_pass_(false), lig_(NULL),
+      nstatev_(0), statev_given_(false), wall_type_(1), capacity_(4), tracking_(0.0),
       tracking_given_(false), area_mode_(AREA_NODE), area_const_(1.0), temp_given_(false),
       temp_wall_(0.0), dtemp_wall_(0.0), capacity_wall_(0.0), heat_wall_(0.0),
       heat_step_(0.0), fix_temp_(NULL), fix_heatflux_(NULL), fix_heatcap_(NULL),
@@ -276,6 +276,11 @@ void FixWallRigid::init()
     if (vtk_every_ > 0 && !vtk_mesh_ok_)
         init_vtk_mesh();
     init_facets();
+    /* The usual block in one pass: the built-in hertz law on unit areas, with nothing
+     * that reads the staged arrays afterwards (conduction, a mesh's facets). */
+    one_pass_ =
+        hertz_ && law_kind_ == LAW_BUILTIN && !lig_ && !conduction_ && !facets_ &&
+        (area_mode_ == AREA_NODE || (area_mode_ == AREA_CONSTANT && area_const_ == 1.0));
     if (1 + atom_size() > kExchangeMax) {
         std::ostringstream o;
         o << "each atom would carry " << 1 + atom_size() << " doubles of contact history ("

@@ -136,6 +136,9 @@ class FixWallRigid : public Fix
     /// put_output for each particle k of a block: its contact e[k] (e NULL: contact k,
     /// or none where leaving[k]).
     void put_outputs(const int *idx, int n, int nd, const int *e, const char *leaving);
+    bool block_props(int t, const double **props, int *nprops) const;
+    rs_load_rows load_rows(const int *idx, bool setup_call) const;
+    void add_wall_load(const rs_wall_load &wl, bool setup_call);
     void write_vtk();
     void update_previous_fields();
     void begin_wallforce();
@@ -224,6 +227,8 @@ class FixWallRigid : public Fix
     std::vector<double> props_;
     bool props_given_;
     bool hertz_, hooke_;
+    bool one_pass_; // the built-in hertz on unit areas, nothing reading the staged arrays:
+                    // a usual block runs in one pass (rs_track_hertz)
     /* law liggghts: LIGGGHTS's contact model, and the descriptor law_ points to */
     class LiggghtsLaw *lig_;
     rs_law lig_desc_;

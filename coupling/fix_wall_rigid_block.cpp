@@ -2,6 +2,7 @@
  * law on the contact block (rs_cblock_inputs, rs_cblock_call), the loads onto the
  * particles (rs_cblock_add_loads). */
 #include "fix_wall_rigid.h"
+#include "rigidsurf/track_hertz.h"
 #include "rigidsurf/vec.h"
 
 #include "atom.h"
@@ -127,8 +128,25 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
             still.dQ[a] = (a % 4 == 0) ? 1.0 : 0.0;
         mp = &still;
     }
-    if (rs_track_update(&tracker_, &surf_, mp, setup_call ? 0.0 : dt, &p, &contacts_,
-                        &tout_, &err) != RS_OK) {
+    /* The usual block of the built-in hertz law in one pass (rs_track_hertz), else the
+     * tracker and the stages below. */
+    int nprops1 = 0;
+    const double *props1 = NULL;
+    if (!(one_pass_ && !setup_call && block_props(type[idx[0]], &props1, &nprops1)))
+        props1 = NULL;
+    int done = 0, rc;
+    rs_wall_load wl1;
+    if (props1) {
+        double origin[3];
+        rs_pose_to_global(&motion_.pose, surf_.a, origin);
+        const rs_load_rows rows = load_rows(idx, setup_call);
+        rc = rs_track_hertz(&tracker_, &surf_, mp, dt, &p, &contacts_, &tout_, props1,
+                            origin, &rows, array_atom, &wl1, &done, &err);
+    } else {
+        rc = rs_track_update(&tracker_, &surf_, mp, setup_call ? 0.0 : dt, &p, &contacts_,
+                             &tout_, &err);
+    }
+    if (rc != RS_OK) {
         /* More contacts than slots: the tracker changed nothing, so the slots grow and
          * the block runs again (a sphere in a mesh's pocket holds one per face). */
         if (err.code == RS_ERR_CAPACITY) {
@@ -143,6 +161,10 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
             fail_one(o.str());
         }
         fail_one(err.msg);
+    }
+    if (done) {
+        add_wall_load(wl1, setup_call);
+        return;
     }
 
     const int ne = tout_.n;
@@ -190,19 +212,15 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
 
     /* The law, in slices of at most RS_BLOCK contacts. */
     const double *Temp = fix_temp_ ? fix_temp_->vector_atom : NULL;
-    const double *props = props_.data();
-    int nprops = (int)props_.size();
-    if (material_props()) {
-        const int t = type[idx[0]];
-        if (t >= (int)type_props_.size() || type_props_[t].empty()) {
-            std::ostringstream o;
-            o << "law " << law_->name << ": no material properties for particle type " << t
-              << " (youngsModulus, poissonsRatio, coefficientRestitution, "
-                 "coefficientFriction must cover it)";
-            fail_one(o.str());
-        }
-        props = type_props_[t].data();
-        nprops = (int)type_props_[t].size();
+    int nprops = 0;
+    const double *props = NULL;
+    if (!block_props(type[idx[0]], &props, &nprops)) {
+        std::ostringstream o;
+        o << "law " << law_->name << ": no material properties for particle type "
+          << type[idx[0]]
+          << " (youngsModulus, poissonsRatio, coefficientRestitution, "
+             "coefficientFriction must cover it)";
+        fail_one(o.str());
     }
     /* The Abaqus step is the run (kstep_), the increment counts from 1 within it; the
      * setup call is increment 1 with no motion. Times are at the start of the increment:
@@ -247,28 +265,11 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
      * each applies w A (docs/conventions.md). */
     double origin[3];
     rs_pose_to_global(&motion_.pose, surf_.a, origin);
-    rs_load_rows rows = rs_load_rows();
-    rows.row = idx;
-    rows.f = atom->f;
-    rows.t = atom->torque;
-    rows.fstore = wallforce_;
-    rows.q = !setup_call && fix_heatflux_ ? fix_heatflux_->vector_atom : NULL;
+    rs_load_rows rows = load_rows(idx, setup_call);
     rows.deepest = ident_ ? NULL : deepest_.data(); /* else contact k is particle k's */
     rs_wall_load wl;
     rs_cblock_add_loads(&cb_, &tout_, &pblk_, origin, &rows, &wl);
-    for (int c = 0; c < 3; c++) {
-        f_wall_[c] += wl.force[c];
-        m_wall_[c] += wl.moment[c];
-    }
-    ncontact_ += wl.ncontact;
-    se_now_ += wl.se;
-    if (!setup_call) { /* a setup call's history is restored: it dissipates nothing */
-        diss_[0] += wl.fd;
-        diss_[1] += wl.pd;
-        diss_[2] += wl.vd;
-        diss_[3] += wl.cd;
-        heat_step_ += wl.flux_mst;
-    }
+    add_wall_load(wl, setup_call);
     /* Per-atom output: the deepest live contact of each particle with this wall, zeros
      * for a particle without one. */
     if (ident_)
@@ -406,4 +407,50 @@ void FixWallRigid::law_inputs(const int *idx, int n, int ne, bool setup_call)
         ident &= pt[e] == e;
     }
     ident_ = ident;
+}
+
+/* The law's properties for a block of particle type t: the fix's, or type t's from
+ * LIGGGHTS's material properties (false when they do not cover it). */
+bool FixWallRigid::block_props(int t, const double **props, int *nprops) const
+{
+    if (!material_props()) {
+        *props = props_.data();
+        *nprops = (int)props_.size();
+        return true;
+    }
+    if (t >= (int)type_props_.size() || type_props_[t].empty())
+        return false;
+    *props = type_props_[t].data();
+    *nprops = (int)type_props_[t].size();
+    return true;
+}
+
+/* LIGGGHTS's rows the loads add onto: force, torque, store_force's and the heat flow. */
+rs_load_rows FixWallRigid::load_rows(const int *idx, bool setup_call) const
+{
+    rs_load_rows rows = rs_load_rows();
+    rows.row = idx;
+    rows.f = atom->f;
+    rows.t = atom->torque;
+    rows.fstore = wallforce_;
+    rows.q = !setup_call && fix_heatflux_ ? fix_heatflux_->vector_atom : NULL;
+    return rows;
+}
+
+/* A block's loads into the wall's totals. */
+void FixWallRigid::add_wall_load(const rs_wall_load &wl, bool setup_call)
+{
+    for (int c = 0; c < 3; c++) {
+        f_wall_[c] += wl.force[c];
+        m_wall_[c] += wl.moment[c];
+    }
+    ncontact_ += wl.ncontact;
+    se_now_ += wl.se;
+    if (!setup_call) { /* a setup call's history is restored: it dissipates nothing */
+        diss_[0] += wl.fd;
+        diss_[1] += wl.pd;
+        diss_[2] += wl.vd;
+        diss_[3] += wl.cd;
+        heat_step_ += wl.flux_mst;
+    }
 }
