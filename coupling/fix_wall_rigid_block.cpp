@@ -1,6 +1,7 @@
 /* fix wall/rigid: one block of particles per call: gather, surface query, tracker, the
  * law on the contact block (rs_cblock_inputs, rs_cblock_call), the loads onto the
- * particles (rs_cblock_add_loads). */
+ * particles (rs_cblock_add_loads); for the built-in hertz law's usual block, the tracker,
+ * the law and the loads in one pass (rs_track_hertz). */
 #include "fix_wall_rigid.h"
 #include "rigidsurf/track_hertz.h"
 #include "rigidsurf/vec.h"
