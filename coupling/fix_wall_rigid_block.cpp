@@ -133,7 +133,8 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
      * tracker and the stages below. */
     int nprops1 = 0;
     const double *props1 = NULL;
-    if (!(one_pass_ && !setup_call && block_props(type[idx[0]], &props1, &nprops1)))
+    if (!(one_pass_ && !setup_call && block_props(type[idx[0]], &props1, &nprops1) &&
+          nprops1 == law_->nprops))
         props1 = NULL;
     int done = 0, rc;
     rs_wall_load wl1;

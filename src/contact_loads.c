@@ -5,6 +5,7 @@
 #include "rigidsurf/contact_block.h"
 #include "rigidsurf/vec.h"
 
+#include "load_contact.h"
 #include "rs_compiler.h"
 
 #include <string.h>
@@ -48,15 +49,12 @@ RS_INLINE void loads(const rs_contact_block *cb, const rs_track_out *o,
                            *restrict svd = cb->svd, *restrict scd = cb->scd,
                            *restrict fslv = cb->flux_slv, *restrict fmst = cb->flux_mst;
     const int *restrict row = ROWS ? rows->row : NULL;
-    double *const *fr = ROWS ? rows->f : NULL, *const *tr = ROWS ? rows->t : NULL,
-                  *const *sr = ROWS ? rows->fstore : NULL;
     double *restrict qr = ROWS ? rows->q : NULL;
     int *restrict deepest = ROWS ? rows->deepest : NULL;
     if (deepest)
         for (int k = 0; k < p->n; k++)
             deepest[k] = -1;
-    const double o0 = origin[0], o1 = origin[1], o2 = origin[2];
-    double fw0 = 0.0, fw1 = 0.0, fw2 = 0.0, mw0 = 0.0, mw1 = 0.0, mw2 = 0.0;
+    rs_wall_acc acc = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     double se = 0.0, fd = 0.0, pd = 0.0, vd = 0.0, cd = 0.0, qs = 0.0, qm = 0.0;
     int ncontact = 0;
     for (int e = 0; e < ne; e++) {
@@ -74,41 +72,29 @@ RS_INLINE void loads(const rs_contact_block *cb, const rs_track_out *o,
         const double *s = stress + (size_t)e * ND;
         const double *L = L0 + (size_t)e * ND * ND; /* columns n, t1[, t2] */
         const double *xc = X0 + (size_t)e * ND;
-        double F0, F1, F2, x0, x1, x2;
+        double F[3], x[3];
         if (ND == 3) {
-            F0 = A * (s[0] * L[0] - s[1] * L[3] - s[2] * L[6]);
-            F1 = A * (s[0] * L[1] - s[1] * L[4] - s[2] * L[7]);
-            F2 = A * (s[0] * L[2] - s[1] * L[5] - s[2] * L[8]);
-            x0 = xc[0], x1 = xc[1], x2 = xc[2];
+            rs_load_force3(A, s, L, F);
+            x[0] = xc[0], x[1] = xc[1], x[2] = xc[2];
         } else {
-            F0 = A * (s[0] * L[0] - s[1] * L[2]);
-            F1 = A * (s[0] * L[1] - s[1] * L[3]);
-            F2 = 0.0;
-            x0 = xc[0], x1 = xc[1], x2 = pz[k];
+            F[0] = A * (s[0] * L[0] - s[1] * L[2]);
+            F[1] = A * (s[0] * L[1] - s[1] * L[3]);
+            F[2] = 0.0;
+            x[0] = xc[0], x[1] = xc[1], x[2] = pz[k];
         }
-        const double r0 = x0 - px[k], r1 = x1 - py[k], r2 = x2 - pz[k];
-        const double T0 = r1 * F2 - r2 * F1, T1 = r2 * F0 - r0 * F2, T2 = r0 * F1 - r1 * F0;
-        const double rw0 = x0 - o0, rw1 = x1 - o1, rw2 = x2 - o2;
-        fw0 -= F0, fw1 -= F1, fw2 -= F2;
-        mw0 -= rw1 * F2 - rw2 * F1;
-        mw1 -= rw2 * F0 - rw0 * F2;
-        mw2 -= rw0 * F1 - rw1 * F0;
+        const double c[3] = {px[k], py[k], pz[k]};
+        double T[3];
+        rs_load_moments(F, x, c, origin, T, &acc);
         const double qe = LEAN ? 0.0 : A * fslv[e];
         if (ROWS) {
             const int rk = row ? row[k] : k;
-            double *fi = fr[rk], *ti = tr[rk];
-            fi[0] += F0, fi[1] += F1, fi[2] += F2;
-            ti[0] += T0, ti[1] += T1, ti[2] += T2;
-            if (sr) {
-                double *si = sr[rk];
-                si[0] += F0, si[1] += F1, si[2] += F2;
-            }
+            rs_load_onto_row(rows, rk, F, T);
             if (!LEAN && qr)
                 qr[rk] += qe;
         } else {
             double *fe = f + 3 * (size_t)e, *te = t + 3 * (size_t)e;
-            fe[0] = F0, fe[1] = F1, fe[2] = F2;
-            te[0] = T0, te[1] = T1, te[2] = T2;
+            fe[0] = F[0], fe[1] = F[1], fe[2] = F[2];
+            te[0] = T[0], te[1] = T[1], te[2] = T[2];
             if (q)
                 q[e] = qe;
         }
@@ -129,8 +115,8 @@ RS_INLINE void loads(const rs_contact_block *cb, const rs_track_out *o,
                 deepest[k] = e;
         }
     }
-    w->force[0] = fw0, w->force[1] = fw1, w->force[2] = fw2;
-    w->moment[0] = mw0, w->moment[1] = mw1, w->moment[2] = mw2;
+    w->force[0] = acc.fw0, w->force[1] = acc.fw1, w->force[2] = acc.fw2;
+    w->moment[0] = acc.mw0, w->moment[1] = acc.mw1, w->moment[2] = acc.mw2;
     w->se = se, w->fd = fd, w->pd = pd, w->vd = vd, w->cd = cd;
     w->flux_slv = qs, w->flux_mst = qm;
     w->ncontact = ncontact;

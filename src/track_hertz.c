@@ -8,6 +8,7 @@
 #include "rigidsurf/track_hertz.h"
 
 #include "laws/hertz_kernel.h"
+#include "load_contact.h"
 #include "track_run.h"
 
 /* Whether the block takes the one pass: see track_hertz.h. */
@@ -41,7 +42,8 @@ RS_INLINE void run_law_inputs(const track_run *restrict r, int m, double *restri
 
 /* The wall's sums over the block, in entry order (rs_cblock_add_loads's). */
 typedef struct wall_sums {
-    double fw0, fw1, fw2, mw0, mw1, mw2, se, fd, vd;
+    rs_wall_acc fm;
+    double se, fd, vd;
     int ncontact;
 } wall_sums;
 
@@ -56,34 +58,20 @@ RS_INLINE void run_loads(const track_run *restrict r, int m, int e0, const rs_co
                          const double *restrict svd, wall_sums *ws)
 {
     const double A = 1.0; /* the unit area's products, as the kernel's UNIT copy has them */
-    const double o0 = origin[0], o1 = origin[1], o2 = origin[2];
     const int *row = rows->row;
-    double *const *fr = rows->f, *const *tr = rows->t, *const *sr = rows->fstore;
     for (int j = 0; j < m; j++) {
         const int k = e0 + j;
         const double *s = st + 3 * (size_t)j;
         const double L[9] = {c->nrm[0][k], c->nrm[1][k], c->nrm[2][k],
                              c->t1[0][k],  c->t1[1][k],  c->t1[2][k],
                              c->t2[0][k],  c->t2[1][k],  c->t2[2][k]};
-        const double F0 = A * (s[0] * L[0] - s[1] * L[3] - s[2] * L[6]);
-        const double F1 = A * (s[0] * L[1] - s[1] * L[4] - s[2] * L[7]);
-        const double F2 = A * (s[0] * L[2] - s[1] * L[5] - s[2] * L[8]);
-        const double x0 = r->px[j], x1 = r->py[j], x2 = r->pz[j];
-        const double r0 = x0 - p->x[k], r1 = x1 - p->y[k], r2 = x2 - p->z[k];
-        const double T0 = r1 * F2 - r2 * F1, T1 = r2 * F0 - r0 * F2, T2 = r0 * F1 - r1 * F0;
-        const double rw0 = x0 - o0, rw1 = x1 - o1, rw2 = x2 - o2;
-        ws->fw0 -= F0, ws->fw1 -= F1, ws->fw2 -= F2;
-        ws->mw0 -= rw1 * F2 - rw2 * F1;
-        ws->mw1 -= rw2 * F0 - rw0 * F2;
-        ws->mw2 -= rw0 * F1 - rw1 * F0;
+        double F[3], T[3];
+        rs_load_force3(A, s, L, F);
+        const double x[3] = {r->px[j], r->py[j], r->pz[j]};
+        const double ctr[3] = {p->x[k], p->y[k], p->z[k]};
+        rs_load_moments(F, x, ctr, origin, T, &ws->fm);
         const int rk = row ? row[k] : k;
-        double *fi = fr[rk], *ti = tr[rk];
-        fi[0] += F0, fi[1] += F1, fi[2] += F2;
-        ti[0] += T0, ti[1] += T1, ti[2] += T2;
-        if (sr) {
-            double *si = sr[rk];
-            si[0] += F0, si[1] += F1, si[2] += F2;
-        }
+        rs_load_onto_row(rows, rk, F, T);
         ws->se += A * sed[j];
         ws->fd += A * sfd[j];
         ws->vd += A * svd[j];
@@ -128,7 +116,7 @@ static int one_pass(const rs_tracker *tr, const master_rates *mr, double dt,
         1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0,
         1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0};
     _Static_assert(RS_TRACK_RUN == 32, "unit holds one run of areas");
-    wall_sums ws = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0};
+    wall_sums ws = {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, 0.0, 0.0, 0.0, 0};
     track_run r;
     double rd[3 * RS_TRACK_RUN], drd[3 * RS_TRACK_RUN], dr[4 * RS_TRACK_RUN],
         vr[3 * RS_TRACK_RUN], st[3 * RS_TRACK_RUN], sv[2 * RS_TRACK_RUN];
@@ -160,8 +148,8 @@ static int one_pass(const rs_tracker *tr, const master_rates *mr, double dt,
         run_loads(&r, m, e0, c, p, origin, rows, out6, rd, st, sed, sfd, svd, &ws);
     }
     out->n = ne;
-    w->force[0] = ws.fw0, w->force[1] = ws.fw1, w->force[2] = ws.fw2;
-    w->moment[0] = ws.mw0, w->moment[1] = ws.mw1, w->moment[2] = ws.mw2;
+    w->force[0] = ws.fm.fw0, w->force[1] = ws.fm.fw1, w->force[2] = ws.fm.fw2;
+    w->moment[0] = ws.fm.mw0, w->moment[1] = ws.fm.mw1, w->moment[2] = ws.fm.mw2;
     w->se = ws.se, w->fd = ws.fd, w->pd = 0.0, w->vd = ws.vd, w->cd = 0.0;
     w->flux_slv = 0.0, w->flux_mst = 0.0;
     w->ncontact = ws.ncontact;

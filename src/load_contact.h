@@ -1,0 +1,54 @@
+/* One contact's loads from the law's stress, shared by the loads kernel
+ * (contact_loads.c) and the one pass (track_hertz.c), so that both compute them with the
+ * same operations in the same order. Internal to the library. */
+#ifndef RIGIDSURF_LOAD_CONTACT_H
+#define RIGIDSURF_LOAD_CONTACT_H
+
+#include "rigidsurf/contact_block.h"
+
+#include "rs_compiler.h"
+
+/* The wall's force and moment about its origin, summed over contacts. */
+typedef struct rs_wall_acc {
+    double fw0, fw1, fw2, mw0, mw1, mw2;
+} rs_wall_acc;
+
+/* The force on the particle, F = A (s1 n - s2 t1 - s3 t2), from the stress s(3) and the
+ * frame's columns L = (n, t1, t2) (9). */
+RS_INLINE void rs_load_force3(double A, const double *s, const double *L, double F[3])
+{
+    F[0] = A * (s[0] * L[0] - s[1] * L[3] - s[2] * L[6]);
+    F[1] = A * (s[0] * L[1] - s[1] * L[4] - s[2] * L[7]);
+    F[2] = A * (s[0] * L[2] - s[1] * L[5] - s[2] * L[8]);
+}
+
+/* F acting at the contact point x: its torque T about the particle's centre c, and the
+ * reaction -F with its moment about the wall's origin o added to acc. */
+RS_INLINE void rs_load_moments(const double F[3], const double x[3], const double c[3],
+                               const double o[3], double T[3], rs_wall_acc *acc)
+{
+    const double r0 = x[0] - c[0], r1 = x[1] - c[1], r2 = x[2] - c[2];
+    T[0] = r1 * F[2] - r2 * F[1];
+    T[1] = r2 * F[0] - r0 * F[2];
+    T[2] = r0 * F[1] - r1 * F[0];
+    const double rw0 = x[0] - o[0], rw1 = x[1] - o[1], rw2 = x[2] - o[2];
+    acc->fw0 -= F[0], acc->fw1 -= F[1], acc->fw2 -= F[2];
+    acc->mw0 -= rw1 * F[2] - rw2 * F[1];
+    acc->mw1 -= rw2 * F[0] - rw0 * F[2];
+    acc->mw2 -= rw0 * F[1] - rw1 * F[0];
+}
+
+/* F and T added onto the engine's row rk (and F onto its stored-force row). */
+RS_INLINE void rs_load_onto_row(const rs_load_rows *rows, int rk, const double F[3],
+                                const double T[3])
+{
+    double *fi = rows->f[rk], *ti = rows->t[rk];
+    fi[0] += F[0], fi[1] += F[1], fi[2] += F[2];
+    ti[0] += T[0], ti[1] += T[1], ti[2] += T[2];
+    if (rows->fstore) {
+        double *si = rows->fstore[rk];
+        si[0] += F[0], si[1] += F[1], si[2] += F[2];
+    }
+}
+
+#endif
