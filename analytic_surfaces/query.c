@@ -28,10 +28,11 @@ static void reach_radius(int m, double gap_max, const double *restrict rad,
 /* REVOLUTION: the profile-plane point (r, z) of each point and its radial direction
  * (cx, cy) in the local x-y plane; on the axis (r <= axis_tol) the direction falls back
  * to the surface's fixed ex, (1, 0), never NaN. */
-RS_MULTIVERSION static void
-local_revolution(const double *F, double axis_tol, int m, const double *restrict x,
-                 const double *restrict y, const double *restrict z, double *restrict u,
-                 double *restrict v, double *restrict cxs, double *restrict cys)
+RS_MULTIVERSION void rs_local_revolution(const double *F, double axis_tol, int m,
+                                         const double *restrict x, const double *restrict y,
+                                         const double *restrict z, double *restrict u,
+                                         double *restrict v, double *restrict cxs,
+                                         double *restrict cys)
 {
     const double A0 = F[F_A], A1 = F[F_A + 1], A2 = F[F_A + 2];
     const double X0 = F[F_X], X1 = F[F_X + 1], X2 = F[F_X + 2];
@@ -77,7 +78,7 @@ RS_MULTIVERSION static void local_extrusion(const double *F, int m,
  * the local x-y plane, to 3D, in place: e_r = cx EX + cy EY, n = n_r e_r + n_z EZ,
  * d1 = n_z e_r - n_r EZ (travel), d2 = n x d1 = hoop = EZ x e_r = cx EY - cy EX; hoop
  * curvature n_r / r at the contact point, 0 on the axis. */
-RS_MULTIVERSION static void map_revolution(
+RS_MULTIVERSION void rs_map_revolution(
     const double *F, double axis_tol, int k0, int k1, const int *restrict point, int i0,
     const double *restrict cxs, const double *restrict cys, double *restrict x0,
     double *restrict x1, double *restrict x2, double *restrict n0, double *restrict n1,
@@ -331,6 +332,33 @@ static int ring_sectors(const rs_pcache *pc, const double *F, double axis_tol, i
     return RS_OK;
 }
 
+void rs_analytic_frame(const rs_surface *s, const rs_pose *pose, double F[12])
+{
+    static const double I[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const double *a0 = s->a, *x0 = s->ex, *y0 = s->ey, *z0 = s->ez;
+    const double zero[3] = {0.0, 0.0, 0.0};
+    if (s->kind == RS_SURF_SEGMENTS) {
+        a0 = zero;
+        x0 = I[0];
+        y0 = I[1];
+        z0 = I[2];
+    }
+    for (int d = 0; d < 3; d++) {
+        if (pose) {
+            const double *R = pose->R + 3 * d;
+            F[F_A + d] = R[0] * a0[0] + R[1] * a0[1] + R[2] * a0[2] + pose->T[d];
+            F[F_X + d] = R[0] * x0[0] + R[1] * x0[1] + R[2] * x0[2];
+            F[F_Y + d] = R[0] * y0[0] + R[1] * y0[1] + R[2] * y0[2];
+            F[F_Z + d] = R[0] * z0[0] + R[1] * z0[1] + R[2] * z0[2];
+        } else {
+            F[F_A + d] = a0[d];
+            F[F_X + d] = x0[d];
+            F[F_Y + d] = y0[d];
+            F[F_Z + d] = z0[d];
+        }
+    }
+}
+
 int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out,
                         rs_error *err)
 {
@@ -356,33 +384,8 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
     /* One transform per block: the local axes and origin in the current configuration,
      * EX = R ex, ..., A = R a + T (SEGMENTS: the global axes about the origin), so a
      * point's local coordinates are EX.(x - A), ... and results map back along them. */
-    const rs_pose *pose = q->pose;
     double F[12];
-    {
-        static const double I[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        const double *a0 = s->a, *x0 = s->ex, *y0 = s->ey, *z0 = s->ez;
-        const double zero[3] = {0.0, 0.0, 0.0};
-        if (kind == RS_SURF_SEGMENTS) {
-            a0 = zero;
-            x0 = I[0];
-            y0 = I[1];
-            z0 = I[2];
-        }
-        for (int d = 0; d < 3; d++) {
-            if (pose) {
-                const double *R = pose->R + 3 * d;
-                F[F_A + d] = R[0] * a0[0] + R[1] * a0[1] + R[2] * a0[2] + pose->T[d];
-                F[F_X + d] = R[0] * x0[0] + R[1] * x0[1] + R[2] * x0[2];
-                F[F_Y + d] = R[0] * y0[0] + R[1] * y0[1] + R[2] * y0[2];
-                F[F_Z + d] = R[0] * z0[0] + R[1] * z0[1] + R[2] * z0[2];
-            } else {
-                F[F_A + d] = a0[d];
-                F[F_X + d] = x0[d];
-                F[F_Y + d] = y0[d];
-                F[F_Z + d] = z0[d];
-            }
-        }
-    }
+    rs_analytic_frame(s, q->pose, F);
     const double axis_tol = 1e-12 * pc->size;
     int rc = RS_OK;
     rs_contacts tmp, extra; /* the ring sectors' scratch */
@@ -401,8 +404,8 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
             for (int j = 0; j < m; j++)
                 dh[j] = q->gap_max + 0.0;
         if (kind == RS_SURF_REVOLUTION) {
-            local_revolution(F, axis_tol, m, q->slave.x + i0, q->slave.y + i0,
-                             q->slave.z + i0, pu, pv, cxs, cys);
+            rs_local_revolution(F, axis_tol, m, q->slave.x + i0, q->slave.y + i0,
+                                q->slave.z + i0, pu, pv, cxs, cys);
         } else {
             local_extrusion(F, m, q->slave.x + i0, q->slave.y + i0,
                             q->slave.z ? q->slave.z + i0 : NULL, pu, pv, pw);
@@ -429,10 +432,10 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
             }
         }
         if (kind == RS_SURF_REVOLUTION) {
-            map_revolution(F, axis_tol, k0, out->n, out->point, i0, cxs, cys, out->xm[0],
-                           out->xm[1], out->xm[2], out->nrm[0], out->nrm[1], out->nrm[2],
-                           out->t1[0], out->t1[1], out->t1[2], out->t2[0], out->t2[1],
-                           out->t2[2], out->curv[1]);
+            rs_map_revolution(F, axis_tol, k0, out->n, out->point, i0, cxs, cys, out->xm[0],
+                              out->xm[1], out->xm[2], out->nrm[0], out->nrm[1], out->nrm[2],
+                              out->t1[0], out->t1[1], out->t1[2], out->t2[0], out->t2[1],
+                              out->t2[2], out->curv[1]);
             if (q->slave.radius &&
                 (rc = ring_sectors(pc, F, axis_tol, i0, m, pu, pv, dh, cxs, cys, q,
                                    s->sides, k0, out, &tmp, &extra, &sc, err)) != RS_OK) {

@@ -2,8 +2,10 @@
  * larger than the query's internal chunk, with a pose, radii and points on the axis; a
  * block answers exactly as its points queried one at a time; and the compact form of
  * the query data (profile.h) answers exactly as the stored one, also through the whole
- * query of a REVOLUTION of one LINE. */
+ * query of a REVOLUTION of one LINE, whose per-sphere face contacts
+ * (rs_line_revolution_faces) are the block query's. */
 #include "profile.h"
+#include "rigidsurf/line_revolution.h"
 #include "rigidsurf/motion.h"
 #include "rigidsurf/surface.h"
 #define RS_TEST_SEED 0x2545F4914F6CDD1Dull
@@ -390,6 +392,49 @@ static void test_query_compact_form_is_stored_form(void)
     }
 }
 
+/* rs_line_revolution_faces on the points of q, in runs of 32 as the fix calls it: every
+ * sphere it flags holds exactly one contact in the block query's list a (q's dist_min is
+ * below minus the largest radius), and that contact is its own, value for value; and it
+ * flags a good part of the points. */
+static void check_line_faces(const rs_surface *s, const rs_query *q, const rs_contacts *a)
+{
+    ENSURE(rs_line_revolution(s));
+    enum { RUN = 32 };
+    rs_contacts f = {0};
+    ENSURE(rs_contacts_reserve(&f, RUN, NULL) == 0);
+    int face[RUN], nface = 0, same = 1;
+    for (int i0 = 0; i0 < q->n; i0 += RUN) {
+        const int m = q->n - i0 < RUN ? q->n - i0 : RUN;
+        rs_line_revolution_faces(s, q->pose, m, q->slave.x + i0, q->slave.y + i0,
+                                 q->slave.z + i0, q->slave.radius + i0, q->gap_max, &f,
+                                 face);
+        ENSURE(f.n == m);
+        rs_frame_orient(s->ops->frame, &f, 0, m);
+        for (int j = 0; j < m; j++) {
+            if (!face[j])
+                continue;
+            nface++;
+            int hits = 0, k = -1;
+            for (int e = 0; e < a->n; e++)
+                if (a->point[e] == i0 + j)
+                    hits++, k = e;
+            same &= hits == 1 && f.point[j] == j;
+            if (hits != 1)
+                continue;
+            same &= a->feature[k] == f.feature[j];
+            for (int d = 0; d < 3; d++)
+                same &= a->xm[d][k] == f.xm[d][j] && a->nrm[d][k] == f.nrm[d][j] &&
+                        a->t1[d][k] == f.t1[d][j] && a->t2[d][k] == f.t2[d][j];
+            same &= a->dist[k] == f.dist[j] && a->curv[0][k] == f.curv[0][j] &&
+                    a->curv[1][k] == f.curv[1][j] &&
+                    (a->share ? a->share[k] : 1.0) == f.share[j];
+        }
+    }
+    ENSURE(same);
+    ENSURE(nface > q->n / 8);
+    rs_contacts_free(&f);
+}
+
 /* A REVOLUTION whose profile is one LINE (a cylinder's mantle, a cone) answers through
  * the stored form's one-LINE path (closest.c, points_one_line) exactly as through the
  * compact form, which takes each point alone (rs_pcache_hits): the whole query (rings
@@ -452,6 +497,7 @@ static void check_one_line(const char *deck)
             same &= (a.share ? a.share[k] : 1.0) == (c.share ? c.share[k] : 1.0);
         }
         ENSURE(same);
+        check_line_faces(&s, &q, &a);
         rs_contacts_free(&a);
         rs_contacts_free(&c);
     }
