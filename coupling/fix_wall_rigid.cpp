@@ -6,6 +6,7 @@
  * fix_wall_rigid_state.cpp; outputs: fix_wall_rigid_output.cpp. */
 #include "fix_wall_rigid.h"
 #include "liggghts_law.h"
+#include "rigidsurf/line_revolution.h"
 #include "rigidsurf/vec.h"
 
 #include "atom.h"
@@ -41,19 +42,20 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       ivar_omega_(-1), rot_by_period_(false), period_(0.0), ivar_spin_(-1),
       spin_by_period_(false), phi_at_build_(0.0), spin_at_build_(0.0),
       spin_invariant_(false), law_kind_(LAW_BUILTIN), law_(NULL), loaded_ok_(false),
-      props_given_(false), hertz_(false), hooke_(false), one_pass_(false), lig_(NULL),
-      nstatev_(0), statev_given_(false), wall_type_(1), capacity_(4), tracking_(0.0),
-      tracking_given_(false), area_mode_(AREA_NODE), area_const_(1.0), temp_given_(false),
-      temp_wall_(0.0), dtemp_wall_(0.0), capacity_wall_(0.0), heat_wall_(0.0),
-      heat_step_(0.0), fix_temp_(NULL), fix_heatflux_(NULL), fix_heatcap_(NULL),
-      conduction_(false), carea_mode_(CAREA_OVERLAP), carea_const_(0.0),
-      carea_given_(false), conduct_ready_(false), th_cond_(NULL), deltan_ratio_(NULL),
-      store_force_(false), wallforce_clear_(true), wallforce_(NULL), vtk_every_(0),
-      vtk_mesh_ok_(false), wear_(false), facets_(false), stress_step_(false), nfacet_(0),
-      step_checked_(false), row_(NULL), hist_(NULL), nmax_(0), rebuild_(true),
-      lookahead_(0.0), rglob_(0.0), bounds_ok_(false), list_bounds_(false), se_now_(0.0),
-      ncontact_(0), out_step_(-1), out_valid_(false), kstep_(0), run_time0_(0.0),
-      pnewdt_stop_(false), routine_step_warned_(false), behind_(0), behind_warned_(false)
+      props_given_(false), hertz_(false), hooke_(false), one_pass_(false),
+      line_pass_(false), lig_(NULL), nstatev_(0), statev_given_(false), wall_type_(1),
+      capacity_(4), tracking_(0.0), tracking_given_(false), area_mode_(AREA_NODE),
+      area_const_(1.0), temp_given_(false), temp_wall_(0.0), dtemp_wall_(0.0),
+      capacity_wall_(0.0), heat_wall_(0.0), heat_step_(0.0), fix_temp_(NULL),
+      fix_heatflux_(NULL), fix_heatcap_(NULL), conduction_(false),
+      carea_mode_(CAREA_OVERLAP), carea_const_(0.0), carea_given_(false),
+      conduct_ready_(false), th_cond_(NULL), deltan_ratio_(NULL), store_force_(false),
+      wallforce_clear_(true), wallforce_(NULL), vtk_every_(0), vtk_mesh_ok_(false),
+      wear_(false), facets_(false), stress_step_(false), nfacet_(0), step_checked_(false),
+      row_(NULL), hist_(NULL), nmax_(0), rebuild_(true), lookahead_(0.0), rglob_(0.0),
+      bounds_ok_(false), list_bounds_(false), se_now_(0.0), ncontact_(0), out_step_(-1),
+      out_valid_(false), kstep_(0), run_time0_(0.0), pnewdt_stop_(false),
+      routine_step_warned_(false), behind_(0), behind_warned_(false)
 {
     std::memset(&surf_, 0, sizeof surf_);
     std::memset(&loaded_, 0, sizeof loaded_);
@@ -281,6 +283,9 @@ void FixWallRigid::init()
     one_pass_ =
         hertz_ && law_kind_ == LAW_BUILTIN && !lig_ && !conduction_ && !facets_ &&
         (area_mode_ == AREA_NODE || (area_mode_ == AREA_CONSTANT && area_const_ == 1.0));
+    /* ... and on a revolved LINE, per run of spheres without the block's columns. */
+    line_pass_ = one_pass_ && !belt_ && rs_line_revolution(&surf_) &&
+                 !rs_surface_has_candidates(&surf_);
     if (1 + atom_size() > kExchangeMax) {
         std::ostringstream o;
         o << "each atom would carry " << 1 + atom_size() << " doubles of contact history ("
@@ -702,7 +707,10 @@ void FixWallRigid::compute(bool setup_call)
                     b1 = k;
                     break;
                 }
-        process_block(&list[b0], b1 - b0, setup_call);
+        if (line_pass_ && !setup_call)
+            line_block(&list[b0], b1 - b0);
+        else
+            process_block(&list[b0], b1 - b0, setup_call);
         b0 = b1;
     }
 

@@ -113,6 +113,7 @@ class FixWallRigid : public Fix
     bool wall_moved_beyond_skin() const;
     double box_reach(const double c[3]) const;
     void process_block(const int *idx, int n, bool setup_call);
+    void line_block(const int *idx, int n);
     void law_inputs(const int *idx, int n, int ne, bool setup_call);
     void liggghts_block(const int *idx, int n, int ne, bool setup_call);
     double liggghts_reach() const;
@@ -227,8 +228,10 @@ class FixWallRigid : public Fix
     std::vector<double> props_;
     bool props_given_;
     bool hertz_, hooke_;
-    bool one_pass_; // the built-in hertz on unit areas, nothing reading the staged arrays:
-                    // a usual block runs in one pass (rs_track_hertz)
+    bool one_pass_;  // the built-in hertz on unit areas, nothing reading the staged arrays:
+                     // a usual block runs in one pass (rs_track_hertz)
+    bool line_pass_; // and on a revolved LINE, a block runs per run of spheres (line_block)
+    std::vector<int> rest_; // line_block's spheres that are not usual
     /* law liggghts: LIGGGHTS's contact model, and the descriptor law_ points to */
     class LiggghtsLaw *lig_;
     rs_law lig_desc_;

@@ -11,16 +11,22 @@
 #include "load_contact.h"
 #include "track_run.h"
 
+_Static_assert(RS_TRACK_LINE_RUN == RS_TRACK_RUN, "a caller's run is one run of the one pass");
+
+int rs_track_hertz_takes(const rs_tracker *tr, const double *props)
+{
+    const unsigned hertz_drop = RS_DROP_STRESS | RS_DROP_ENERGY;
+    return tr->ndir == 3 && tr->nstatev == 2 && (tr->drop & hertz_drop) == hertz_drop &&
+           props[P_CURV] == 0.0;
+}
+
 /* Whether the block takes the one pass: see track_hertz.h. */
 static int qualifies(const rs_tracker *tr, const master_rates *mr, const rs_particles *p,
                      const rs_contacts *c, const rs_track_out *out, const double *props,
                      int ident)
 {
-    const unsigned hertz_drop = RS_DROP_STRESS | RS_DROP_ENERGY;
-    return ident && tr->ndir == 3 && tr->nstatev == 2 &&
-           (tr->drop & hertz_drop) == hertz_drop && !mr->belt && p->radius && p->mass &&
-           !p->body && !(c->witness && c->xs[0]) && !out->shared && out->nseeded == 0 &&
-           props[P_CURV] == 0.0;
+    return ident && rs_track_hertz_takes(tr, props) && !mr->belt && p->radius && p->mass &&
+           !p->body && !(c->witness && c->xs[0]) && !out->shared && out->nseeded == 0;
 }
 
 /* One run's law inputs in the law block's layout: rdisp(3, m), drdisp(3, m), drot(2, 2,

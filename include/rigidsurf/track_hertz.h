@@ -13,6 +13,10 @@
 extern "C" {
 #endif
 
+/// Spheres a caller hands to rs_track_hertz at once to keep its values in the first-level
+/// cache (the one pass's own run).
+#define RS_TRACK_LINE_RUN 32
+
 /// rs_track_update on the block; then, when the block qualifies, the built-in hertz law
 /// (props: its 7 properties; areaSlv 1), the law's state into the slots (rs_track_commit)
 /// and the loads onto rows (rs_cblock_add_loads with unit areas and shares) and into *w,
@@ -30,6 +34,22 @@ int rs_track_hertz(const rs_tracker *tr, const rs_surface *s, const rs_motion *m
                    const rs_particles *p, const rs_contacts *c, rs_track_out *out,
                    const double *props, const double origin[3], const rs_load_rows *rows,
                    double *const *out6, rs_wall_load *w, int *done, rs_error *err);
+
+/// Whether a tracker and the hertz law's properties props take the one pass: nDir 3, the
+/// law's 2 state variables, RS_DROP_STRESS and RS_DROP_ENERGY, curvature flag 0. A block
+/// of spheres without a surface velocity, each with one held contact (rs_track_dir_usual),
+/// then always does (*done = 1, or an error).
+int rs_track_hertz_takes(const rs_tracker *tr, const double *props);
+
+/// Whether the directory dir (capacity entries) holds the contact of feature f in slot 0
+/// and nothing else: the entry that rs_track_hertz's one pass takes.
+static inline int rs_track_dir_usual(const double *dir, int capacity, int f)
+{
+    int ok = dir[0] == RS_DIR_LIVE(f);
+    for (int j = 1; j < capacity; j++)
+        ok &= dir[j] == RS_DIR_EMPTY;
+    return ok;
+}
 
 #ifdef __cplusplus
 }

@@ -3,7 +3,9 @@
 
 Pins: our CYLINDER plane (one LINE, n = +z) is the Hertz wall of `fix wall/gran model
 hertz tangential history primitive zplane 0`, and the inside of our REVOLUTION drum is
-`primitive zcylinder`; law hooke without props, from the same material properties and
+`primitive zcylinder`; spheres sliding then rolling around the inside of the drum on
+held contacts give the same trajectories as on the drum whose mantle is two collinear
+LINEs (the per-sphere path of a revolved LINE against the block query); law hooke without props, from the same material properties and
 characteristicVelocity, is `fix wall/gran model hooke tangential history` on the plane. The answer is LIGGGHTS's wall in the same deck, same executable;
 positions, velocities and spins agree to 1e-9 relative at every output step, with the
 default tracking thickness and with `tracking 0`.
@@ -96,6 +98,36 @@ def body(s):
         return all(a["vx"] * a["x"] + a["vy"] * a["y"] < 0 for a in last.values())
     compare(s, "drum_normal_impacts", ours, ref, atoms, 500, False, "nve/sphere",
             (-0.06, 0.06, -0.06, 0.06, -0.06, 0.06), all_back)
+
+    # 5b. held contacts for thousands of steps: without gravity, spheres sent along the
+    #     inside of the drum at 1.2 m/s (and a little outward) stay pressed against it,
+    #     slide, then roll around it, so that the per-sphere path for a held face contact
+    #     on a revolved LINE (line_block) carries the contact almost the whole run. The
+    #     answer is the same drum whose mantle is two collinear LINEs: a profile of more
+    #     than one segment takes the block query and the staged stages, and the sphere at
+    #     z = 0 crosses the joint (its history handed over between the faces).
+    atoms = ""
+    for k, (ang, z, vz) in enumerate(((10.0, -0.03, 0.0), (100.0, 0.0, 0.2),
+                                      (250.0, 0.03, -0.1))):
+        c, sn = math.cos(math.radians(ang)), math.sin(math.radians(ang))
+        r0 = RC - R - GAP
+        atoms += L.sphere(k + 1, (r0 * c, r0 * sn, z), R, RHO,
+                          v=(0.05 * c - 1.2 * sn, 0.05 * sn + 1.2 * c, vz))
+
+    def on_mantle(frames):
+        last = frames[-1][1]
+        return all(math.hypot(a["x"], a["y"]) > RC - R - 1e-4 for a in last.values())
+    s.write("drum_split.inp",
+            "*SURFACE, TYPE=REVOLUTION, NAME=mantle\n0, 0, 0, 0, 0, 1\n"
+            "START, %r, -0.2\nLINE, %r, 0.0\nLINE, %r, 0.2\n" % (RC, RC, RC))
+    L.compare_walls(s, "drum_rolling", ours,
+                    "fix w all wall/rigid surface drum_split.inp law hertz type 2", atoms,
+                    6000, False, "nve/sphere", (-0.06, 0.06, -0.06, 0.06, -0.06, 0.06),
+                    on_mantle, DT, SCALES, TOL, ref_tag="split")
+    fr = L.read_dump(s.path("drum_rolling_rigid.dump"))
+    s.ck.check("drum_rolling: the spheres roll on the mantle at the end (|omega_z| > 0)",
+               all(abs(a["omegaz"]) > 1.0 for a in fr[-1][1].values()),
+               str([a["omegaz"] for a in fr[-1][1].values()]))
 
     # 6. law hooke without props: LIGGGHTS's hooke from the material properties and
     #    characteristicVelocity, normal and oblique impacts and a slide to roll. The slide
