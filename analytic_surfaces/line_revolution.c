@@ -18,7 +18,8 @@ int rs_line_revolution(const rs_surface *s)
 /* Spheres per pass of the steps (their scratch stays in the first-level cache). */
 enum { RUN = 64 };
 
-static void faces_run(const rs_pcache *pc, const double *F, int m, const double *x,
+/* Spheres i0 .. i0+m-1 (m <= RUN) into the columns of c at the same indices. */
+static void faces_run(const rs_pcache *pc, const double *F, int i0, int m, const double *x,
                       const double *y, const double *z, const double *radius,
                       double gap_max, double rmax, rs_contacts *c, int *face)
 {
@@ -26,21 +27,22 @@ static void faces_run(const rs_pcache *pc, const double *F, int m, const double 
     const double axis_tol = 1e-12 * pc->size;
     double u[RUN], v[RUN], cx[RUN], cy[RUN], dh[RUN], what[RUN];
     for (int j = 0; j < m; j++)
-        dh[j] = gap_max + radius[j]; /* as reach_radius */
-    rs_local_revolution(F, axis_tol, m, x, y, z, u, v, cx, cy);
-    rs_line_faces(&pc->ps[0], pc->sides == 2, -rmax, m, u, v, dh, c->xm[0], c->xm[1],
-                  c->nrm[0], c->nrm[1], c->dist, what);
+        dh[j] = gap_max + radius[i0 + j]; /* as reach_radius */
+    rs_local_revolution(F, axis_tol, m, x + i0, y + i0, z + i0, u, v, cx, cy);
+    rs_line_faces(&pc->ps[0], pc->sides == 2, -rmax, m, u, v, dh, c->xm[0] + i0,
+                  c->xm[1] + i0, c->nrm[0] + i0, c->nrm[1] + i0, c->dist + i0, what);
     for (int j = 0; j < m; j++) {
-        c->point[j] = j;
-        c->feature[j] = feat;
-        c->curv[0][j] = 0.0;
-        c->share[j] = 1.0;
+        const int k = i0 + j;
+        c->point[k] = k;
+        c->feature[k] = feat;
+        c->curv[0][k] = 0.0;
+        c->share[k] = 1.0;
         /* a point within reach of the axis also takes the ring sectors (ring_sectors) */
-        face[j] = what[j] > 0.0 && !(u[j] < dh[j]);
+        face[k] = what[j] > 0.0 && !(u[j] < dh[j]);
     }
-    rs_map_revolution(F, axis_tol, 0, m, c->point, 0, cx, cy, c->xm[0], c->xm[1], c->xm[2],
-                      c->nrm[0], c->nrm[1], c->nrm[2], c->t1[0], c->t1[1], c->t1[2],
-                      c->t2[0], c->t2[1], c->t2[2], c->curv[1]);
+    rs_map_revolution(F, axis_tol, i0, i0 + m, c->point, i0, cx, cy, c->xm[0], c->xm[1],
+                      c->xm[2], c->nrm[0], c->nrm[1], c->nrm[2], c->t1[0], c->t1[1],
+                      c->t1[2], c->t2[0], c->t2[1], c->t2[2], c->curv[1]);
 }
 
 void rs_line_revolution_faces(const rs_surface *s, const rs_pose *pose, int m,
@@ -53,19 +55,9 @@ void rs_line_revolution_faces(const rs_surface *s, const rs_pose *pose, int m,
     double rmax = 0.0;
     for (int j = 0; j < m; j++)
         rmax = radius[j] > rmax ? radius[j] : rmax;
-    for (int i0 = 0; i0 < m; i0 += RUN) {
-        const int mr = m - i0 < RUN ? m - i0 : RUN;
-        rs_contacts ci = *c; /* the columns from i0 on */
-        for (int d = 0; d < 3; d++) {
-            ci.xm[d] += i0, ci.nrm[d] += i0, ci.t1[d] += i0, ci.t2[d] += i0;
-        }
-        ci.dist += i0, ci.curv[0] += i0, ci.curv[1] += i0, ci.share += i0;
-        ci.point += i0, ci.feature += i0;
-        faces_run(s->impl, F, mr, x + i0, y + i0, z + i0, radius + i0, gap_max, rmax, &ci,
-                  face + i0);
-        for (int j = 0; j < mr; j++)
-            c->point[i0 + j] = i0 + j;
-    }
+    for (int i0 = 0; i0 < m; i0 += RUN)
+        faces_run(s->impl, F, i0, m - i0 < RUN ? m - i0 : RUN, x, y, z, radius, gap_max,
+                  rmax, c, face);
     c->n = m;
     c->shared = 0;
     c->witness = 0;

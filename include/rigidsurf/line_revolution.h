@@ -18,11 +18,10 @@ int rs_line_revolution(const rs_surface *s);
 /// For m spheres (centres x, y, z, radii radius) on a surface of rs_line_revolution
 /// under pose (NULL: the reference configuration), sphere j's face contact as
 /// rs_surface_query gives it with gap_max and any dist_min <= -(the largest radius of the
-/// m spheres), bit for bit,
-/// at index j of c: point j, the face's feature, its master point, principal frame
-/// (rs_frame_orient then gives the kind's convention, as in rs_surface_query), distance
-/// and curvatures, share 1; face[j] = 1. face[j] = 0 for a sphere
-/// whose contacts that query decides otherwise: none within reach, a vertex's, one
+/// m spheres), bit for bit, at index j of c: point j, the face's feature, its master
+/// point, principal frame (rs_frame_orient then gives the kind's convention, as in
+/// rs_surface_query), distance and curvatures, share 1; face[j] = 1. face[j] = 0 for a
+/// sphere whose contacts that query decides otherwise: none within reach, a vertex's, one
 /// deeper than that dist_min, or the ring sectors of a sphere within reach of the axis.
 /// c's columns (xm, nrm, t1, t2, dist, curv, share, point, feature) must hold m; c->n is
 /// set to m, c->shared and c->witness to 0.
