@@ -83,8 +83,9 @@ RS_INLINE void loads(const rs_contact_block *cb, const rs_track_out *o,
             x[0] = xc[0], x[1] = xc[1], x[2] = pz[k];
         }
         const double c[3] = {px[k], py[k], pz[k]};
-        double T[3];
-        rs_load_moments(F, x, c, origin, T, &acc);
+        double T[3], M[3];
+        rs_load_torques(F, x, c, origin, T, M);
+        rs_wall_acc_take(&acc, F, M);
         const double qe = LEAN ? 0.0 : A * fslv[e];
         if (ROWS) {
             const int rk = row ? row[k] : k;

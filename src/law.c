@@ -168,14 +168,6 @@ static int rs_law_check_block(const rs_law *law, const rs_law_block *b, rs_error
     return RS_OK;
 }
 
-/* Bit 63 set exactly when x is NaN or Inf. */
-static inline uint64_t rs_nonfinite_bit(double x)
-{
-    uint64_t u;
-    memcpy(&u, &x, sizeof u);
-    return (u & 0x7ff0000000000000ULL) + 0x0010000000000000ULL;
-}
-
 int rs_law_call(const rs_law *law, rs_law_block *b, rs_error *err)
 {
     if (!law || !b) {
@@ -198,9 +190,8 @@ int rs_law_call(const rs_law *law, rs_law_block *b, rs_error *err)
     if (rc != RS_OK) {
         return rc;
     }
-    /* One branch-free pass says whether anything is NaN or Inf (exponent bits all set:
-     * adding one to the exponent field carries into the sign bit); only then is the
-     * first offender looked for. */
+    /* One branch-free pass says whether anything is NaN or Inf; only then is the first
+     * offender looked for. */
     const int nsd = n * b->nDir;
     uint64_t acc = 0;
     for (int k = 0; k < nsd; ++k) {

@@ -22,20 +22,26 @@ RS_INLINE void rs_load_force3(double A, const double *s, const double *L, double
     F[2] = A * (s[0] * L[2] - s[1] * L[5] - s[2] * L[8]);
 }
 
-/* F acting at the contact point x: its torque T about the particle's centre c, and the
- * reaction -F with its moment about the wall's origin o added to acc. */
-RS_INLINE void rs_load_moments(const double F[3], const double x[3], const double c[3],
-                               const double o[3], double T[3], rs_wall_acc *acc)
+/* F acting at the contact point x: its torque T about the particle's centre c, and its
+ * moment M = (x - o) x F about the wall's origin o. */
+RS_INLINE void rs_load_torques(const double F[3], const double x[3], const double c[3],
+                               const double o[3], double T[3], double M[3])
 {
     const double r0 = x[0] - c[0], r1 = x[1] - c[1], r2 = x[2] - c[2];
     T[0] = r1 * F[2] - r2 * F[1];
     T[1] = r2 * F[0] - r0 * F[2];
     T[2] = r0 * F[1] - r1 * F[0];
     const double rw0 = x[0] - o[0], rw1 = x[1] - o[1], rw2 = x[2] - o[2];
+    M[0] = rw1 * F[2] - rw2 * F[1];
+    M[1] = rw2 * F[0] - rw0 * F[2];
+    M[2] = rw0 * F[1] - rw1 * F[0];
+}
+
+/* The reaction -F and its moment -M onto the wall's sums. */
+RS_INLINE void rs_wall_acc_take(rs_wall_acc *acc, const double F[3], const double M[3])
+{
     acc->fw0 -= F[0], acc->fw1 -= F[1], acc->fw2 -= F[2];
-    acc->mw0 -= rw1 * F[2] - rw2 * F[1];
-    acc->mw1 -= rw2 * F[0] - rw0 * F[2];
-    acc->mw2 -= rw0 * F[1] - rw1 * F[0];
+    acc->mw0 -= M[0], acc->mw1 -= M[1], acc->mw2 -= M[2];
 }
 
 /* F and T added onto the engine's row rk (and F onto its stored-force row). */

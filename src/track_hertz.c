@@ -55,7 +55,9 @@ typedef struct wall_sums {
 
 /* The loads of a run's m contacts, entries e0 .. e0+m-1 (contact and particle e): as
  * rs_cblock_add_loads's kernel computes them for nDir 3, unit areas, no leaving contact
- * and a law without heat, creep or plastic dissipation. */
+ * and a law without heat, creep or plastic dissipation. Each contact's force, torque and
+ * moment about the origin first, in a loop of its own (which vectorises); then, in entry
+ * order, the wall's sums and the engine's and the per-atom rows. */
 RS_INLINE void run_loads(const track_run *restrict r, int m, int e0, const rs_contacts *c,
                          const rs_particles *p, const double origin[3],
                          const rs_load_rows *rows, double *const *out6,
@@ -64,20 +66,29 @@ RS_INLINE void run_loads(const track_run *restrict r, int m, int e0, const rs_co
                          const double *restrict svd, wall_sums *ws)
 {
     const double A = 1.0; /* the unit area's products, as the kernel's UNIT copy has them */
-    const int *row = rows->row;
+    double F[3][RS_TRACK_RUN], T[3][RS_TRACK_RUN], M[3][RS_TRACK_RUN];
     for (int j = 0; j < m; j++) {
         const int k = e0 + j;
-        const double *s = st + 3 * (size_t)j;
         const double L[9] = {c->nrm[0][k], c->nrm[1][k], c->nrm[2][k],
                              c->t1[0][k],  c->t1[1][k],  c->t1[2][k],
                              c->t2[0][k],  c->t2[1][k],  c->t2[2][k]};
-        double F[3], T[3];
-        rs_load_force3(A, s, L, F);
+        double Fj[3], Tj[3], Mj[3];
+        rs_load_force3(A, st + 3 * (size_t)j, L, Fj);
         const double x[3] = {r->px[j], r->py[j], r->pz[j]};
         const double ctr[3] = {p->x[k], p->y[k], p->z[k]};
-        rs_load_moments(F, x, ctr, origin, T, &ws->fm);
+        rs_load_torques(Fj, x, ctr, origin, Tj, Mj);
+        for (int d = 0; d < 3; d++)
+            F[d][j] = Fj[d], T[d][j] = Tj[d], M[d][j] = Mj[d];
+    }
+    const int *row = rows->row;
+    for (int j = 0; j < m; j++) {
+        const int k = e0 + j;
+        const double Fj[3] = {F[0][j], F[1][j], F[2][j]};
+        const double Tj[3] = {T[0][j], T[1][j], T[2][j]};
+        const double Mj[3] = {M[0][j], M[1][j], M[2][j]};
+        rs_wall_acc_take(&ws->fm, Fj, Mj);
         const int rk = row ? row[k] : k;
-        rs_load_onto_row(rows, rk, F, T);
+        rs_load_onto_row(rows, rk, Fj, Tj);
         ws->se += A * sed[j];
         ws->fd += A * sfd[j];
         ws->vd += A * svd[j];
@@ -86,6 +97,7 @@ RS_INLINE void run_loads(const track_run *restrict r, int m, int e0, const rs_co
         if (rows->deepest)
             rows->deepest[k] = k;
         if (out6) {
+            const double *s = st + 3 * (size_t)j;
             double *o = out6[rk];
             o[0] = rdj[0], o[1] = rdj[1], o[2] = rdj[2];
             o[3] = s[0], o[4] = s[1], o[5] = s[2];
@@ -93,10 +105,16 @@ RS_INLINE void run_loads(const track_run *restrict r, int m, int e0, const rs_co
     }
 }
 
-/* The first NaN or Inf of a run's stress(3, m) as rs_law_call reports it, or RS_OK. */
+/* The first NaN or Inf of a run's stress(3, m) as rs_law_call reports it, or RS_OK: one
+ * branch-free pass over the run, and the search only when it finds one. */
 static int check_stress(const double *st, int m, int e0, const rs_particles *p,
                         const rs_contacts *c, int ne, rs_error *err)
 {
+    uint64_t acc = 0;
+    for (int i = 0; i < 3 * m; i++)
+        acc |= rs_nonfinite_bit(st[i]);
+    if (!(acc >> 63))
+        return RS_OK;
     static const char *const sname[3] = {"stress(1)", "stress(2)", "stress(3)"};
     for (int j = 0; j < m; j++)
         for (int i = 0; i < 3; i++)

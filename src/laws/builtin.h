@@ -5,6 +5,8 @@
 #include "rigidsurf/law.h"
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 extern const rs_law rs_law_bonded_interface;
 extern const rs_law rs_law_linear_softening;
@@ -17,6 +19,16 @@ extern const rs_law rs_law_coulomb;
 /// a built-in law's kernel itself (track_hertz.c) reports it the same way.
 int rs_law_nonfinite_error(const rs_law *law, int pid, int f, int k, int n, const char *what,
                            double value, rs_error *err);
+
+/// Bit 63 set exactly when x is NaN or Inf (exponent bits all set: adding one to the
+/// exponent field carries into the sign bit), so that a block's outputs are checked by one
+/// branch-free OR over them and the first offender looked for only when it is set.
+static inline uint64_t rs_nonfinite_bit(double x)
+{
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    return (u & 0x7ff0000000000000ULL) + 0x0010000000000000ULL;
+}
 
 /// A contact that left the tracking thickness carries r_MaxVal in rdisp (Abaqus).
 #define RS_LAW_LEAVING(rdisp1) ((rdisp1) >= 0.5 * RS_MAXVAL)
