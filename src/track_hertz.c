@@ -1,10 +1,10 @@
 /* The usual block in one pass (track_hertz.h): rs_track_update's pass 1, then per run of
- * contacts the tracker's kinematics and history (track_run.h), the hertz law's block loop
- * (laws/hertz_kernel.h) on the run, its state into the slots, and the loads onto the
- * engine's rows, the wall's sums and the per-atom rows, in the order and with the
- * operations of the staged calls (rs_track_update, rs_track_load, rs_cblock_inputs,
- * rs_cblock_call, rs_cblock_add_loads, rs_track_commit), so that every number is
- * theirs. */
+ * contacts the tracker's kinematics and history (track_run.h), the hertz law on each
+ * contact (hertz_one, laws/hertz_kernel.h) and its force, torque and moment in one loop,
+ * its state into the slots, and the loads onto the engine's rows, the wall's sums and the
+ * per-atom rows, in the order and with the operations of the staged calls
+ * (rs_track_update, rs_track_load, rs_cblock_inputs, rs_cblock_call, rs_cblock_add_loads,
+ * rs_track_commit), so that every number is theirs. */
 #include "rigidsurf/track_hertz.h"
 
 #include "laws/hertz_kernel.h"
@@ -29,23 +29,6 @@ static int qualifies(const rs_tracker *tr, const master_rates *mr, const rs_part
            !p->body && !(c->witness && c->xs[0]) && !out->shared && out->nseeded == 0;
 }
 
-/* One run's law inputs in the law block's layout: rdisp(3, m), drdisp(3, m), drot(2, 2,
- * m), vrel(3, m), as run_outputs writes them. */
-RS_INLINE void run_law_inputs(const track_run *restrict r, int m, double *restrict rd,
-                              double *restrict drd, double *restrict dr,
-                              double *restrict vr)
-{
-    put_cols(rd, m, 3, r->rd1, r->s1, r->s2);
-    put_cols(drd, m, 3, r->drd1, r->ds1, r->ds2);
-    put_cols(vr, m, 3, r->vn, r->v1, r->v2);
-    for (int j = 0; j < m; j++) {
-        dr[4 * j] = r->d11[j];
-        dr[4 * j + 1] = r->d21[j];
-        dr[4 * j + 2] = r->md21[j];
-        dr[4 * j + 3] = r->d11[j];
-    }
-}
-
 /* The wall's sums over the block, in entry order (rs_cblock_add_loads's). */
 typedef struct wall_sums {
     rs_wall_acc fm;
@@ -53,75 +36,96 @@ typedef struct wall_sums {
     int ncontact;
 } wall_sums;
 
-/* The loads of a run's m contacts, entries e0 .. e0+m-1 (contact and particle e): as
- * rs_cblock_add_loads's kernel computes them for nDir 3, unit areas, no leaving contact
- * and a law without heat, creep or plastic dissipation. Each contact's force, torque and
- * moment about the origin first, in a loop of its own (which vectorises); then, in entry
- * order, the wall's sums and the engine's and the per-atom rows. */
-RS_INLINE void run_loads(const track_run *restrict r, int m, int e0, const rs_contacts *c,
-                         const rs_particles *p, const double origin[3],
-                         const rs_load_rows *rows, double *const *out6,
-                         const double *restrict rd, const double *restrict st,
-                         const double *restrict sed, const double *restrict sfd,
-                         const double *restrict svd, wall_sums *ws)
+/* A run's law outputs and loads, by column. */
+typedef struct run_law {
+    double sv[2][RS_TRACK_RUN]; ///< the law's state: in, then out
+    double st[3][RS_TRACK_RUN], sed[RS_TRACK_RUN], svd[RS_TRACK_RUN], sfd[RS_TRACK_RUN];
+    double F[3][RS_TRACK_RUN], T[3][RS_TRACK_RUN], M[3][RS_TRACK_RUN];
+} run_law;
+
+/* The law and the loads of a run's m contacts, entries e0 .. e0+m-1 (contact and particle
+ * e), in one loop (which vectorises): hertz's block loop on the run's kinematics, as the
+ * law block's arrays would hand them to it (rdisp = (rd1, s1, s2), drdisp = (drd1, ds1,
+ * ds2), drot = [[d11, -d21], [d21, d11]], vrel = (vn, v1, v2), unit areas), and the force
+ * of its stress, its torque and its moment about the origin as rs_cblock_add_loads's
+ * kernel computes them for nDir 3. */
+RS_INLINE void run_law_loads(const track_run *restrict r, int m, int e0, const rs_contacts *c,
+                             const rs_particles *p, const double origin[3], double dt,
+                             double Yeff, double Geff, double beta, double mu,
+                             run_law *restrict q)
 {
     const double A = 1.0; /* the unit area's products, as the kernel's UNIT copy has them */
-    double F[3][RS_TRACK_RUN], T[3][RS_TRACK_RUN], M[3][RS_TRACK_RUN];
+    const double *rad = p->radius + e0, *mass = p->mass + e0;
     for (int j = 0; j < m; j++) {
         const int k = e0 + j;
+        double st[3], sk0, sk1;
+        hertz_one(r->rd1[j], r->vn[j], r->v1[j], r->v2[j], q->sv[0][j], q->sv[1][j],
+                  q->sv[1][j], r->d11[j], r->md21[j], r->d21[j], r->d11[j], r->ds1[j],
+                  r->ds2[j], rad[j], mass[j], A, dt, Yeff, Geff, beta, mu, 3, 1, st,
+                  &q->sed[j], &q->svd[j], &q->sfd[j], &sk0, &sk1);
+        q->sv[0][j] = sk0, q->sv[1][j] = sk1;
         const double L[9] = {c->nrm[0][k], c->nrm[1][k], c->nrm[2][k],
                              c->t1[0][k],  c->t1[1][k],  c->t1[2][k],
                              c->t2[0][k],  c->t2[1][k],  c->t2[2][k]};
-        double Fj[3], Tj[3], Mj[3];
-        rs_load_force3(A, st + 3 * (size_t)j, L, Fj);
+        double F[3], T[3], M[3];
+        rs_load_force3(A, st, L, F);
         const double x[3] = {r->px[j], r->py[j], r->pz[j]};
         const double ctr[3] = {p->x[k], p->y[k], p->z[k]};
-        rs_load_torques(Fj, x, ctr, origin, Tj, Mj);
+        rs_load_torques(F, x, ctr, origin, T, M);
         for (int d = 0; d < 3; d++)
-            F[d][j] = Fj[d], T[d][j] = Tj[d], M[d][j] = Mj[d];
+            q->st[d][j] = st[d], q->F[d][j] = F[d], q->T[d][j] = T[d], q->M[d][j] = M[d];
     }
+}
+
+/* The wall's sums of a run, in entry order, and its loads onto the engine's and the
+ * per-atom rows (rdisp(1:3) and stress(1:3)), as rs_cblock_add_loads's kernel adds them
+ * (no leaving contact, a law without heat, creep or plastic dissipation). */
+RS_INLINE void run_sums(const track_run *restrict r, int m, int e0, const rs_load_rows *rows,
+                        double *const *out6, const run_law *restrict q, wall_sums *ws)
+{
+    const double A = 1.0;
     const int *row = rows->row;
     for (int j = 0; j < m; j++) {
         const int k = e0 + j;
-        const double Fj[3] = {F[0][j], F[1][j], F[2][j]};
-        const double Tj[3] = {T[0][j], T[1][j], T[2][j]};
-        const double Mj[3] = {M[0][j], M[1][j], M[2][j]};
-        rs_wall_acc_take(&ws->fm, Fj, Mj);
+        const double F[3] = {q->F[0][j], q->F[1][j], q->F[2][j]};
+        const double T[3] = {q->T[0][j], q->T[1][j], q->T[2][j]};
+        const double M[3] = {q->M[0][j], q->M[1][j], q->M[2][j]};
+        rs_wall_acc_take(&ws->fm, F, M);
         const int rk = row ? row[k] : k;
-        rs_load_onto_row(rows, rk, Fj, Tj);
-        ws->se += A * sed[j];
-        ws->fd += A * sfd[j];
-        ws->vd += A * svd[j];
-        const double *rdj = rd + 3 * (size_t)j;
-        ws->ncontact += rdj[0] > 0.0;
+        rs_load_onto_row(rows, rk, F, T);
+        ws->se += A * q->sed[j];
+        ws->fd += A * q->sfd[j];
+        ws->vd += A * q->svd[j];
+        ws->ncontact += r->rd1[j] > 0.0;
         if (rows->deepest)
             rows->deepest[k] = k;
         if (out6) {
-            const double *s = st + 3 * (size_t)j;
             double *o = out6[rk];
-            o[0] = rdj[0], o[1] = rdj[1], o[2] = rdj[2];
-            o[3] = s[0], o[4] = s[1], o[5] = s[2];
+            o[0] = r->rd1[j], o[1] = r->s1[j], o[2] = r->s2[j];
+            o[3] = q->st[0][j], o[4] = q->st[1][j], o[5] = q->st[2][j];
         }
     }
 }
 
-/* The first NaN or Inf of a run's stress(3, m) as rs_law_call reports it, or RS_OK: one
- * branch-free pass over the run, and the search only when it finds one. */
-static int check_stress(const double *st, int m, int e0, const rs_particles *p,
+/* The first NaN or Inf of a run's stress as rs_law_call reports it (contact by contact,
+ * stress(1) to stress(3)), or RS_OK: one branch-free pass over the run, and the search
+ * only when it finds one. */
+static int check_stress(const run_law *q, int m, int e0, const rs_particles *p,
                         const rs_contacts *c, int ne, rs_error *err)
 {
     uint64_t acc = 0;
-    for (int i = 0; i < 3 * m; i++)
-        acc |= rs_nonfinite_bit(st[i]);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < m; j++)
+            acc |= rs_nonfinite_bit(q->st[i][j]);
     if (!(acc >> 63))
         return RS_OK;
     static const char *const sname[3] = {"stress(1)", "stress(2)", "stress(3)"};
     for (int j = 0; j < m; j++)
         for (int i = 0; i < 3; i++)
-            if (!isfinite(st[3 * j + i])) {
+            if (!isfinite(q->st[i][j])) {
                 const int k = e0 + j;
                 return rs_law_nonfinite_error(&rs_law_hertz, p->id ? p->id[k] : k,
-                                              c->feature[k], k, ne, sname[i], st[3 * j + i],
+                                              c->feature[k], k, ne, sname[i], q->st[i][j],
                                               err);
             }
     return RS_OK;
@@ -136,40 +140,34 @@ static int one_pass(const rs_tracker *tr, const master_rates *mr, double dt,
     double Yeff, Geff, beta, mu;
     rs_hertz_constants(props, &Yeff, &Geff, &beta, &mu);
     const int sv0 = rs_track_statev_at(tr);
-    static const double unit[RS_TRACK_RUN] = {
-        1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0,
-        1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0};
-    _Static_assert(RS_TRACK_RUN == 32, "unit holds one run of areas");
     wall_sums ws = {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, 0.0, 0.0, 0.0, 0};
     track_run r;
-    double rd[3 * RS_TRACK_RUN], drd[3 * RS_TRACK_RUN], dr[4 * RS_TRACK_RUN],
-        vr[3 * RS_TRACK_RUN], st[3 * RS_TRACK_RUN], sv[2 * RS_TRACK_RUN];
-    double sed[RS_TRACK_RUN], svd[RS_TRACK_RUN], sfd[RS_TRACK_RUN];
+    run_law q;
     out->nleave = 0;
     for (int e0 = 0; e0 < ne; e0 += RS_TRACK_RUN) {
         const int m = ne - e0 < RS_TRACK_RUN ? ne - e0 : RS_TRACK_RUN;
         /* the tracker (emit_all's run: entry, contact and particle e) */
         run_gather(&r, m, out, e0);
         run_kinematics(&r, m, mr, dt, p, e0, c, e0, 3, 0, 0);
-        run_store(&r, m, tr, c, e0, out, e0);
-        /* the law on the run, its state from the slots (zeros for a new contact) */
-        run_law_inputs(&r, m, rd, drd, dr, vr);
+        /* the law's state from the slots (zeros for a new contact, as run_store leaves
+         * its slot), the law and the loads */
         for (int j = 0; j < m; j++) {
             const double *h = out->slot[e0 + j] + sv0;
-            sv[2 * j] = h[0];
-            sv[2 * j + 1] = h[1];
+            const int live = r.live[j] != 0.0;
+            q.sv[0][j] = live ? h[0] : 0.0;
+            q.sv[1][j] = live ? h[1] : 0.0;
         }
-        hertz_block(m, 2, dt, rd, drd, dr, vr, p->radius + e0, p->mass + e0, unit, st, sv,
-                    sed, svd, sfd, Yeff, Geff, beta, mu, 3, 1);
-        const int rc = check_stress(st, m, e0, p, c, ne, err);
+        run_law_loads(&r, m, e0, c, p, origin, dt, Yeff, Geff, beta, mu, &q);
+        const int rc = check_stress(&q, m, e0, p, c, ne, err);
         if (rc)
             return rc;
+        run_store(&r, m, tr, c, e0, out, e0);
         for (int j = 0; j < m; j++) {
             double *h = out->slot[e0 + j] + sv0;
-            h[0] = sv[2 * j];
-            h[1] = sv[2 * j + 1];
+            h[0] = q.sv[0][j];
+            h[1] = q.sv[1][j];
         }
-        run_loads(&r, m, e0, c, p, origin, rows, out6, rd, st, sed, sfd, svd, &ws);
+        run_sums(&r, m, e0, rows, out6, &q, &ws);
     }
     out->n = ne;
     w->force[0] = ws.fm.fw0, w->force[1] = ws.fm.fw1, w->force[2] = ws.fm.fw2;
