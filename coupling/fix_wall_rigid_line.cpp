@@ -116,8 +116,12 @@ void FixWallRigid::line_block(const int *idx, int n)
             fail_one("internal: a run of usual spheres did not take the one pass");
         add_wall_load(wl, false);
         if (bounds_ok_) /* each holds a contact within the tracking thickness */
-            for (int j = 0; j < nu; j++)
-                gapref_[row[j]] = -INFINITY;
+            for (int j = 0; j < nu; j++) {
+                /* written only when it changes: a held contact's line then stays clean */
+                double &g = gapref_[row[j]];
+                if (g != -INFINITY)
+                    g = -INFINITY;
+            }
     }
     /* The rest, in their order, in blocks as compute() forms them (one particle type). */
     for (size_t b0 = 0; b0 < rest_.size(); b0 += RS_BLOCK) {
