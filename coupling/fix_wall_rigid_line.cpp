@@ -1,7 +1,7 @@
 /* fix wall/rigid: a block on a revolved LINE (a cylinder's mantle, a cone) with the
  * built-in hertz law, in runs of spheres: each run gathered from LIGGGHTS's rows, its
  * face contacts computed per sphere (rs_line_revolution_faces) and the spheres that hold
- * just that contact passed to the one pass (rs_track_hertz), so that no block-wide
+ * just that contact passed to the one pass (rs_track_hertz_usual), so that no block-wide
  * column is written; the other spheres go through process_block afterwards. */
 #include "fix_wall_rigid.h"
 #include "rigidsurf/line_revolution.h"
@@ -108,12 +108,9 @@ void FixWallRigid::line_block(const int *idx, int n)
         rs_wall_load wl;
         rs_error err;
         rs_error_clear(&err);
-        int done = 0;
-        if (rs_track_hertz(&tracker_, &surf_, mp, dt, &p, &c, &tout_, props, origin, &rows,
-                           array_atom, &wl, &done, &err) != RS_OK)
+        if (rs_track_hertz_usual(&tracker_, mp, dt, &p, &c, &tout_, props, origin, &rows,
+                                 array_atom, &wl, &err) != RS_OK)
             fail_one(err.msg);
-        if (!done) /* not reached: the spheres above are the one pass's by its rules */
-            fail_one("internal: a run of usual spheres did not take the one pass");
         add_wall_load(wl, false);
         if (bounds_ok_) /* each holds a contact within the tracking thickness */
             for (int j = 0; j < nu; j++) {

@@ -283,6 +283,23 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
     }
 }
 
+/* The master's rates over the increment (m NULL: a fixed master). */
+static void master_rates_of(const rs_motion *m, master_rates *mr)
+{
+    memset(mr, 0, sizeof *mr);
+    if (m) {
+        memcpy(mr->Q, m->dQ, sizeof mr->Q);
+        rs_motion_field(m, mr->V, mr->W, mr->C);
+        for (int b = 0; b < 3; b++)
+            mr->U[b] = m->belt[b];
+        mr->Umag = sqrt(rs_dot3(mr->U, mr->U));
+        mr->belt = mr->Umag > 0.0;
+        mr->m = m;
+    } else {
+        mr->Q[0] = mr->Q[4] = mr->Q[8] = 1.0;
+    }
+}
+
 int rs_track_match(const rs_tracker *tr, const rs_surface *s, const rs_motion *m,
                    const rs_particles *p, const rs_contacts *c, rs_track_out *out,
                    master_rates *mr, int *ne_out, int *ident_out, rs_error *err)
@@ -364,18 +381,29 @@ int rs_track_match(const rs_tracker *tr, const rs_surface *s, const rs_motion *m
                             k, c->point[k], p->n - 1);
     }
 
-    memset(mr, 0, sizeof *mr);
-    if (m) {
-        memcpy(mr->Q, m->dQ, sizeof mr->Q);
-        rs_motion_field(m, mr->V, mr->W, mr->C);
-        for (int b = 0; b < 3; b++)
-            mr->U[b] = m->belt[b];
-        mr->Umag = sqrt(rs_dot3(mr->U, mr->U));
-        mr->belt = mr->Umag > 0.0;
-        mr->m = m;
-    } else {
-        mr->Q[0] = mr->Q[4] = mr->Q[8] = 1.0;
+    master_rates_of(m, mr);
+    return RS_OK;
+}
+
+int rs_track_match_usual(const rs_tracker *tr, const rs_motion *m, const rs_particles *p,
+                         rs_track_out *out, master_rates *mr, rs_error *err)
+{
+    const int np = p->n;
+    int rc = rs_track_out_reserve(out, np, err);
+    if (rc)
+        return rc;
+    out->n = 0;
+    out->nleave = 0;
+    out->nseeded = 0;
+    out->ndir = tr->ndir;
+    out->shared = 0;
+    double *const *hist = p->hist, *const *dir = p->dir;
+    for (int e = 0; e < np; e++) {
+        out->point[e] = e;
+        out->slot[e] = hist[e];
+        out->dir[e] = dir[e];
     }
+    master_rates_of(m, mr);
     return RS_OK;
 }
 

@@ -198,3 +198,31 @@ int rs_track_hertz(const rs_tracker *tr, const rs_surface *s, const rs_motion *m
         *done = 1;
     return rc;
 }
+
+int rs_track_hertz_usual(const rs_tracker *tr, const rs_motion *m, double dt,
+                         const rs_particles *p, const rs_contacts *c, rs_track_out *out,
+                         const double *props, const double origin[3],
+                         const rs_load_rows *rows, double *const *out6, rs_wall_load *w,
+                         rs_error *err)
+{
+    if (!tr || !p || !c || !out || !props || c->n != p->n)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_track_hertz_usual: expected a block with one contact per "
+                            "particle");
+    int off = 0;
+    for (int k = 0; k < c->n; k++)
+        off |= c->point[k] ^ k;
+    if (off)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_track_hertz_usual: contact k must name particle k");
+    master_rates mr;
+    int rc = rs_track_match_usual(tr, m, p, out, &mr, err);
+    if (rc)
+        return rc;
+    if (!qualifies(tr, &mr, p, c, out, props, 1))
+        return rs_error_set(err, RS_ERR_ARG,
+                            "rs_track_hertz_usual: the block does not take the one pass "
+                            "(a surface velocity, bodies, no radius or mass, or a tracker "
+                            "or properties other than hertz's)");
+    return one_pass(tr, &mr, dt, p, c, out, p->n, props, origin, rows, out6, w, err);
+}

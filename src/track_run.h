@@ -336,6 +336,12 @@ int rs_track_match(const rs_tracker *tr, const rs_surface *s, const rs_motion *m
                    const rs_particles *p, const rs_contacts *c, rs_track_out *out,
                    master_rates *mr, int *ne, int *ident, rs_error *err);
 
+/// rs_track_match for a block whose particle e holds contact e in its slot 0 alone,
+/// within the tracking thickness (rs_track_dir_usual), as the caller has checked: entry
+/// e is contact e of particle e, and mr the master's rates. Errors: out of memory.
+int rs_track_match_usual(const rs_tracker *tr, const rs_motion *m, const rs_particles *p,
+                         rs_track_out *out, master_rates *mr, rs_error *err);
+
 /// Pass 2 of rs_track_update over the ne entries of rs_track_match; sets out->n.
 void rs_track_emit(const rs_tracker *tr, const master_rates *mr, double dt,
                    const rs_particles *p, const rs_contacts *c, rs_track_out *out, int ne,

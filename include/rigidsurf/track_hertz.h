@@ -35,6 +35,21 @@ int rs_track_hertz(const rs_tracker *tr, const rs_surface *s, const rs_motion *m
                    const double *props, const double origin[3], const rs_load_rows *rows,
                    double *const *out6, rs_wall_load *w, int *done, rs_error *err);
 
+/// rs_track_hertz for a block its caller has found usual: particle k holds contact k
+/// (c->point[k] = k, c->n = p->n), within the tracking thickness and in its slot 0 alone
+/// (rs_track_dir_usual), the particles are spheres (radius and mass given), the master
+/// has no surface velocity, and the tracker and props take the one pass
+/// (rs_track_hertz_takes). Pass 1's search of the directories is left out; the rest is
+/// rs_track_hertz's one pass, the same numbers bit for bit. Errors: RS_ERR_ARG for a block
+/// that is not such a block as far as can be seen without that search (contacts of other
+/// particles, a surface velocity, no radius or mass, bodies or witness points, a tracker
+/// or props that do not take the one pass), and rs_track_hertz's.
+int rs_track_hertz_usual(const rs_tracker *tr, const rs_motion *m, double dt,
+                         const rs_particles *p, const rs_contacts *c, rs_track_out *out,
+                         const double *props, const double origin[3],
+                         const rs_load_rows *rows, double *const *out6, rs_wall_load *w,
+                         rs_error *err);
+
 /// Whether a tracker and the hertz law's properties props take the one pass: nDir 3, the
 /// law's 2 state variables, RS_DROP_STRESS and RS_DROP_ENERGY, curvature flag 0. A block
 /// of spheres without a surface velocity, each with one held contact (rs_track_dir_usual),

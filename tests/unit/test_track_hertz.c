@@ -283,8 +283,69 @@ static void test_one_pass_is_the_staged_calls(void)
     rs_surface_free(&sc.s);
 }
 
+/* The entry for a caller that has found the block usual (the fix's line_block): the same
+ * numbers as the staged calls, and an error, not a silent result, for a block it cannot
+ * take. */
+static void test_usual_entry_is_the_staged_calls(void)
+{
+    static scene sc;
+    static engine A, C;
+    scene_init(&sc);
+    engine_init(&A, &sc.tr);
+    engine_init(&C, &sc.tr);
+    rs_contact_block cb;
+    memset(&cb, 0, sizeof cb);
+    cb.ndir = 3, cb.nstatev = 2, cb.area_mode = RS_AREA_NODE;
+    ENSURE(rs_cblock_reserve(&cb, NP * CAP, NULL) == RS_OK);
+    rs_error err;
+    int all_same = 1;
+    for (int step = 0; step < 12; step++) {
+        if (step > 0)
+            advance(&sc);
+        query(&sc);
+        clear_rows(&A);
+        clear_rows(&C);
+        ENSURE(staged(&sc, &A, &cb, 0, &err) == RS_OK);
+        if (step == 0) { /* new contacts: the general pass */
+            ENSURE(staged(&sc, &C, &cb, 0, &err) == RS_OK);
+        } else {
+            rs_particles p = block(&sc, &C);
+            const rs_load_rows rows = rows_of(&C);
+            ENSURE(rs_track_hertz_usual(&sc.tr, &sc.mo, DT, &p, &sc.c, &C.out, props,
+                                        sc.s.a, &rows, C.or, &C.w, &err) == RS_OK);
+        }
+        all_same &= same_engines(&A, &C);
+    }
+    ENSURE(all_same);
+
+    /* Blocks it cannot take without pass 1's search: an error each, not a result. */
+    query(&sc);
+    rs_particles p = block(&sc, &C);
+    const rs_load_rows rows = rows_of(&C);
+    sc.c.point[2] = 3; /* contact 2 names another particle */
+    ENSURE(rs_track_hertz_usual(&sc.tr, &sc.mo, DT, &p, &sc.c, &C.out, props, sc.s.a, &rows,
+                                C.or, &C.w, &err) == RS_ERR_ARG);
+    ENSURE(strstr(err.msg, "rs_track_hertz_usual") != NULL);
+    sc.c.point[2] = 2;
+    p.mass = NULL; /* not spheres with masses */
+    ENSURE(rs_track_hertz_usual(&sc.tr, &sc.mo, DT, &p, &sc.c, &C.out, props, sc.s.a, &rows,
+                                C.or, &C.w, &err) == RS_ERR_ARG);
+    p = block(&sc, &C);
+    const double belt[3] = {0.0, 0.0, 0.1}; /* a surface velocity */
+    memcpy(sc.mo.belt, belt, sizeof belt);
+    ENSURE(rs_track_hertz_usual(&sc.tr, &sc.mo, DT, &p, &sc.c, &C.out, props, sc.s.a, &rows,
+                                C.or, &C.w, &err) == RS_ERR_ARG);
+
+    rs_cblock_free(&cb);
+    rs_track_out_free(&A.out);
+    rs_track_out_free(&C.out);
+    rs_contacts_free(&sc.c);
+    rs_surface_free(&sc.s);
+}
+
 int main(void)
 {
     RS_RUN(test_one_pass_is_the_staged_calls);
+    RS_RUN(test_usual_entry_is_the_staged_calls);
     return rs_test_summary();
 }
