@@ -1,6 +1,7 @@
 /* Closest features of a profile in its plane: the ownership rules of profile.h, per
  * point (rs_pcache_hits) and per block of points (rs_pcache_points). */
 #include "profile.h"
+#include "revolution_point.h"
 #include "rs_compiler.h"
 
 #include <math.h>
@@ -443,26 +444,9 @@ RS_MULTIVERSION void rs_line_faces(const rs_pseg *q, int two, double dlo, int m,
                                    double *restrict what)
 {
     const rs_pseg s = *q; /* a local copy: its fields stay in registers */
-    const double o0 = s.o[0], o1 = s.o[1], nl0 = s.nl[0], nl1 = s.nl[1];
-    const double e0 = s.e[0], e1 = s.e[1], il2 = s.inv_len2;
-    for (int j = 0; j < m; j++) {
-        const double px = pu[j], py = pv[j], dhi = ph[j];
-        const double wx = px - o0, wy = py - o1;
-        const double sd = wx * nl0 + wy * nl1;
-        int in_start, in_end;
-        rs_pseg_owns(&s, px, py, &in_start, &in_end);
-        const int own = in_start & in_end & (two | (sd >= 0.0));
-        const int flip = two & (sd < 0.0);
-        const double dist = flip ? -sd : sd;
-        double tau = (wx * e0 + wy * e1) * il2;
-        tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
-        fx0[j] = o0 + tau * e0;
-        fx1[j] = o1 + tau * e1;
-        fn0[j] = flip ? -nl0 : nl0;
-        fn1[j] = flip ? -nl1 : nl1;
-        fd[j] = dist;
-        what[j] = own ? (double)((dist >= dlo) & (dist <= dhi)) : -1.0;
-    }
+    for (int j = 0; j < m; j++)
+        rs_line_face1(&s, two, dlo, pu[j], pv[j], ph[j], &fx0[j], &fx1[j], &fn0[j], &fn1[j],
+                      &fd[j], &what[j]);
 }
 
 /* rs_pcache_points for a profile of one LINE (a plane, a cylinder's mantle, a cone):

@@ -1,10 +1,14 @@
 /* The face contacts of spheres on a revolved LINE, per run of spheres
- * (line_revolution.h): the block query's own steps (rs_analytic_closest's frame and
- * local coordinates, points_one_line's face, map_revolution's mapping and the shares of
- * 1 of rs_contacts_fold_shares), on the run alone. */
+ * (line_revolution.h): the block query's own steps (rs_analytic_closest's frame, then per
+ * sphere the bodies of its local coordinates, points_one_line's face and map_revolution's
+ * mapping, revolution_point.h, and the shares of 1 of rs_contacts_fold_shares), on the run
+ * alone and in one loop. */
 #include "rigidsurf/line_revolution.h"
 
-#include "profile.h"
+#include "revolution_point.h"
+#include "rs_compiler.h"
+
+#include <string.h>
 
 int rs_line_revolution(const rs_surface *s)
 {
@@ -15,34 +19,43 @@ int rs_line_revolution(const rs_surface *s)
     return pc && pc->ps && pc->nseg == 1 && pc->ps[0].type == RS_LINE;
 }
 
-/* Spheres per pass of the steps (their scratch stays in the first-level cache). */
-enum { RUN = 64 };
-
-/* Spheres i0 .. i0+m-1 (m <= RUN) into the columns of c at the same indices. */
-static void faces_run(const rs_pcache *pc, const double *F, int i0, int m, const double *x,
-                      const double *y, const double *z, const double *radius,
-                      double gap_max, double rmax, rs_contacts *c, int *face)
+/* Spheres 0 .. m-1 into the columns of c at the same indices: each sphere's
+ * profile-plane point, the LINE's face contact and its mapping to 3D in one loop (the
+ * steps' per-point bodies, revolution_point.h), which vectorises. */
+RS_MULTIVERSION static void
+faces_run(const rs_pcache *pc, const double *Fp, int m, const double *restrict x,
+          const double *restrict y, const double *restrict z, const double *restrict radius,
+          double gap_max, double rmax, double *restrict xm0, double *restrict xm1,
+          double *restrict xm2, double *restrict n0, double *restrict n1, double *restrict n2,
+          double *restrict a0, double *restrict a1, double *restrict a2, double *restrict b0,
+          double *restrict b1, double *restrict b2, double *restrict dist, double *restrict k0,
+          double *restrict k1, double *restrict share, int *restrict point,
+          int *restrict feature, int *restrict face)
 {
     const int feat = RS_FEATURE(RS_FEAT_FACE, 0);
     const double axis_tol = 1e-12 * pc->size;
-    double u[RUN], v[RUN], cx[RUN], cy[RUN], dh[RUN], what[RUN];
-    for (int j = 0; j < m; j++)
-        dh[j] = gap_max + radius[i0 + j]; /* as reach_radius */
-    rs_local_revolution(F, axis_tol, m, x + i0, y + i0, z + i0, u, v, cx, cy);
-    rs_line_faces(&pc->ps[0], pc->sides == 2, -rmax, m, u, v, dh, c->xm[0] + i0,
-                  c->xm[1] + i0, c->nrm[0] + i0, c->nrm[1] + i0, c->dist + i0, what);
-    for (int j = 0; j < m; j++) {
-        const int k = i0 + j;
-        c->point[k] = k;
-        c->feature[k] = feat;
-        c->curv[0][k] = 0.0;
-        c->share[k] = 1.0;
+    double F[12]; /* local copies, which the columns' stores cannot alias */
+    memcpy(F, Fp, sizeof F);
+    const rs_pseg s = pc->ps[0];
+    const int two = pc->sides == 2;
+    for (int k = 0; k < m; k++) {
+        const double dh = gap_max + radius[k]; /* as reach_radius */
+        double u, v, cx, cy, hx, hy, nx, ny, what;
+        rs_revolution_local1(F, axis_tol, x[k], y[k], z[k], &u, &v, &cx, &cy);
+        rs_line_face1(&s, two, -rmax, u, v, dh, &hx, &hy, &nx, &ny, &dist[k], &what);
+        point[k] = k;
+        feature[k] = feat;
+        k0[k] = 0.0;
+        share[k] = 1.0;
         /* a point within reach of the axis also takes the ring sectors (ring_sectors) */
-        face[k] = what[j] > 0.0 && !(u[j] < dh[j]);
+        face[k] = what > 0.0 && !(u < dh);
+        double X[3], N[3], A[3], B[3];
+        rs_revolution_map1(F, axis_tol, cx, cy, hx, hy, nx, ny, X, N, A, B, &k1[k]);
+        xm0[k] = X[0], xm1[k] = X[1], xm2[k] = X[2];
+        n0[k] = N[0], n1[k] = N[1], n2[k] = N[2];
+        a0[k] = A[0], a1[k] = A[1], a2[k] = A[2];
+        b0[k] = B[0], b1[k] = B[1], b2[k] = B[2];
     }
-    rs_map_revolution(F, axis_tol, i0, i0 + m, c->point, i0, cx, cy, c->xm[0], c->xm[1],
-                      c->xm[2], c->nrm[0], c->nrm[1], c->nrm[2], c->t1[0], c->t1[1],
-                      c->t1[2], c->t2[0], c->t2[1], c->t2[2], c->curv[1]);
 }
 
 void rs_line_revolution_faces(const rs_surface *s, const rs_pose *pose, int m,
@@ -55,9 +68,10 @@ void rs_line_revolution_faces(const rs_surface *s, const rs_pose *pose, int m,
     double rmax = 0.0;
     for (int j = 0; j < m; j++)
         rmax = radius[j] > rmax ? radius[j] : rmax;
-    for (int i0 = 0; i0 < m; i0 += RUN)
-        faces_run(s->impl, F, i0, m - i0 < RUN ? m - i0 : RUN, x, y, z, radius, gap_max,
-                  rmax, c, face);
+    faces_run(s->impl, F, m, x, y, z, radius, gap_max, rmax, c->xm[0], c->xm[1], c->xm[2],
+              c->nrm[0], c->nrm[1], c->nrm[2], c->t1[0], c->t1[1], c->t1[2], c->t2[0],
+              c->t2[1], c->t2[2], c->dist, c->curv[0], c->curv[1], c->share, c->point,
+              c->feature, face);
     c->n = m;
     c->shared = 0;
     c->witness = 0;

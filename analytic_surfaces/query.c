@@ -6,6 +6,7 @@
  * points to the reference configuration and rotating the results back, so the frame
  * turns with the master (docs/conventions.md, "Profiles and surfaces"). */
 #include "profile.h"
+#include "revolution_point.h"
 #include "rigidsurf/vec.h"
 #include "rs_compiler.h"
 
@@ -15,7 +16,6 @@
 
 /* The frame F = {A, EX, EY, EZ} (12 numbers): local origin and axes in the current
  * configuration. */
-enum { F_A = 0, F_X = 3, F_Y = 6, F_Z = 9 };
 
 /* Upper distance bound per point: gap_max + radius. */
 static void reach_radius(int m, double gap_max, const double *restrict rad,
@@ -26,32 +26,15 @@ static void reach_radius(int m, double gap_max, const double *restrict rad,
 }
 
 /* REVOLUTION: the profile-plane point (r, z) of each point and its radial direction
- * (cx, cy) in the local x-y plane; on the axis (r <= axis_tol) the direction falls back
- * to the surface's fixed ex, (1, 0), never NaN. */
+ * (cx, cy) in the local x-y plane (rs_revolution_local1). */
 RS_MULTIVERSION void rs_local_revolution(const double *F, double axis_tol, int m,
                                          const double *restrict x, const double *restrict y,
                                          const double *restrict z, double *restrict u,
                                          double *restrict v, double *restrict cxs,
                                          double *restrict cys)
 {
-    const double A0 = F[F_A], A1 = F[F_A + 1], A2 = F[F_A + 2];
-    const double X0 = F[F_X], X1 = F[F_X + 1], X2 = F[F_X + 2];
-    const double Y0 = F[F_Y], Y1 = F[F_Y + 1], Y2 = F[F_Y + 2];
-    const double Z0 = F[F_Z], Z1 = F[F_Z + 1], Z2 = F[F_Z + 2];
-    for (int j = 0; j < m; j++) {
-        const double wx = x[j] - A0, wy = y[j] - A1, wz = z[j] - A2;
-        const double lx = wx * X0 + wy * X1 + wz * X2;
-        const double ly = wx * Y0 + wy * Y1 + wz * Y2;
-        const double lz = wx * Z0 + wy * Z1 + wz * Z2;
-        const double r = sqrt(lx * lx + ly * ly);
-        /* the selects come before the divisions, which keeps the loop branch-free */
-        const int off = isgreater(r, axis_tol);
-        const double d = off ? r : 1.0;
-        u[j] = r;
-        v[j] = lz;
-        cxs[j] = (off ? lx : 1.0) / d;
-        cys[j] = (off ? ly : 0.0) / d;
-    }
+    for (int j = 0; j < m; j++)
+        rs_revolution_local1(F, axis_tol, x[j], y[j], z[j], &u[j], &v[j], &cxs[j], &cys[j]);
 }
 
 /* CYLINDER and SEGMENTS: local coordinates (u, v, w) of each point (z = NULL: 0). */
@@ -75,9 +58,7 @@ RS_MULTIVERSION static void local_extrusion(const double *F, int m,
 
 /* REVOLUTION contacts [k0, k1) from profile-plane form (xm[0..1] = (r, z) of the closest
  * point, nrm[0..1] = (n_r, n_z)), with (cx, cy) the radial direction of point i0 + j in
- * the local x-y plane, to 3D, in place: e_r = cx EX + cy EY, n = n_r e_r + n_z EZ,
- * d1 = n_z e_r - n_r EZ (travel), d2 = n x d1 = hoop = EZ x e_r = cx EY - cy EX; hoop
- * curvature n_r / r at the contact point, 0 on the axis. */
+ * the local x-y plane, to 3D, in place (rs_revolution_map1). */
 RS_MULTIVERSION void rs_map_revolution(
     const double *F, double axis_tol, int k0, int k1, const int *restrict point, int i0,
     const double *restrict cxs, const double *restrict cys, double *restrict x0,
@@ -85,30 +66,15 @@ RS_MULTIVERSION void rs_map_revolution(
     double *restrict n2, double *restrict a0, double *restrict a1, double *restrict a2,
     double *restrict b0, double *restrict b1, double *restrict b2, double *restrict c1)
 {
-    const double A0 = F[F_A], A1 = F[F_A + 1], A2 = F[F_A + 2];
-    const double X0 = F[F_X], X1 = F[F_X + 1], X2 = F[F_X + 2];
-    const double Y0 = F[F_Y], Y1 = F[F_Y + 1], Y2 = F[F_Y + 2];
-    const double Z0 = F[F_Z], Z1 = F[F_Z + 1], Z2 = F[F_Z + 2];
     for (int k = k0; k < k1; k++) {
         const int j = point[k] - i0;
-        const double cx = cxs[j], cy = cys[j];
-        const double er0 = cx * X0 + cy * Y0, er1 = cx * X1 + cy * Y1,
-                     er2 = cx * X2 + cy * Y2;
-        const double hx = x0[k], hy = x1[k], nx = n0[k], ny = n1[k];
-        x0[k] = A0 + hx * er0 + hy * Z0;
-        x1[k] = A1 + hx * er1 + hy * Z1;
-        x2[k] = A2 + hx * er2 + hy * Z2;
-        n0[k] = nx * er0 + ny * Z0;
-        n1[k] = nx * er1 + ny * Z1;
-        n2[k] = nx * er2 + ny * Z2;
-        a0[k] = ny * er0 - nx * Z0;
-        a1[k] = ny * er1 - nx * Z1;
-        a2[k] = ny * er2 - nx * Z2;
-        b0[k] = cx * Y0 - cy * X0;
-        b1[k] = cx * Y1 - cy * X1;
-        b2[k] = cx * Y2 - cy * X2;
-        const int off = isgreater(hx, axis_tol);
-        c1[k] = (off ? nx : 0.0) / (off ? hx : 1.0);
+        double x[3], n[3], a[3], b[3];
+        rs_revolution_map1(F, axis_tol, cxs[j], cys[j], x0[k], x1[k], n0[k], n1[k], x, n, a,
+                           b, &c1[k]);
+        x0[k] = x[0], x1[k] = x[1], x2[k] = x[2];
+        n0[k] = n[0], n1[k] = n[1], n2[k] = n[2];
+        a0[k] = a[0], a1[k] = a[1], a2[k] = a[2];
+        b0[k] = b[0], b1[k] = b[1], b2[k] = b[2];
     }
 }
 
