@@ -283,6 +283,21 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
     }
 }
 
+/* out empty, with room for n entries. */
+static int out_begin(rs_track_out *out, const rs_tracker *tr, int n, int shared,
+                     rs_error *err)
+{
+    int rc = rs_track_out_reserve(out, n, err);
+    if (rc)
+        return rc;
+    out->n = 0;
+    out->nleave = 0;
+    out->nseeded = 0;
+    out->ndir = tr->ndir;
+    out->shared = shared;
+    return RS_OK;
+}
+
 /* The master's rates over the increment (m NULL: a fixed master). */
 static void master_rates_of(const rs_motion *m, master_rates *mr)
 {
@@ -320,15 +335,9 @@ int rs_track_match(const rs_tracker *tr, const rs_surface *s, const rs_motion *m
                             "rs_track_update: nstatev = %d, expected 0 to %d", tr->nstatev,
                             RS_MAX_STATEV);
     const int nc = c ? c->n : 0;
-    int rc = rs_track_out_reserve(out, nc + p->n * tr->capacity, err);
+    int rc = out_begin(out, tr, nc + p->n * tr->capacity, c && c->share && c->shared, err);
     if (rc)
         return rc;
-
-    out->n = 0;
-    out->nleave = 0;
-    out->nseeded = 0;
-    out->ndir = tr->ndir;
-    out->shared = c && c->share && c->shared;
     /* Pass 1, grouping the contacts by particle: it takes every contact exactly when
      * they name points 0..n-1 in block order (checked here, not in a separate pass). */
     int ne = 0, k = 0;
@@ -389,14 +398,9 @@ int rs_track_match_usual(const rs_tracker *tr, const rs_motion *m, const rs_part
                          rs_track_out *out, master_rates *mr, rs_error *err)
 {
     const int np = p->n;
-    int rc = rs_track_out_reserve(out, np, err);
+    int rc = out_begin(out, tr, np, 0, err);
     if (rc)
         return rc;
-    out->n = 0;
-    out->nleave = 0;
-    out->nseeded = 0;
-    out->ndir = tr->ndir;
-    out->shared = 0;
     double *const *hist = p->hist, *const *dir = p->dir;
     for (int e = 0; e < np; e++) {
         out->point[e] = e;

@@ -207,17 +207,23 @@ static void step_both(scene *sc, engine *A, engine *B, rs_contact_block *cb, int
         ENSURE(staged(sc, B, cb, 1, &err) == RS_OK);
 }
 
+/* The scene, two engines on it and the staged calls' contact block. */
+static void setup(scene *sc, engine *A, engine *B, rs_contact_block *cb)
+{
+    scene_init(sc);
+    engine_init(A, &sc->tr);
+    engine_init(B, &sc->tr);
+    memset(cb, 0, sizeof *cb);
+    cb->ndir = 3, cb->nstatev = 2, cb->area_mode = RS_AREA_NODE;
+    ENSURE(rs_cblock_reserve(cb, NP * CAP, NULL) == RS_OK);
+}
+
 static void test_one_pass_is_the_staged_calls(void)
 {
     static scene sc;
     static engine A, B;
-    scene_init(&sc);
-    engine_init(&A, &sc.tr);
-    engine_init(&B, &sc.tr);
     rs_contact_block cb;
-    memset(&cb, 0, sizeof cb);
-    cb.ndir = 3, cb.nstatev = 2, cb.area_mode = RS_AREA_NODE;
-    ENSURE(rs_cblock_reserve(&cb, NP * CAP, NULL) == RS_OK);
+    setup(&sc, &A, &B, &cb);
     int open = 0, slide = 0, press = 0, all_same = 1, fused = 0;
     for (int step = 0; step < 12; step++) {
         if (step > 0)
@@ -290,13 +296,8 @@ static void test_usual_entry_is_the_staged_calls(void)
 {
     static scene sc;
     static engine A, C;
-    scene_init(&sc);
-    engine_init(&A, &sc.tr);
-    engine_init(&C, &sc.tr);
     rs_contact_block cb;
-    memset(&cb, 0, sizeof cb);
-    cb.ndir = 3, cb.nstatev = 2, cb.area_mode = RS_AREA_NODE;
-    ENSURE(rs_cblock_reserve(&cb, NP * CAP, NULL) == RS_OK);
+    setup(&sc, &A, &C, &cb);
     rs_error err;
     int all_same = 1;
     for (int step = 0; step < 12; step++) {
