@@ -436,12 +436,12 @@ RS_INLINE int start_vertex(const rs_pcache *pc, const pout *o, int *nh, int k, i
  * = 1 when point j gets it (owned on its particle side, or either side with two, and
  * within [dlo, dhi]), 0 when the point is owned but out of range, -1 when the segment
  * does not own it. Branch-free, so it vectorises. */
-RS_MULTIVERSION void rs_line_faces(const rs_pseg *q, int two, double dlo, int m,
-                                   const double *restrict pu, const double *restrict pv,
-                                   const double *restrict ph, double *restrict fx0,
-                                   double *restrict fx1, double *restrict fn0,
-                                   double *restrict fn1, double *restrict fd,
-                                   double *restrict what)
+RS_MULTIVERSION static void line_faces(const rs_pseg *q, int two, double dlo, int m,
+                                       const double *restrict pu, const double *restrict pv,
+                                       const double *restrict ph, double *restrict fx0,
+                                       double *restrict fx1, double *restrict fn0,
+                                       double *restrict fn1, double *restrict fd,
+                                       double *restrict what)
 {
     const rs_pseg s = *q; /* a local copy: its fields stay in registers */
     for (int j = 0; j < m; j++)
@@ -471,8 +471,8 @@ static int points_one_line(const rs_pcache *pc, const rs_ppoints *pts, int i,
     int nh = out->n;
     while (i < m) {
         const int c = m - i < PP_SUB ? m - i : PP_SUB;
-        rs_line_faces(q, two, dlo, c, pts->u + i, pts->v + i, pts->dhi + i, fx0, fx1, fn0,
-                      fn1, fd, what);
+        line_faces(q, two, dlo, c, pts->u + i, pts->v + i, pts->dhi + i, fx0, fx1, fn0, fn1,
+                   fd, what);
         /* Every point of the run a face contact, with room for all: straight copies. */
         int nf = 0;
         for (int j = 0; j < c; j++)

@@ -258,23 +258,9 @@ typedef struct rs_ppoints {
 int rs_pcache_points(const rs_pcache *pc, const rs_ppoints *pts, int i, rs_contacts *out,
                      rs_pscratch *sc, int *need);
 
-/* The analytic query's steps, shared with rs_line_revolution_faces (line_revolution.c):
- * the frame F = {A, EX, EY, EZ} (12 numbers: local origin and axes) of s under pose
- * (NULL: the reference configuration); REVOLUTION's profile-plane points (u, v) = (r, z)
- * and radial directions (cx, cy) of m points; the face contact of one LINE segment for m
- * profile-plane points (closest.c; what[j]: 1 a contact, 0 owned but out of [dlo, dhi],
- * -1 not owned); REVOLUTION contacts [k0, k1) from profile-plane form to 3D in place. */
+/* The frame F = {A, EX, EY, EZ} (12 numbers: local origin and axes) of s under pose
+ * (NULL: the reference configuration), as the analytic query (query.c) and
+ * rs_line_revolution_faces (line_revolution.c) compute it. */
 void rs_analytic_frame(const rs_surface *s, const rs_pose *pose, double F[12]);
-void rs_local_revolution(const double *F, double axis_tol, int m, const double *x,
-                         const double *y, const double *z, double *u, double *v,
-                         double *cxs, double *cys);
-void rs_line_faces(const rs_pseg *q, int two, double dlo, int m, const double *pu,
-                   const double *pv, const double *ph, double *fx0, double *fx1,
-                   double *fn0, double *fn1, double *fd, double *what);
-void rs_map_revolution(const double *F, double axis_tol, int k0, int k1, const int *point,
-                       int i0, const double *cxs, const double *cys, double *x0, double *x1,
-                       double *x2, double *n0, double *n1, double *n2, double *a0,
-                       double *a1, double *a2, double *b0, double *b1, double *b2,
-                       double *c1);
 
 #endif

@@ -27,11 +27,10 @@ static void reach_radius(int m, double gap_max, const double *restrict rad,
 
 /* REVOLUTION: the profile-plane point (r, z) of each point and its radial direction
  * (cx, cy) in the local x-y plane (rs_revolution_local1). */
-RS_MULTIVERSION void rs_local_revolution(const double *F, double axis_tol, int m,
-                                         const double *restrict x, const double *restrict y,
-                                         const double *restrict z, double *restrict u,
-                                         double *restrict v, double *restrict cxs,
-                                         double *restrict cys)
+RS_MULTIVERSION static void
+local_revolution(const double *F, double axis_tol, int m, const double *restrict x,
+                 const double *restrict y, const double *restrict z, double *restrict u,
+                 double *restrict v, double *restrict cxs, double *restrict cys)
 {
     for (int j = 0; j < m; j++)
         rs_revolution_local1(F, axis_tol, x[j], y[j], z[j], &u[j], &v[j], &cxs[j], &cys[j]);
@@ -59,7 +58,7 @@ RS_MULTIVERSION static void local_extrusion(const double *F, int m,
 /* REVOLUTION contacts [k0, k1) from profile-plane form (xm[0..1] = (r, z) of the closest
  * point, nrm[0..1] = (n_r, n_z)), with (cx, cy) the radial direction of point i0 + j in
  * the local x-y plane, to 3D, in place (rs_revolution_map1). */
-RS_MULTIVERSION void rs_map_revolution(
+RS_MULTIVERSION static void map_revolution(
     const double *F, double axis_tol, int k0, int k1, const int *restrict point, int i0,
     const double *restrict cxs, const double *restrict cys, double *restrict x0,
     double *restrict x1, double *restrict x2, double *restrict n0, double *restrict n1,
@@ -370,8 +369,8 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
             for (int j = 0; j < m; j++)
                 dh[j] = q->gap_max + 0.0;
         if (kind == RS_SURF_REVOLUTION) {
-            rs_local_revolution(F, axis_tol, m, q->slave.x + i0, q->slave.y + i0,
-                                q->slave.z + i0, pu, pv, cxs, cys);
+            local_revolution(F, axis_tol, m, q->slave.x + i0, q->slave.y + i0,
+                             q->slave.z + i0, pu, pv, cxs, cys);
         } else {
             local_extrusion(F, m, q->slave.x + i0, q->slave.y + i0,
                             q->slave.z ? q->slave.z + i0 : NULL, pu, pv, pw);
@@ -398,10 +397,10 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
             }
         }
         if (kind == RS_SURF_REVOLUTION) {
-            rs_map_revolution(F, axis_tol, k0, out->n, out->point, i0, cxs, cys, out->xm[0],
-                              out->xm[1], out->xm[2], out->nrm[0], out->nrm[1], out->nrm[2],
-                              out->t1[0], out->t1[1], out->t1[2], out->t2[0], out->t2[1],
-                              out->t2[2], out->curv[1]);
+            map_revolution(F, axis_tol, k0, out->n, out->point, i0, cxs, cys, out->xm[0],
+                           out->xm[1], out->xm[2], out->nrm[0], out->nrm[1], out->nrm[2],
+                           out->t1[0], out->t1[1], out->t1[2], out->t2[0], out->t2[1],
+                           out->t2[2], out->curv[1]);
             if (q->slave.radius &&
                 (rc = ring_sectors(pc, F, axis_tol, i0, m, pu, pv, dh, cxs, cys, q,
                                    s->sides, k0, out, &tmp, &extra, &sc, err)) != RS_OK) {

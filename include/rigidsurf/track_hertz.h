@@ -13,8 +13,8 @@
 extern "C" {
 #endif
 
-/// Spheres a caller hands to rs_track_hertz at once to keep its values in the first-level
-/// cache (the one pass's own run).
+/// Spheres a caller hands to rs_track_hertz_usual at once to keep its values in the
+/// first-level cache (the one pass's own run).
 #define RS_TRACK_LINE_RUN 32
 
 /// rs_track_update on the block; then, when the block qualifies, the built-in hertz law
