@@ -14,9 +14,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The frame F = {A, EX, EY, EZ} (12 numbers): local origin and axes in the current
- * configuration. */
-
 /* Upper distance bound per point: gap_max + radius. */
 static void reach_radius(int m, double gap_max, const double *restrict rad,
                          double *restrict dh)
