@@ -689,8 +689,9 @@ int FixWallRigid::parse_law(int narg, char **arg, int iarg)
         lig_desc_.name = "liggghts";
         lig_desc_.nprops = 0;
         lig_desc_.nstatev = lig_->nhistory();
-        /* the model reads its own history only */
-        lig_desc_.skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY;
+        /* the model reads the overlap, the frame and its own history only */
+        lig_desc_.skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_SLIP |
+                          RS_LAW_SKIPS_DRDISP1;
         law_ = &lig_desc_;
         law_kind_ = LAW_LIGGGHTS;
         return iarg;

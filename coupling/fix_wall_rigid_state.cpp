@@ -375,30 +375,27 @@ void FixWallRigid::unpack_restart(int nlocal, int nth)
     const int cin = (int)rec[0];
     const int rest = row_size() - capacity_;
     const int want = 1 + rest + cin * (1 + slot_size());
-    /* A record written with every field of the contact's last call kept (files before
-     * the slots followed the law, or a law that reads them all): the fields this law
-     * does not read are left out. */
-    const int full = RS_HIST_SIZE(nstatev_);
+    /* A record written under another slot layout of this law: with every field of the
+     * contact's last call kept (files before the slots followed the law, or a law that
+     * reads them all), or with the slip and rdisp1 that this law does not read (files
+     * before RS_DROP_SLIP). The fields this law does not read are left out. */
+    const unsigned layouts[2] = {0u, tracker_.drop & ~(unsigned)RS_DROP_SLIP};
     std::vector<double> compact;
-    if (cin >= 1 && n != want && n == 1 + rest + cin * (1 + full)) {
-        const int hs = slot_size(), sv0 = rs_track_statev_at(&tracker_);
+    for (int v = 0; v < 2 && cin >= 1 && n != want && compact.empty(); v++) {
+        rs_tracker from = tracker_;
+        from.drop = layouts[v];
+        const int fs = rs_track_slot_size(&from), hs = slot_size();
+        if (fs == hs || n != 1 + rest + cin * (1 + fs))
+            continue;
         compact.assign(rec, rec + 1 + cin + rest);
+        std::vector<double> slot((size_t)hs);
         for (int j = 0; j < cin; j++) {
-            const double *src = rec + 1 + cin + rest + (size_t)j * full;
-            std::vector<double> slot((size_t)hs, 0.0);
-            for (int b = 0; b <= RS_H_RDISP1; b++)
-                slot[b] = src[b];
-            if (!(tracker_.drop & RS_DROP_STRESS))
-                for (int b = 0; b < 3; b++)
-                    slot[RS_H_STRESS + b] = src[RS_H_STRESS + b];
-            for (int b = 0; b < nstatev_; b++)
-                slot[sv0 + b] = src[RS_H_STATEV + b];
-            if (!(tracker_.drop & RS_DROP_ENERGY))
-                for (int b = 0; b < 3; b++)
-                    slot[rs_track_energy_at(&tracker_) + b] =
-                        src[RS_H_STATEV + nstatev_ + b];
+            rs_track_slot_convert(&tracker_, from.drop,
+                                  rec + 1 + cin + rest + (size_t)j * fs, slot.data());
             compact.insert(compact.end(), slot.begin(), slot.end());
         }
+    }
+    if (!compact.empty()) {
         rec = compact.data();
     } else if (cin < 1 || n != want) {
         std::ostringstream o;

@@ -1,8 +1,8 @@
 /* rigidsurf: calling interface laws: property checks, the guarded block call, default
  * stiffness and conductance, and block defaults (Abaqus VUINTER conventions). */
 #include "rigidsurf/law.h"
-#include "rigidsurf/track.h"
 #include "laws/builtin.h"
+#include "rigidsurf/track.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -88,8 +88,8 @@ static const char *rs_feature_kind(int f)
     }
 }
 
-int rs_law_nonfinite_error(const rs_law *law, int pid, int f, int k, int n, const char *what,
-                           double value, rs_error *err)
+int rs_law_nonfinite_error(const rs_law *law, int pid, int f, int k, int n,
+                           const char *what, double value, rs_error *err)
 {
     if (f < 0) {
         return rs_error_set(err, RS_ERR_NONFINITE,
@@ -108,8 +108,8 @@ static int rs_law_nonfinite(const rs_law *law, const rs_law_block *b, int k,
                             const char *what, double value, rs_error *err)
 {
     return rs_law_nonfinite_error(law, b->jSlvUid[k],
-                                  b->jConMstid[(size_t)k * (size_t)b->nFacNod], k, b->nSlvNod,
-                                  what, value, err);
+                                  b->jConMstid[(size_t)k * (size_t)b->nFacNod], k,
+                                  b->nSlvNod, what, value, err);
 }
 
 static int rs_law_check_block(const rs_law *law, const rs_law_block *b, rs_error *err)
@@ -326,6 +326,9 @@ unsigned rs_law_drops(const rs_law *law)
         drop |= RS_DROP_ENERGY;
     if (law && (law->skips & RS_LAW_SKIPS_COORDMST))
         drop |= RS_DROP_COORDMST;
+    const unsigned slip = RS_LAW_SKIPS_SLIP | RS_LAW_SKIPS_DRDISP1;
+    if (law && (law->skips & slip) == slip)
+        drop |= RS_DROP_SLIP;
     return drop;
 }
 

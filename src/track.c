@@ -241,6 +241,7 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
                         int ne, int ident, const int nd)
 {
     track_run r;
+    const int lean = (tr->drop & RS_DROP_SLIP) != 0, hs = rs_track_slot_size(tr);
     int e = 0, sc = 0; /* sc: the next of out->seeded */
     const int nseeded = out->nseeded, *const seeded = out->seeded;
     while (e < ne) {
@@ -263,23 +264,23 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
                 e++;
             }
         }
-        run_gather(&r, m, out, e0);
+        run_gather(&r, m, out, e0, lean, hs);
         const int s0 = sc; /* seeded entries of this run: live, from the copied slot */
         if (nseeded)
             for (; sc < nseeded && seeded[sc] < e0 + m; sc++)
                 r.live[seeded[sc] - e0] = 1.0;
         if (c->witness && c->xs[0])
-            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, mr->belt, 1);
+            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, mr->belt, 1, lean);
         else if (mr->belt)
-            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 1, 0);
+            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 1, 0, lean);
         else
-            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 0, 0);
+            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 0, 0, lean);
         for (int q = s0; q < sc; q++) { /* its own normal increment, as a new contact's */
             const int j = seeded[q] - e0;
             r.drd1[j] = -r.vn[j] * dt;
         }
         run_outputs(&r, m, c, k0, out, e0, nd, !(tr->drop & RS_DROP_COORDMST));
-        run_store(&r, m, tr, c, k0, out, e0);
+        run_store(&r, m, tr, c, k0, out, e0, lean, NULL, NULL);
     }
 }
 

@@ -11,11 +11,18 @@
 #include "load_contact.h"
 #include "track_run.h"
 
-_Static_assert(RS_TRACK_LINE_RUN == RS_TRACK_RUN, "a caller's run is one run of the one pass");
+_Static_assert(RS_TRACK_LINE_RUN == RS_TRACK_RUN,
+               "a caller's run is one run of the one pass");
+
+/* The slot of a tracker that takes the one pass: n, t1, then the law's 2 state variables
+ * at the slip's place (RS_DROP_SLIP, RS_DROP_STRESS, RS_DROP_ENERGY). */
+#define HERTZ_SLOT 8
+_Static_assert(RS_H_N == 0 && RS_H_T1 == 3 && RS_H_SLIP == 6,
+               "hertz's slot: n, t1, statev");
 
 int rs_track_hertz_takes(const rs_tracker *tr, const double *props)
 {
-    const unsigned hertz_drop = RS_DROP_STRESS | RS_DROP_ENERGY;
+    const unsigned hertz_drop = RS_DROP_STRESS | RS_DROP_ENERGY | RS_DROP_SLIP;
     return tr->ndir == 3 && tr->nstatev == 2 && (tr->drop & hertz_drop) == hertz_drop &&
            props[P_CURV] == 0.0;
 }
@@ -49,10 +56,10 @@ typedef struct run_law {
  * ds2), drot = [[d11, -d21], [d21, d11]], vrel = (vn, v1, v2), unit areas), and the force
  * of its stress, its torque and its moment about the origin as rs_cblock_add_loads's
  * kernel computes them for nDir 3. */
-RS_INLINE void run_law_loads(const track_run *restrict r, int m, int e0, const rs_contacts *c,
-                             const rs_particles *p, const double origin[3], double dt,
-                             double Yeff, double Geff, double beta, double mu,
-                             run_law *restrict q)
+RS_INLINE void run_law_loads(const track_run *restrict r, int m, int e0,
+                             const rs_contacts *c, const rs_particles *p,
+                             const double origin[3], double dt, double Yeff, double Geff,
+                             double beta, double mu, run_law *restrict q)
 {
     const double A = 1.0; /* the unit area's products, as the kernel's UNIT copy has them */
     const double *rad = p->radius + e0, *mass = p->mass + e0;
@@ -80,8 +87,9 @@ RS_INLINE void run_law_loads(const track_run *restrict r, int m, int e0, const r
 /* The wall's sums of a run, in entry order, and its loads onto the engine's and the
  * per-atom rows (rdisp(1:3) and stress(1:3)), as rs_cblock_add_loads's kernel adds them
  * (no leaving contact, a law without heat, creep or plastic dissipation). */
-RS_INLINE void run_sums(const track_run *restrict r, int m, int e0, const rs_load_rows *rows,
-                        double *const *out6, const run_law *restrict q, wall_sums *ws)
+RS_INLINE void run_sums(const track_run *restrict r, int m, int e0,
+                        const rs_load_rows *rows, double *const *out6,
+                        const run_law *restrict q, wall_sums *ws)
 {
     const double A = 1.0;
     const int *row = rows->row;
@@ -139,34 +147,29 @@ static int one_pass(const rs_tracker *tr, const master_rates *mr, double dt,
 {
     double Yeff, Geff, beta, mu;
     rs_hertz_constants(props, &Yeff, &Geff, &beta, &mu);
-    const int sv0 = rs_track_statev_at(tr);
     wall_sums ws = {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, 0.0, 0.0, 0.0, 0};
     track_run r;
     run_law q;
     out->nleave = 0;
     for (int e0 = 0; e0 < ne; e0 += RS_TRACK_RUN) {
         const int m = ne - e0 < RS_TRACK_RUN ? ne - e0 : RS_TRACK_RUN;
-        /* the tracker (emit_all's run: entry, contact and particle e) */
-        run_gather(&r, m, out, e0);
-        run_kinematics(&r, m, mr, dt, p, e0, c, e0, 3, 0, 0);
-        /* the law's state from the slots (zeros for a new contact, as run_store leaves
-         * its slot), the law and the loads */
+        /* the tracker (emit_all's run: entry, contact and particle e); the slot is n, t1
+         * and the law's 2 state variables (RS_DROP_SLIP, RS_DROP_STRESS, RS_DROP_ENERGY:
+         * rs_track_hertz_takes), whose state the gather brings along in so1, so2 */
+        run_gather(&r, m, out, e0, 1, HERTZ_SLOT);
+        run_kinematics(&r, m, mr, dt, p, e0, c, e0, 3, 0, 0, 1);
+        /* the law's state (zeros for a new contact, as run_store leaves its slot), the
+         * law and the loads */
         for (int j = 0; j < m; j++) {
-            const double *h = out->slot[e0 + j] + sv0;
             const int live = r.live[j] != 0.0;
-            q.sv[0][j] = live ? h[0] : 0.0;
-            q.sv[1][j] = live ? h[1] : 0.0;
+            q.sv[0][j] = live ? r.so1[j] : 0.0;
+            q.sv[1][j] = live ? r.so2[j] : 0.0;
         }
         run_law_loads(&r, m, e0, c, p, origin, dt, Yeff, Geff, beta, mu, &q);
         const int rc = check_stress(&q, m, e0, p, c, ne, err);
         if (rc)
             return rc;
-        run_store(&r, m, tr, c, e0, out, e0);
-        for (int j = 0; j < m; j++) {
-            double *h = out->slot[e0 + j] + sv0;
-            h[0] = q.sv[0][j];
-            h[1] = q.sv[1][j];
-        }
+        run_store(&r, m, tr, c, e0, out, e0, 1, q.sv[0], q.sv[1]);
         run_sums(&r, m, e0, rows, out6, &q, &ws);
     }
     out->n = ne;

@@ -1,7 +1,7 @@
 /* The tracker's history around the law call: the previous stress and state of each
  * entry into the law's arrays (rs_track_load), the law's results back into the slots
- * (rs_track_commit), and a particle's slots cleared (rs_track_clear). Slot layout:
- * track.h. */
+ * (rs_track_commit), a particle's slots cleared (rs_track_clear), and a slot carried
+ * from one layout to another (rs_track_slot_convert). Slot layout: track.h. */
 #include "rigidsurf/track.h"
 
 #include "rs_compiler.h"
@@ -29,18 +29,18 @@ RS_INLINE void copy_statev(double *restrict dst, const double *restrict src, con
         copy_statev(DST, SRC, NS);                                                         \
     }
 
-/* The previous stress of the n entries (none leaving, ndir = 3), 4 at a time: rows
- * (rdisp1, s1, s2, s3) of the slots and the entries' drot to columns, the shear carried
- * by drot, and the rows of stress(3, n). */
-RS_INLINE void load_stress3(const rs_track_out *out, int n, double *restrict stress)
+/* The previous stress of the n entries (none leaving, ndir = 3), kept at so in the slots,
+ * 4 at a time: rows (the value before it, s1, s2, s3) of the slots and the entries' drot
+ * to columns, the shear carried by drot, and the rows of stress(3, n). */
+RS_INLINE void load_stress3(const rs_track_out *out, int n, int so, double *restrict stress)
 {
     int e = 0;
     for (; e + 4 <= n; e += 4) {
         double *const *h = out->slot + e;
         const double *dr = out->drot + (size_t)4 * e;
         double rd[4], s1[4], s2[4], s3[4], d0[4], d1[4], d2[4], d3[4], u2[4], u3[4];
-        rs_transpose4(h[0] + RS_H_RDISP1, h[1] + RS_H_RDISP1, h[2] + RS_H_RDISP1,
-                      h[3] + RS_H_RDISP1, rd, s1, s2, s3);
+        rs_transpose4(h[0] + so - 1, h[1] + so - 1, h[2] + so - 1, h[3] + so - 1, rd, s1,
+                      s2, s3);
         rs_transpose4(dr, dr + 4, dr + 8, dr + 12, d0, d1, d2, d3);
         for (int l = 0; l < 4; l++) {
             u2[l] = d0[l] * s2[l] + d2[l] * s3[l];
@@ -50,38 +50,37 @@ RS_INLINE void load_stress3(const rs_track_out *out, int n, double *restrict str
     }
     for (; e < n; e++) {
         const double *h = out->slot[e], *dr = out->drot + (size_t)4 * e;
-        const double s2 = h[RS_H_STRESS + 1], s3 = h[RS_H_STRESS + 2];
-        stress[3 * e] = h[RS_H_STRESS];
+        const double s2 = h[so + 1], s3 = h[so + 2];
+        stress[3 * e] = h[so];
         stress[3 * e + 1] = dr[0] * s2 + dr[2] * s3;
         stress[3 * e + 2] = dr[1] * s2 + dr[3] * s3;
     }
 }
-
-_Static_assert(RS_H_STRESS == RS_H_RDISP1 + 1, "rdisp1 and stress(1:3) are one row");
 
 RS_MULTIVERSION
 void rs_track_load(const rs_tracker *tr, const rs_track_out *out, double *stress,
                    double *statev)
 {
     const int nd = out->ndir, ns = tr->nstatev, n = out->n, sv0 = rs_track_statev_at(tr);
+    const int so = rs_track_stress_at(tr);
     if (stress && (tr->drop & RS_DROP_STRESS)) {
         memset(stress, 0, (size_t)nd * (size_t)n * sizeof *stress);
     } else if (stress && nd == 2) {
         for (int e = 0; e < n; e++) {
             const double *h = out->slot[e];
-            stress[2 * e] = h[RS_H_STRESS];
-            stress[2 * e + 1] = h[RS_H_STRESS + 1];
+            stress[2 * e] = h[so];
+            stress[2 * e + 1] = h[so + 1];
         }
     } else if (stress && out->nleave == 0) {
         /* The shear traction is carried into this increment's basis, as the slip. */
-        load_stress3(out, n, stress);
+        load_stress3(out, n, so, stress);
     } else if (stress) {
         /* As above; a leaving contact keeps its own. */
         for (int e = 0; e < n; e++) {
             const double *h = out->slot[e], *dr = out->drot + (size_t)4 * e;
-            const double s2 = h[RS_H_STRESS + 1], s3 = h[RS_H_STRESS + 2];
+            const double s2 = h[so + 1], s3 = h[so + 2];
             const int keep = RS_DIR_IS_LEAVING(*out->dir[e]);
-            stress[3 * e] = h[RS_H_STRESS];
+            stress[3 * e] = h[so];
             stress[3 * e + 1] = keep ? s2 : dr[0] * s2 + dr[2] * s3;
             stress[3 * e + 2] = keep ? s3 : dr[1] * s2 + dr[3] * s3;
         }
@@ -95,7 +94,7 @@ void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stre
                      const double *statev)
 {
     const int nd = out->ndir, ns = tr->nstatev, anyleave = out->nleave > 0;
-    const int sv0 = rs_track_statev_at(tr);
+    const int sv0 = rs_track_statev_at(tr), so = rs_track_stress_at(tr);
     if (tr->drop & RS_DROP_STRESS)
         stress = NULL;
     if (!anyleave && nd == 3 && (stress || (statev && ns > 0))) {
@@ -104,9 +103,9 @@ void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stre
             for (int e = 0; e < out->n; e++) {
                 double *h = out->slot[e];
                 const double *se = stress + (size_t)3 * e;
-                h[RS_H_STRESS] = se[0];
-                h[RS_H_STRESS + 1] = se[1];
-                h[RS_H_STRESS + 2] = se[2];
+                h[so] = se[0];
+                h[so + 1] = se[1];
+                h[so + 2] = se[2];
             }
         if (statev && ns > 0)
             for (int e = 0; e < out->n; e++)
@@ -121,9 +120,9 @@ void rs_track_commit(const rs_tracker *tr, rs_track_out *out, const double *stre
         }
         if (stress) {
             const double *se = stress + (size_t)nd * e;
-            h[RS_H_STRESS] = se[0];
-            h[RS_H_STRESS + 1] = se[1];
-            h[RS_H_STRESS + 2] = nd == 3 ? se[2] : 0.0;
+            h[so] = se[0];
+            h[so + 1] = se[1];
+            h[so + 2] = nd == 3 ? se[2] : 0.0;
         }
         if (statev && ns > 0)
             RS_STATEV_COPY(ns, h + sv0, statev + (size_t)ns * e)
@@ -172,4 +171,23 @@ void rs_track_clear(const rs_tracker *tr, double *dir, double *hist, ptrdiff_t s
         dir[j] = RS_DIR_EMPTY;
         memset(hist + j * (stride ? stride : hs), 0, (size_t)hs * sizeof *hist);
     }
+}
+
+void rs_track_slot_convert(const rs_tracker *tr, unsigned from, const double *src,
+                           double *dst)
+{
+    rs_tracker f = *tr;
+    f.drop = from;
+    const unsigned both = ~(tr->drop | from);
+    memset(dst, 0, (size_t)rs_track_slot_size(tr) * sizeof *dst);
+    memcpy(dst + RS_H_N, src + RS_H_N, 6 * sizeof *dst); /* n, t1 */
+    if (both & RS_DROP_SLIP)
+        memcpy(dst + RS_H_SLIP, src + RS_H_SLIP, 3 * sizeof *dst); /* slip, rdisp1 */
+    if (both & RS_DROP_STRESS)
+        memcpy(dst + rs_track_stress_at(tr), src + rs_track_stress_at(&f), 3 * sizeof *dst);
+    if (tr->nstatev > 0)
+        memcpy(dst + rs_track_statev_at(tr), src + rs_track_statev_at(&f),
+               (size_t)tr->nstatev * sizeof *dst);
+    if (both & RS_DROP_ENERGY)
+        memcpy(dst + rs_track_energy_at(tr), src + rs_track_energy_at(&f), 3 * sizeof *dst);
 }

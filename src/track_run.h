@@ -36,6 +36,8 @@ typedef struct track_run {
     double live[RS_TRACK_RUN]; ///< 1: the slot holds this contact's history, 0: new
     double on0[RS_TRACK_RUN], on1[RS_TRACK_RUN], on2[RS_TRACK_RUN];
     double ot0[RS_TRACK_RUN], ot1[RS_TRACK_RUN], ot2[RS_TRACK_RUN];
+    /* the slot's values 6 and 7: the slip; in a slot without it (RS_DROP_SLIP), what
+     * follows t1 there (the first two state variables of hertz's slot), or zeros */
     double so1[RS_TRACK_RUN], so2[RS_TRACK_RUN], rdo[RS_TRACK_RUN];
     /* computed */
     double rd1[RS_TRACK_RUN], drd1[RS_TRACK_RUN];
@@ -46,12 +48,14 @@ typedef struct track_run {
 } track_run;
 
 /* The history slot starts with the 9 values a run gathers and stores: n, t1, slip,
- * rdisp1, so two rows of 4 and one value. */
+ * rdisp1, so two rows of 4 and one value; or, without the slip and rdisp1, with n and
+ * t1, whose first 8 values are two rows of 4 when the slot has 8 or more. */
 _Static_assert(RS_H_N == 0 && RS_H_T1 == 3 && RS_H_SLIP == 6 && RS_H_RDISP1 == 8,
                "the run's copies assume n, t1, slip, rdisp1 at the head of the slot");
 
-/* Lane j of a run: the history in entry e's slot. */
-RS_INLINE void run_gather1(track_run *restrict r, int j, const rs_track_out *o, int e)
+/* Lane j of a run: the history in entry e's slot of hs values (lean: RS_DROP_SLIP). */
+RS_INLINE void run_gather1(track_run *restrict r, int j, const rs_track_out *o, int e,
+                           const int lean, const int hs)
 {
     const double *h = o->slot[e];
     r->live[j] = RS_DIR_IS_LIVE(*o->dir[e]);
@@ -61,28 +65,33 @@ RS_INLINE void run_gather1(track_run *restrict r, int j, const rs_track_out *o, 
     r->ot0[j] = h[RS_H_T1];
     r->ot1[j] = h[RS_H_T1 + 1];
     r->ot2[j] = h[RS_H_T1 + 2];
-    r->so1[j] = h[RS_H_SLIP];
-    r->so2[j] = h[RS_H_SLIP + 1];
-    r->rdo[j] = h[RS_H_RDISP1];
+    r->so1[j] = hs >= 8 ? h[RS_H_SLIP] : 0.0;
+    r->so2[j] = hs >= 8 ? h[RS_H_SLIP + 1] : 0.0;
+    if (!lean)
+        r->rdo[j] = h[RS_H_RDISP1];
 }
 
-/* The history of entries e0 .. e0+m-1 into the run's columns, 4 slots at a time. */
-RS_INLINE void run_gather(track_run *restrict r, int m, const rs_track_out *o, int e0)
+/* The history of entries e0 .. e0+m-1 into the run's columns, 4 slots at a time (slots
+ * of hs values; lean: the tracker drops the slip and rdisp1, RS_DROP_SLIP). */
+RS_INLINE void run_gather(track_run *restrict r, int m, const rs_track_out *o, int e0,
+                          const int lean, const int hs)
 {
     int j = 0;
-    for (; j + 4 <= m; j += 4) {
-        double *const *h = o->slot + e0 + j;
-        rs_transpose4(h[0], h[1], h[2], h[3], r->on0 + j, r->on1 + j, r->on2 + j,
-                      r->ot0 + j);
-        rs_transpose4(h[0] + 4, h[1] + 4, h[2] + 4, h[3] + 4, r->ot1 + j, r->ot2 + j,
-                      r->so1 + j, r->so2 + j);
-        for (int l = 0; l < 4; l++) {
-            r->rdo[j + l] = h[l][RS_H_RDISP1];
-            r->live[j + l] = RS_DIR_IS_LIVE(*o->dir[e0 + j + l]);
+    if (hs >= 8)
+        for (; j + 4 <= m; j += 4) {
+            double *const *h = o->slot + e0 + j;
+            rs_transpose4(h[0], h[1], h[2], h[3], r->on0 + j, r->on1 + j, r->on2 + j,
+                          r->ot0 + j);
+            rs_transpose4(h[0] + 4, h[1] + 4, h[2] + 4, h[3] + 4, r->ot1 + j, r->ot2 + j,
+                          r->so1 + j, r->so2 + j);
+            for (int l = 0; l < 4; l++) {
+                if (!lean)
+                    r->rdo[j + l] = h[l][RS_H_RDISP1];
+                r->live[j + l] = RS_DIR_IS_LIVE(*o->dir[e0 + j + l]);
+            }
         }
-    }
     for (; j < m; j++)
-        run_gather1(r, j, o, e0 + j);
+        run_gather1(r, j, o, e0 + j, lean, hs);
 }
 
 /* The kinematics of a run of m live contacts (docs/conventions.md):
@@ -94,13 +103,14 @@ RS_INLINE void run_gather(track_run *restrict r, int m, const rs_track_out *o, i
  *   t2 = n x t1 the matrix drot(i,j) = t_i . tau_j is [[d11, -d21], [d21, d11]]. P = I
  *   when the normal did not turn (a = n bit for bit); the half turn about q when
  *   1 + cs <= RS_ANTIPARALLEL (then tau1 = q as well).
- * - s <- drot s + ds; a new contact starts with s = ds and drdisp(1) = -v_n dt.
+ * - s <- drot s + ds; a new contact starts with s = ds and drdisp(1) = -v_n dt, and so
+ *   does every contact when the slots keep neither (lean: RS_DROP_SLIP).
  * Every lane computes every formula and selects at the end, so the loop has no
  * branches. nd = 2: t1 only, drot = I. */
 RS_INLINE void run_kinematics(track_run *restrict r, int m, const master_rates *mr,
                               double dt, const rs_particles *p, int i0,
                               const rs_contacts *c, int k0, const int nd, const int belt,
-                              const int wit)
+                              const int wit, const int lean)
 {
     static const double zero[RS_TRACK_RUN];
     const double *prad = p->radius ? p->radius + i0 : zero;
@@ -171,13 +181,13 @@ RS_INLINE void run_kinematics(track_run *restrict r, int m, const master_rates *
             v2 = vx * bx + vy * by + vz * bz;
             ds2 = v2 * dt;
             const double so1 = live ? r->so1[j] : 0.0, so2 = live ? r->so2[j] : 0.0;
-            s1 = d11 * so1 - d21 * so2 + ds1;
-            s2 = d21 * so1 + d11 * so2 + ds2;
+            s1 = lean ? ds1 : d11 * so1 - d21 * so2 + ds1;
+            s2 = lean ? ds2 : d21 * so1 + d11 * so2 + ds2;
         } else {
-            s1 = (live ? r->so1[j] : 0.0) + ds1;
+            s1 = lean ? ds1 : (live ? r->so1[j] : 0.0) + ds1;
         }
         r->rd1[j] = rd1;
-        r->drd1[j] = live ? rd1 - r->rdo[j] : -vn * dt;
+        r->drd1[j] = live && !lean ? rd1 - r->rdo[j] : -vn * dt;
         r->s1[j] = s1;
         r->s2[j] = s2;
         r->ds1[j] = ds1;
@@ -280,21 +290,31 @@ RS_INLINE void run_outputs(const track_run *restrict r, int m, const rs_contacts
     }
 }
 
-/* The history of a run: directory entry, frame, slip and rdisp1; a new contact's stress
- * and statev start at zero. Also the entries' particle and feature ids. */
+/* The history of a run: directory entry, frame, slip and rdisp1 (lean: frame only, the
+ * tracker drops the slip and rdisp1, RS_DROP_SLIP); a new contact's stress and statev
+ * start at zero. Also the entries' particle and feature ids. x6, x7 (lean, slots of 8
+ * or more values): the columns to store at the slot's values 6 and 7, which then are not
+ * zeroed for a new contact; NULL for none. */
 RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *tr,
-                         const rs_contacts *c, int k0, rs_track_out *o, int e0)
+                         const rs_contacts *c, int k0, rs_track_out *o, int e0,
+                         const int lean, const double *x6, const double *x7)
 {
     const double *n0 = c->nrm[0] + k0, *n1 = c->nrm[1] + k0, *n2 = c->nrm[2] + k0;
     const double *a0 = c->t1[0] + k0, *a1 = c->t1[1] + k0, *a2 = c->t1[2] + k0;
     double *const *slot = o->slot + e0;
     const int hs = rs_track_slot_size(tr);
+    const int rows = !lean || x6; /* values 4 to 7 are one row of 4 */
+    const double *c6 = lean ? x6 : r->s1, *c7 = lean ? x7 : r->s2;
     int j = 0;
     for (; j + 4 <= m; j += 4) {
         double *const *h = slot + j;
         rs_transpose4(n0 + j, n1 + j, n2 + j, a0 + j, h[0], h[1], h[2], h[3]);
-        rs_transpose4(a1 + j, a2 + j, r->s1 + j, r->s2 + j, h[0] + 4, h[1] + 4, h[2] + 4,
-                      h[3] + 4);
+        if (rows)
+            rs_transpose4(a1 + j, a2 + j, c6 + j, c7 + j, h[0] + 4, h[1] + 4, h[2] + 4,
+                          h[3] + 4);
+        else
+            for (int l = 0; l < 4; l++)
+                h[l][RS_H_T1 + 1] = a1[j + l], h[l][RS_H_T1 + 2] = a2[j + l];
     }
     for (; j < m; j++) {
         double *h = slot[j];
@@ -304,16 +324,21 @@ RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *t
         h[RS_H_T1] = a0[j];
         h[RS_H_T1 + 1] = a1[j];
         h[RS_H_T1 + 2] = a2[j];
-        h[RS_H_SLIP] = r->s1[j];
-        h[RS_H_SLIP + 1] = r->s2[j];
+        if (rows) {
+            h[RS_H_SLIP] = c6[j];
+            h[RS_H_SLIP + 1] = c7[j];
+        }
     }
+    /* a new contact's slot from here on starts at zero */
+    const int z = !lean ? RS_H_RDISP1 + 1 : x6 ? RS_H_SLIP + 2 : RS_H_SLIP;
     for (j = 0; j < m; j++) {
         const int k = k0 + j, e = e0 + j;
         double *h = slot[j];
         if (r->live[j] == 0.0)
-            for (int b = RS_H_RDISP1 + 1; b < hs; b++)
+            for (int b = z; b < hs; b++)
                 h[b] = 0.0;
-        h[RS_H_RDISP1] = r->rd1[j];
+        if (!lean)
+            h[RS_H_RDISP1] = r->rd1[j];
         /* Stored only when it changes (a new contact, a handover): a held contact's entry
          * already names its feature, and its directory's line then stays clean, which
          * saves writing it back to memory in a large bed. */

@@ -222,11 +222,16 @@ struct rs_law {
  * keep it (the tracker's slot layout follows, rs_law_drops): the stress of the last call
  * (the law computes its stress from its own state variables), and the sed, fluxSlv and
  * fluxMst of the last call. A law that skips one gets zeros there. A law that skips
- * coordMst gets NULL there, and the tracker does not compute it. Loaded laws read
- * everything. */
+ * coordMst gets NULL there, and the tracker does not compute it. A law that skips both
+ * the accumulated slip rdisp(2:nDir) and drdisp(1) (it reads rdisp(1), drdisp(2:nDir)
+ * and drot, as DEM's incremental tangential models do) gets the slip increment there and
+ * -v_rel.n dt (RS_DROP_SLIP), and its slots keep neither the slip nor rdisp(1); one that
+ * skips only one of them is handed both as usual. Loaded laws read everything. */
 #define RS_LAW_SKIPS_STRESS 1u
 #define RS_LAW_SKIPS_ENERGY 2u
 #define RS_LAW_SKIPS_COORDMST 4u
+#define RS_LAW_SKIPS_SLIP 8u
+#define RS_LAW_SKIPS_DRDISP1 16u
 
 /* What a law declares it writes for every contact of a call (rs_law.sets):
  * - RS_LAW_SETS_ENERGIES: sfd, scd, spd and svd, so rs_law_call does not zero them

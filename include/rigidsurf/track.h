@@ -48,11 +48,12 @@ extern "C" {
  *   directory and one slot only.
  * A slot is the tracker's own fields (n, t1, slip, rdisp1), then what the law reads of
  * the contact's last call: its stress (3), its state variables (nstatev), its sed,
- * fluxSlv and fluxMst (3). A law that does not read the stress or the energies on entry
- * says so (rs_law.skips); the tracker then drops them (rs_tracker.drop) and the slot is
- * shorter. With nothing dropped the offsets are the RS_H_ constants and the size
- * RS_HIST_SIZE(nstatev); in general rs_track_statev_at, rs_track_energy_at and
- * rs_track_slot_size give them.
+ * fluxSlv and fluxMst (3). A law that does not read some of them says so (rs_law.skips);
+ * the tracker then drops them (rs_tracker.drop) and the slot is shorter. With nothing
+ * dropped the offsets are the RS_H_ constants and the size RS_HIST_SIZE(nstatev); in
+ * general rs_track_stress_at, rs_track_statev_at, rs_track_energy_at and
+ * rs_track_slot_size give them (n and t1 always lead, and the slip and rdisp1 follow
+ * at RS_H_SLIP and RS_H_RDISP1 unless RS_DROP_SLIP).
  * A slot's frame is n and t1; t2 = n x t1 (every 3D frame is right-handed). */
 #define RS_H_N 0       ///< normal at the last call (3)
 #define RS_H_T1 3      ///< t1 at the last call (3)
@@ -64,11 +65,14 @@ extern "C" {
 
 /// What a tracker does not keep in its slots (rs_tracker.drop): the stress of the last
 /// call (the law's stress on entry is then zero), the sed, fluxSlv and fluxMst of the
-/// last call (zero on entry); and what it does not write at all: the closest master
-/// points (rs_track_out.coordmst is left as it was).
+/// last call (zero on entry), the accumulated slip and rdisp(1) of the last call
+/// (RS_DROP_SLIP: each call's rdisp(2:3) is then that call's slip increment, drdisp(2:3),
+/// and drdisp(1) = -v_rel.n dt, as for a new contact); and what it does not write at all:
+/// the closest master points (rs_track_out.coordmst is left as it was).
 #define RS_DROP_STRESS 1u
 #define RS_DROP_ENERGY 2u
 #define RS_DROP_COORDMST 4u
+#define RS_DROP_SLIP 8u
 
 #define RS_DIR_EMPTY 0.0                       ///< a free slot (zeroed memory)
 #define RS_DIR_LIVE(f) ((double)(f) + 1.0)     ///< the slot holds feature f (f >= 0)
@@ -89,10 +93,15 @@ typedef struct rs_tracker {
     unsigned drop;   ///< RS_DROP_ flags: what the slots do not keep (0: everything)
 } rs_tracker;
 
+/// The offset of the last call's stress in a slot (meaningful unless RS_DROP_STRESS).
+static inline int rs_track_stress_at(const rs_tracker *tr)
+{
+    return (tr->drop & RS_DROP_SLIP) ? RS_H_SLIP : RS_H_STRESS;
+}
 /// The offset of the state variables in a slot.
 static inline int rs_track_statev_at(const rs_tracker *tr)
 {
-    return RS_H_RDISP1 + 1 + ((tr->drop & RS_DROP_STRESS) ? 0 : 3);
+    return rs_track_stress_at(tr) + ((tr->drop & RS_DROP_STRESS) ? 0 : 3);
 }
 /// The offset of sed, fluxSlv, fluxMst in a slot (meaningful unless RS_DROP_ENERGY).
 static inline int rs_track_energy_at(const rs_tracker *tr)
@@ -171,6 +180,13 @@ void rs_track_load_energy(const rs_tracker *tr, const rs_track_out *out, double 
 void rs_track_commit_energy(const rs_tracker *tr, const rs_track_out *out,
                             const double *sed, const double *flux_slv,
                             const double *flux_mst);
+
+/// One slot in tr's layout (dst, rs_track_slot_size(tr) values) from one written by a
+/// tracker with tr's nstatev that dropped `from` (RS_DROP_ flags; src): the fields both
+/// keep are copied, those only tr keeps are zero (an engine's restart file written under
+/// another layout).
+void rs_track_slot_convert(const rs_tracker *tr, unsigned from, const double *src,
+                           double *dst);
 
 /// Marks every slot of one particle empty and zeroes the slots (stride as in
 /// rs_particles.slot_stride; 0: contiguous).

@@ -26,10 +26,10 @@ extern "C" {
 /// when every particle has exactly one contact, held or new (no leaving slot, no
 /// handover), nDir is 3, the particles are spheres (radius and mass given), the master
 /// has no surface velocity, every share is 1, the tracker keeps the slots of hertz (2 state
-/// variables, RS_DROP_STRESS and RS_DROP_ENERGY) and the curvature flag is 0. Otherwise
-/// *done = 0, out is what rs_track_update gives, and the caller goes on with the staged
-/// calls. Errors: rs_track_update's, and RS_ERR_NONFINITE, as rs_law_call, when the law
-/// returns a stress that is NaN or Inf.
+/// variables, RS_DROP_STRESS, RS_DROP_ENERGY and RS_DROP_SLIP) and the curvature flag is 0.
+/// Otherwise *done = 0, out is what rs_track_update gives, and the caller goes on with the
+/// staged calls. Errors: rs_track_update's, and RS_ERR_NONFINITE, as rs_law_call, when the
+/// law returns a stress that is NaN or Inf.
 int rs_track_hertz(const rs_tracker *tr, const rs_surface *s, const rs_motion *m, double dt,
                    const rs_particles *p, const rs_contacts *c, rs_track_out *out,
                    const double *props, const double origin[3], const rs_load_rows *rows,
@@ -51,9 +51,9 @@ int rs_track_hertz_usual(const rs_tracker *tr, const rs_motion *m, double dt,
                          rs_error *err);
 
 /// Whether a tracker and the hertz law's properties props take the one pass: nDir 3, the
-/// law's 2 state variables, RS_DROP_STRESS and RS_DROP_ENERGY, curvature flag 0. A block
-/// of spheres without a surface velocity, each with one held contact (rs_track_dir_usual),
-/// then always does (*done = 1, or an error).
+/// law's 2 state variables, RS_DROP_STRESS, RS_DROP_ENERGY and RS_DROP_SLIP, curvature flag
+/// 0. A block of spheres without a surface velocity, each with one held contact
+/// (rs_track_dir_usual), then always does (*done = 1, or an error).
 int rs_track_hertz_takes(const rs_tracker *tr, const double *props);
 
 /// Whether the directory dir (capacity entries) holds the contact of feature f in slot 0

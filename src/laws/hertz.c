@@ -125,7 +125,8 @@ const rs_law rs_law_hertz = {
     .update = rs_hertz_update,
     .critical_step = rs_hertz_critical_step,
     .reach = rs_law_reach_touching,
-    .skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_COORDMST,
+    .skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_COORDMST |
+             RS_LAW_SKIPS_SLIP | RS_LAW_SKIPS_DRDISP1,
     .sets = RS_LAW_SETS_ENERGIES | RS_LAW_SETS_NO_HEAT | RS_LAW_SETS_NO_CREEP_PLASTIC |
             RS_LAW_SETS_STRESS,
 };

@@ -173,6 +173,7 @@ const rs_law rs_law_hooke = {
     .update = rs_hooke_update,
     .critical_step = rs_hooke_critical_step,
     .reach = rs_law_reach_touching,
-    .skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_COORDMST,
+    .skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_COORDMST |
+             RS_LAW_SKIPS_SLIP | RS_LAW_SKIPS_DRDISP1,
     .sets = RS_LAW_SETS_STRESS,
 };

@@ -28,7 +28,7 @@ at the restart point, so its fix grew from 4 slots; the restarted fix starts wit
 again and takes 12 from the file.
 
 Fifth case, the slot's layout: a file written with hertz as a loaded C law (its slots
-keep the last call's stress and energies: 17 doubles) is read by law hertz (11) and the
+keep the last call's stress and energies: 17 doubles) is read by law hertz (8) and the
 run continues identically. Sixth, law liggghts with rolling friction epsd2: the model's
 own history (shear and rolling torque) comes through the restart, identically.
 Seventh, a drum that turns and spins about a crossed axis at a rate that changes in
@@ -87,7 +87,7 @@ def body(s):
     s.write("drum.inp", L.drum(RC, -0.05, 0.05))
     for tag, wall in (("ours", WALL),):
         full = deck_atoms() + setup_lines(wall)
-        full += L.dump_lines("mid", N, tag + "_mid.dump", L.DUMP_COLS + " f_w[2] f_w[3]")
+        full += L.dump_lines("mid", N, tag + "_mid.dump", L.DUMP_COLS + " f_w[4] f_w[5] f_w[6]")
         full += "run %d\nundump mid\n" % N
         full += L.dump_lines("d", N, tag + "_full.dump") + "run %d\n" % N
         s.run(tag + "_full", full)
@@ -103,9 +103,11 @@ def body(s):
 
         mid = L.read_dump(s.path(tag + "_mid.dump"))[-1][1]
         ang = math.degrees(math.atan2(mid[1]["x"], -mid[1]["y"]))
-        slip = math.hypot(mid[1]["f_w[2]"], mid[1]["f_w[3]"])
+        # the shear stress against the pressure: friction, within the Coulomb limit 0.4
+        shear = math.hypot(mid[1]["f_w[5]"], mid[1]["f_w[6]"]) / mid[1]["f_w[4]"]
         s.ck.check(tag + ": at the restart point sphere 1 is held up by friction",
-                   ang > 5.0 and slip > 0, "%.2f deg from the bottom, |rdisp2:3| %.3g" % (ang, slip))
+                   ang > 5.0 and 0.0 < shear <= 0.4 * (1 + 1e-12),
+                   "%.2f deg from the bottom, shear/pressure %.3g" % (ang, shear))
         check_identical(s, tag)
     corner_case(s)
     pocket_case(s)
@@ -140,7 +142,7 @@ def liggghts_case(s):
 def layout_case(s):
     """A restart file whose slots keep every field (written with hertz as a loaded C law,
     which declares nothing it skips: 17 doubles a slot) read by law hertz, whose slots
-    keep what it reads (11: no stress, no energies). The restarted run equals the
+    keep what it reads (8: no stress, no energies, no slip, no rdisp1). The restarted run equals the
     continuous one of law hertz bit for bit, so the tracker's fields and the shear history
     came through the change of layout."""
     lib = os.environ.get("RS_HERTZ_ALL", "")
@@ -242,9 +244,9 @@ def version_case(s):
     if len(at) != 1:
         return
     # each atom's record: its length + 1, the capacity, then the directory (row first);
-    # a hertz slot keeps n, t1, slip, rdisp1 and the state variables (hertz reads neither
-    # its last stress nor its energies: rs_law.skips)
-    atom_size = (cap + 1 + npred) + cap * (9 + nstatev)
+    # a hertz slot keeps n, t1 and the state variables (hertz reads neither its last
+    # stress nor its energies nor the accumulated slip and rdisp1: rs_law.skips)
+    atom_size = (cap + 1 + npred) + cap * (6 + nstatev)
     rec = struct.pack("<2d", 2.0 + atom_size, cap)
     recs = [k for k in range(len(data)) if data.startswith(rec, k)]
     old = bytearray(data)

@@ -30,7 +30,7 @@ static const double props[7] = {5e6, 0.3, 5e7, 0.25, 0.5, 0.3, 0.0};
 
 /* One engine's state: the histories and the rows the loads add onto. */
 typedef struct engine {
-    double dir[NP][CAP], hist[NP][CAP * 11];
+    double dir[NP][CAP], hist[NP][CAP * 8];
     double *dp[NP], *hp[NP];
     double f[NP][3], t[NP][3], fs[NP][3], o6[NP][6];
     double *fr[NP], *tr[NP], *sr[NP], * or [NP];
@@ -89,8 +89,9 @@ static void scene_init(scene *sc)
                  vel[3] = {2e-3, -1e-3, 0.0};
     ENSURE(rs_motion_set_rotation(&sc->mo, centre, axis, 0.8, NULL) == RS_OK);
     rs_motion_set_translation(&sc->mo, vel);
-    sc->tr = (rs_tracker){CAP, 2, 3, TRACK, RS_DROP_STRESS | RS_DROP_ENERGY};
-    ENSURE(rs_track_slot_size(&sc->tr) == 11);
+    /* the slots hertz declares it reads: n, t1 and its 2 state variables */
+    sc->tr = (rs_tracker){CAP, 2, 3, TRACK, rs_law_drops(rs_law_find("hertz"))};
+    ENSURE(rs_track_slot_size(&sc->tr) == 8);
     sc->n = NP;
     srand(7);
     for (int i = 0; i < NP; i++) {

@@ -129,8 +129,21 @@ static void test_sizes(void)
     ENSURE(rs_track_energy_at(&all) == RS_H_STATEV + 3);
     ENSURE(rs_track_slot_size(&lean) == RS_H_RDISP1 + 1 + 3);
     ENSURE(rs_track_statev_at(&lean) == RS_H_RDISP1 + 1);
-    /* the built-in hertz and hooke read neither; a loaded law (skips 0) reads both */
-    const unsigned lean_law = RS_DROP_STRESS | RS_DROP_ENERGY | RS_DROP_COORDMST;
+    /* without the slip and rdisp1, the stress follows t1; with nothing else dropped the
+     * slot is 3 shorter than a full one */
+    rs_tracker noslip = {4, 3, 3, 0.0, RS_DROP_SLIP};
+    ENSURE(rs_track_stress_at(&all) == RS_H_STRESS);
+    ENSURE(rs_track_stress_at(&noslip) == RS_H_SLIP);
+    ENSURE(rs_track_statev_at(&noslip) == RS_H_SLIP + 3);
+    ENSURE(rs_track_energy_at(&noslip) == RS_H_SLIP + 3 + 3);
+    ENSURE(rs_track_slot_size(&noslip) == RS_HIST_SIZE(3) - 3);
+    /* hertz's slot: n, t1 and its 2 state variables, 8 values (one 64-byte line) */
+    rs_tracker hertz = {4, 2, 3, 0.0, RS_DROP_STRESS | RS_DROP_ENERGY | RS_DROP_SLIP};
+    ENSURE(rs_track_statev_at(&hertz) == 6 && rs_track_slot_size(&hertz) == 8);
+    /* the built-in hertz and hooke read neither the stress nor the energies nor the slip
+     * nor drdisp(1); a loaded law (skips 0) reads them all */
+    const unsigned lean_law =
+        RS_DROP_STRESS | RS_DROP_ENERGY | RS_DROP_COORDMST | RS_DROP_SLIP;
     ENSURE(rs_law_drops(rs_law_find("hertz")) == lean_law);
     ENSURE(rs_law_drops(rs_law_find("hooke")) == lean_law);
     /* no built-in law reads the closest master points */
@@ -144,17 +157,25 @@ static void test_sizes(void)
     rs_law loaded;
     memset(&loaded, 0, sizeof loaded);
     ENSURE(rs_law_drops(&loaded) == 0);
+    /* the slip goes only with drdisp(1): a law that reads either keeps both */
+    loaded.skips = RS_LAW_SKIPS_SLIP;
+    ENSURE(rs_law_drops(&loaded) == 0);
+    loaded.skips = RS_LAW_SKIPS_DRDISP1;
+    ENSURE(rs_law_drops(&loaded) == 0);
+    loaded.skips = RS_LAW_SKIPS_SLIP | RS_LAW_SKIPS_DRDISP1;
+    ENSURE(rs_law_drops(&loaded) == RS_DROP_SLIP);
 }
 
 static void test_dropped_fields(void)
 {
     const unsigned drops[] = {RS_DROP_STRESS, RS_DROP_ENERGY,
-                              RS_DROP_STRESS | RS_DROP_ENERGY};
-    for (int v = 0; v < 3; v++) {
+                              RS_DROP_STRESS | RS_DROP_ENERGY, RS_DROP_SLIP,
+                              RS_DROP_STRESS | RS_DROP_ENERGY | RS_DROP_SLIP};
+    for (int v = 0; v < 5; v++) {
         scene ref, lean;
         scene_init(&ref, 0);
         scene_init(&lean, drops[v]);
-        int same = 1, zeros = 1, kept = 1, calls = 0;
+        int same = 1, zeros = 1, kept = 1, calls = 0, differs = 0;
         for (int it = 0; it < 6; it++) {
             double sa[3 * MAXC], sb[3 * MAXC], va[NS * MAXC], vb[NS * MAXC], ea[MAXC],
                 eb[MAXC];
@@ -164,12 +185,25 @@ static void test_dropped_fields(void)
                 break;
             calls++;
             for (int e = 0; e < na; e++) {
+                /* without the slip and rdisp1 (RS_DROP_SLIP), rdisp(2:3) is the slip
+                 * increment drdisp(2:3) and drdisp(1) = -v_rel.n dt, as a new contact's */
+                const int noslip = (drops[v] & RS_DROP_SLIP) != 0;
                 for (int d = 0; d < 3; d++) {
-                    same &= RS_A2(ref.out.rdisp, 3, d, e) == RS_A2(lean.out.rdisp, 3, d, e);
-                    same &=
-                        RS_A2(ref.out.drdisp, 3, d, e) == RS_A2(lean.out.drdisp, 3, d, e);
+                    const double rd = noslip && d > 0 ? RS_A2(ref.out.drdisp, 3, d, e)
+                                                      : RS_A2(ref.out.rdisp, 3, d, e);
+                    const double drd = noslip && d == 0
+                                           ? -RS_A2(ref.out.vrel, 3, 0, e) * 1e-3
+                                           : RS_A2(ref.out.drdisp, 3, d, e);
+                    same &= RS_A2(lean.out.rdisp, 3, d, e) == rd;
+                    same &= RS_A2(lean.out.drdisp, 3, d, e) == drd;
                     same &= ref.out.slot[e][RS_H_N + d] == lean.out.slot[e][RS_H_N + d];
+                    same &= ref.out.slot[e][RS_H_T1 + d] == lean.out.slot[e][RS_H_T1 + d];
                 }
+                /* the accumulated slip differs from the increment from the second call on
+                 */
+                if (noslip && it > 0)
+                    differs +=
+                        RS_A2(ref.out.rdisp, 3, 1, e) != RS_A2(ref.out.drdisp, 3, 1, e);
                 for (int d = 0; d < 4; d++)
                     same &= ref.out.drot[4 * e + d] == lean.out.drot[4 * e + d];
                 for (int b = 0; b < NS; b++)
@@ -192,6 +226,7 @@ static void test_dropped_fields(void)
         }
         ENSURE(calls == 6);
         ENSURE(same);
+        ENSURE(!(drops[v] & RS_DROP_SLIP) || differs > 0);
         ENSURE(zeros);
         ENSURE(kept);
         scene_free(&ref);
@@ -298,9 +333,60 @@ static void test_law_sees_no_coordmst(void)
     scene_free(&s);
 }
 
+/* A slot built field by field in the order of track.h's layout (n, t1, slip, rdisp1,
+ * stress, statev, energies), each field's values tagged 100 a + b; fields the drop mask
+ * leaves out are skipped, and those of the drop flags `zero` are written as zeros.
+ * Returns the length. */
+static int tagged_slot(unsigned drop, int ns, double *h, unsigned zero)
+{
+    const int len[7] = {3, 3, 2, 1, 3, ns, 3};
+    const unsigned gone[7] = {
+        0, 0, RS_DROP_SLIP, RS_DROP_SLIP, RS_DROP_STRESS, 0, RS_DROP_ENERGY};
+    int k = 0;
+    for (int a = 0; a < 7; a++) {
+        if (drop & gone[a])
+            continue;
+        for (int b = 0; b < len[a]; b++)
+            h[k++] = (zero & gone[a]) ? 0.0 : 100.0 * (a + 1) + b;
+    }
+    return k;
+}
+
+/* rs_track_slot_convert between every pair of layouts: the fields both keep carried
+ * over, those only the target keeps zero. */
+static void test_slot_convert(void)
+{
+    const unsigned masks[] = {0u, RS_DROP_SLIP, RS_DROP_STRESS | RS_DROP_ENERGY,
+                              RS_DROP_STRESS | RS_DROP_ENERGY | RS_DROP_SLIP,
+                              RS_DROP_ENERGY | RS_DROP_SLIP};
+    int ok = 1, pairs = 0;
+    for (int ns = 0; ns <= 3; ns++)
+        for (int a = 0; a < 5; a++)
+            for (int b = 0; b < 5; b++) {
+                const rs_tracker to = {4, ns, 3, 0.0, masks[b]};
+                double src[32], want[32], got[32];
+                const int ls = tagged_slot(masks[a], ns, src, 0);
+                /* the target's fields that the source lacks are zero */
+                const int lw = tagged_slot(masks[b], ns, want, masks[a] & ~masks[b]);
+                rs_tracker from = to;
+                from.drop = masks[a];
+                ok &= ls == rs_track_slot_size(&from) && lw == rs_track_slot_size(&to);
+                for (int k = 0; k < 32; k++)
+                    got[k] = -1.0;
+                rs_track_slot_convert(&to, masks[a], src, got);
+                for (int k = 0; k < lw; k++)
+                    ok &= got[k] == want[k];
+                ok &= got[lw] == -1.0; /* nothing past the slot */
+                pairs++;
+            }
+    ENSURE(pairs == 100);
+    ENSURE(ok);
+}
+
 int main(void)
 {
     RS_RUN(test_sizes);
+    RS_RUN(test_slot_convert);
     RS_RUN(test_dropped_fields);
     RS_RUN(test_coordmst_dropped);
     RS_RUN(test_law_sees_no_coordmst);
