@@ -49,7 +49,7 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       capacity_wall_(0.0), heat_wall_(0.0), heat_step_(0.0), fix_temp_(NULL),
       fix_heatflux_(NULL), fix_heatcap_(NULL), conduction_(false),
       carea_mode_(CAREA_OVERLAP), carea_const_(0.0), carea_given_(false),
-      conduct_ready_(false), th_cond_(NULL), deltan_ratio_(NULL), store_force_(false),
+      conduct_ready_(false), th_cond_(NULL), deltan_ratio_(NULL), store_force_(false), peratom_(false),
       wallforce_clear_(true), wallforce_(NULL), vtk_every_(0), vtk_mesh_ok_(false),
       wear_(false), facets_(false), stress_step_(false), nfacet_(0), step_checked_(false),
       row_(NULL), hist_(NULL), nmax_(0), rebuild_(true), lookahead_(0.0), rglob_(0.0),
@@ -106,8 +106,8 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
         if (d != 13)
             extlist[d] = 0; // wall temperature, the wall's displacement: intensive
 
-    peratom_flag = 1;
-    size_peratom_cols = 6;
+    peratom_flag = peratom_ ? 1 : 0;
+    size_peratom_cols = peratom_ ? 6 : 0;
     peratom_freq = 1;
     array_atom = NULL;
 
@@ -653,14 +653,15 @@ void FixWallRigid::compute(bool setup_call)
      * wall's motion asks for. Between the two, indices and candidates are fixed. */
     bool refresh = rebuild_ || setup_call;
     if (refresh) {
-        const int nlocal = atom->nlocal;
+        const int nlocal = array_atom ? atom->nlocal : 0;
         for (int i = 0; i < nlocal; i++)
             for (int c = 0; c < 6; c++)
                 array_atom[i][c] = 0.0;
     } else if (wall_moved_beyond_skin()) {
-        for (int i : cand_)
-            for (int c = 0; c < 6; c++)
-                array_atom[i][c] = 0.0;
+        if (array_atom)
+            for (int i : cand_)
+                for (int c = 0; c < 6; c++)
+                    array_atom[i][c] = 0.0;
         refresh = true;
     }
     if (refresh) {

@@ -301,6 +301,9 @@ class FixWallRigid : public Fix
      * store_force into W: in force_W, shared by the wall/rigid fixes that name it (the
      * meshes of one wall/gran); the first of them in the fix list clears it each step */
     bool store_force_;
+    /// `peratom yes`: the per-atom array (rdisp and stress of each atom's deepest contact)
+    /// is kept, array_atom; otherwise array_atom is NULL and nothing writes it.
+    bool peratom_;
     std::string wallforce_id_;
     bool wallforce_clear_;
     double **wallforce_; // its array this step, or NULL

@@ -112,7 +112,7 @@ bool FixWallRigid::is_keyword(const char *s) const
         "statev",      "tracking",     "area",   "contacts", "move",
         "rotate",      "temperature",  "predef", "vtk",      "curvature",
         "pnewdt",      "surface_vel",  "wear",   "servo",    "conduction",
-        "store_force", "contact_area", "spin"};
+        "store_force", "contact_area", "spin",   "peratom"};
     for (const char *k : kw)
         if (std::strcmp(s, k) == 0)
             return true;
@@ -320,6 +320,16 @@ void FixWallRigid::parse(int narg, char **arg)
                      arg[iarg + 1] + "'");
             }
             iarg += 2;
+        } else if (std::strcmp(kw, "peratom") == 0) {
+            need(1, "'yes' or 'no'");
+            if (std::strcmp(arg[iarg + 1], "yes") == 0)
+                peratom_ = true;
+            else if (std::strcmp(arg[iarg + 1], "no") == 0)
+                peratom_ = false;
+            else
+                fail(std::string("keyword 'peratom' expects 'yes' or 'no', got '") +
+                     arg[iarg + 1] + "'");
+            iarg += 2;
         } else if (std::strcmp(kw, "predef") == 0) {
             iarg++;
             while (iarg < narg && !is_keyword(arg[iarg])) {
@@ -362,7 +372,8 @@ void FixWallRigid::parse(int narg, char **arg)
                  "'; expected surface, name, law, props, type, statev, tracking, area, "
                  "contacts, move, rotate, spin, servo, surface_vel, temperature, "
                  "conduction, "
-                 "contact_area, predef, vtk, curvature, wear, store_force or pnewdt");
+                 "contact_area, predef, vtk, curvature, wear, store_force, peratom or "
+                 "pnewdt");
         }
     }
 

@@ -69,7 +69,8 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         __builtin_prefetch(d, 0, 3);
         __builtin_prefetch(h, 0, 3);
         __builtin_prefetch(h + 8, 0, 3);
-        __builtin_prefetch(out_rows[i], 1, 3);
+        if (out_rows)
+            __builtin_prefetch(out_rows[i], 1, 3);
     }
     if (setup_call) {
         saved_rows_.resize((size_t)n * as);
@@ -173,7 +174,7 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     if (ne > cb_.cap) // not reached: at most capacity contacts per particle
         fail_one("internal: block has more contacts than its scratch");
     if (ne == 0) {
-        for (int k = 0; k < n; k++)
+        for (int k = 0; array_atom && k < n; k++)
             for (int c = 0; c < 6; c++)
                 array_atom[idx[k]][c] = 0.0;
         if (setup_call)
@@ -268,13 +269,17 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     double origin[3];
     rs_pose_to_global(&motion_.pose, surf_.a, origin);
     rs_load_rows rows = load_rows(idx, setup_call);
-    rows.deepest = ident_ ? NULL : deepest_.data(); /* else contact k is particle k's */
+    /* the deepest contact of each particle, for the per-atom output (ident_: contact k is
+     * particle k's) */
+    rows.deepest = ident_ || !array_atom ? NULL : deepest_.data();
     rs_wall_load wl;
     rs_cblock_add_loads(&cb_, &tout_, &pblk_, origin, &rows, &wl);
     add_wall_load(wl, setup_call);
     /* Per-atom output: the deepest live contact of each particle with this wall, zeros
      * for a particle without one. */
-    if (ident_)
+    if (!array_atom)
+        ;
+    else if (ident_)
         put_outputs(idx, n, nd, NULL, leaving_.data());
     else
         put_outputs(idx, n, nd, deepest_.data(), NULL);

@@ -102,7 +102,8 @@ void FixWallRigid::liggghts_block(const int *idx, int n, int ne, bool setup_call
     load_area_ = area_w_.data();
 
     /* Per-atom output: the deepest contact that applied a force, zeros otherwise. */
-    put_outputs(idx, n, nd, deepest_.data(), NULL);
+    if (array_atom)
+        put_outputs(idx, n, nd, deepest_.data(), NULL);
 }
 
 /* The default tracking thickness of law liggghts: LIGGGHTS calls its model for contacts

@@ -216,7 +216,8 @@ void FixWallRigid::grow_arrays(int nmax)
     if (nmax <= nmax_)
         return;
     memory->grow(row_, nmax, row_size(), "wall/rigid:history");
-    memory->grow(array_atom, nmax, 6, "wall/rigid:array_atom");
+    if (peratom_)
+        memory->grow(array_atom, nmax, 6, "wall/rigid:array_atom");
     /* The slots move: slot j of the old nmax_ atoms to the start of block j. */
     const size_t hs = slot_size(), oldblk = (size_t)nmax_ * hs, blk = (size_t)nmax * hs;
     double *h = (double *)memory->smalloc((bigint)(capacity_ * blk * sizeof(double)),
@@ -230,7 +231,7 @@ void FixWallRigid::grow_arrays(int nmax)
     nmax_ = nmax;
     for (int i = old; i < nmax; i++) {
         clear_row(i);
-        for (int c = 0; c < 6; c++)
+        for (int c = 0; array_atom && c < 6; c++)
             array_atom[i][c] = 0.0;
     }
 }
@@ -324,14 +325,14 @@ void FixWallRigid::copy_arrays(int i, int j, int delflag)
     std::memcpy(row_[j], row_[i], sizeof(double) * row_size());
     for (int s = 0; s < capacity_; s++)
         std::memcpy(slot0(j) + s * stride, slot0(i) + s * stride, sizeof(double) * hs);
-    for (int c = 0; c < 6; c++)
+    for (int c = 0; array_atom && c < 6; c++)
         array_atom[j][c] = array_atom[i][c];
 }
 
 void FixWallRigid::set_arrays(int i)
 {
     clear_row(i);
-    for (int c = 0; c < 6; c++)
+    for (int c = 0; array_atom && c < 6; c++)
         array_atom[i][c] = 0.0;
 }
 
@@ -350,7 +351,7 @@ int FixWallRigid::unpack_exchange(int nlocal, double *buf)
     if (cin > capacity_ && !grow_capacity(cin))
         fail_one("an atom arrived with more contact slots than this rank can hold");
     const int n = unpack_sized(nlocal, buf);
-    for (int c = 0; c < 6; c++)
+    for (int c = 0; array_atom && c < 6; c++)
         array_atom[nlocal][c] = 0.0;
     return n;
 }
@@ -430,5 +431,5 @@ int FixWallRigid::maxsize_restart()
 
 double FixWallRigid::memory_usage()
 {
-    return (double)nmax_ * (atom_size() + 6) * sizeof(double);
+    return (double)nmax_ * (atom_size() + (peratom_ ? 6 : 0)) * sizeof(double);
 }

@@ -41,7 +41,8 @@ def case(s, ap, name, surf_text, surf_name, x0, v, steps, k1, k2, normal_at):
     box = (-0.08, 0.08, -0.08, 0.08, -0.08, 0.08)
     deck = L.header(box, DT, young=(YP, YW), poisson=(NUP, NUW), e=E, mu=MU)
     deck += L.sphere(1, x0, R, RHO)
-    deck += ("fix w all wall/rigid surface %s.inp name %s law hertz type 2 curvature yes\n"
+    deck += ("fix w all wall/rigid surface %s.inp name %s law hertz type 2 curvature yes "
+             "peratom yes\n"
              % (name, surf_name))
     deck += "fix mv all move linear %.17g %.17g %.17g\n" % tuple(v)
     deck += L.dump_lines("d", 1, name + ".dump", cols="id mass x y z f_w[1] f_w[4] f_w[5] f_w[6]")

@@ -11,6 +11,10 @@
   g <= D, and no contact (0) when g > D. Without the keyword the thickness is the law's
   reach: 0 for hertz and linear_softening, the neighbor skin for bonded_interface.
 - vtk FILE N with move linear V: the surface written at step s lies at z = V s dt.
+- peratom yes|no: with yes the per-atom array holds the contact's rdisp1 (= h, the
+  overlap) and stress1 (hertz: 4/3 Y* sqrt(R h) h, unit area); without it (the default)
+  LIGGGHTS refuses a dump that reads the array, and the wall's force is the same, bit for
+  bit; a value other than yes or no is an error naming the keyword.
 Spheres have no integrator, so positions are exact.
 """
 import math
@@ -37,6 +41,17 @@ def area_case(s, tag, area, k, h):
     return L.read_table(s.path(tag + ".txt"))[-1][0]
 
 
+def peratom_case(s, tag, peratom, h):
+    """A sphere pressed into the plane by h with hertz, held there 2 steps: the wall's
+    force f_w[3] and, with peratom yes, the dump of rdisp1 and stress1."""
+    d = L.header(BOX, DT) + L.sphere(1, (0.0, 0.0, R - h), R, RHO)
+    d += "fix w all wall/rigid surface plane.inp law hertz type 2%s\n" % peratom
+    d += print_fix("f_w[3]", tag + ".txt")
+    if "yes" in peratom:
+        d += L.dump_lines("d", 1, tag + ".dump", "id f_w[1] f_w[4]")
+    return d + "run 2\n"
+
+
 def drum_case(s, tag, curvature, rc, delta):
     d = L.header(BOX, DT) + L.sphere(1, (rc - R + delta, 0.0, 0.0), R, RHO)
     d += "fix w all wall/rigid surface drum.inp law hertz type 2 curvature %s\n" % curvature
@@ -47,7 +62,7 @@ def drum_case(s, tag, curvature, rc, delta):
 
 def tracking_case(s, tag, tracking, gap, law="hertz type 2"):
     d = L.header(BOX, DT) + L.sphere(1, (0.0, 0.0, R + gap), R, RHO)
-    d += "fix w all wall/rigid surface plane.inp law %s%s\n" % (
+    d += "fix w all wall/rigid surface plane.inp law %s%s peratom yes\n" % (
         law, "" if tracking is None else " tracking %r" % tracking)
     d += L.dump_lines("d", 1, tag + ".dump", "id f_w[1]") + "run 2\n"
     s.run(tag, d)
@@ -87,6 +102,33 @@ def body(s):
         r1 = tracking_case(s, "tracking_default_" + law.split()[0], None, gap, law)
         ck.check("default tracking, law %s, gap %g: per-atom rdisp1 = %g"
                  % (law.split()[0], gap, expect), abs(r1 - expect) <= 1e-15, "%.17g" % r1)
+
+    h = 1.0e-5
+    ystar = 1.0 / ((1 - NUP ** 2) / YP + (1 - NUW ** 2) / YW)
+    s.run("peratom_yes", peratom_case(s, "peratom_yes", " peratom yes", h))
+    s.run("peratom_no", peratom_case(s, "peratom_no", "", h))
+    fy = L.read_table(s.path("peratom_yes.txt"))[-1][0]
+    fn = L.read_table(s.path("peratom_no.txt"))[-1][0]
+    ck.check("peratom: the wall's force is the same with and without it", fy == fn,
+             "%.17g vs %.17g" % (fy, fn))
+    row = L.read_dump(s.path("peratom_yes.dump"))[-1][1][1]
+    s1 = 4.0 / 3.0 * ystar * math.sqrt(R * h) * h
+    ck.check("peratom yes: rdisp1 = h and stress1 = 4/3 Y* sqrt(R h) h",
+             L.rel_diff(row["f_w[1]"], h, 0) <= 1e-9 and
+             L.rel_diff(row["f_w[4]"], s1, 0) <= 1e-9,
+             "rdisp1 %.17g, stress1 %.17g vs %.17g" % (row["f_w[1]"], row["f_w[4]"], s1))
+    d = peratom_case(s, "peratom_dump", "", h).replace("run 2\n", "")
+    d += L.dump_lines("d", 1, "peratom_dump.dump", "id f_w[1]") + "run 2\n"
+    rc_, out = s.run("peratom_dump", d, expect_ok=False)
+    err = L.error_lines(out)
+    ck.check("peratom no: LIGGGHTS refuses a dump of the per-atom array",
+             rc_ != 0 and any("per-atom" in l for l in err), repr(err[-1:]))
+    rc_, out = s.run("peratom_bad", peratom_case(s, "peratom_bad", " peratom maybe", h),
+                     expect_ok=False)
+    err = L.error_lines(out)
+    ck.check("peratom maybe: an error naming the keyword and its values",
+             rc_ != 0 and any("'peratom' expects 'yes' or 'no', got 'maybe'" in l
+                              for l in err), repr(err[-1:]))
 
     v, nsteps, every = 0.1, 20, 10
     d = L.header(BOX, DT) + L.sphere(1, (0.0, 0.0, 0.02), R, RHO)

@@ -31,7 +31,7 @@ def deck():
         d += "set atom %d property/atom fa %r\n" % (i + 1, FA0[i])
         d += "set atom %d property/atom fb %r\n" % (i + 1, FB[i])
     d += ("fix w all wall/rigid surface plane.inp law user ./libpredef.so predef_echo "
-          "statev 1 predef fa fb type 2\n")
+          "statev 1 predef fa fb type 2 peratom yes\n")
     d += "dump d all custom 10 first.dump id f_w[4] f_w[5] f_w[6]\n"
     d += "dump_modify d format \"%d %.17g %.17g %.17g\"\n"
     d += "run 20\nundump d\n"

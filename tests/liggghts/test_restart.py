@@ -42,7 +42,8 @@ import struct
 import liglib as L
 
 R, RHO, DT, RC, N = 0.004, 2500.0, 2.0e-5, 0.05, 3000
-WALL = "fix w all wall/rigid surface drum.inp law hertz type 2 rotate origin 0 0 0 axis 0 0 1 omega 6"
+WALL = ("fix w all wall/rigid surface drum.inp law hertz type 2 peratom yes rotate origin 0 0 0 "
+        "axis 0 0 1 omega 6")
 
 
 def setup_lines(wall):

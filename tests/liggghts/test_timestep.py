@@ -155,7 +155,7 @@ def routine_checks(s):
 
     # KSTEP, KINC and TIME: spheres held in place (no integration), runs of 3 and 2
     dt = 1.0e-6
-    deck = touching(dt, "law fric %s normal linear_softening props 1e5 type 2"
+    deck = touching(dt, "law fric %s normal linear_softening props 1e5 type 2 peratom yes"
                     % s.path("fric_steps.f"), "", integrate=False)
     deck += L.dump_lines("d", 1, "steps.dump", cols="id f_w[5] f_w[6]")
     deck += "run 3\nrun 2\n"

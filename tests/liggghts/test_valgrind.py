@@ -98,7 +98,7 @@ def drum_deck(restart_from=None):
             d += L.sphere(k + 1, (rr * math.cos(phi), rr * math.sin(phi), z), R, RHO,
                           v=(0.1, 0, 0), omega=(0, 0, 5))
     d += "fix grav all gravity 9.81 vector 0 -1 0\n"
-    d += ("fix w all wall/rigid surface drum.inp law hertz type 2 "
+    d += ("fix w all wall/rigid surface drum.inp law hertz type 2 peratom yes "
           "rotate origin 0 0 0 axis 0 0 1 omega 3\n")
     d += "fix integr all nve/sphere\n"
     d += "variable fy equal f_w[2]\nthermo_style custom step atoms v_fy\nthermo 100\n"
