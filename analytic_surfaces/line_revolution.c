@@ -22,7 +22,7 @@ int rs_line_revolution(const rs_surface *s)
 /* Spheres 0 .. m-1 into the columns of c at the same indices: each sphere's
  * profile-plane point, the LINE's face contact and its mapping to 3D in one loop (the
  * steps' per-point bodies, revolution_point.h), which vectorises. */
-RS_MULTIVERSION static void
+RS_INLINE void
 faces_run(const rs_pcache *pc, const double *Fp, int m, const double *restrict x,
           const double *restrict y, const double *restrict z, const double *restrict radius,
           double gap_max, double rmax, double *restrict xm0, double *restrict xm1,
@@ -30,7 +30,7 @@ faces_run(const rs_pcache *pc, const double *Fp, int m, const double *restrict x
           double *restrict a0, double *restrict a1, double *restrict a2, double *restrict b0,
           double *restrict b1, double *restrict b2, double *restrict dist, double *restrict k0,
           double *restrict k1, double *restrict share, int *restrict point,
-          int *restrict feature, int *restrict face)
+          int *restrict feature, int *restrict face, const int all)
 {
     const int feat = RS_FEATURE(RS_FEAT_FACE, 0);
     const double axis_tol = 1e-12 * pc->size;
@@ -45,17 +45,45 @@ faces_run(const rs_pcache *pc, const double *Fp, int m, const double *restrict x
         rs_line_face1(&s, two, -rmax, u, v, dh, &hx, &hy, &nx, &ny, &dist[k], &what);
         point[k] = k;
         feature[k] = feat;
-        k0[k] = 0.0;
-        share[k] = 1.0;
+        if (all) {
+            k0[k] = 0.0;
+            share[k] = 1.0;
+        }
         /* a point within reach of the axis also takes the ring sectors (ring_sectors) */
         face[k] = what > 0.0 && !(u < dh);
-        double X[3], N[3], A[3], B[3];
-        rs_revolution_map1(F, axis_tol, cx, cy, hx, hy, nx, ny, X, N, A, B, &k1[k]);
-        xm0[k] = X[0], xm1[k] = X[1], xm2[k] = X[2];
+        double X[3], N[3], A[3], B[3], K;
+        rs_revolution_map1(F, axis_tol, cx, cy, hx, hy, nx, ny, X, N, A, B, &K);
+        if (all) {
+            xm0[k] = X[0], xm1[k] = X[1], xm2[k] = X[2];
+            k1[k] = K;
+        }
         n0[k] = N[0], n1[k] = N[1], n2[k] = N[2];
         a0[k] = A[0], a1[k] = A[1], a2[k] = A[2];
         b0[k] = B[0], b1[k] = B[1], b2[k] = B[2];
     }
+}
+
+/* faces_run with every column, or (all = 0) without the master points, curvatures and
+ * shares, whose computations the compiler then leaves out. */
+RS_MULTIVERSION static void faces_all(const rs_pcache *pc, const double *F, int m,
+                                      const double *x, const double *y, const double *z,
+                                      const double *radius, double gap_max, double rmax,
+                                      rs_contacts *c, int *face)
+{
+    faces_run(pc, F, m, x, y, z, radius, gap_max, rmax, c->xm[0], c->xm[1], c->xm[2],
+              c->nrm[0], c->nrm[1], c->nrm[2], c->t1[0], c->t1[1], c->t1[2], c->t2[0],
+              c->t2[1], c->t2[2], c->dist, c->curv[0], c->curv[1], c->share, c->point,
+              c->feature, face, 1);
+}
+
+RS_MULTIVERSION static void faces_frames(const rs_pcache *pc, const double *F, int m,
+                                         const double *x, const double *y, const double *z,
+                                         const double *radius, double gap_max, double rmax,
+                                         rs_contacts *c, int *face)
+{
+    faces_run(pc, F, m, x, y, z, radius, gap_max, rmax, NULL, NULL, NULL, c->nrm[0],
+              c->nrm[1], c->nrm[2], c->t1[0], c->t1[1], c->t1[2], c->t2[0], c->t2[1],
+              c->t2[2], c->dist, NULL, NULL, NULL, c->point, c->feature, face, 0);
 }
 
 void rs_line_revolution_faces(const rs_surface *s, const rs_pose *pose, int m,
@@ -68,10 +96,10 @@ void rs_line_revolution_faces(const rs_surface *s, const rs_pose *pose, int m,
     double rmax = 0.0;
     for (int j = 0; j < m; j++)
         rmax = radius[j] > rmax ? radius[j] : rmax;
-    faces_run(s->impl, F, m, x, y, z, radius, gap_max, rmax, c->xm[0], c->xm[1], c->xm[2],
-              c->nrm[0], c->nrm[1], c->nrm[2], c->t1[0], c->t1[1], c->t1[2], c->t2[0],
-              c->t2[1], c->t2[2], c->dist, c->curv[0], c->curv[1], c->share, c->point,
-              c->feature, face);
+    if (c->xm[0])
+        faces_all(s->impl, F, m, x, y, z, radius, gap_max, rmax, c, face);
+    else
+        faces_frames(s->impl, F, m, x, y, z, radius, gap_max, rmax, c, face);
     c->n = m;
     c->shared = 0;
     c->witness = 0;

@@ -41,14 +41,15 @@ void FixWallRigid::line_block(const int *idx, int n)
         pm[M];
     double *pd[M], *ph[M];
     int pid[M], pty[M], row[M], face[M];
-    double cxm[3][M], cn[3][M], ct1[3][M], ct2[3][M], cd[M], ccv[2][M], csh[M];
+    /* the frames, distances and features: what the one pass reads (no master points,
+     * curvatures or shares: rs_line_revolution_faces leaves them out) */
+    double cn[3][M], ct1[3][M], ct2[3][M], cd[M];
     int cpt[M], cft[M];
     rs_contacts c = rs_contacts();
     c.cap = M;
     for (int d = 0; d < 3; d++)
-        c.xm[d] = cxm[d], c.nrm[d] = cn[d], c.t1[d] = ct1[d], c.t2[d] = ct2[d];
-    c.dist = cd, c.curv[0] = ccv[0], c.curv[1] = ccv[1], c.share = csh;
-    c.point = cpt, c.feature = cft;
+        c.nrm[d] = cn[d], c.t1[d] = ct1[d], c.t2[d] = ct2[d];
+    c.dist = cd, c.point = cpt, c.feature = cft;
     rest_.clear();
     for (int b0 = 0; b0 < n; b0 += M) {
         const int m = std::min(n - b0, (int)M);
@@ -83,12 +84,9 @@ void FixWallRigid::line_block(const int *idx, int n)
                 pwx[nu] = pwx[j], pwy[nu] = pwy[j], pwz[nu] = pwz[j];
                 pr[nu] = pr[j], pm[nu] = pm[j], pid[nu] = pid[j], pty[nu] = pty[j];
                 pd[nu] = pd[j], ph[nu] = ph[j], row[nu] = row[j];
-                for (int d = 0; d < 3; d++) {
-                    cxm[d][nu] = cxm[d][j], cn[d][nu] = cn[d][j];
-                    ct1[d][nu] = ct1[d][j], ct2[d][nu] = ct2[d][j];
-                }
-                cd[nu] = cd[j], ccv[0][nu] = ccv[0][j], ccv[1][nu] = ccv[1][j];
-                csh[nu] = csh[j], cft[nu] = cft[j];
+                for (int d = 0; d < 3; d++)
+                    cn[d][nu] = cn[d][j], ct1[d][nu] = ct1[d][j], ct2[d][nu] = ct2[d][j];
+                cd[nu] = cd[j], cft[nu] = cft[j];
             }
             cpt[nu] = nu;
             nu++;

@@ -62,7 +62,7 @@ void rs_frame_orient(rs_frame_convention conv, rs_contacts *c, int k0, int k1)
                 t2[k] = d1;
             }
         }
-        for (int k = k0; k < k1; k++) {
+        for (int k = k0; c->curv[0] && k < k1; k++) {
             const double k1v = c->curv[0][k];
             c->curv[0][k] = c->curv[1][k];
             c->curv[1][k] = k1v;

@@ -24,7 +24,9 @@ int rs_line_revolution(const rs_surface *s);
 /// sphere whose contacts that query decides otherwise: none within reach, a vertex's, one
 /// deeper than that dist_min, or the ring sectors of a sphere within reach of the axis.
 /// c's columns (xm, nrm, t1, t2, dist, curv, share, point, feature) must hold m; c->n is
-/// set to m, c->shared and c->witness to 0.
+/// set to m, c->shared and c->witness to 0. With c->xm, c->curv and c->share NULL the
+/// master points, curvatures and shares are left out (the frame, distance, point and
+/// feature are all the one pass of rs_track_hertz_usual reads).
 void rs_line_revolution_faces(const rs_surface *s, const rs_pose *pose, int m,
                               const double *x, const double *y, const double *z,
                               const double *radius, double gap_max, rs_contacts *c,

@@ -459,7 +459,8 @@ int rs_surface_triangulate(const rs_surface *s, double span, int nhoop, rs_trime
 void rs_trimesh_free(rs_trimesh *m);
 
 /// Turns contacts [k0, k1) of c from the principal frame a kind's closest operation
-/// writes into the frame convention conv (t1, t2 and the curvatures along them).
+/// writes into the frame convention conv (t1, t2 and the curvatures along them; a list
+/// without curvatures, c->curv[0] NULL, only its frames).
 void rs_frame_orient(rs_frame_convention conv, rs_contacts *c, int k0, int k1);
 
 /// The FACETED tangents of unit normal n: t1 = global x on the tangent plane (global z

@@ -395,14 +395,20 @@ static void test_query_compact_form_is_stored_form(void)
 /* rs_line_revolution_faces on the points of q, in runs of 32 as the fix calls it: every
  * sphere it flags holds exactly one contact in the block query's list a (q's dist_min is
  * below minus the largest radius), and that contact is its own, value for value; and it
- * flags a good part of the points. */
+ * flags a good part of the points. Called on a list without master points, curvatures
+ * and shares (NULL), it gives the same flags, frames, distances, points and features. */
 static void check_line_faces(const rs_surface *s, const rs_query *q, const rs_contacts *a)
 {
     ENSURE(rs_line_revolution(s));
     enum { RUN = 32 };
-    rs_contacts f = {0};
+    rs_contacts f = {0}, g = {0};
     ENSURE(rs_contacts_reserve(&f, RUN, NULL) == 0);
-    int face[RUN], nface = 0, same = 1;
+    ENSURE(rs_contacts_reserve(&g, RUN, NULL) == 0);
+    double *keep[6] = {g.xm[0], g.xm[1], g.xm[2], g.curv[0], g.curv[1], g.share};
+    for (int d = 0; d < 3; d++)
+        g.xm[d] = NULL;
+    g.curv[0] = g.curv[1] = g.share = NULL;
+    int face[RUN], gface[RUN], nface = 0, same = 1, lean = 1;
     for (int i0 = 0; i0 < q->n; i0 += RUN) {
         const int m = q->n - i0 < RUN ? q->n - i0 : RUN;
         rs_line_revolution_faces(s, q->pose, m, q->slave.x + i0, q->slave.y + i0,
@@ -410,6 +416,18 @@ static void check_line_faces(const rs_surface *s, const rs_query *q, const rs_co
                                  face);
         ENSURE(f.n == m);
         rs_frame_orient(s->ops->frame, &f, 0, m);
+        rs_line_revolution_faces(s, q->pose, m, q->slave.x + i0, q->slave.y + i0,
+                                 q->slave.z + i0, q->slave.radius + i0, q->gap_max, &g,
+                                 gface);
+        ENSURE(g.n == m);
+        rs_frame_orient(s->ops->frame, &g, 0, m);
+        for (int j = 0; j < m; j++) {
+            lean &= gface[j] == face[j] && g.point[j] == f.point[j] &&
+                    g.feature[j] == f.feature[j] && g.dist[j] == f.dist[j];
+            for (int d = 0; d < 3; d++)
+                lean &= g.nrm[d][j] == f.nrm[d][j] && g.t1[d][j] == f.t1[d][j] &&
+                        g.t2[d][j] == f.t2[d][j];
+        }
         for (int j = 0; j < m; j++) {
             if (!face[j])
                 continue;
@@ -431,8 +449,13 @@ static void check_line_faces(const rs_surface *s, const rs_query *q, const rs_co
         }
     }
     ENSURE(same);
+    ENSURE(lean);
     ENSURE(nface > q->n / 8);
     rs_contacts_free(&f);
+    for (int d = 0; d < 3; d++)
+        g.xm[d] = keep[d];
+    g.curv[0] = keep[3], g.curv[1] = keep[4], g.share = keep[5];
+    rs_contacts_free(&g);
 }
 
 /* A REVOLUTION whose profile is one LINE (a cylinder's mantle, a cone) answers through
