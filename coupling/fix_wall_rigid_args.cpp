@@ -136,6 +136,17 @@ void FixWallRigid::parse(int narg, char **arg)
             if (iarg + n >= narg)
                 fail(std::string("keyword '") + kw + "' expects " + what);
         };
+        /* a keyword of two values: true for `on`, false for `off`, else an error */
+        auto either = [&](const char *on, const char *off) {
+            const std::string want = std::string("'") + on + "' or '" + off + "'";
+            need(1, want.c_str());
+            const char *val = arg[iarg + 1];
+            if (std::strcmp(val, on) != 0 && std::strcmp(val, off) != 0)
+                fail(std::string("keyword '") + kw + "' expects " + want + ", got '" + val +
+                     "'");
+            iarg += 2;
+            return std::strcmp(val, on) == 0;
+        };
         if (std::strcmp(kw, "surface") == 0) {
             need(1, "a surface file name or 'inline'");
             if (have_surface)
@@ -239,15 +250,7 @@ void FixWallRigid::parse(int narg, char **arg)
                      "or 'spin'");
             iarg = parse_motion(narg, arg, iarg);
         } else if (std::strcmp(kw, "wear") == 0) {
-            need(1, "'finnie' or 'off'");
-            if (std::strcmp(arg[iarg + 1], "finnie") == 0)
-                wear_ = true;
-            else if (std::strcmp(arg[iarg + 1], "off") == 0)
-                wear_ = false;
-            else
-                fail(std::string("keyword 'wear' expects 'finnie' or 'off', got '") +
-                     arg[iarg + 1] + "'");
-            iarg += 2;
+            wear_ = either("finnie", "off");
         } else if (std::strcmp(kw, "surface_vel") == 0) {
             need(3, "a surface velocity VX VY VZ");
             double u[3];
@@ -321,15 +324,7 @@ void FixWallRigid::parse(int narg, char **arg)
             }
             iarg += 2;
         } else if (std::strcmp(kw, "peratom") == 0) {
-            need(1, "'yes' or 'no'");
-            if (std::strcmp(arg[iarg + 1], "yes") == 0)
-                peratom_ = true;
-            else if (std::strcmp(arg[iarg + 1], "no") == 0)
-                peratom_ = false;
-            else
-                fail(std::string("keyword 'peratom' expects 'yes' or 'no', got '") +
-                     arg[iarg + 1] + "'");
-            iarg += 2;
+            peratom_ = either("yes", "no");
         } else if (std::strcmp(kw, "predef") == 0) {
             iarg++;
             while (iarg < narg && !is_keyword(arg[iarg])) {
@@ -347,26 +342,10 @@ void FixWallRigid::parse(int narg, char **arg)
                      arg[iarg + 2]);
             iarg += 3;
         } else if (std::strcmp(kw, "curvature") == 0) {
-            need(1, "'yes' or 'no'");
-            if (std::strcmp(arg[iarg + 1], "yes") == 0)
-                curvature = true;
-            else if (std::strcmp(arg[iarg + 1], "no") == 0)
-                curvature = false;
-            else
-                fail(std::string("keyword 'curvature' expects 'yes' or 'no', got '") +
-                     arg[iarg + 1] + "'");
+            curvature = either("yes", "no");
             curvature_given = true;
-            iarg += 2;
         } else if (std::strcmp(kw, "pnewdt") == 0) {
-            need(1, "'warn' or 'stop'");
-            if (std::strcmp(arg[iarg + 1], "warn") == 0)
-                pnewdt_stop_ = false;
-            else if (std::strcmp(arg[iarg + 1], "stop") == 0)
-                pnewdt_stop_ = true;
-            else
-                fail(std::string("keyword 'pnewdt' expects 'warn' or 'stop', got '") +
-                     arg[iarg + 1] + "'");
-            iarg += 2;
+            pnewdt_stop_ = !either("warn", "stop");
         } else {
             fail(std::string("unknown keyword '") + kw +
                  "'; expected surface, name, law, props, type, statev, tracking, area, "
