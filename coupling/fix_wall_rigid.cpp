@@ -25,6 +25,7 @@
 #include "variable.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -126,7 +127,7 @@ FixWallRigid::~FixWallRigid()
     atom->delete_callback(id, 0);
     atom->delete_callback(id, 1);
     memory->destroy(row_);
-    memory->sfree(hist_);
+    std::free(hist_);
     memory->destroy(array_atom);
     delete[] extlist;
     extlist = NULL;

@@ -196,6 +196,7 @@ class FixWallRigid : public Fix
     {
         return hist_ + (size_t)i * slot_size();
     }
+    double *alloc_slots(size_t n);
     void clear_row(int i);
     void pack_atom(int i, double *buf) const;
     void unpack_atom(int i, const double *buf);

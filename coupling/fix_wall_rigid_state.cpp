@@ -9,6 +9,9 @@
 #include "memory.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <sys/mman.h>
 #include <cstring>
 #include <sstream>
 #include <vector>
@@ -211,21 +214,49 @@ void FixWallRigid::restart(char *buf)
     }
 }
 
+/* The per-atom history of a large run walks through megabytes each step: its blocks are
+ * offered to the kernel as huge pages (one TLB entry for 32768 hertz slots instead of one
+ * per 64), where the kernel gives them on request (transparent_hugepage madvise). */
+static const size_t kHugePage = (size_t)2 << 20;
+
+static void advise_huge(void *p, size_t bytes)
+{
+#ifdef MADV_HUGEPAGE
+    const uintptr_t page = 4096, a = ((uintptr_t)p + page - 1) & ~(page - 1),
+                    b = ((uintptr_t)p + bytes) & ~(page - 1);
+    if (bytes >= kHugePage && b > a)
+        madvise((void *)a, b - a, MADV_HUGEPAGE); /* a hint: its failure changes nothing */
+#else
+    (void)p, (void)bytes;
+#endif
+}
+
+/* Slot memory, on 2 MB boundaries when it is that large; freed with free(). */
+double *FixWallRigid::alloc_slots(size_t n)
+{
+    const size_t bytes = std::max(n, (size_t)1) * sizeof(double);
+    void *p = NULL;
+    if (posix_memalign(&p, bytes >= kHugePage ? kHugePage : 64, bytes) != 0)
+        fail_one("out of memory for the contact history slots");
+    advise_huge(p, bytes);
+    return static_cast<double *>(p);
+}
+
 void FixWallRigid::grow_arrays(int nmax)
 {
     if (nmax <= nmax_)
         return;
     memory->grow(row_, nmax, row_size(), "wall/rigid:history");
+    advise_huge(row_[0], (size_t)nmax * row_size() * sizeof(double));
     if (peratom_)
         memory->grow(array_atom, nmax, 6, "wall/rigid:array_atom");
     /* The slots move: slot j of the old nmax_ atoms to the start of block j. */
     const size_t hs = slot_size(), oldblk = (size_t)nmax_ * hs, blk = (size_t)nmax * hs;
-    double *h = (double *)memory->smalloc((bigint)(capacity_ * blk * sizeof(double)),
-                                          "wall/rigid:slots");
+    double *h = alloc_slots(capacity_ * blk);
     for (int j = 0; j < capacity_; j++)
         if (oldblk)
             std::memcpy(h + j * blk, hist_ + j * oldblk, sizeof(double) * oldblk);
-    memory->sfree(hist_);
+    std::free(hist_);
     hist_ = h;
     const int old = nmax_;
     nmax_ = nmax;
@@ -266,13 +297,12 @@ bool FixWallRigid::grow_capacity(int need)
     capacity_ = cap;
     tracker_.capacity = cap;
     memory->destroy(row_);
-    memory->sfree(hist_);
+    std::free(hist_);
     row_ = NULL;
     hist_ = NULL;
     memory->create(row_, std::max(nmax_, 1), row_size(), "wall/rigid:history");
-    hist_ = (double *)memory->smalloc(
-        (bigint)((size_t)capacity_ * std::max(nmax_, 1) * slot_size() * sizeof(double)),
-        "wall/rigid:slots");
+    advise_huge(row_[0], (size_t)std::max(nmax_, 1) * row_size() * sizeof(double));
+    hist_ = alloc_slots((size_t)capacity_ * std::max(nmax_, 1) * slot_size());
     for (int i = 0; i < nmax_; i++)
         unpack_sized(i, &keep[(size_t)i * old_as]);
     init_scratch();
