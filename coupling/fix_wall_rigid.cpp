@@ -25,9 +25,9 @@
 #include "variable.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <sstream>
 #include <sys/stat.h>
@@ -50,8 +50,8 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       capacity_wall_(0.0), heat_wall_(0.0), heat_step_(0.0), fix_temp_(NULL),
       fix_heatflux_(NULL), fix_heatcap_(NULL), conduction_(false),
       carea_mode_(CAREA_OVERLAP), carea_const_(0.0), carea_given_(false),
-      conduct_ready_(false), th_cond_(NULL), deltan_ratio_(NULL), store_force_(false), peratom_(false),
-      wallforce_clear_(true), wallforce_(NULL), vtk_every_(0), vtk_mesh_ok_(false),
+      conduct_ready_(false), th_cond_(NULL), deltan_ratio_(NULL), store_force_(false),
+      peratom_(false), wallforce_clear_(true), wallforce_(NULL), vtk_every_(0), vtk_mesh_ok_(false),
       wear_(false), facets_(false), stress_step_(false), nfacet_(0), step_checked_(false),
       row_(NULL), hist_(NULL), nmax_(0), rebuild_(true), lookahead_(0.0), rglob_(0.0),
       bounds_ok_(false), list_bounds_(false), se_now_(0.0), ncontact_(0), out_step_(-1),

@@ -277,11 +277,9 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     add_wall_load(wl, setup_call);
     /* Per-atom output: the deepest live contact of each particle with this wall, zeros
      * for a particle without one. */
-    if (!array_atom)
-        ;
-    else if (ident_)
+    if (array_atom && ident_)
         put_outputs(idx, n, nd, NULL, leaving_.data());
-    else
+    else if (array_atom)
         put_outputs(idx, n, nd, deepest_.data(), NULL);
 
     /* the facets' loads take each contact's area times its share */

@@ -11,9 +11,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
-#include <sys/mman.h>
 #include <cstring>
 #include <sstream>
+#include <sys/mman.h>
 #include <vector>
 
 using namespace LAMMPS_NS;
