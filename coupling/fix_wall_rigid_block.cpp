@@ -47,6 +47,9 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
     double *const *__restrict dirs = row_;
     double *const hist = hist_;
     const size_t ss = (size_t)slot_size();
+    /* the values of a slot the tracker's run gathers: n, t1, then slip and rdisp1 or the
+     * law's first values (track_run.h) */
+    const size_t head = std::min(ss, (size_t)9);
     double *const *__restrict out_rows = array_atom;
     double rmax = radius[idx[0]];
     for (int k = 0; k < n; k++) {
@@ -64,11 +67,12 @@ void FixWallRigid::process_block(const int *idx, int n, bool setup_call)
         qd[k] = d;
         qh[k] = h;
         rmax = std::max(rmax, R);
-        /* asked for now, read after the query: the directory and the slot's head by the
-         * tracker, the output row by the loads */
+        /* asked for now, read after the query: the directory and the slot's head (its
+         * first line and the line of its last value the tracker gathers) by the tracker,
+         * the output row by the loads */
         __builtin_prefetch(d, 0, 3);
         __builtin_prefetch(h, 0, 3);
-        __builtin_prefetch(h + 8, 0, 3);
+        __builtin_prefetch(h + head - 1, 0, 3);
         if (out_rows)
             __builtin_prefetch(out_rows[i], 1, 3);
     }
