@@ -2,6 +2,7 @@
  * operations, feature adjacency for history hand-over, bounds, spin axis and lifetime.
  * The closest features are in query.c and closest.c, the display triangulation in
  * triangulate.c. */
+#include "convex_internal.h"
 #include "profile.h"
 #include "surface_file.h"
 
@@ -127,13 +128,14 @@ void rs_analytic_free(rs_surface *s)
 }
 
 /* The analytic kinds search their profile at every query and have no facets: the
- * optional operations stay NULL. */
+ * optional operations stay NULL. A convex body meets them through the fixed point over
+ * their point query (src/convex_geometry/body_fixed_point.c). */
 #define ANALYTIC_OPS(kind, nd, conv, sx)                                                   \
     {                                                                                      \
         .name = kind, .ndir = nd, .frame = conv, .closest = rs_analytic_closest,           \
         .adjacent = analytic_adjacent, .bounds = analytic_bounds,                          \
         .spin_axis = analytic_spin_axis, .triangulate = rs_analytic_triangulate,           \
-        .free = rs_analytic_free, .syntax = sx                                             \
+        .free = rs_analytic_free, .syntax = sx, .body = rs_body_fixed_point                \
     }
 static const rs_surface_ops segments_ops =
     ANALYTIC_OPS("SEGMENTS", 2, RS_FRAME_TRAVEL, &rs_segments_syntax);

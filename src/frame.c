@@ -31,6 +31,29 @@ void rs_frame_faceted(const double n[3], double t1[3], double t2[3])
     faceted(n[0], n[1], n[2], t1, t2);
 }
 
+void rs_frame_orient_one(rs_frame_convention conv, const double n[3], double t1[3],
+                         double t2[3], double curv[2])
+{
+    switch (conv) {
+    case RS_FRAME_TRAVEL:
+        break;
+    case RS_FRAME_GENERATOR: { /* t1 = -d2, t2 = d1, curvatures swapped */
+        for (int d = 0; d < 3; d++) {
+            const double d1 = t1[d];
+            t1[d] = -t2[d];
+            t2[d] = d1;
+        }
+        const double k1 = curv[0];
+        curv[0] = curv[1];
+        curv[1] = k1;
+        break;
+    }
+    case RS_FRAME_GLOBAL_X:
+        faceted(n[0], n[1], n[2], t1, t2);
+        break;
+    }
+}
+
 /* faceted for n contacts: t1 = (a0, a1, a2), t2 = (b0, b1, b2) of n = (n0, n1, n2). */
 RS_INLINE void faceted_block(int n, const double *restrict n0, const double *restrict n1,
                              const double *restrict n2, double *restrict a0,

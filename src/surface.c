@@ -1,7 +1,9 @@
 /* Surface dispatch: the contact core reaches every surface kind through its table of
- * operations (rs_surface_ops), chosen when the surface was made. */
+ * operations (rs_surface_ops), chosen when the surface was made; a convex body through
+ * the kind's body operation, its contacts turned into the kind's frame convention. */
 #include "rigidsurf/surface.h"
 #include "rigidsurf/convex.h"
+
 #include <string.h>
 
 int rs_surface_ndir(const rs_surface *s)
@@ -36,6 +38,43 @@ static int query_spheres(const rs_surface *s, const rs_query *q, rs_contacts *ou
         if (out->witness)
             rc = sphere_witness(q, out, k0, err);
     }
+    return rc;
+}
+
+int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                             double gap_max, rs_body_contact *out, int cap, int *n,
+                             rs_error *err)
+{
+    if (!out || !n || cap < 1)
+        return rs_error_set(err, RS_ERR_ARG, "body contacts: NULL argument or cap < 1");
+    *n = 0;
+    if (!s || !s->ops || !s->ops->body)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "body contacts: no surface, or one whose kind takes no bodies");
+    rs_body_contacts l = {0, 0, NULL};
+    int rc = s->ops->body(s, pose, b, gap_max, 0, &l, err);
+    if (rc == RS_OK && l.n > cap)
+        rc = rs_error_set(err, RS_ERR_CAPACITY,
+                          "body contacts: %d contacts with '%s', room for %d", l.n, s->name,
+                          cap);
+    for (int k = 0; rc == RS_OK && k < l.n; k++) {
+        out[k] = l.c[k];
+        rs_frame_orient_one(s->ops->frame, out[k].normal, out[k].t1, out[k].t2,
+                            out[k].curv);
+    }
+    if (rc == RS_OK)
+        *n = l.n;
+    rs_body_contacts_free(&l);
+    return rc;
+}
+
+int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, int point,
+                  double radius, double gap_max, rs_contacts *c, rs_error *err)
+{
+    const int k0 = c ? c->n : 0;
+    const int rc = rs_body_manifold(s, pose, b, point, radius, gap_max, c, err);
+    if (rc == RS_OK)
+        rs_frame_orient(s->ops->frame, c, k0, c->n);
     return rc;
 }
 

@@ -198,6 +198,16 @@ typedef struct rs_body_contact {
     int iterations;   ///< the fixed point's iterations
 } rs_body_contact;
 
+/// A body's contacts as a kind's body operation appends them (rs_surface_ops.body): the
+/// array grows as needed. Zero-initialise it; free with rs_body_contacts_free.
+typedef struct rs_body_contacts {
+    int n, cap;
+    rs_body_contact *c;
+} rs_body_contacts;
+
+/// Frees the array and zeroes l.
+void rs_body_contacts_free(rs_body_contacts *l);
+
 /// The contacts of body b with surface s in the pose pose (NULL: its reference pose), one
 /// per owning feature, with a gap at most gap_max.
 /// - An analytic surface (SEGMENTS, CYLINDER, REVOLUTION): for each feature near the body
@@ -240,6 +250,13 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
 /// The owning feature of a contact id (itself for a sphere's contact).
 #define RS_FEATURE_OWNER(f) ((f) % RS_MANIFOLD_STRIDE)
 
+/// rs_body_query's contacts before their frames are turned into the kind's convention:
+/// each in the principal frame (n, d1, d2 and the curvatures along d1 and d2), as a kind's
+/// closest operation writes a sphere's (surface.h, rs_frame_convention). rs_body_query is
+/// this call and rs_frame_orient.
+int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *b, int point,
+                     double radius, double gap_max, rs_contacts *c, rs_error *err);
+
 /// A convex body as a slave of the contact core: its contacts with surface s in pose
 /// (NULL: reference) appended to c, a list that keeps witness points (c->witness), as
 /// slave number point of its block. For each owning feature of rs_body_surface_contacts
@@ -254,8 +271,8 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
 /// RS_MANIFOLD_MAX deepest points are kept, each a contact with share 1, contact id
 /// RS_FEATURE_MANIFOLD(feature, point id), xs its point on the body and dist = radius -
 /// depth (radius: the body's characteristic length as the tracker and the law see it,
-/// so that rdisp1 is the depth). RS_ERR_ARG for a list without witness points or a bad
-/// radius; the errors of rs_body_surface_contacts.
+/// so that rdisp1 is the depth), t1 and t2 by the kind's convention. RS_ERR_ARG for a list
+/// without witness points or a bad radius; the errors of rs_body_surface_contacts.
 int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, int point,
                   double radius, double gap_max, rs_contacts *c, rs_error *err);
 

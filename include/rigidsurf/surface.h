@@ -94,6 +94,8 @@ struct rs_query;
 struct rs_contacts;
 struct rs_trimesh;
 struct rs_cands;
+struct rs_body;
+struct rs_body_contacts;
 
 /// The operations of one surface kind: the seam through which every kind joins. The
 /// table is chosen once, when the surface is made (rs_surface_read, rs_surface_parse),
@@ -158,6 +160,14 @@ typedef struct rs_surface_ops {
     int (*facet_index)(const struct rs_surface *s, int f);
     /// With facet: the number of facets.
     int (*facet_count)(const struct rs_surface *s);
+    /// The contacts of the convex body b (convex.h) with the surface in pose (NULL: the
+    /// reference configuration), one per owning feature with a gap of at most gap_max,
+    /// appended to out in the principal frame, as closest writes a sphere's (docs/
+    /// conventions.md, "Convex bodies"). With lenient != 0, a deepest point that does not
+    /// settle (a wall curved more sharply than the body) gives the deepest of its iterates,
+    /// with iterations -1, instead of RS_ERR_GEOMETRY. NULL: the kind takes no bodies.
+    int (*body)(const struct rs_surface *s, const rs_pose *pose, const struct rs_body *b,
+                double gap_max, int lenient, struct rs_body_contacts *out, rs_error *err);
     /// How a surface file describes the kind: its parameters, data lines and the making
     /// of its surface (private to the geometry's reader; NULL: no surface file names it).
     const struct rs_surface_syntax *syntax;
@@ -188,9 +198,8 @@ int rs_surface_ndir(const rs_surface *s);
 
 /// The slaves of a query block (SoA, global coordinates, current configuration) are
 /// points, spheres where radius is set, and convex bodies where body is set: a body's
-/// contacts come from rs_body_query through the kinds' own point and sphere queries,
-/// so that no kind changes.
-struct rs_body;
+/// contacts come from rs_body_query, through the kind's body operation and its sphere
+/// query.
 
 /// One block of particles as every call of the contact core reads it (SoA, n each): the
 /// query (rs_query.slave), the tracker (rs_particles) and the law's inputs
@@ -466,6 +475,11 @@ void rs_frame_orient(rs_frame_convention conv, rs_contacts *c, int k0, int k1);
 /// The FACETED tangents of unit normal n: t1 = global x on the tangent plane (global z
 /// when x is within 0.1 deg of n), t2 = n x t1.
 void rs_frame_faceted(const double n[3], double t1[3], double t2[3]);
+
+/// rs_frame_orient for one contact of unit normal n: t1, t2 and the curvatures curv
+/// along them, in place.
+void rs_frame_orient_one(rs_frame_convention conv, const double n[3], double t1[3],
+                         double t2[3], double curv[2]);
 
 #ifdef __cplusplus
 }

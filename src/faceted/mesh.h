@@ -128,8 +128,14 @@ int rs_mesh_facet_count(const rs_surface *s);
 int rs_mesh_facet_area(const rs_surface *s, int k, double *area, double n[3]);
 int rs_mesh_facet_index(const rs_surface *s, int f);
 
-/* What a convex body's query asks of a MESH s (mesh_body.c, for src/convex/body_mesh.c),
- * all in the reference configuration. */
+/// The MESH kind's body operation (rs_surface_ops.body, mesh_body_query.c).
+struct rs_body;
+struct rs_body_contacts;
+int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const struct rs_body *b,
+                 double gap_max, int lenient, struct rs_body_contacts *out, rs_error *err);
+
+/* What the body operation asks of a MESH s (mesh_body.c), all in the reference
+ * configuration. */
 /// The triangles whose tree boxes meet the box [lo, hi]: every triangle that meets it,
 /// and a few more near it, into *ids (room for *cap, grown as needed). Returns their
 /// number, -1 when out of memory.

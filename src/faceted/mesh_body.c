@@ -1,5 +1,5 @@
-/* What a convex body's query against a MESH asks of the mesh (the contact core's
- * src/convex/body_mesh.c; docs/conventions.md, "Convex bodies"): the triangles near a box,
+/* What a convex body's query against a MESH asks of the mesh (mesh_body_query.c;
+ * docs/conventions.md, "Convex bodies"): the triangles near a box,
  * a triangle's nodes and normal, the feature that owns a direction at a point of a
  * triangle (the Voronoi rules of the point query, mesh_query.c) and the coplanar regions
  * of a set of triangles. All in the reference configuration. */

@@ -142,4 +142,5 @@ const rs_surface_ops rs_mesh_ops = {.name = "MESH",
                                     .facet_area = rs_mesh_facet_area,
                                     .facet_index = rs_mesh_facet_index,
                                     .facet_count = rs_mesh_facet_count,
+                                    .body = rs_mesh_body,
                                     .syntax = &rs_mesh_syntax};

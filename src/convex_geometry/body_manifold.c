@@ -1,8 +1,9 @@
-/* A convex body as a slave of the contact core (rs_body_query): per owning feature of
- * rs_body_surface_contacts, its contact manifold: the body's deepest point and the
- * points of its core that can rest on the feature (a box's corners, a cylinder's rims,
- * a capsule's ends), each a contact of its own, as each slave node of a face is in an
- * Abaqus node-to-surface contact (docs/conventions.md, "Convex bodies"). */
+/* A convex body as a slave of the contact core (rs_body_manifold, which rs_body_query
+ * orients): per owning feature of the kind's body operation, its contact manifold: the
+ * body's deepest point and the points of its core that can rest on the feature (a box's
+ * corners, a cylinder's rims, a capsule's ends), each a contact of its own, as each slave
+ * node of a face is in an Abaqus node-to-surface contact (docs/conventions.md, "Convex
+ * bodies"). Each point is measured by the kind's own sphere query (closest). */
 #include "convex_internal.h"
 #include "rigidsurf/vec.h"
 
@@ -145,8 +146,8 @@ static int by_depth(const void *a, const void *b)
     return da < db ? 1 : da > db ? -1 : ((const mpoint *)a)->id - ((const mpoint *)b)->id;
 }
 
-int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, int point,
-                  double radius, double gap_max, rs_contacts *c, rs_error *err)
+int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *b, int point,
+                     double radius, double gap_max, rs_contacts *c, rs_error *err)
 {
     if (!c || !c->witness)
         return rs_error_set(err, RS_ERR_ARG,
@@ -156,17 +157,33 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
         return rs_error_set(err, RS_ERR_ARG,
                             "body query: radius = %g (expected a finite number >= 0)",
                             radius);
-    rs_body_contact fc[RS_BODY_FEATURES_MAX];
-    int nf = 0;
-    int rc = rs_body_features(s, pose, b, gap_max, 1, fc, RS_BODY_FEATURES_MAX, &nf, err);
+    int rc = rs_body_check(s, b, gap_max, err);
     if (rc)
         return rc;
+    if (!s->ops->body)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "body query: surface '%s' (%s) takes no bodies", s->name,
+                            s->ops->name);
+    rs_body_contacts fl = {0, 0, NULL};
+    rc = s->ops->body(s, pose, b, gap_max, 1, &fl, err);
+    if (rc == RS_OK && fl.n > RS_BODY_FEATURES_MAX)
+        rc = rs_error_set(err, RS_ERR_CAPACITY,
+                          "body contacts: %d contacts with '%s', room for %d", fl.n,
+                          s->name, RS_BODY_FEATURES_MAX);
+    if (rc) {
+        rs_body_contacts_free(&fl);
+        return rc;
+    }
+    const rs_body_contact *fc = fl.c;
+    const int nf = fl.n;
     double R[9];
     rs_body_rotation(b, R);
     const double rr = rs_shape_core_radius(b->shape), reach = rs_body_reach(b);
     rs_contacts pc;
     memset(&pc, 0, sizeof pc);
-    const int k0 = c->n, mesh = rs_surface_has_facets(s);
+    /* flat facets (the FACETED convention): a ball moved along the normal has the same
+     * depth on their planes */
+    const int k0 = c->n, mesh = s->ops->frame == RS_FRAME_GLOBAL_X;
     for (int f = 0; f < nf && rc == RS_OK; f++) {
         const rs_body_contact *o = &fc[f];
         if (o->feature >= RS_MANIFOLD_STRIDE) {
@@ -264,6 +281,7 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
             rc = append(c, point, radius, o->feature, &keep[k], err);
     }
     rs_contacts_free(&pc);
+    rs_body_contacts_free(&fl);
     /* Contacts on features that fold concavely under the body (two facets of a drum)
      * overlap one patch of it: their shares, as a sphere's of radius R on each witness
      * point (docs/conventions.md, "Shares at concave folds"): weights a^2, a = sqrt(R^2 -

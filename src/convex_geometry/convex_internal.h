@@ -1,5 +1,6 @@
-/* Private parts of the convex shapes shared by their files: the core's support (the
- * shape less its rounding), the moments of a solid, and the rounded solids' moments. */
+/* Private parts of the convex geometry shared by its files and the kinds' body operations:
+ * the core's support (the shape less its rounding), a body's checks, reach and contact
+ * list, the moments of a solid, and the rounded solids' moments. */
 #ifndef RS_CONVEX_INTERNAL_H
 #define RS_CONVEX_INTERNAL_H
 
@@ -13,9 +14,19 @@ double rs_shape_core_radius(const rs_shape *s);
 
 /// A body's reach about its centre: the farthest corner of its bounding box.
 double rs_body_reach(const rs_body *b);
+/// The checks of a body's query (RS_ERR_ARG): a surface with a kind, a body with a shape
+/// and a finite position, gap_max finite and >= 0.
+int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_error *err);
+/// Appends o to l; RS_ERR_NOMEM when it cannot grow.
+int rs_body_contacts_push(rs_body_contacts *l, const rs_body_contact *o, rs_error *err);
+/// The contacts of one slave with surface s, into c (emptied first): a point (radius NULL)
+/// or a sphere of radius *radius at x, every penetration kept, by the kind's closest
+/// operation (principal frame).
+int rs_body_closest(const rs_surface *s, const rs_pose *pose, const double x[3],
+                    const double *radius, double gap_max, rs_contacts *c, rs_error *err);
 /// The contact of point p, or of the ball of radius r > 0 about it, with surface s whose
-/// feature base is want, else p's deepest contact, from a query with gap reach into c;
-/// -1 when p has none (*rc: the query's status).
+/// feature base is want, else p's deepest contact, from the kind's closest operation with
+/// gap reach into c (principal frame); -1 when p has none (*rc: the query's status).
 int rs_body_point_contact(const rs_surface *s, const rs_pose *pose, const double p[3],
                           double r, double reach, int want, rs_contacts *c, rs_error *err,
                           int *rc);
@@ -23,24 +34,12 @@ int rs_body_point_contact(const rs_surface *s, const rs_pose *pose, const double
 /// Does body b hold the world point p, to tol (length): is p within the rounding plus tol
 /// of its core (GJK)? 0 for a body rs_convex_pair refuses.
 int rs_body_holds(const rs_body *b, const double p[3], double tol);
-/// The checks of rs_body_surface_contacts' arguments (RS_ERR_ARG); sets *n = 0.
-int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max,
-                  const rs_body_contact *out, int cap, int *n, rs_error *err);
-/// rs_body_surface_contacts on a MESH (body_mesh.c): the triangles whose tree boxes meet
-/// the body's box (its body-frame bounds placed, taken to the mesh's reference
-/// configuration and widened by gap_max), each answered by the body's support along its
-/// normal where its face owns the body's deepest point, else by rs_convex_triangle and
-/// the feature that owns the pair's normal at its witness (rs_mesh_direction_owner); one
-/// contact per owning feature and per coplanar region, the deepest.
-int rs_body_mesh_contacts(const rs_surface *s, const rs_pose *pose, const rs_body *b,
-                          double gap_max, rs_body_contact *out, int cap, int *n,
-                          rs_error *err);
-/// rs_body_surface_contacts on the analytic kinds; with lenient != 0 a fixed point that
-/// does not settle (a wall curved more sharply than the body) gives the deepest of its
-/// iterates, with iterations = -1, instead of RS_ERR_GEOMETRY.
-int rs_body_features(const rs_surface *s, const rs_pose *pose, const rs_body *b,
-                     double gap_max, int lenient, rs_body_contact *out, int cap, int *n,
-                     rs_error *err);
+/// The analytic kinds' body operation (rs_surface_ops.body, body_fixed_point.c): for
+/// each feature near the body (a sphere query of its reach about its centre) the normal
+/// iterated to a fixed point through the kind's point query; one contact per owning
+/// feature, the deepest.
+int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                        double gap_max, int lenient, rs_body_contacts *out, rs_error *err);
 
 /// Volume moments of a solid about the frame's origin: v = int dV, s = int x dV,
 /// ss = int x x^T dV (row-major).

@@ -1,9 +1,10 @@
-/* A convex body against a MESH (convex.h, rs_body_surface_contacts; docs/conventions.md,
- * "Convex bodies"): the triangles near the body, each against the body by the pair query
+/* A convex body against a MESH, the MESH kind's body operation (rs_surface_ops.body,
+ * rs_mesh_body; convex.h, rs_body_surface_contacts; docs/conventions.md, "Convex
+ * bodies"): the triangles near the body, each against the body by the pair query
  * rs_convex_triangle; each coplanar region answered by the body's support along its
  * normal where the region holds the foot of the body's deepest point, and each triangle
- * by the Voronoi owner of its pair's witness; one contact per owning feature and one per
- * coplanar region. The mesh is asked through mesh.h only. */
+ * by the Voronoi owner of its pair's witness (mesh_body.c); one contact per owning
+ * feature and one per coplanar region. */
 #include "convex_internal.h"
 #include "mesh.h"
 #include "rigidsurf/vec.h"
@@ -90,8 +91,7 @@ static void set_contact(found *g, int feature, double depth, const double n[3],
     g->c.depth = depth;
     memcpy(g->c.normal, n, sizeof g->c.normal);
     memcpy(g->c.xm, xm, sizeof g->c.xm);
-    memcpy(g->c.xs, xs, sizeof g->c.xs);
-    rs_frame_faceted(n, g->c.t1, g->c.t2); /* FACETED: flat, curvatures 0 */
+    memcpy(g->c.xs, xs, sizeof g->c.xs); /* t1, t2 follow from n (FACETED); curvatures 0 */
     g->region = region;
     g->exact = exact;
 }
@@ -266,11 +266,11 @@ static int witness_contact(const rs_surface *s, const rs_pose *p, const rs_body 
     return 1;
 }
 
-int rs_body_mesh_contacts(const rs_surface *s, const rs_pose *pose, const rs_body *b,
-                          double gap_max, rs_body_contact *out, int cap, int *n,
-                          rs_error *err)
+int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const rs_body *b, double gap_max,
+                 int lenient, rs_body_contacts *out, rs_error *err)
 {
-    int rc = rs_body_check(s, b, gap_max, out, cap, n, err);
+    (void)lenient; /* no fixed point to settle */
+    int rc = rs_body_check(s, b, gap_max, err);
     if (rc != RS_OK)
         return rc;
     if (!s->impl)
@@ -325,15 +325,8 @@ int rs_body_mesh_contacts(const rs_surface *s, const rs_pose *pose, const rs_bod
         if (c[k].reach && witness_contact(s, pose, b, c, nt, k, &g) && keep(&l, &g))
             goto nomem;
     }
-    if (l.n > cap) {
-        rc = rs_error_set(err, RS_ERR_CAPACITY,
-                          "body contacts: %d contacts with '%s', room for %d", l.n, s->name,
-                          cap);
-        goto done;
-    }
-    for (int k = 0; k < l.n; k++)
-        out[k] = l.f[k].c;
-    *n = l.n;
+    for (int k = 0; k < l.n && rc == RS_OK; k++)
+        rc = rs_body_contacts_push(out, &l.f[k].c, err);
     goto done;
 nomem:
     rc = rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
