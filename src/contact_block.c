@@ -1,6 +1,7 @@
 /* The contact block: per-contact law inputs from the tracker's output and the block's
  * particles, and the law called on it slice by slice (contact_block.h). */
 #include "rigidsurf/contact_block.h"
+#include "effective_mass.h"
 #include "rigidsurf/vec.h"
 
 #include <math.h>
@@ -110,8 +111,9 @@ void rs_cblock_inputs(rs_contact_block *cb, const rs_track_out *o,
     cb->has_type = p->type != NULL;
     cb->has_temp = p->temp != NULL;
 
-    /* Do all contacts share one key (R, m, A, k1, k2)? */
-    int uniform = ne > 0 && !p->area && !p->heatcap;
+    /* Do all contacts share one key (R, m, A, k1, k2)? (A body's contacts have masses of
+     * their own.) */
+    int uniform = ne > 0 && !p->area && !p->heatcap && !p->body;
     const double R0 = ne > 0 ? radius[pt[0]] : 0.0, m0 = ne > 0 ? mass[pt[0]] : 0.0;
     const double k10 = ne > 0 ? curv[0] : 0.0, k20 = ne > 0 ? curv[1] : 0.0;
     for (int e = 0; e < ne; e++) {
@@ -188,6 +190,7 @@ void rs_cblock_inputs(rs_contact_block *cb, const rs_track_out *o,
         }
     }
 
+    rs_cblock_body_masses(cb, o, p);
     for (int e = 0; e < ne; e++) {
         cb->flux_slv[e] = 0.0;
         cb->flux_mst[e] = 0.0;

@@ -169,6 +169,7 @@ static rs_particle_block node_block(rs_driver *d)
         memcpy(b->q, d->q + 4 * (size_t)i, sizeof b->q);
         b->mass = d->mass[i];
         memcpy(b->inertia, d->inertia + 3 * (size_t)i, sizeof b->inertia);
+        b->axes[0] = b->axes[4] = b->axes[8] = 1.0; /* a node's body axes are principal */
     }
     for (int i = 0; i < d->n; ++i)
         d->dtemp[i] = d->temp[i] - d->temp_prev[i];

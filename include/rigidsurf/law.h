@@ -124,7 +124,8 @@ typedef struct rs_law_block {
 
     /* DEM extension (not VUINTER; NULL where the engine has nothing to give). */
     const double *radius; ///< (n) particle radius R
-    const double *mass;   ///< (n) particle mass m
+    const double *mass;   ///< (n) the contact's mass: the particle's; a convex body's
+                          ///< contact point's effective mass (docs/conventions.md)
     const double *reff;   ///< (n) effective radius from R and curv (R on a plane)
     const double *vrel;   ///< (nDir, n) velocity of the particle's contact point minus
                           ///< the wall's, in (n, t1[, t2]); vrel(1) > 0 separates
