@@ -56,6 +56,8 @@ typedef struct rs_mesh {
     int *el_nodes;  ///< 4 nel: the element's nodes (a triangle repeats its first)
     int *el_nnode;  ///< nel: 3 or 4
     int el_maxnode; ///< 4 when some element is a quad, else 3
+    int *el_region; ///< nel: the element's coplanar region, the least element joined to it
+                    ///< through FLAT edges
     int *tedge;     ///< 3 nt: edge of each slot
     int *edge_v;    ///< 2 ne: its nodes, lower index first
     int *edge_f0;   ///< ne + 1: faces of edge e are edge_f[edge_f0[e] ..]
@@ -70,6 +72,8 @@ typedef struct rs_mesh {
                  ///< in the file), or NULL: the vertex's index + 1
     unsigned char *vopen; ///< nv: 1 on an open boundary or non-manifold edge
     unsigned char *vconc; ///< nv: 1 at the end of a CONCAVE edge
+    unsigned char *vflat; ///< nv: 1 where every edge is FLAT (inside a coplanar region:
+                          ///< the faces own what projects onto the vertex)
     double lo[3], hi[3];  ///< bounds
     double size;          ///< the bounds' diagonal
     void *tree;           ///< the AABB tree (cgal_mesh.h)

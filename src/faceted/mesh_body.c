@@ -133,21 +133,24 @@ int rs_mesh_direction_owner(const rs_surface *s, int t, const double x[3],
     if ((!on[0] && !on[1] && !on[2]) || fabs(rs_dot3(n, r->n)) >= 1.0 - RS_BODY_CONE_TOL)
         return face;
     *tri = -1;
-    /* a vertex (between slots j - 1 and j) where n is inside its cone */
+    /* a vertex (between slots j - 1 and j) where n is inside its cone; none inside a
+     * coplanar region */
     for (int j = 0; j < 3; j++) {
         const int v = r->v[j];
-        if (!on[j] || !on[(j + 2) % 3] || !vertex_cone(m, v, n))
+        if (!on[j] || !on[(j + 2) % 3] || m->vflat[v] || !vertex_cone(m, v, n))
             continue;
         if (one_sided && rs_dot3(n, m->vpn + 3 * v) < 0.0)
             return RS_FEATURE_NONE; /* behind: the faces answer */
         return RS_FEATURE(RS_FEAT_VERTEX, v);
     }
     /* an edge whose cone holds n, or a face of it whose normal n is; at an end of the
-     * edge, n does not point beyond that end (the along tests of edge_owns) */
+     * edge, n does not point beyond that end (the along tests of edge_owns); a FLAT edge
+     * owns nothing */
     for (int j = 0; j < 3; j++) {
         double pn[3];
         int f, ft;
-        if (!on[j] || !edge_cone(m, r->edge[j], n, &f, &ft, pn))
+        if (!on[j] || r->kind[j] == RS_EDGE_FLAT ||
+            !edge_cone(m, r->edge[j], n, &f, &ft, pn))
             continue;
         const double *a = m->xyz + 3 * r->v[j], *b = m->xyz + 3 * r->v[(j + 1) % 3];
         const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};

@@ -138,14 +138,17 @@ static double deepest_along(const rs_body *b, const rs_pose *p, const double n[3
     return depth;
 }
 
-/* Does a triangle of the region (candidates ru[0 .. nr)) hold the reference point X? */
+/* The candidate of the region (candidates ru[0 .. nr)) whose triangle holds the reference
+ * point X, the least face where several do (X on their borders); -1 for none. */
 static int region_holds(const rs_surface *s, const cand *c, const member *ru, int nr,
                         const double X[3])
 {
+    int k = -1;
     for (int i = 0; i < nr; i++)
-        if (rs_mesh_triangle_holds(s, c[ru[i].k].t, X))
-            return ru[i].k;
-    return -1;
+        if ((k < 0 || c[ru[i].k].face < c[k].face) &&
+            rs_mesh_triangle_holds(s, c[ru[i].k].t, X))
+            k = ru[i].k;
+    return k;
 }
 
 /* The contact of a coplanar region (candidates ru[0 .. nr)), if any: the body's deepest
@@ -154,7 +157,10 @@ static int region_holds(const rs_surface *s, const cand *c, const member *ru, in
  * penetration), when the foot of it lies on a triangle of the region, and so does the
  * foot of the body's centre or the pair's normal on one of its triangles is within 60
  * degrees of the region's (else a body beside the region, reaching across its plane
- * beyond a convex edge, would take the plane for a face). */
+ * beyond a convex edge, would take the plane for a face). Its feature is the face under
+ * the foot of the body's centre where the region holds it (a face's corners tie as the
+ * deepest point; the centre's foot moves with the body), else under the deepest
+ * point's. */
 static int region_face(const rs_surface *s, const rs_pose *p, const rs_body *b,
                        double gap_max, const cand *c, const member *ru, int nr, found *g)
 {
@@ -178,17 +184,18 @@ static int region_face(const rs_surface *s, const rs_pose *p, const rs_body *b,
     const double depth = deepest_along(b, p, ns, a0, xs, foot, F);
     if (!(depth >= -gap_max))
         return 0;
-    const int k = region_holds(s, c, ru, nr, F);
+    int k = region_holds(s, c, ru, nr, F);
     if (k < 0)
         return 0;
-    if (ba < RS_BODY_FACE_COS) {
-        double xc[3], C[3];
-        for (int d = 0; d < 3; d++)
-            xc[d] = b->x[d] - h * nf[d];
-        rs_pose_to_local(p, xc, C);
-        if (region_holds(s, c, ru, nr, C) < 0)
-            return 0;
-    }
+    double xc[3], C[3];
+    for (int d = 0; d < 3; d++)
+        xc[d] = b->x[d] - h * nf[d];
+    rs_pose_to_local(p, xc, C);
+    const int kc = region_holds(s, c, ru, nr, C);
+    if (kc < 0 && ba < RS_BODY_FACE_COS)
+        return 0;
+    if (kc >= 0)
+        k = kc;
     set_contact(g, c[k].face, depth, ns, foot, xs, c[k].region, 1);
     return 1;
 }

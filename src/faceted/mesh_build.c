@@ -49,6 +49,8 @@ void rs_mesh_free(rs_mesh *m)
     free(m->rec);
     free(m->vfirst);
     free(m->vconc);
+    free(m->vflat);
+    free(m->el_region);
     free(m->vpn);
     free(m->vlabel);
     free(m->vopen);
@@ -310,6 +312,36 @@ static int degenerate(const double *xyz, const int *v, double size)
 
 /* Dihedral classification, in-plane edge normals (flat edges shared exactly) and the
  * vertices' pseudo-normals and edge lists. */
+static int region_root(int *parent, int k)
+{
+    while (parent[k] != k) {
+        parent[k] = parent[parent[k]];
+        k = parent[k];
+    }
+    return k;
+}
+
+/* Each element's coplanar region (el_region): the least element joined to it through
+ * FLAT edges. Returns 0, -1 when out of memory. */
+static int flat_regions(rs_mesh *m)
+{
+    int *g = m->el_region = xmalloc((size_t)m->nel + 1, sizeof(int));
+    if (!g)
+        return -1;
+    for (int k = 0; k < m->nel; k++)
+        g[k] = k;
+    for (int e = 0; e < m->ne; e++) {
+        if (m->edge_kind[e] != RS_EDGE_FLAT)
+            continue;
+        const int a = region_root(g, m->tel[m->edge_f[m->edge_f0[e]]]),
+                  b = region_root(g, m->tel[m->edge_f[m->edge_f0[e] + 1]]);
+        g[a > b ? a : b] = a < b ? a : b;
+    }
+    for (int k = 0; k < m->nel; k++)
+        g[k] = region_root(g, k);
+    return 0;
+}
+
 static int finish_topology(rs_mesh *m, int two_sided)
 {
     /* the faces' unit normals and, for edge slot j of triangle t (nodes j, j + 1), its
@@ -432,12 +464,17 @@ static int finish_topology(rs_mesh *m, int two_sided)
     /* vertices at the end of a concave edge, where contacts may begin or end while a
      * sphere overlaps them (the query's shares) */
     m->vconc = xmalloc((size_t)m->nv, 1);
-    if (!m->vconc)
+    m->vflat = xmalloc((size_t)m->nv, 1);
+    if (!m->vconc || !m->vflat)
         goto done;
     memset(m->vconc, 0, (size_t)m->nv);
-    for (int e = 0; e < m->ne; e++)
+    memset(m->vflat, 1, (size_t)m->nv);
+    for (int e = 0; e < m->ne; e++) {
         if (m->edge_kind[e] == RS_EDGE_CONCAVE)
             m->vconc[m->edge_v[2 * e]] = m->vconc[m->edge_v[2 * e + 1]] = 1;
+        if (m->edge_kind[e] != RS_EDGE_FLAT) /* vertices inside a coplanar region */
+            m->vflat[m->edge_v[2 * e]] = m->vflat[m->edge_v[2 * e + 1]] = 0;
+    }
     for (int v = 0; v < m->nv; v++)
         m->vfirst[v] = -1;
     for (int t = m->nt - 1; t >= 0; t--)
@@ -468,7 +505,8 @@ static int finish_topology(rs_mesh *m, int two_sided)
             r->e[j][3] = a[0] * mm[0] + a[1] * mm[1] + a[2] * mm[2];
         }
     }
-    rc = 0;
+    if (flat_regions(m) == 0)
+        rc = 0;
 done:
     free(tn);
     free(tm);

@@ -28,9 +28,9 @@ static int faces_share(const rs_mesh *m, int ia, int ib, int kind)
     return 0;
 }
 
-/* History passes where the contact normal is continuous: between faces across a flat
- * edge, between a face and its own edges and vertices, and between an edge and its
- * nodes. */
+/* History passes where the contact normal is continuous: between faces of one coplanar
+ * region (joined through flat edges), between a face and its own edges and vertices, and
+ * between an edge and its nodes. */
 static int mesh_adjacent(const rs_surface *s, int fa, int fb)
 {
     if (fa == fb)
@@ -51,7 +51,7 @@ static int mesh_adjacent(const rs_surface *s, int fa, int fb)
     if (ta == RS_FEAT_FACE && ia >= m->nel)
         return 0;
     if (ta == RS_FEAT_FACE && tb == RS_FEAT_FACE)
-        return ib < m->nel && faces_share(m, ia, ib, RS_EDGE_FLAT);
+        return ib < m->nel && m->el_region[ia] == m->el_region[ib];
     if (ta == RS_FEAT_FACE && tb == RS_FEAT_EDGE)
         return ib < m->ne && element_has(m, ia, m->tedge, ib);
     if (ta == RS_FEAT_FACE && tb == RS_FEAT_VERTEX)

@@ -160,6 +160,29 @@ static int hit_weights(const rs_mesh *m, const double p[3], double R, const int 
     return 1;
 }
 
+/* Does triangle t own a point on its border across FLAT edges only (its sides sd, >= 0,
+ * 0 on those edges)? A FLAT edge and a vertex inside a coplanar region own nothing: on
+ * one FLAT edge, the edge's first face takes the point; at a vertex whose edges are all
+ * FLAT, the vertex's first triangle. */
+static int flat_tie(const rs_mesh *m, int t, const double sd[3])
+{
+    const rs_mtri *r = m->rec + t;
+    int zero = 0, nz = 0;
+    for (int j = 0; j < 3; j++) {
+        if (sd[j] > 0.0)
+            continue;
+        if (sd[j] < 0.0 || r->kind[j] != RS_EDGE_FLAT)
+            return 0;
+        zero = j;
+        nz++;
+    }
+    if (nz == 1)
+        return r->first >> zero & 1u;
+    /* on two: at the vertex between them (slots j - 1 and j meet at vertex j) */
+    const int v = r->v[sd[0] > 0.0 ? 2 : sd[1] > 0.0 ? 0 : 1];
+    return nz == 2 && m->vflat[v] && m->vfirst[v] == t;
+}
+
 /* The contacts of point p (reference configuration) among triangles ids[0 .. n), into
  * s->hits: those with dist <= gap_lim and dist >= dist_min. */
 static int point_hits(const rs_mesh *m, int sides, const double p[3], double radius,
@@ -182,7 +205,7 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
          * there (inside both, p's projection lies in the angle at the vertex, or is the
          * vertex itself, with both sides 0): the sides found here decide which edges and
          * vertices are tested. */
-        if (sd[0] > 0.0 && sd[1] > 0.0 && sd[2] > 0.0) {
+        if ((sd[0] > 0.0 && sd[1] > 0.0 && sd[2] > 0.0) || flat_tie(m, t, sd)) {
             const double sg = (!one_sided && h < 0.0) ? -1.0 : 1.0;
             const double dist = sg * h;
             if (!(dist <= gap_lim && dist >= dist_min))
@@ -196,8 +219,9 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
         for (int j = 0; j < 3; j++) {
             if (sd[j] > 0.0)
                 continue;
-            /* an edge is tested from its lowest-numbered face: within reach, so is it */
-            if (!(r->first >> j & 1u))
+            /* an edge is tested from its lowest-numbered face: within reach, so is it; a
+             * FLAT edge owns nothing (flat_tie) */
+            if (!(r->first >> j & 1u) || r->kind[j] == RS_EDGE_FLAT)
                 continue;
             const int e = r->edge[j];
             int ia, ib;
@@ -245,8 +269,9 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
         for (int j = 0; j < 3; j++) {
             if (sd[j] > 0.0 && sd[(j + 2) % 3] > 0.0)
                 continue; /* vertex j lies between slots j - 1 and j */
-            if (!(r->first >> (3 + j) & 1u))
-                continue; /* tested from its lowest-numbered triangle */
+            if (!(r->first >> (3 + j) & 1u) || m->vflat[tv[j]])
+                continue; /* tested from its lowest-numbered triangle; inside a coplanar
+                           * region its faces own what projects onto it (flat_tie) */
             const int v = tv[j];
             /* its two edges in this triangle first (the same products as vertex_owns) */
             const double *pv = m->xyz + 3 * v;
