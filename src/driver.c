@@ -2,6 +2,7 @@
  * convex bodies) against one rigid master, the law called on the tracker's blocks
  * (driver.h). */
 #include "rigidsurf/driver.h"
+#include "driver_history.h"
 #include "rigidsurf/vec.h"
 
 #include <math.h>
@@ -224,6 +225,7 @@ static int alloc_history(rs_driver *d, rs_error *err)
     d->tracker.drop = rs_law_drops(d->law);
     const ptrdiff_t stride = slot_stride(d);
     size_t per = (size_t)d->capacity * (size_t)(1 + stride);
+    free(d->hist); /* a first increment that failed and is tried again */
     d->hist = (double *)calloc((size_t)d->n * per, sizeof(double));
     if (!d->hist)
         return rs_error_set(err, RS_ERR_NOMEM, "driver: out of memory for contact history");
@@ -322,6 +324,13 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     /* The first call sees the initial state: no increment of motion lies behind it. */
     rc = rs_track_update(&d->tracker, d->surface, d->moving ? &d->motion : NULL,
                          d->inc == 0 ? 0.0 : d->dt, &p, &d->contacts, &d->trk, err);
+    while (rc == RS_ERR_CAPACITY && d->capacity < RS_TRACK_MAX_CAPACITY) {
+        /* the slots double, as an engine's do (the tracker changed nothing) */
+        rc = rs_driver_grow_history(d, err);
+        if (rc == RS_OK)
+            rc = rs_track_update(&d->tracker, d->surface, d->moving ? &d->motion : NULL,
+                                 d->inc == 0 ? 0.0 : d->dt, &p, &d->contacts, &d->trk, err);
+    }
     if (rc)
         return rc;
     rc = grow_contacts(d, d->trk.n, nd, err);

@@ -228,13 +228,13 @@ void rs_body_contacts_free(rs_body_contacts *l);
 ///   per feature and per coplanar region, the deepest (the support's first); the mesh's
 ///   sides as its sphere query takes them; t1, t2 by the FACETED convention, curvatures 0,
 ///   iterations 0.
-/// out holds cap contacts, *n gets their count (RS_ERR_CAPACITY beyond).
+/// out holds cap contacts, *n gets their count (RS_ERR_CAPACITY beyond). Every kind
+/// refuses (RS_ERR_ARG) a body whose position or quaternion is not finite, or whose
+/// quaternion's norm is off 1 by more than 1e-6; one within 1e-6 is taken normalised.
 int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_body *b,
                              double gap_max, rs_body_contact *out, int cap, int *n,
                              rs_error *err);
 
-/// Most owning features of one body that rs_body_query answers.
-#define RS_BODY_FEATURES_MAX 32
 /// Most points of one body's manifold on one feature.
 #define RS_MANIFOLD_MAX 4
 /// The ids of a feature's manifold points: 0 for the body's deepest point, 1 .. 30 for
@@ -260,7 +260,7 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *b,
 /// A convex body as a slave of the contact core: its contacts with surface s in pose
 /// (NULL: reference) appended to c, a list that keeps witness points (c->witness), as
 /// slave number point of its block. For each owning feature of rs_body_surface_contacts
-/// (at most RS_BODY_FEATURES_MAX), the feature's manifold: the body's deepest point
+/// (as many as there are), the feature's manifold: the body's deepest point
 /// and the points of its core that rest on the feature within gap_max (a box's corners,
 /// a cylinder's or cone's rim points a quarter turn apart from the lowest, a cone's
 /// apex, a capsule's ends; none for a sphere, an ellipsoid or a user shape), each with

@@ -87,7 +87,8 @@ typedef struct rs_driver {
     int nstatev;     ///< state variables per contact (>= law->nstatev)
     double dt;       ///< time increment (> 0)
     double tracking; ///< tracking thickness: contacts kept while gap <= it
-    int capacity;    ///< contacts per node (tracker slots), default 4
+    int capacity;    ///< contacts per node (tracker slots), default 4; doubles (up to
+                     ///< RS_TRACK_MAX_CAPACITY) when a node has more
     char surfInt[RS_LAW_NAMELEN], surfSlv[RS_LAW_NAMELEN]; ///< names passed to the law
 
     /* Node data (SoA, n each), allocated and zeroed by rs_driver_init. */
@@ -159,8 +160,9 @@ int rs_driver_set_law(rs_driver *d, const rs_law *law, const double *props, int 
 /// Makes node i a rigid convex body of the given shape (not owned; it outlives d):
 /// its mass and principal moments from the shape at density (rs_shape_mass_props),
 /// its radius, the characteristic length the tracker and the laws see (Hertz's radius),
-/// that of the sphere of equal volume, and a capacity of at least 16 history slots
-/// per node (a manifold has up to RS_MANIFOLD_MAX points per feature). Its contacts come
+/// that of the sphere of equal volume, and a capacity of at least 16 history slots per
+/// node to begin with (a manifold has up to RS_MANIFOLD_MAX points per feature; the
+/// slots grow as a step needs them). Its contacts come
 /// from rs_body_query. The node's q is the orientation of the body's principal axes:
 /// those of every built-in shape are its body axes; a polyhedron whose inertia is not
 /// diagonal in its points' axes is turned once into its principal axes A (the columns

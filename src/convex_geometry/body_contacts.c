@@ -20,7 +20,8 @@ double rs_body_reach(const rs_body *b)
     return sqrt(r2);
 }
 
-int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_error *err)
+int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_body *checked,
+                  rs_error *err)
 {
     if (!s || !s->ops || !b || !b->shape)
         return rs_error_set(err, RS_ERR_ARG,
@@ -34,6 +35,22 @@ int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_erro
         if (!(fabs(b->x[k]) <= RS_CONVEX_COORD_MAX))
             return rs_error_set(err, RS_ERR_ARG, "body contacts: body position %g",
                                 b->x[k]);
+    const double *q = b->q;
+    if (!isfinite(q[0]) || !isfinite(q[1]) || !isfinite(q[2]) || !isfinite(q[3]))
+        return rs_error_set(err, RS_ERR_ARG,
+                            "body contacts: body quaternion (w, x, y, z) = (%g, %g, %g, %g) "
+                            "(expected finite values)",
+                            q[0], q[1], q[2], q[3]);
+    const double nq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    if (!(fabs(nq - 1.0) <= 1e-6))
+        return rs_error_set(err, RS_ERR_ARG,
+                            "body contacts: body quaternion (w, x, y, z) has norm %.17g "
+                            "(expected a unit quaternion to 1e-6)",
+                            nq);
+    *checked = *b;
+    if (fabs(nq - 1.0) > 1e-12)
+        for (int k = 0; k < 4; k++)
+            checked->q[k] = q[k] / nq;
     return RS_OK;
 }
 

@@ -30,12 +30,14 @@ static void take(rs_body_contact *o, const rs_contacts *pc, int j, const double 
     o->curv[1] = pc->curv[1][j];
 }
 
-int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body *body,
                         double gap_max, int lenient, rs_body_contacts *out, rs_error *err)
 {
-    int rc = rs_body_check(s, b, gap_max, err);
+    rs_body checked;
+    int rc = rs_body_check(s, body, gap_max, &checked, err);
     if (rc != RS_OK)
         return rc;
+    const rs_body *b = &checked;
     const double reach = rs_body_reach(b);
     const int n0 = out->n;
 

@@ -146,8 +146,8 @@ static int by_depth(const void *a, const void *b)
     return da < db ? 1 : da > db ? -1 : ((const mpoint *)a)->id - ((const mpoint *)b)->id;
 }
 
-int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *b, int point,
-                     double radius, double gap_max, rs_contacts *c, rs_error *err)
+int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *body,
+                     int point, double radius, double gap_max, rs_contacts *c, rs_error *err)
 {
     if (!c || !c->witness)
         return rs_error_set(err, RS_ERR_ARG,
@@ -157,19 +157,17 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *b,
         return rs_error_set(err, RS_ERR_ARG,
                             "body query: radius = %g (expected a finite number >= 0)",
                             radius);
-    int rc = rs_body_check(s, b, gap_max, err);
+    rs_body checked;
+    int rc = rs_body_check(s, body, gap_max, &checked, err);
     if (rc)
         return rc;
+    const rs_body *b = &checked;
     if (!s->ops->body)
         return rs_error_set(err, RS_ERR_ARG,
                             "body query: surface '%s' (%s) takes no bodies", s->name,
                             s->ops->name);
     rs_body_contacts fl = {0, 0, NULL};
     rc = s->ops->body(s, pose, b, gap_max, 1, &fl, err);
-    if (rc == RS_OK && fl.n > RS_BODY_FEATURES_MAX)
-        rc = rs_error_set(err, RS_ERR_CAPACITY,
-                          "body contacts: %d contacts with '%s', room for %d", fl.n,
-                          s->name, RS_BODY_FEATURES_MAX);
     if (rc) {
         rs_body_contacts_free(&fl);
         return rc;

@@ -273,13 +273,15 @@ static int witness_contact(const rs_surface *s, const rs_pose *p, const rs_body 
     return 1;
 }
 
-int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const rs_body *b, double gap_max,
-                 int lenient, rs_body_contacts *out, rs_error *err)
+int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const rs_body *body,
+                 double gap_max, int lenient, rs_body_contacts *out, rs_error *err)
 {
     (void)lenient; /* no fixed point to settle */
-    int rc = rs_body_check(s, b, gap_max, err);
+    rs_body checked;
+    int rc = rs_body_check(s, body, gap_max, &checked, err);
     if (rc != RS_OK)
         return rc;
+    const rs_body *b = &checked;
     if (!s->impl)
         return rs_error_set(err, RS_ERR_ARG, "body contacts: mesh '%s' has no data",
                             s->name);

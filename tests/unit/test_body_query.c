@@ -8,6 +8,10 @@
  *   against the fillet, the mantle or the cap, in the drum's profile plane.
  * - A polyhedron of 10^4 points on a sphere, within its hull's sagitta of the sphere.
  * - One query of a block of spheres, points and bodies.
+ * - A body's query answers every owning feature: a ball nearly filling a faceted cavity
+ *   meets more than 32 faces, the faces and depths of its sphere query.
+ * - Every kind checks a body's pose: a quaternion that is not finite or not of norm 1
+ *   to 1e-6 is refused with a message; one within 1e-6 is taken normalised.
  * - The refusals. */
 #include "rigidsurf/convex.h"
 #include "rigidsurf/vec.h"
@@ -310,6 +314,134 @@ static void test_witness_points_follow_the_list(void)
     rs_contacts_free(&c);
 }
 
+/* A UV sphere of radius rad as a MESH (nlat bands, nlon sectors; planar quads). */
+static int uv_cavity(double rad, int nlat, int nlon, rs_surface *s)
+{
+    double *xyz = malloc(12 * (size_t)nlat * nlon * sizeof *xyz);
+    int *tri = malloc(6 * (size_t)nlat * nlon * sizeof *tri);
+    int nv = 0, nt = 0;
+    if (!xyz || !tri)
+        return 0;
+    for (int i = 0; i < nlat; i++)
+        for (int j = 0; j < nlon; j++) {
+            int id[4];
+            for (int k = 0; k < 4; k++) {
+                const double th = RS_PI * (i + (k >= 2)) / nlat;
+                const double ph = 2.0 * RS_PI * (j + (k == 1 || k == 2)) / nlon;
+                xyz[3 * nv] = rad * sin(th) * cos(ph);
+                xyz[3 * nv + 1] = rad * sin(th) * sin(ph);
+                xyz[3 * nv + 2] = rad * cos(th);
+                id[k] = nv++;
+            }
+            const int q[6] = {id[0], id[2], id[1], id[0], id[3], id[2]};
+            for (int l = i > 0 ? 0 : 3; l < (i < nlat - 1 ? 6 : 3); l++)
+                tri[3 * nt + l % 3] = q[l], nt += l % 3 == 2;
+        }
+    const rs_mesh_def def = RS_MESH_DEF_INIT;
+    const int rc = rs_surface_make_mesh(xyz, nv, tri, nt, &def, s, NULL);
+    free(xyz);
+    free(tri);
+    return rc == RS_OK;
+}
+
+/* A ball of radius 0.018 inside a cavity of radius 0.02 (32 x 64 facets), against its
+ * side: within 3e-5 of 34 faces, more than the 32 a body could once answer; as a body
+ * it has the contacts of its sphere query (one per face, the same depths). */
+static void test_a_body_answers_every_owning_feature(void)
+{
+    rs_surface s;
+    ENSURE(uv_cavity(0.02, 32, 64, &s));
+    rs_shape ball;
+    ENSURE(rs_shape_make_sphere(&ball, 0.018, 0.0, NULL) == RS_OK);
+    const double x[3] = {0.002 + 1e-6, 0.0, 3e-4}, q[4] = {1, 0, 0, 0}, R = 0.018;
+    rs_body b;
+    ENSURE(rs_body_init(&b, &ball, 1000.0, x, q, NULL) == RS_OK);
+    rs_contacts c, n;
+    memset(&c, 0, sizeof c);
+    memset(&n, 0, sizeof n);
+    c.witness = 1;
+    rs_error e;
+    ENSURE(rs_body_query(&s, NULL, &b, 0, R, 3e-5, &c, &e) == RS_OK);
+    rs_query sq = {.n = 1,
+                   .slave = {.x = x, .y = x + 1, .z = x + 2, .radius = &R},
+                   .gap_max = 3e-5,
+                   .dist_min = -INFINITY};
+    ENSURE(rs_surface_query(&s, &sq, &n, &e) == RS_OK);
+    ENSURE(c.n > 32);
+    ENSURE(c.n == n.n);
+    for (int k = 0; k < c.n; k++) {
+        int j = 0;
+        while (j < n.n && n.feature[j] != c.feature[k])
+            j++;
+        ENSURE(j < n.n);
+        ENSURE_NEAR(c.dist[k], n.dist[j], 1e-15);
+    }
+    rs_contacts_free(&c);
+    rs_contacts_free(&n);
+    rs_surface_free(&s);
+}
+
+/* Each kind (SEGMENTS, CYLINDER, REVOLUTION, MESH): a box's quaternion with a NaN, of
+ * norm 0.5 or 1 + 2e-6 is refused by rs_body_query and rs_body_surface_contacts, naming
+ * the quaternion (before, the analytic kinds gave no contact and no error); of norm 1 +
+ * 1e-7 it is taken normalised: the contacts of the unit quaternion. */
+static void test_every_kind_checks_the_pose(void)
+{
+    static const char *SEG = "*SURFACE, TYPE=SEGMENTS, NAME=line\nSTART, -1, 0\n"
+                             "LINE, 1, 0\n";
+    rs_surface s[4];
+    ENSURE(rs_surface_parse(SEG, "seg", NULL, &s[0], NULL) == RS_OK);
+    ENSURE(rs_surface_parse(PLANE, "plane", NULL, &s[1], NULL) == RS_OK);
+    ENSURE(rs_surface_parse(DRUM, "drum", NULL, &s[2], NULL) == RS_OK);
+    const double xyz[12] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+    const int tri[6] = {0, 1, 2, 0, 2, 3};
+    const rs_mesh_def def = RS_MESH_DEF_INIT;
+    ENSURE(rs_surface_make_mesh(xyz, 4, tri, 2, &def, &s[3], NULL) == RS_OK);
+    rs_shape box;
+    ENSURE(rs_shape_make_box(&box, 0.02, 0.01, 0.005, 0.0, NULL) == RS_OK);
+    const double pos[4][3] = {
+        {0.1, 0.0105, 0.0}, {0.1, 0.0, 0.0072}, {0.09, 0.0, 0.03}, {0.1, 0.2, 0.0072}};
+    const double tilt = 0.3, q[4] = {cos(0.5 * tilt), sin(0.5 * tilt), 0.0, 0.0};
+    for (int k = 0; k < 4; k++) {
+        rs_body b;
+        ENSURE(rs_body_init(&b, &box, 1000.0, pos[k], q, NULL) == RS_OK);
+        rs_contacts ref, c;
+        memset(&ref, 0, sizeof ref);
+        memset(&c, 0, sizeof c);
+        ref.witness = c.witness = 1;
+        rs_error e;
+        ENSURE(rs_body_query(&s[k], NULL, &b, 0, 0.02, 1e-3, &ref, &e) == RS_OK);
+        ENSURE(ref.n > 0);
+        const double bad[3] = {NAN, 0.5, 1.0 + 2e-6};
+        for (int j = 0; j < 3; j++) {
+            rs_body w = b;
+            for (int i = 0; i < 4; i++)
+                w.q[i] = j == 0 && i == 2 ? NAN : q[i] * bad[j];
+            c.n = 0;
+            ENSURE(rs_body_query(&s[k], NULL, &w, 0, 0.02, 1e-3, &c, &e) == RS_ERR_ARG);
+            ENSURE(strstr(e.msg, "quaternion") != NULL);
+            rs_body_contact bc[16];
+            int nb = -1;
+            ENSURE(rs_body_surface_contacts(&s[k], NULL, &w, 1e-3, bc, 16, &nb, &e) ==
+                   RS_ERR_ARG);
+            ENSURE(strstr(e.msg, "quaternion") != NULL && nb == 0);
+        }
+        rs_body w = b;
+        for (int i = 0; i < 4; i++)
+            w.q[i] = q[i] * (1.0 + 1e-7);
+        c.n = 0;
+        ENSURE(rs_body_query(&s[k], NULL, &w, 0, 0.02, 1e-3, &c, &e) == RS_OK);
+        ENSURE(c.n == ref.n);
+        for (int i = 0; i < c.n; i++) {
+            ENSURE(c.feature[i] == ref.feature[i]);
+            ENSURE_NEAR(c.dist[i], ref.dist[i], 1e-15);
+        }
+        rs_contacts_free(&ref);
+        rs_contacts_free(&c);
+        rs_surface_free(&s[k]);
+    }
+}
+
 static void test_refusals(void)
 {
     rs_surface s;
@@ -339,6 +471,8 @@ int main(void)
     RS_RUN(test_fine_polyhedron_agrees_with_its_sphere_within_the_sagitta);
     RS_RUN(test_a_block_of_spheres_and_bodies_is_one_query);
     RS_RUN(test_witness_points_follow_the_list);
+    RS_RUN(test_a_body_answers_every_owning_feature);
+    RS_RUN(test_every_kind_checks_the_pose);
     RS_RUN(test_refusals);
     return rs_test_summary();
 }
