@@ -51,17 +51,15 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
     if (!s || !s->ops || !s->ops->body)
         return rs_error_set(err, RS_ERR_ARG,
                             "body contacts: no surface, or one whose kind takes no bodies");
-    rs_body_contacts l = {0, 0, NULL};
+    rs_body_contacts l = {0, cap, out, 1}; /* the caller's array while it has room */
     int rc = s->ops->body(s, pose, b, gap_max, 0, &l, err);
     if (rc == RS_OK && l.n > cap)
         rc = rs_error_set(err, RS_ERR_CAPACITY,
                           "body contacts: %d contacts with '%s', room for %d", l.n, s->name,
                           cap);
-    for (int k = 0; rc == RS_OK && k < l.n; k++) {
-        out[k] = l.c[k];
+    for (int k = 0; rc == RS_OK && k < l.n; k++)
         rs_frame_orient_one(s->ops->frame, out[k].normal, out[k].t1, out[k].t2,
                             out[k].curv);
-    }
     if (rc == RS_OK)
         *n = l.n;
     rs_body_contacts_free(&l);

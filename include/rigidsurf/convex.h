@@ -80,9 +80,13 @@ int rs_shape_make_cone(rs_shape *s, double radius, double height, double roundin
                        rs_error *err);
 /// The convex hull of n points xyz (3 * n), built once with CGAL, rounded by rounding.
 /// The body frame is the points' frame moved to the rounded hull's centre of mass
-/// (axes kept): a body point is an input point less shift. RS_ERR_GEOMETRY for fewer
-/// than four points that are not coplanar; RS_ERR_ARG for a non-finite coordinate or a
-/// bad rounding; RS_ERR_NOMEM. Free with rs_shape_free.
+/// (axes kept): a body point is an input point less shift. The hull is canonical: its
+/// vertices the extreme points sorted by x, y, z, each facet a fan from its least vertex,
+/// the triangles sorted; the same points in any order give the same shape bit for bit.
+/// RS_ERR_GEOMETRY for fewer than four points that are not coplanar or a hull whose
+/// volume is lost to rounding; RS_ERR_ARG for a non-finite coordinate or a bad rounding;
+/// RS_ERR_NOMEM. Free with rs_shape_free. Every rs_shape_make_* call first empties s,
+/// so one that fails leaves no shape (rs_shape_mass_props and rs_body_init refuse it).
 int rs_shape_make_polyhedron(rs_shape *s, const double *xyz, int n, double rounding,
                              rs_error *err);
 /// The user's convex shape: support (not NULL) gives its core in the body frame,
@@ -199,10 +203,13 @@ typedef struct rs_body_contact {
 } rs_body_contact;
 
 /// A body's contacts as a kind's body operation appends them (rs_surface_ops.body): the
-/// array grows as needed. Zero-initialise it; free with rs_body_contacts_free.
+/// array grows as needed. Zero-initialise it, or give it an array of the caller's (c, cap,
+/// borrowed = 1: used until it is full, then copied to the heap); free with
+/// rs_body_contacts_free.
 typedef struct rs_body_contacts {
     int n, cap;
     rs_body_contact *c;
+    int borrowed; ///< c is the caller's (not freed)
 } rs_body_contacts;
 
 /// Frees the array and zeroes l.

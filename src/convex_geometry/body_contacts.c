@@ -27,6 +27,9 @@ int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_body
         return rs_error_set(err, RS_ERR_ARG,
                             "body contacts: NULL argument (a surface with a kind and a "
                             "body with a shape expected)");
+    int rc = rs_shape_check(b->shape, err);
+    if (rc)
+        return rc;
     if (!(gap_max >= 0.0) || !isfinite(gap_max))
         return rs_error_set(err, RS_ERR_ARG,
                             "body contacts: gap_max = %g (expected a finite number >= 0)",
@@ -37,10 +40,11 @@ int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_body
                                 b->x[k]);
     const double *q = b->q;
     if (!isfinite(q[0]) || !isfinite(q[1]) || !isfinite(q[2]) || !isfinite(q[3]))
-        return rs_error_set(err, RS_ERR_ARG,
-                            "body contacts: body quaternion (w, x, y, z) = (%g, %g, %g, %g) "
-                            "(expected finite values)",
-                            q[0], q[1], q[2], q[3]);
+        return rs_error_set(
+            err, RS_ERR_ARG,
+            "body contacts: body quaternion (w, x, y, z) = (%g, %g, %g, %g) "
+            "(expected finite values)",
+            q[0], q[1], q[2], q[3]);
     const double nq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     if (!(fabs(nq - 1.0) <= 1e-6))
         return rs_error_set(err, RS_ERR_ARG,
@@ -58,12 +62,15 @@ int rs_body_contacts_push(rs_body_contacts *l, const rs_body_contact *o, rs_erro
 {
     if (l->n == l->cap) {
         const int cap = l->cap ? 2 * l->cap : 16;
-        rs_body_contact *nc = realloc(l->c, (size_t)cap * sizeof *nc);
+        rs_body_contact *nc = realloc(l->borrowed ? NULL : l->c, (size_t)cap * sizeof *nc);
         if (!nc)
             return rs_error_set(err, RS_ERR_NOMEM,
                                 "body contacts: out of memory for %d contacts", cap);
+        if (l->borrowed)
+            memcpy(nc, l->c, (size_t)l->n * sizeof *nc);
         l->c = nc;
         l->cap = cap;
+        l->borrowed = 0;
     }
     l->c[l->n++] = *o;
     return RS_OK;
@@ -73,7 +80,8 @@ void rs_body_contacts_free(rs_body_contacts *l)
 {
     if (!l)
         return;
-    free(l->c);
+    if (!l->borrowed)
+        free(l->c);
     memset(l, 0, sizeof *l);
 }
 

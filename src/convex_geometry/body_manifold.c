@@ -147,7 +147,8 @@ static int by_depth(const void *a, const void *b)
 }
 
 int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *body,
-                     int point, double radius, double gap_max, rs_contacts *c, rs_error *err)
+                     int point, double radius, double gap_max, rs_contacts *c,
+                     rs_error *err)
 {
     if (!c || !c->witness)
         return rs_error_set(err, RS_ERR_ARG,
@@ -166,7 +167,7 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
         return rs_error_set(err, RS_ERR_ARG,
                             "body query: surface '%s' (%s) takes no bodies", s->name,
                             s->ops->name);
-    rs_body_contacts fl = {0, 0, NULL};
+    rs_body_contacts fl = {0, 0, NULL, 0};
     rc = s->ops->body(s, pose, b, gap_max, 1, &fl, err);
     if (rc) {
         rs_body_contacts_free(&fl);

@@ -1,15 +1,20 @@
 /* CGAL's convex hull behind a C interface (cgal_hull.h). Exceptions never cross into
  * C. The kernel is Epick: the hull's orientation tests are exact, its points are the
- * input points. */
+ * input points. CGAL's quickhull walks the horizon in an order of memory addresses, so
+ * the order of its vertices and how it splits a facet into triangles change from call
+ * to call; the answer is made canonical here: the hull's extreme points sorted, each
+ * facet (coplanar triangles, by exact tests) split as a fan from its least corner. */
 #include "cgal_hull.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <new>
 #include <vector>
@@ -19,7 +24,6 @@ namespace
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
-typedef CGAL::Surface_mesh<Point> Mesh;
 
 /* Four points that span a volume, by exact orientation tests: false when every point
  * lies in one plane. */
@@ -40,6 +44,135 @@ bool spans_volume(const std::vector<Point> &p)
         if (CGAL::orientation(p[0], p[i1], p[i2], p[i3]) != CGAL::COPLANAR)
             return true;
     return false;
+}
+
+std::size_t root(std::vector<std::size_t> &g, std::size_t k)
+{
+    while (g[k] != k) {
+        g[k] = g[g[k]];
+        k = g[k];
+    }
+    return k;
+}
+
+typedef std::array<std::size_t, 3> Tri;
+
+/* The hull (points p, triangles t, counter-clockwise seen from outside) as a canonical
+ * list of vertices (sorted, extreme points only) and triangles (each facet a fan from its
+ * least vertex, the triangles sorted). */
+void canonical(const std::vector<Point> &p, const std::vector<Tri> &tin,
+               std::vector<double> &verts, std::vector<int> &tris)
+{
+    const std::size_t nf = tin.size(), nv = p.size();
+    /* counter-clockwise seen from outside: a vertex off the first triangle's plane lies
+     * behind it (CGAL's hull of four points comes the other way) */
+    std::vector<Tri> t = tin;
+    for (std::size_t v = 0; v < nv; v++) {
+        const CGAL::Orientation o =
+            CGAL::orientation(p[t[0][0]], p[t[0][1]], p[t[0][2]], p[v]);
+        if (o == CGAL::COPLANAR)
+            continue;
+        if (o == CGAL::POSITIVE)
+            for (Tri &f : t)
+                std::swap(f[1], f[2]);
+        break;
+    }
+    /* each directed edge a -> b of a triangle, found again by its reverse */
+    struct Edge {
+        std::size_t a, b, f;
+        bool operator<(const Edge &o) const
+        {
+            return a != o.a ? a < o.a : b < o.b;
+        }
+    };
+    std::vector<Edge> edges;
+    edges.reserve(3 * nf);
+    for (std::size_t f = 0; f < nf; f++)
+        for (int j = 0; j < 3; j++)
+            edges.push_back({t[f][j], t[f][(j + 1) % 3], f});
+    std::sort(edges.begin(), edges.end());
+    auto across =
+        [&edges](
+            std::size_t a,
+            std::size_t b) { /* the face of b -> a */
+                             const Edge key{b, a, 0};
+                             return std::lower_bound(edges.begin(), edges.end(), key)->f;
+        };
+    /* facets: triangles joined across edges whose four points are coplanar */
+    std::vector<std::size_t> group(nf);
+    for (std::size_t f = 0; f < nf; f++)
+        group[f] = f;
+    for (std::size_t f = 0; f < nf; f++)
+        for (int j = 0; j < 3; j++) {
+            const std::size_t a = t[f][j], b = t[f][(j + 1) % 3], g = across(a, b);
+            const Tri &tg = t[g];
+            const std::size_t d = tg[0] != a && tg[0] != b   ? tg[0]
+                                  : tg[1] != a && tg[1] != b ? tg[1]
+                                                             : tg[2];
+            if (g > f &&
+                CGAL::orientation(p[a], p[b], p[t[f][(j + 2) % 3]], p[d]) == CGAL::COPLANAR)
+                group[root(group, f)] = root(group, g);
+        }
+    for (std::size_t f = 0; f < nf; f++)
+        group[f] = root(group, f);
+    /* extreme points: three facets or more meet at them (a point inside a facet or on
+     * the edge between two is none) */
+    std::vector<std::pair<std::size_t, std::size_t>> vg; /* (vertex, facet) */
+    vg.reserve(3 * nf);
+    for (std::size_t f = 0; f < nf; f++)
+        for (int j = 0; j < 3; j++)
+            vg.emplace_back(t[f][j], group[f]);
+    std::sort(vg.begin(), vg.end());
+    vg.erase(std::unique(vg.begin(), vg.end()), vg.end());
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0, j; i < vg.size(); i = j) {
+        for (j = i + 1; j < vg.size() && vg[j].first == vg[i].first;)
+            j++;
+        if (j - i >= 3)
+            order.push_back(vg[i].first);
+    }
+    std::sort(order.begin(), order.end(), [&p](std::size_t a, std::size_t b) {
+        return p[a].x() != p[b].x()   ? p[a].x() < p[b].x()
+               : p[a].y() != p[b].y() ? p[a].y() < p[b].y()
+                                      : p[a].z() < p[b].z();
+    });
+    std::vector<int> index(nv, -1);
+    verts.resize(3 * order.size());
+    for (std::size_t k = 0; k < order.size(); k++) {
+        const Point &q = p[order[k]];
+        index[order[k]] = (int)k;
+        verts[3 * k] = q.x(), verts[3 * k + 1] = q.y(), verts[3 * k + 2] = q.z();
+    }
+    /* each facet's border: its edges whose reverse lies in another facet, one leaving
+     * each of its border vertices; walked around, its corners only, as a fan */
+    std::vector<Edge> border; /* (facet, a) -> b, in f's place */
+    for (const Edge &e : edges)
+        if (group[across(e.a, e.b)] != group[e.f])
+            border.push_back({group[e.f], e.a, e.b});
+    std::sort(border.begin(), border.end());
+    std::vector<std::array<int, 3>> out;
+    for (std::size_t i = 0, j; i < border.size(); i = j) {
+        for (j = i + 1; j < border.size() && border[j].a == border[i].a;)
+            j++;
+        std::vector<int> ring;
+        std::size_t v = border[i].b;
+        do {
+            const Edge key{border[i].a, v, 0};
+            const auto it = std::lower_bound(border.begin() + i, border.begin() + j, key);
+            if (index[v] >= 0)
+                ring.push_back(index[v]);
+            v = it->f;
+        } while (v != border[i].b && ring.size() <= j - i);
+        const std::size_t m = ring.size(),
+                          s = std::min_element(ring.begin(), ring.end()) - ring.begin();
+        for (std::size_t k = 1; k + 1 < m; k++)
+            out.push_back({ring[s], ring[(s + k) % m], ring[(s + k + 1) % m]});
+    }
+    std::sort(out.begin(), out.end());
+    tris.resize(3 * out.size());
+    for (std::size_t k = 0; k < out.size(); k++)
+        for (int c = 0; c < 3; c++)
+            tris[3 * k + c] = out[k][c];
 }
 
 } // namespace
@@ -75,48 +208,32 @@ extern "C" int rs_cgal_convex_hull(const double *xyz, int n, double **verts, int
                 n);
             return -1;
         }
-        Mesh hull;
-        CGAL::convex_hull_3(pts.begin(), pts.end(), hull);
-        const std::size_t nvx = hull.number_of_vertices(), nf = hull.number_of_faces();
-        double *v = (double *)std::malloc(3 * nvx * sizeof(double));
-        int *t = (int *)std::malloc(3 * nf * sizeof(int));
-        if (!v || !t) {
-            std::free(v);
-            std::free(t);
-            std::snprintf(msg, cap, "out of memory for a hull of %zu vertices", nvx);
+        /* each point once: quickhull's scan with a triangle-set output stops on repeated
+         * points (CGAL 5.5) */
+        std::sort(pts.begin(), pts.end());
+        pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+        std::vector<Point> hp;
+        std::vector<Tri> ht;
+        CGAL::convex_hull_3(pts.begin(), pts.end(), hp, ht);
+        std::vector<double> v;
+        std::vector<int> t;
+        canonical(hp, ht, v, t);
+        /* the C arrays last: nothing that may throw follows them */
+        double *cv = (double *)std::malloc(v.size() * sizeof(double));
+        int *ct = (int *)std::malloc(t.size() * sizeof(int));
+        if (!cv || !ct) {
+            std::free(cv);
+            std::free(ct);
+            std::snprintf(msg, cap, "out of memory for a hull of %zu vertices",
+                          v.size() / 3);
             return -1;
         }
-        std::vector<int> index(hull.num_vertices(), -1);
-        int k = 0;
-        for (Mesh::Vertex_index vi : hull.vertices()) {
-            const Point &p = hull.point(vi);
-            v[3 * k] = p.x();
-            v[3 * k + 1] = p.y();
-            v[3 * k + 2] = p.z();
-            index[(std::size_t)vi] = k++;
-        }
-        int f = 0;
-        for (Mesh::Face_index fi : hull.faces()) {
-            int c = 0;
-            for (Mesh::Vertex_index vi :
-                 CGAL::vertices_around_face(hull.halfedge(fi), hull)) {
-                if (c < 3)
-                    t[3 * f + c] = index[(std::size_t)vi];
-                c++;
-            }
-            if (c != 3) {
-                std::free(v);
-                std::free(t);
-                std::snprintf(msg, cap,
-                              "the hull has a face of %d corners (expected triangles)", c);
-                return -1;
-            }
-            f++;
-        }
-        *verts = v;
-        *tris = t;
-        *nv = k;
-        *nt = f;
+        std::memcpy(cv, v.data(), v.size() * sizeof(double));
+        std::memcpy(ct, t.data(), t.size() * sizeof(int));
+        *verts = cv;
+        *tris = ct;
+        *nv = (int)(v.size() / 3);
+        *nt = (int)(t.size() / 3);
         return 0;
     } catch (const std::bad_alloc &) {
         std::snprintf(msg, cap, "out of memory for the hull of %d points", n);

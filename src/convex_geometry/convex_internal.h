@@ -6,6 +6,9 @@
 
 #include "rigidsurf/convex.h"
 
+/// RS_ERR_ARG unless s is a shape an rs_shape_make_* call made (kind, dimensions,
+/// rounding, a polyhedron's hull, a user shape's support).
+int rs_shape_check(const rs_shape *s, rs_error *err);
 /// The core's support along d (body frame, no rounding); d need not be unit, zero is +z.
 void rs_shape_core_support(const rs_shape *s, const double d[3], double out[3]);
 /// The rounding around the core: the shape's rounding, plus the radius of a sphere or
@@ -53,8 +56,9 @@ typedef struct rs_moments {
 } rs_moments;
 
 /// The moments of the convex polytope (vertices v, outward triangles t) rounded by
-/// r >= 0, exactly: core, face slabs, edge wedges and vertex sectors.
-void rs_polytope_moments(const double *v, const int *t, int nt, double r, rs_moments *m);
+/// r >= 0, exactly: core, face slabs, edge wedges and vertex sectors. Returns 0, -1 when
+/// out of memory (m zero).
+int rs_polytope_moments(const double *v, const int *t, int nt, double r, rs_moments *m);
 /// The moments of the rounded polygon prof (n (rho, z) vertices, counter-clockwise,
 /// one edge on the axis rho = 0) revolved about body z, rounded by r >= 0.
 void rs_revolved_moments(const double *prof, int n, double r, rs_moments *m);

@@ -149,9 +149,10 @@ static void edge_wedge(const double p[3], const double q[3], const double n1[3],
         m->ss[k] += s0 * i2 * u2[k];
 }
 
-void rs_polytope_moments(const double *v0, const int *t, int nt, double r, rs_moments *m)
+int rs_polytope_moments(const double *v0, const int *t, int nt, double r, rs_moments *m)
 {
     memset(m, 0, sizeof *m);
+    int rc = -1;
     int nv = 0;
     for (int i = 0; i < 3 * nt; i++)
         nv = t[i] + 1 > nv ? t[i] + 1 : nv;
@@ -166,10 +167,8 @@ void rs_polytope_moments(const double *v0, const int *t, int nt, double r, rs_mo
     int *deg = calloc((size_t)nv + 1, sizeof *deg);
     int *inc = malloc((size_t)nt * 3 * sizeof *inc);
     double *cone = malloc((size_t)nt * 3 * sizeof *cone);
-    if (!v || !nrm || !ek || !deg || !inc || !cone) {
-        m->v = NAN;
+    if (!v || !nrm || !ek || !deg || !inc || !cone)
         goto done;
-    }
     for (int i = 0; i < nv; i++)
         sub3(v0 + 3 * i, p0, v + 3 * i);
     for (int f = 0; f < nt; f++) {
@@ -221,10 +220,8 @@ void rs_polytope_moments(const double *v0, const int *t, int nt, double r, rs_mo
         for (int i = 0; i < nv; i++)
             deg[i + 1] += deg[i];
         int *fill = calloc((size_t)nv, sizeof *fill);
-        if (!fill) {
-            m->v = NAN;
+        if (!fill)
             goto done;
-        }
         for (int f = 0; f < nt; f++)
             for (int j = 0; j < 3; j++) {
                 const int a = t[3 * f + j];
@@ -267,6 +264,7 @@ void rs_polytope_moments(const double *v0, const int *t, int nt, double r, rs_mo
         }
     }
     moments_shift(m, p0);
+    rc = 0;
 done:
     free(v);
     free(nrm);
@@ -274,6 +272,9 @@ done:
     free(deg);
     free(inc);
     free(cone);
+    if (rc)
+        memset(m, 0, sizeof *m);
+    return rc;
 }
 
 /* ---- Gauss rules --------------------------------------------------------------------- */

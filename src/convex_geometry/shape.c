@@ -29,6 +29,16 @@ static int check_rounding(double r, rs_error *err)
     return RS_OK;
 }
 
+/* A make call empties the shape first, so that one that fails leaves no shape
+ * (rs_shape_check refuses it) rather than what was there. */
+static int begin(rs_shape *s, rs_error *err)
+{
+    if (!s)
+        return rs_error_set(err, RS_ERR_ARG, "shape: NULL argument");
+    memset(s, 0, sizeof *s);
+    return RS_OK;
+}
+
 static void shape_init(rs_shape *s, rs_shape_kind kind, double d0, double d1, double d2,
                        double r)
 {
@@ -42,6 +52,8 @@ static void shape_init(rs_shape *s, rs_shape_kind kind, double d0, double d1, do
 
 int rs_shape_make_sphere(rs_shape *s, double radius, double rounding, rs_error *err)
 {
+    if (begin(s, err))
+        return RS_ERR_ARG;
     int rc = check_dim("sphere radius", radius, err);
     if (rc || (rc = check_rounding(rounding, err)))
         return rc;
@@ -52,6 +64,8 @@ int rs_shape_make_sphere(rs_shape *s, double radius, double rounding, rs_error *
 int rs_shape_make_ellipsoid(rs_shape *s, double a, double b, double c, double rounding,
                             rs_error *err)
 {
+    if (begin(s, err))
+        return RS_ERR_ARG;
     int rc = check_dim("ellipsoid semi-axis a", a, err);
     if (rc || (rc = check_dim("ellipsoid semi-axis b", b, err)) ||
         (rc = check_dim("ellipsoid semi-axis c", c, err)) ||
@@ -64,6 +78,8 @@ int rs_shape_make_ellipsoid(rs_shape *s, double a, double b, double c, double ro
 int rs_shape_make_box(rs_shape *s, double hx, double hy, double hz, double rounding,
                       rs_error *err)
 {
+    if (begin(s, err))
+        return RS_ERR_ARG;
     int rc = check_dim("box half-extent x", hx, err);
     if (rc || (rc = check_dim("box half-extent y", hy, err)) ||
         (rc = check_dim("box half-extent z", hz, err)) ||
@@ -76,6 +92,8 @@ int rs_shape_make_box(rs_shape *s, double hx, double hy, double hz, double round
 int rs_shape_make_cylinder(rs_shape *s, double radius, double half_height, double rounding,
                            rs_error *err)
 {
+    if (begin(s, err))
+        return RS_ERR_ARG;
     int rc = check_dim("cylinder radius", radius, err);
     if (rc || (rc = check_dim("cylinder half-height", half_height, err)) ||
         (rc = check_rounding(rounding, err)))
@@ -87,6 +105,8 @@ int rs_shape_make_cylinder(rs_shape *s, double radius, double half_height, doubl
 int rs_shape_make_capsule(rs_shape *s, double radius, double half_length, double rounding,
                           rs_error *err)
 {
+    if (begin(s, err))
+        return RS_ERR_ARG;
     int rc = check_dim("capsule radius", radius, err);
     if (rc || (rc = check_dim("capsule half-length", half_length, err)) ||
         (rc = check_rounding(rounding, err)))
@@ -98,6 +118,8 @@ int rs_shape_make_capsule(rs_shape *s, double radius, double half_length, double
 int rs_shape_make_cone(rs_shape *s, double radius, double height, double rounding,
                        rs_error *err)
 {
+    if (begin(s, err))
+        return RS_ERR_ARG;
     int rc = check_dim("cone radius", radius, err);
     if (rc || (rc = check_dim("cone height", height, err)) ||
         (rc = check_rounding(rounding, err)))
@@ -117,6 +139,8 @@ int rs_shape_make_cone(rs_shape *s, double radius, double height, double roundin
 int rs_shape_make_polyhedron(rs_shape *s, const double *xyz, int n, double rounding,
                              rs_error *err)
 {
+    if (begin(s, err))
+        return RS_ERR_ARG;
     char msg[256];
     int rc = check_rounding(rounding, err);
     if (rc)
@@ -134,10 +158,19 @@ int rs_shape_make_polyhedron(rs_shape *s, const double *xyz, int n, double round
         return rs_error_set(err, strstr(msg, "memory") ? RS_ERR_NOMEM : RS_ERR_GEOMETRY,
                             "polyhedron: %s", msg);
     rs_moments m;
-    rs_polytope_moments(s->verts, s->tris, s->nt, rounding, &m);
+    if (rs_polytope_moments(s->verts, s->tris, s->nt, rounding, &m)) {
+        rs_shape_free(s);
+        memset(s, 0, sizeof *s);
+        return rs_error_set(err, RS_ERR_NOMEM, "polyhedron: out of memory for its moments");
+    }
     if (!(m.v > 0.0)) {
         rs_shape_free(s);
-        return rs_error_set(err, RS_ERR_NOMEM, "polyhedron: out of memory");
+        memset(s, 0, sizeof *s);
+        return rs_error_set(
+            err, RS_ERR_GEOMETRY,
+            "polyhedron: the hull of the %d points has volume %g (expected a "
+            "volume > 0: the points lie too close to one plane)",
+            n, m.v);
     }
     for (int k = 0; k < 3; k++)
         s->shift[k] = m.s[k] / m.v;
@@ -150,6 +183,8 @@ int rs_shape_make_polyhedron(rs_shape *s, const double *xyz, int n, double round
 int rs_shape_make_user(rs_shape *s, const void *obj, rs_support_fn support, double rounding,
                        rs_error *err)
 {
+    if (begin(s, err))
+        return RS_ERR_ARG;
     int rc = check_rounding(rounding, err);
     if (rc)
         return rc;
@@ -159,6 +194,26 @@ int rs_shape_make_user(rs_shape *s, const void *obj, rs_support_fn support, doub
     shape_init(s, RS_SHAPE_USER, 0.0, 0.0, 0.0, rounding);
     s->obj = obj;
     s->support = support;
+    return RS_OK;
+}
+
+int rs_shape_check(const rs_shape *s, rs_error *err)
+{
+    if (!s)
+        return rs_error_set(err, RS_ERR_ARG, "shape: NULL argument");
+    const int nd[8] = {1, 3, 3, 2, 2, 2, 0, 0}; /* dimensions of each kind */
+    int ok = s->kind >= RS_SHAPE_SPHERE && s->kind <= RS_SHAPE_USER && s->rounding >= 0.0 &&
+             s->rounding <= RS_CONVEX_COORD_MAX;
+    for (int k = 0; ok && k < nd[s->kind]; k++)
+        ok = s->dim[k] > 0.0 && s->dim[k] <= RS_CONVEX_COORD_MAX;
+    if (ok && s->kind == RS_SHAPE_POLYHEDRON)
+        ok = s->verts && s->tris && s->nv >= 4 && s->nt >= 4;
+    if (ok && s->kind == RS_SHAPE_USER)
+        ok = s->support != NULL;
+    if (!ok)
+        return rs_error_set(err, RS_ERR_ARG,
+                            "shape: not one an rs_shape_make_* call made (a call that "
+                            "fails leaves the shape empty)");
     return RS_OK;
 }
 
@@ -286,6 +341,9 @@ int rs_body_init(rs_body *b, const rs_shape *shape, double density, const double
     if (!b || !shape || !x || !q)
         return rs_error_set(err, RS_ERR_ARG, "body: NULL argument");
     memset(b, 0, sizeof *b);
+    int rc = rs_shape_check(shape, err);
+    if (rc)
+        return rc;
     for (int k = 0; k < 3; k++)
         if (!(fabs(x[k]) <= RS_CONVEX_COORD_MAX))
             return rs_error_set(
@@ -312,7 +370,7 @@ int rs_body_init(rs_body *b, const rs_shape *shape, double density, const double
     b->axes[0] = b->axes[4] = b->axes[8] = 1.0;
     if (density > 0.0) {
         rs_mass_props mp;
-        int rc = rs_shape_mass_props(shape, density, &mp, err);
+        rc = rs_shape_mass_props(shape, density, &mp, err);
         if (rc)
             return rc;
         int finite = isfinite(mp.mass);

@@ -17,18 +17,19 @@ static void diag_moments(rs_moments *m, double v, double xx, double yy, double z
 }
 
 /* The volume moments of s about its body origin. */
-static void shape_moments(const rs_shape *s, rs_moments *m)
+/* Returns 0, -1 when out of memory. */
+static int shape_moments(const rs_shape *s, rs_moments *m)
 {
     const double *d = s->dim, r = s->rounding;
     switch (s->kind) {
     case RS_SHAPE_SPHERE: {
         const double rho = d[0] + r, v = 4.0 / 3.0 * RS_PI * rho * rho * rho;
         diag_moments(m, v, v * rho * rho / 5.0, v * rho * rho / 5.0, v * rho * rho / 5.0);
-        return;
+        return 0;
     }
     case RS_SHAPE_ELLIPSOID:
         rs_ellipsoid_moments(d[0], d[1], d[2], r, m);
-        return;
+        return 0;
     case RS_SHAPE_BOX:
         if (r > 0.0) {
             double v[24];
@@ -37,13 +38,12 @@ static void shape_moments(const rs_shape *s, rs_moments *m)
             for (int i = 0; i < 8; i++)
                 for (int k = 0; k < 3; k++)
                     v[3 * i + k] = (i >> k & 1) ? d[k] : -d[k];
-            rs_polytope_moments(v, t, 12, r, m);
-        } else {
-            const double v = 8.0 * d[0] * d[1] * d[2];
-            diag_moments(m, v, v * d[0] * d[0] / 3.0, v * d[1] * d[1] / 3.0,
-                         v * d[2] * d[2] / 3.0);
+            return rs_polytope_moments(v, t, 12, r, m);
         }
-        return;
+        const double v = 8.0 * d[0] * d[1] * d[2];
+        diag_moments(m, v, v * d[0] * d[0] / 3.0, v * d[1] * d[1] / 3.0,
+                     v * d[2] * d[2] / 3.0);
+        return 0;
     case RS_SHAPE_CYLINDER:
         if (r > 0.0) {
             const double prof[8] = {0.0, -d[1], d[0], -d[1], d[0], d[1], 0.0, d[1]};
@@ -53,7 +53,7 @@ static void shape_moments(const rs_shape *s, rs_moments *m)
             diag_moments(m, v, v * d[0] * d[0] / 4.0, v * d[0] * d[0] / 4.0,
                          v * d[1] * d[1] / 3.0);
         }
-        return;
+        return 0;
     case RS_SHAPE_CAPSULE: {
         const double rho = d[0] + r, h = d[1];
         const double vc = 2.0 * RS_PI * rho * rho * h,
@@ -61,7 +61,7 @@ static void shape_moments(const rs_shape *s, rs_moments *m)
         const double xx = vc * rho * rho / 4.0 + vs * rho * rho / 5.0;
         diag_moments(m, vc + vs, xx, xx,
                      vc * h * h / 3.0 + vs * (h * h + 0.75 * h * rho + rho * rho / 5.0));
-        return;
+        return 0;
     }
     case RS_SHAPE_CONE:
         if (r > 0.0) {
@@ -73,14 +73,14 @@ static void shape_moments(const rs_shape *s, rs_moments *m)
             diag_moments(m, v, 0.15 * v * d[0] * d[0], 0.15 * v * d[0] * d[0],
                          v * 3.0 * d[1] * d[1] / 80.0);
         }
-        return;
+        return 0;
     case RS_SHAPE_POLYHEDRON:
-        rs_polytope_moments(s->verts, s->tris, s->nt, r, m);
-        return;
+        return rs_polytope_moments(s->verts, s->tris, s->nt, r, m);
     case RS_SHAPE_USER:
         break;
     }
     memset(m, 0, sizeof *m);
+    return 0;
 }
 
 /* Eigenvalues and eigenvectors of the symmetric a by cyclic Jacobi rotations: a is
@@ -129,14 +129,19 @@ int rs_shape_mass_props(const rs_shape *s, double density, rs_mass_props *mp, rs
     if (!isfinite(density) || density <= 0.0)
         return rs_error_set(err, RS_ERR_ARG, "density = %g (expected a finite number > 0)",
                             density);
+    int rc = rs_shape_check(s, err);
+    if (rc)
+        return rc;
     if (s->kind == RS_SHAPE_USER)
         return rs_error_set(err, RS_ERR_ARG,
                             "a user shape has no mass properties of its own (expected "
                             "the body's mass and inertia from the caller)");
     rs_moments m;
-    shape_moments(s, &m);
-    if (!(m.v > 0.0))
+    if (shape_moments(s, &m))
         return rs_error_set(err, RS_ERR_NOMEM, "mass properties: out of memory");
+    if (!(m.v > 0.0))
+        return rs_error_set(err, RS_ERR_GEOMETRY,
+                            "mass properties: the shape has volume %g (expected > 0)", m.v);
     memset(mp, 0, sizeof *mp);
     mp->volume = m.v;
     mp->mass = density * m.v;

@@ -141,10 +141,10 @@ int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const struct rs_body 
 /* What the body operation asks of a MESH s (mesh_body.c), all in the reference
  * configuration. */
 /// The triangles whose tree boxes meet the box [lo, hi]: every triangle that meets it,
-/// and a few more near it, into *ids (room for *cap, grown as needed). Returns their
-/// number, -1 when out of memory.
+/// and a few more near it, into ids (room for cap). Returns their number; when it is
+/// more than cap, only cap were written (ask again with room for all).
 int rs_mesh_box_candidates(const rs_surface *s, const double lo[3], const double hi[3],
-                           int **ids, int *cap);
+                           int *ids, int cap);
 /// Triangle t's nodes (9 values) and unit normal; returns its face feature
 /// RS_FEATURE(RS_FEAT_FACE, element).
 int rs_mesh_triangle(const rs_surface *s, int t, double xyz[9], double n[3]);
@@ -168,7 +168,8 @@ int rs_mesh_direction_owner(const rs_surface *s, int t, const double x[3],
                             const double n[3], int *tri);
 /// The coplanar regions among triangles ids[0 .. n): label[k] is the least index in ids
 /// of the triangles joined to ids[k] through flat edges between triangles of the list.
-/// Returns 0, -1 when out of memory.
-int rs_mesh_flat_regions(const rs_surface *s, const int *ids, int n, int *label);
+/// scratch: room for 2 n ints.
+void rs_mesh_flat_regions(const rs_surface *s, const int *ids, int n, int *label,
+                          int *scratch);
 
 #endif

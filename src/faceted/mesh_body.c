@@ -19,22 +19,13 @@
 #define RS_BODY_CONE_TOL 1e-12
 
 int rs_mesh_box_candidates(const rs_surface *s, const double lo[3], const double hi[3],
-                           int **ids, int *cap)
+                           int *ids, int cap)
 {
     const rs_mesh *m = s->impl;
     const double pad = 1e-9 * m->size;
     const double l[3] = {lo[0] - pad, lo[1] - pad, lo[2] - pad};
     const double h[3] = {hi[0] + pad, hi[1] + pad, hi[2] + pad};
-    int n = rs_cgal_tree_box(m->tree, l, h, *ids, *cap);
-    if (n > *cap) {
-        int *ni = realloc(*ids, (size_t)n * 2 * sizeof *ni);
-        if (!ni)
-            return -1;
-        *ids = ni;
-        *cap = 2 * n;
-        n = rs_cgal_tree_box(m->tree, l, h, *ids, *cap);
-    }
-    return n;
+    return rs_cgal_tree_box(m->tree, l, h, ids, cap);
 }
 
 int rs_mesh_triangle(const rs_surface *s, int t, double xyz[9], double n[3])
@@ -184,12 +175,10 @@ static int cmp_int(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-int rs_mesh_flat_regions(const rs_surface *s, const int *ids, int n, int *label)
+void rs_mesh_flat_regions(const rs_surface *s, const int *ids, int n, int *label,
+                          int *sorted)
 {
     const rs_mesh *m = s->impl;
-    int *sorted = malloc((size_t)(n > 0 ? n : 1) * 2 * sizeof *sorted);
-    if (!sorted)
-        return -1;
     int *pos = sorted + n;
     for (int k = 0; k < n; k++)
         sorted[k] = ids[k];
@@ -216,6 +205,4 @@ int rs_mesh_flat_regions(const rs_surface *s, const int *ids, int n, int *label)
     }
     for (int k = 0; k < n; k++)
         label[k] = find_root(label, k);
-    free(sorted);
-    return 0;
 }

@@ -20,9 +20,10 @@ typedef struct found {
     int exact;  /* a face's contact from the body's support along the face's normal */
 } found;
 
+/* The contacts found, at most two per candidate (its region's and its witness's). */
 typedef struct found_list {
     found *f;
-    int n, cap;
+    int n;
 } found_list;
 
 /* Does a take b's place: an exact face contact before a pair query's, then the deeper? */
@@ -32,8 +33,8 @@ static int better(const found *a, const found *b)
 }
 
 /* Keeps g, merged with the contact of its feature or, for a face, of its coplanar
- * region: the better of the two stays. -1 when out of memory. */
-static int keep(found_list *l, const found *g)
+ * region: the better of the two stays. */
+static void keep(found_list *l, const found *g)
 {
     for (int j = 0; j < l->n; j++) {
         found *o = &l->f[j];
@@ -41,19 +42,10 @@ static int keep(found_list *l, const found *g)
             (g->region >= 0 && o->region >= 0 && o->region == g->region)) {
             if (better(g, o))
                 *o = *g;
-            return 0;
+            return;
         }
     }
-    if (l->n == l->cap) {
-        const int cap = l->cap ? 2 * l->cap : 16;
-        found *nf = realloc(l->f, (size_t)cap * sizeof *nf);
-        if (!nf)
-            return -1;
-        l->f = nf;
-        l->cap = cap;
-    }
     l->f[l->n++] = *g;
-    return 0;
 }
 
 /* The box about the body in the reference configuration: the corners of its body-frame
@@ -108,6 +100,12 @@ typedef struct cand {
 typedef struct member {
     int region, k;
 } member;
+
+/* Bytes a candidate takes in a query's work block: its record, two found contacts, its
+ * place, its region label and the regions' scratch (candidates' ids apart). The first
+ * WORK_SMALL candidates of a query need no heap. */
+#define WORK_BYTES (sizeof(cand) + 2 * sizeof(found) + sizeof(member) + 3 * sizeof(int))
+enum { WORK_SMALL = 32 };
 
 static int cmp_member(const void *pa, const void *pb)
 {
@@ -292,19 +290,31 @@ int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const rs_body *body,
     }
     double lo[3], hi[3];
     body_box(b, pose, gap_max, lo, hi);
-    int cap_ids = 64, *ids = malloc((size_t)cap_ids * sizeof *ids), *label = NULL;
-    cand *c = NULL;
-    member *ru = NULL;
-    found_list l = {NULL, 0, 0};
-    const int nt = ids ? rs_mesh_box_candidates(s, lo, hi, &ids, &cap_ids) : -1;
-    if (nt >= 0) {
-        const size_t m = (size_t)(nt > 0 ? nt : 1);
-        label = malloc(m * sizeof *label);
-        c = malloc(m * sizeof *c);
-        ru = malloc(m * sizeof *ru);
+    /* the candidates' arrays in one block: on the stack for a few, else the heap */
+    int small_ids[WORK_SMALL];
+    _Alignas(64) unsigned char small[WORK_SMALL * WORK_BYTES];
+    int nt = rs_mesh_box_candidates(s, lo, hi, small_ids, WORK_SMALL);
+    if (nt < 0)
+        return rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory in the tree");
+    void *heap = NULL;
+    int *ids = small_ids;
+    unsigned char *w = small;
+    if (nt > WORK_SMALL) {
+        heap = malloc((size_t)nt * (WORK_BYTES + sizeof(int)));
+        if (!heap)
+            return rs_error_set(err, RS_ERR_NOMEM,
+                                "body contacts: out of memory for %d "
+                                "triangles",
+                                nt);
+        w = heap;
+        ids = (int *)(w + (size_t)nt * WORK_BYTES);
+        nt = rs_mesh_box_candidates(s, lo, hi, ids, nt);
     }
-    if (nt < 0 || !label || !c || !ru || rs_mesh_flat_regions(s, ids, nt, label))
-        goto nomem;
+    cand *c = (cand *)w;
+    found_list l = {(found *)(c + nt), 0};
+    member *ru = (member *)(l.f + 2 * nt);
+    int *label = (int *)(ru + nt), *scratch = label + nt;
+    rs_mesh_flat_regions(s, ids, nt, label, scratch);
     for (int k = 0; k < nt; k++) {
         cand *ck = c + k;
         double X[9], nr[3];
@@ -326,24 +336,17 @@ int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const rs_body *body,
         for (j = i + 1; j < nt && ru[j].region == ru[i].region;)
             j++;
         found g;
-        if (region_face(s, pose, b, gap_max, c, ru + i, j - i, &g) && keep(&l, &g))
-            goto nomem;
+        if (region_face(s, pose, b, gap_max, c, ru + i, j - i, &g))
+            keep(&l, &g);
     }
     for (int k = 0; k < nt; k++) {
         found g;
-        if (c[k].reach && witness_contact(s, pose, b, c, nt, k, &g) && keep(&l, &g))
-            goto nomem;
+        if (c[k].reach && witness_contact(s, pose, b, c, nt, k, &g))
+            keep(&l, &g);
     }
     for (int k = 0; k < l.n && rc == RS_OK; k++)
         rc = rs_body_contacts_push(out, &l.f[k].c, err);
-    goto done;
-nomem:
-    rc = rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
 done:
-    free(ids);
-    free(label);
-    free(c);
-    free(ru);
-    free(l.f);
+    free(heap);
     return rc;
 }

@@ -1,6 +1,8 @@
 /* Convex shapes (convex.h): supports against brute force over sampled surfaces, the
  * ellipsoid's closed-form support, the rounding's Minkowski identity, bounds, the body's
- * world support through an independent rotation, and every bad shape named. */
+ * world support through an independent rotation, canonical hulls (the same shape bit for
+ * bit from the same points in any order, every call), and every bad shape named, a make
+ * call that fails leaving no shape. */
 #include "rigidsurf/convex.h"
 #include "rigidsurf/motion.h"
 #include "rigidsurf/vec.h"
@@ -378,6 +380,141 @@ static void test_bad_shapes(void)
                "body position x[1] = 1e+101");
 }
 
+/* The hull of 500 points made five times, and from the points shuffled and doubled:
+ * the same arrays bit for bit (CGAL's own order changes from call to call); its
+ * vertices sorted (x, then y, then z), each an input point, and extreme: no input point
+ * beyond a triangle's plane, and three planes or more at each vertex; a grid of 5^3
+ * points gives the cube's 8 corners and 12 triangles, a square pyramid with points on
+ * its edges and faces its 5 corners and 6 triangles. */
+static void test_hulls_are_canonical(void)
+{
+    enum { N = 500 };
+    static double xyz[3 * N], mixed[6 * N];
+    for (int i = 0; i < N; i++) {
+        double d[3];
+        rand_dir(d);
+        const double r = (i % 4) ? 1.0 : urand();
+        for (int k = 0; k < 3; k++)
+            xyz[3 * i + k] = r * d[k];
+    }
+    for (int i = 0; i < 2 * N; i++) { /* every point twice, in another order */
+        const int j = (i * 337) % N;
+        memcpy(mixed + 3 * i, xyz + 3 * j, 3 * sizeof *xyz);
+    }
+    rs_shape ref;
+    ENSURE(rs_shape_make_polyhedron(&ref, xyz, N, 0.0, NULL) == RS_OK);
+    for (int rep = 0; rep < 6; rep++) {
+        rs_shape s;
+        ENSURE(rs_shape_make_polyhedron(&s, rep < 5 ? xyz : mixed, rep < 5 ? N : 2 * N, 0.0,
+                                        NULL) == RS_OK);
+        ENSURE(s.nv == ref.nv && s.nt == ref.nt);
+        ENSURE(!memcmp(s.verts, ref.verts, 3 * (size_t)s.nv * sizeof *s.verts));
+        ENSURE(!memcmp(s.tris, ref.tris, 3 * (size_t)s.nt * sizeof *s.tris));
+        ENSURE(!memcmp(s.shift, ref.shift, sizeof s.shift));
+        rs_shape_free(&s);
+    }
+    for (int v = 0; v < ref.nv; v++) {
+        const double *p = ref.verts + 3 * v;
+        if (v > 0) {
+            const double *o = p - 3;
+            ENSURE(o[0] < p[0] ||
+                   (o[0] == p[0] && (o[1] < p[1] || (o[1] == p[1] && o[2] < p[2]))));
+        }
+        int input = 0, planes = 0;
+        double seen[64][3];
+        for (int i = 0; i < N && !input; i++)
+            input = xyz[3 * i] - ref.shift[0] == p[0] &&
+                    xyz[3 * i + 1] - ref.shift[1] == p[1] &&
+                    xyz[3 * i + 2] - ref.shift[2] == p[2];
+        ENSURE(input);
+        for (int t = 0; t < ref.nt; t++) {
+            const int *tv = ref.tris + 3 * t;
+            if (tv[0] != v && tv[1] != v && tv[2] != v)
+                continue;
+            double e1[3], e2[3], n[3];
+            for (int k = 0; k < 3; k++) {
+                e1[k] = ref.verts[3 * tv[1] + k] - ref.verts[3 * tv[0] + k];
+                e2[k] = ref.verts[3 * tv[2] + k] - ref.verts[3 * tv[0] + k];
+            }
+            rs_cross3(e1, e2, n);
+            unit(n);
+            int known = 0;
+            for (int q = 0; q < planes; q++)
+                known |= rs_dot3(n, seen[q]) > 1.0 - 1e-12;
+            if (!known && planes < 64)
+                memcpy(seen[planes++], n, sizeof n);
+        }
+        ENSURE(planes >= 3);
+    }
+    for (int t = 0; t < ref.nt; t++) {
+        const int *tv = ref.tris + 3 * t;
+        double e1[3], e2[3], n[3];
+        for (int k = 0; k < 3; k++) {
+            e1[k] = ref.verts[3 * tv[1] + k] - ref.verts[3 * tv[0] + k];
+            e2[k] = ref.verts[3 * tv[2] + k] - ref.verts[3 * tv[0] + k];
+        }
+        rs_cross3(e1, e2, n);
+        unit(n);
+        for (int i = 0; i < N; i++) {
+            double w[3];
+            for (int k = 0; k < 3; k++)
+                w[k] = xyz[3 * i + k] - ref.shift[k] - ref.verts[3 * tv[0] + k];
+            ENSURE(rs_dot3(w, n) <= 1e-14);
+        }
+    }
+    rs_shape_free(&ref);
+    /* degenerate sets: points on the faces and edges */
+    double grid[3 * 125], pyr[3 * 64];
+    int ng = 0, np = 0;
+    for (int i = 0; i < 5; i++)
+        for (int j = 0; j < 5; j++)
+            for (int k = 0; k < 5; k++, ng++)
+                grid[3 * ng] = 0.25 * i, grid[3 * ng + 1] = 0.25 * j,
+                         grid[3 * ng + 2] = 0.25 * k;
+    for (int i = 0; i <= 4; i++) /* the square base's grid and the apex's edges */
+        for (int j = 0; j <= 4; j++, np++)
+            pyr[3 * np] = 0.5 * i, pyr[3 * np + 1] = 0.5 * j, pyr[3 * np + 2] = 0.0;
+    for (int c = 0; c < 4; c++)
+        for (int k = 1; k <= 4; k++, np++) {
+            const double f = 0.25 * k, bx = (c & 1) ? 2.0 : 0.0, by = (c & 2) ? 2.0 : 0.0;
+            pyr[3 * np] = bx + f * (1.0 - bx), pyr[3 * np + 1] = by + f * (1.0 - by);
+            pyr[3 * np + 2] = f;
+        }
+    rs_shape cube, py;
+    ENSURE(rs_shape_make_polyhedron(&cube, grid, ng, 0.0, NULL) == RS_OK);
+    ENSURE(cube.nv == 8 && cube.nt == 12);
+    ENSURE(rs_shape_make_polyhedron(&py, pyr, np, 0.0, NULL) == RS_OK);
+    ENSURE(py.nv == 5 && py.nt == 6);
+    rs_mass_props mp;
+    ENSURE(rs_shape_mass_props(&cube, 1.0, &mp, NULL) == RS_OK);
+    ENSURE_NEAR(mp.volume, 1.0, 1e-15);
+    rs_shape_free(&cube);
+    rs_shape_free(&py);
+}
+
+/* A make call that fails leaves no shape: the mass properties and a body refuse it by
+ * name (before: the shape as it was, and "out of memory"); a hull whose volume is lost
+ * to rounding is a geometry error (before: "out of memory"). */
+static void test_a_failed_make_leaves_no_shape(void)
+{
+    rs_shape s;
+    ENSURE(rs_shape_make_box(&s, 1.0, 1.0, 1.0, 0.0, NULL) == RS_OK);
+    ENSURE(rs_shape_make_box(&s, -1.0, 1.0, 1.0, 0.0, NULL) == RS_ERR_ARG);
+    rs_mass_props mp;
+    ENSURE_ERR(rs_shape_mass_props(&s, 1.0, &mp, &e_), RS_ERR_ARG,
+               "not one an rs_shape_make_* call made");
+    rs_body b;
+    const double x[3] = {0, 0, 0}, q[4] = {1, 0, 0, 0};
+    ENSURE_ERR(rs_body_init(&b, &s, 0.0, x, q, &e_), RS_ERR_ARG, "rs_shape_make_*");
+    const double flat[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+    ENSURE(rs_shape_make_polyhedron(&s, flat, 4, 0.0, NULL) == RS_ERR_GEOMETRY);
+    ENSURE_ERR(rs_shape_mass_props(&s, 1.0, &mp, &e_), RS_ERR_ARG, "rs_shape_make_*");
+    const double tiny[12] = {0, 0, 0, 1e-110, 0, 0, 0, 1e-110, 0, 0, 0, 1e-110};
+    ENSURE_ERR(rs_shape_make_polyhedron(&s, tiny, 4, 0.0, &e_), RS_ERR_GEOMETRY,
+               "has volume 0 (expected a volume > 0");
+    ENSURE(s.verts == NULL);
+}
+
 int main(void)
 {
     RS_RUN(test_support_brute_force);
@@ -389,5 +526,7 @@ int main(void)
     RS_RUN(test_bounds);
     RS_RUN(test_body_support_world);
     RS_RUN(test_bad_shapes);
+    RS_RUN(test_hulls_are_canonical);
+    RS_RUN(test_a_failed_make_leaves_no_shape);
     return rs_test_summary();
 }

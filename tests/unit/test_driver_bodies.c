@@ -15,7 +15,9 @@
  * - a polyhedron whose points' axes are not principal is turned into its principal axes
  *   (and bounces with the others in the energy test);
  * - a body in a drum given analytically and as a MESH moves alike, within the facets'
- *   angle, frictionless (keeping its energy on both) and rolling with friction. */
+ *   angle, frictionless (keeping its energy on both) and rolling with friction;
+ * - two runs of a hull of 500 points, each making its hull and its principal axes, end
+ *   bit for bit alike. */
 #include "rigidsurf/driver.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
@@ -583,6 +585,58 @@ static void test_body_rolls_in_a_meshed_drum_as_in_the_analytic_one(void)
     ENSURE(w2 < 0.25 * w1); /* the finer mesh, the closer */
 }
 
+/* A hull of 500 points (not in principal axes: the driver turns it) dropped tumbling onto
+ * the plane with friction: one run, then another from the same points, each making its
+ * own hulls, end in the same state bit for bit (before, 0.4 mm apart). */
+static int hull_run(double out[7])
+{
+    enum { N = 500 };
+    static double xyz[3 * N];
+    unsigned long long seed = 9;
+    for (int i = 0; i < N; i++) {
+        double d[3], l;
+        do {
+            for (int k = 0; k < 3; k++)
+                d[k] = 2.0 * (double)(rs_test_xorshift(&seed) >> 11) / 9007199254740992.0 -
+                       1.0;
+            l = rs_norm3(d);
+        } while (l > 1.0 || l < 1e-3);
+        for (int k = 0; k < 3; k++) /* an uneven rock about 2 cm across */
+            xyz[3 * i + k] = 0.01 * (k == 0 ? 1.3 : k == 1 ? 0.9 : 0.7) * d[k] / l;
+    }
+    rs_shape rock;
+    rs_surface s;
+    rs_driver d;
+    const double law[5] = {1e4, 1e4, 0.3, 0.3, 0.5};
+    if (rs_shape_make_polyhedron(&rock, xyz, N, 0.0, NULL) != RS_OK ||
+        !setup(&d, &s, 1, law, 1e-5) ||
+        rs_driver_set_body(&d, 0, &rock, 2500.0, NULL) != RS_OK)
+        return 0;
+    d.z[0] = 0.02;
+    d.vx[0] = 0.2;
+    d.wx[0] = 5.0;
+    d.wy[0] = -3.0;
+    d.fext[2] = -9.81 * d.mass[0];
+    for (int k = 0; k < 20000; k++)
+        if (!step(&d))
+            return 0;
+    const double o[7] = {d.x[0], d.y[0], d.z[0], d.q[0], d.q[1], d.q[2], d.q[3]};
+    memcpy(out, o, sizeof o);
+    rs_driver_free(&d);
+    rs_surface_free(&s);
+    rs_shape_free(&rock);
+    return 1;
+}
+
+static void test_two_runs_of_a_hull_end_alike(void)
+{
+    double a[7], b[7];
+    ENSURE(hull_run(a) && hull_run(b));
+    ENSURE(a[2] < 0.01); /* it landed */
+    for (int k = 0; k < 7; k++)
+        ENSURE(a[k] == b[k]);
+}
+
 /* CTest runs this file in three shards (RS_TEST_SHARD, tests/CMakeLists.txt): the order
  * below puts the two drum runs, the longest, in shards of their own. */
 int main(void)
@@ -599,5 +653,6 @@ int main(void)
     RS_RUN(test_polyhedron_turned_into_its_principal_axes);
     RS_RUN(test_body_in_a_meshed_drum_keeps_the_energy);
     RS_RUN(test_body_rolls_in_a_meshed_drum_as_in_the_analytic_one);
+    RS_RUN(test_two_runs_of_a_hull_end_alike);
     return rs_test_summary();
 }
