@@ -173,6 +173,8 @@ typedef struct rs_convex_contact {
 /// The largest magnitude of a coordinate the pair queries take (length), as the
 /// numbers of a surface file or a fix line.
 #define RS_CONVEX_COORD_MAX 1e100
+/// The smallest length of a shape (its dimensions; as a surface's RS_LENGTH_MIN).
+#define RS_CONVEX_LENGTH_MIN 1e-100
 
 /// The contact of bodies a and b (each body's origin inside its shape). Their cores (the
 /// shapes less their rounding) are apart: the gap is their distance (GJK) less the

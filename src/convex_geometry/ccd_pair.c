@@ -138,8 +138,15 @@ static int mpr(const rs_cvx *a, const rs_cvx *b, int full, double gap_max,
         rs_gjk_distance(a, &mb, INFINITY, &g);
         if (g.overlap || !(g.dist > 0.0))
             break;
+        /* the direction of the closest points' difference, where its length is GJK's
+         * distance (not where rounding parted the two: MPR's answer then stands) */
         for (int k = 0; k < 3; k++)
-            m[k] = (g.pb[k] - g.pa[k]) / g.dist;
+            m[k] = g.pb[k] - g.pa[k];
+        const double ml = rs_norm3(m);
+        if (!(fabs(ml - g.dist) <= 1e-9 * fmax(g.dist, scale)))
+            break;
+        for (int k = 0; k < 3; k++)
+            m[k] /= ml;
         d = move * rs_dot3(n, m) - g.dist + rr;
         for (int k = 0; k < 3; k++) {
             pa[k] = g.pa[k] + a->radius * m[k];

@@ -9,13 +9,15 @@
 #include <string.h>
 
 /* Lengths are bounded as coordinates are (RS_CONVEX_COORD_MAX): a shape's volume and
- * inertia stay finite. */
+ * inertia stay finite; and from below (RS_CONVEX_LENGTH_MIN), so that their squares are
+ * normal numbers (an ellipsoid's support divides by them). */
 static int check_dim(const char *what, double x, rs_error *err)
 {
-    if (!(x > 0.0 && x <= RS_CONVEX_COORD_MAX))
+    if (!(x >= RS_CONVEX_LENGTH_MIN && x <= RS_CONVEX_COORD_MAX))
         return rs_error_set(err, RS_ERR_ARG,
-                            "%s = %g (expected a finite number > 0, at most %g)", what, x,
-                            RS_CONVEX_COORD_MAX);
+                            "%s = %g (expected a finite number > 0, at most %g); a shape's "
+                            "lengths are at least %g",
+                            what, x, RS_CONVEX_COORD_MAX, RS_CONVEX_LENGTH_MIN);
     return RS_OK;
 }
 
@@ -250,7 +252,10 @@ void rs_shape_core_support(const rs_shape *s, const double dir[3], double out[3]
     case RS_SHAPE_SPHERE:
         out[0] = out[1] = out[2] = 0.0;
         return;
-    case RS_SHAPE_ELLIPSOID: {
+    case RS_SHAPE_ELLIPSOID: { /* along d made unit: no square of d's parts underflows */
+        const double dl = rs_norm3(d);
+        for (int i = 0; i < 3; i++)
+            d[i] /= dl;
         const double e[3] = {h[0] * h[0] * d[0], h[1] * h[1] * d[1], h[2] * h[2] * d[2]};
         const double k = 1.0 / sqrt(rs_dot3(e, d));
         for (int i = 0; i < 3; i++)

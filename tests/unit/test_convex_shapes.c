@@ -344,6 +344,19 @@ static void test_bad_shapes(void)
     ENSURE_ERR(rs_shape_make_cone(&s, 1e300, 2.0, 0.0, &e_), RS_ERR_ARG,
                "cone radius = 1e+300 (expected a finite number > 0, at most 1e+100)");
     ENSURE_ERR(rs_shape_make_sphere(&s, 1.0, 1e101, &e_), RS_ERR_ARG, "rounding radius");
+    /* a length whose square is not a normal number: an ellipsoid's support along its
+     * axis was NaN (tests/fuzz/corpus/body_triangle_nan_witness.bin) */
+    ENSURE_ERR(
+        rs_shape_make_ellipsoid(&s, 7.5625, 3.0625, 4.9406564584124654e-324, 0.0, &e_),
+        RS_ERR_ARG, "lengths are at least 1e-100");
+    ENSURE(rs_shape_make_ellipsoid(&s, 1e100, 1.0, 1e-100, 0.0, NULL) == RS_OK);
+    const double dirs[4][3] = {{0, 0, 1}, {0, 0, 1e-300}, {1e-300, 0, -1e-300}, {1, 1, 1}};
+    for (int k = 0; k < 4; k++) {
+        double p[3];
+        rs_shape_support(&s, dirs[k], p);
+        ENSURE(isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]));
+        ENSURE(rs_dot3(p, dirs[k]) >= 0.0);
+    }
     ENSURE_ERR(rs_shape_make_user(&s, NULL, NULL, 0.0, &e_), RS_ERR_ARG,
                "no support function");
     /* points in one plane, too few points, a non-finite point */
