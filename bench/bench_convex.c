@@ -56,8 +56,9 @@ static double urange(double a, double b)
 /* The shapes, each about 1 cm across. */
 static int make_shape(int k, rs_shape *s, const char **name)
 {
-    static const char *names[] = {"sphere",  "ellipsoid", "box",  "rounded box",
-                                  "capsule", "cylinder",  "cone", "polyhedron 64"};
+    static const char *names[] = {"sphere",      "ellipsoid",     "box",
+                                  "rounded box", "capsule",       "cylinder",
+                                  "cone",        "polyhedron 64", "polyhedron 10^4"};
     *name = names[k];
     switch (k) {
     case 0:
@@ -74,15 +75,16 @@ static int make_shape(int k, rs_shape *s, const char **name)
         return rs_shape_make_cylinder(s, 0.004, 0.004, 0.0, NULL);
     case 6:
         return rs_shape_make_cone(s, 0.004, 0.008, 0.0, NULL);
-    default: {
-        double xyz[3 * 64];
-        for (int i = 0; i < 64; i++) {
+    default: { /* points on a sphere of 5 mm */
+        const int np = k == 7 ? 64 : 10000;
+        static double xyz[3 * 10000];
+        for (int i = 0; i < np; i++) {
             const double z = urange(-1, 1), ph = urange(0, 2 * RS_PI), r = sqrt(1 - z * z);
             xyz[3 * i] = 0.005 * r * cos(ph);
             xyz[3 * i + 1] = 0.005 * r * sin(ph);
             xyz[3 * i + 2] = 0.005 * z;
         }
-        return rs_shape_make_polyhedron(s, xyz, 64, 0.0, NULL);
+        return rs_shape_make_polyhedron(s, xyz, np, 0.0, NULL);
     }
     }
 }
@@ -151,7 +153,7 @@ int main(int argc, char **argv)
     rs_contacts bq;
     memset(&bq, 0, sizeof bq);
     bq.witness = 1;
-    for (int s = 0; s < 8; s++) {
+    for (int s = 0; s < 9; s++) {
         rs_shape sh;
         const char *name;
         if (make_shape(s, &sh, &name) != RS_OK)
@@ -179,8 +181,8 @@ int main(int argc, char **argv)
                 for (int i = 0; i < n; i++) {
                     if (way < 2) {
                         bq.n = 0;
-                        rs_body_query(way ? &floor_mesh : &plane, NULL, &b[i], 0, 0.005, 0.0,
-                                      &bq, NULL);
+                        rs_body_query(way ? &floor_mesh : &plane, NULL, &b[i], 0, 0.005,
+                                      0.0, &bq, NULL);
                         m += bq.n;
                     } else {
                         rs_convex_contact cc;
@@ -196,15 +198,16 @@ int main(int argc, char **argv)
             med[way] = 1e9 * rs_bench_median(t, reps);
         }
         const double cm = found[1] ? (double)found[1] : 1.0;
-        printf("%-14s %9.1f %6.1f %6.2f %9.1f %6.1f %6.2f %6.2f %6.2f %9.1f %6.1f%s\n", name,
-               med[0], med[0] / sphere_ns, (double)found[0] / n, med[1], med[1] / sphere_ns,
-               (double)found[1] / n, mpr / cm, gjk / cm, med[2], med[2] / sphere_ns,
-               found[2] == n ? "" : " (!)");
+        printf("%-14s %9.1f %6.1f %6.2f %9.1f %6.1f %6.2f %6.2f %6.2f %9.1f %6.1f%s\n",
+               name, med[0], med[0] / sphere_ns, (double)found[0] / n, med[1],
+               med[1] / sphere_ns, (double)found[1] / n, mpr / cm, gjk / cm, med[2],
+               med[2] / sphere_ns, found[2] == n ? "" : " (!)");
         rs_shape_free(&sh);
     }
     rs_contacts_free(&bq);
     rs_surface_free(&floor_mesh);
-    printf("c/body: contacts a body (its manifold); (!): not every body met the triangle\n");
+    printf(
+        "c/body: contacts a body (its manifold); (!): not every body met the triangle\n");
     rs_contacts_free(&c);
     rs_surface_free(&plane);
     free(t), free(b), free(x), free(y), free(z), free(r);

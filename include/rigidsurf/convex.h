@@ -48,6 +48,8 @@ typedef struct rs_shape {
     int nt;          ///< polyhedron: number of hull triangles
     double *verts;   ///< polyhedron: hull vertices (3 * nv), body frame
     int *tris;       ///< polyhedron: triangles (3 * nt), counter-clockwise from outside
+    int *adj0;       ///< polyhedron: vertex v's neighbours on the hull are
+    int *adj;        ///< adj[adj0[v] .. adj0[v + 1]) (adj0: nv + 1 entries)
     const void *obj; ///< user: the object passed to support
     rs_support_fn support; ///< user: the support function of the core (without rounding)
 } rs_shape;

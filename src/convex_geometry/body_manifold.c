@@ -37,20 +37,12 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
         }
         break;
     case RS_SHAPE_POLYHEDRON: {
-        /* the cap vertices lowest along d, by insertion into c (highest d.v first) */
-        double key[CAND_MAX];
-        for (int v = 0; v < s->nv; v++) {
-            const double kv = rs_dot3(s->verts + 3 * v, d);
-            if (n == cap && !(kv > key[n - 1]))
-                continue;
-            int at = n < cap ? n++ : n - 1;
-            for (; at > 0 && key[at - 1] < kv; at--) {
-                key[at] = key[at - 1];
-                c[at] = c[at - 1];
-            }
-            key[at] = kv;
-            memcpy(c[at].p, s->verts + 3 * v, sizeof c[at].p);
-            c[at].id = 1 + v % (RS_MANIFOLD_IDS - 1);
+        /* the cap vertices farthest along d (into the wall), farthest first */
+        int idx[RS_HULL_FARTHEST_MAX];
+        n = rs_hull_farthest(s, d, cap < RS_HULL_FARTHEST_MAX ? cap : RS_HULL_FARTHEST_MAX, idx);
+        for (int k = 0; k < n; k++) {
+            memcpy(c[k].p, s->verts + 3 * idx[k], sizeof c[k].p);
+            c[k].id = 1 + idx[k] % (RS_MANIFOLD_IDS - 1);
         }
         break;
     }

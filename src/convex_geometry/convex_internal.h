@@ -11,6 +11,20 @@
 int rs_shape_check(const rs_shape *s, rs_error *err);
 /// The core's support along d (body frame, no rounding); d need not be unit, zero is +z.
 void rs_shape_core_support(const rs_shape *s, const double d[3], double out[3]);
+/// Hulls of at most this many vertices are scanned; larger ones walked (hull_walk.c).
+#define RS_HULL_SCAN 64
+/// Most vertices rs_hull_farthest gives.
+#define RS_HULL_FARTHEST_MAX 32
+/// The vertex adjacency of polyhedron s (adj0, adj) from its triangles. 0, -1 when out
+/// of memory.
+int rs_hull_adjacency(rs_shape *s);
+/// The index of polyhedron s's vertex farthest along d (body frame): by a scan of its
+/// vertices (the first of ties), or for more than RS_HULL_SCAN by hill climbing over its
+/// adjacency.
+int rs_hull_support(const rs_shape *s, const double d[3]);
+/// The cap (<= RS_HULL_FARTHEST_MAX) vertices of s farthest along d, farthest first (ties:
+/// the lower index), into out; returns how many.
+int rs_hull_farthest(const rs_shape *s, const double d[3], int cap, int *out);
 /// The rounding around the core: the shape's rounding, plus the radius of a sphere or
 /// a capsule (whose cores are a point and a segment).
 double rs_shape_core_radius(const rs_shape *s);

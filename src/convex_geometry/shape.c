@@ -160,10 +160,10 @@ int rs_shape_make_polyhedron(rs_shape *s, const double *xyz, int n, double round
         return rs_error_set(err, strstr(msg, "memory") ? RS_ERR_NOMEM : RS_ERR_GEOMETRY,
                             "polyhedron: %s", msg);
     rs_moments m;
-    if (rs_polytope_moments(s->verts, s->tris, s->nt, rounding, &m)) {
+    if (rs_hull_adjacency(s) || rs_polytope_moments(s->verts, s->tris, s->nt, rounding, &m)) {
         rs_shape_free(s);
         memset(s, 0, sizeof *s);
-        return rs_error_set(err, RS_ERR_NOMEM, "polyhedron: out of memory for its moments");
+        return rs_error_set(err, RS_ERR_NOMEM, "polyhedron: out of memory");
     }
     if (!(m.v > 0.0)) {
         rs_shape_free(s);
@@ -209,7 +209,7 @@ int rs_shape_check(const rs_shape *s, rs_error *err)
     for (int k = 0; ok && k < nd[s->kind]; k++)
         ok = s->dim[k] > 0.0 && s->dim[k] <= RS_CONVEX_COORD_MAX;
     if (ok && s->kind == RS_SHAPE_POLYHEDRON)
-        ok = s->verts && s->tris && s->nv >= 4 && s->nt >= 4;
+        ok = s->verts && s->tris && s->adj0 && s->adj && s->nv >= 4 && s->nt >= 4;
     if (ok && s->kind == RS_SHAPE_USER)
         ok = s->support != NULL;
     if (!ok)
@@ -225,8 +225,11 @@ void rs_shape_free(rs_shape *s)
         return;
     free(s->verts);
     free(s->tris);
+    free(s->adj0);
+    free(s->adj);
     s->verts = NULL;
     s->tris = NULL;
+    s->adj0 = s->adj = NULL;
     s->nv = s->nt = 0;
 }
 
@@ -294,15 +297,7 @@ void rs_shape_core_support(const rs_shape *s, const double dir[3], double out[3]
         out[2] = sign1(d[2]) * h[1];
         return;
     case RS_SHAPE_POLYHEDRON: {
-        int best = 0;
-        double bd = -INFINITY;
-        for (int i = 0; i < s->nv; i++) {
-            const double p = rs_dot3(s->verts + 3 * i, d);
-            if (p > bd) {
-                bd = p;
-                best = i;
-            }
-        }
+        const int best = rs_hull_support(s, d);
         for (int k = 0; k < 3; k++)
             out[k] = s->verts[3 * best + k];
         return;

@@ -505,6 +505,52 @@ static void test_hulls_are_canonical(void)
     rs_shape_free(&py);
 }
 
+/* A hull of 10^4 points (on an ellipsoid, and a third of them inside): its support, found
+ * by climbing the hull's vertex graph, is a vertex with the largest d.v of all the
+ * points, along 2000 directions and the axes (ties on a flat face included: a box's
+ * corners among its surface's points). */
+static void test_large_hull_support_climbs_to_the_top(void)
+{
+    enum { N = 10000 };
+    static double xyz[3 * N];
+    for (int i = 0; i < N; i++) {
+        double d[3];
+        rand_dir(d);
+        const double r = (i % 3) ? 1.0 : urand();
+        xyz[3 * i] = 2.0 * r * d[0], xyz[3 * i + 1] = r * d[1],
+                xyz[3 * i + 2] = 0.5 * r * d[2];
+    }
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass) /* a box: points on its faces, many of them on a face's plane */
+            for (int i = 0; i < N; i++) {
+                const int f = i % 6;
+                for (int k = 0; k < 3; k++)
+                    xyz[3 * i + k] =
+                        k == f / 2 ? (f & 1 ? 1.0 : -1.0) : 2.0 * urand() - 1.0;
+            }
+        rs_shape s;
+        ENSURE(rs_shape_make_polyhedron(&s, xyz, N, 0.0, NULL) == RS_OK);
+        ENSURE(s.nv > 64);
+        for (int t = 0; t < 2006; t++) {
+            double d[3] = {0, 0, 0}, p[3];
+            if (t < 6)
+                d[t / 2] = t & 1 ? -1.0 : 1.0;
+            else
+                rand_dir(d);
+            rs_shape_support(&s, d, p);
+            double best = -INFINITY;
+            for (int i = 0; i < N; i++) {
+                double q[3];
+                for (int k = 0; k < 3; k++)
+                    q[k] = xyz[3 * i + k] - s.shift[k];
+                best = fmax(best, rs_dot3(q, d));
+            }
+            ENSURE(rs_dot3(p, d) >= best - 1e-15 * fmax(1.0, fabs(best)));
+        }
+        rs_shape_free(&s);
+    }
+}
+
 /* A make call that fails leaves no shape: the mass properties and a body refuse it by
  * name (before: the shape as it was, and "out of memory"); a hull whose volume is lost
  * to rounding is a geometry error (before: "out of memory"). */
@@ -540,6 +586,7 @@ int main(void)
     RS_RUN(test_body_support_world);
     RS_RUN(test_bad_shapes);
     RS_RUN(test_hulls_are_canonical);
+    RS_RUN(test_large_hull_support_climbs_to_the_top);
     RS_RUN(test_a_failed_make_leaves_no_shape);
     return rs_test_summary();
 }
