@@ -52,7 +52,7 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
         return rs_error_set(err, RS_ERR_ARG,
                             "body contacts: no surface, or one whose kind takes no bodies");
     rs_body_contacts l = {0, cap, out, 1}; /* the caller's array while it has room */
-    int rc = s->ops->body(s, pose, b, gap_max, 0, &l, err);
+    int rc = s->ops->body(s, pose, b, 1, gap_max, 0, &l, err);
     if (rc == RS_OK && l.n > cap)
         rc = rs_error_set(err, RS_ERR_CAPACITY,
                           "body contacts: %d contacts with '%s', room for %d", l.n, s->name,
@@ -70,7 +70,7 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
                   double radius, double gap_max, rs_contacts *c, rs_error *err)
 {
     const int k0 = c ? c->n : 0;
-    const int rc = rs_body_manifold(s, pose, b, point, radius, gap_max, c, err);
+    const int rc = rs_body_manifold(s, pose, b, 1, point, &radius, gap_max, c, err);
     if (rc == RS_OK)
         rs_frame_orient(s->ops->frame, c, k0, c->n);
     return rc;
@@ -86,14 +86,20 @@ static int query_bodies(const rs_surface *s, const rs_query *q, rs_contacts *out
                             "that keeps witness points (rs_contacts.witness)");
     int rc = RS_OK;
     for (int i = 0; i < q->n && rc == RS_OK;) {
-        if (q->slave.body[i].shape) {
-            rc = rs_body_query(s, q->pose, &q->slave.body[i], i,
-                               q->slave.radius ? q->slave.radius[i] : 0.0, q->gap_max, out,
-                               err);
-            i++;
+        int j = i;
+        if (q->slave.body[i].shape) { /* a run of bodies, asked in one block */
+            static const double zero[RS_BLOCK];
+            while (j < q->n && q->slave.body[j].shape && j - i < RS_BLOCK)
+                j++;
+            const int k0 = out->n;
+            rc = rs_body_manifold(s, q->pose, q->slave.body + i, j - i, i,
+                                  q->slave.radius ? q->slave.radius + i : zero, q->gap_max,
+                                  out, err);
+            if (rc == RS_OK)
+                rs_frame_orient(s->ops->frame, out, k0, out->n);
+            i = j;
             continue;
         }
-        int j = i;
         while (j < q->n && !q->slave.body[j].shape)
             j++;
         rs_query run = *q;

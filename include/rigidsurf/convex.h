@@ -50,6 +50,8 @@ typedef struct rs_shape {
     int *tris;       ///< polyhedron: triangles (3 * nt), counter-clockwise from outside
     int *adj0;       ///< polyhedron: vertex v's neighbours on the hull are
     int *adj;        ///< adj[adj0[v] .. adj0[v + 1]) (adj0: nv + 1 entries)
+    double reach;    ///< the farthest corner of its body-frame bounds from the origin
+                     ///< (length; set by the make call)
     const void *obj; ///< user: the object passed to support
     rs_support_fn support; ///< user: the support function of the core (without rounding)
 } rs_shape;
@@ -261,12 +263,14 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
 /// The owning feature of a contact id (itself for a sphere's contact).
 #define RS_FEATURE_OWNER(f) ((f) % RS_MANIFOLD_STRIDE)
 
-/// rs_body_query's contacts before their frames are turned into the kind's convention:
-/// each in the principal frame (n, d1, d2 and the curvatures along d1 and d2), as a kind's
-/// closest operation writes a sphere's (surface.h, rs_frame_convention). rs_body_query is
-/// this call and rs_frame_orient.
-int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *b, int point,
-                     double radius, double gap_max, rs_contacts *c, rs_error *err);
+/// rs_body_query for the n bodies b[0 .. n), slave numbers point0 .. point0 + n - 1 and
+/// radii radius[0 .. n), asked of the surface in one block, and each contact in the
+/// principal frame (n, d1, d2 and the curvatures along d1 and d2), as a kind's closest
+/// operation writes a sphere's (surface.h, rs_frame_convention): rs_body_query is this
+/// call for one body, and rs_frame_orient.
+int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *b, int n,
+                     int point0, const double *radius, double gap_max, rs_contacts *c,
+                     rs_error *err);
 
 /// A convex body as a slave of the contact core: its contacts with surface s in pose
 /// (NULL: reference) appended to c, a list that keeps witness points (c->witness), as

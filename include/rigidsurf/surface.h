@@ -160,14 +160,16 @@ typedef struct rs_surface_ops {
     int (*facet_index)(const struct rs_surface *s, int f);
     /// With facet: the number of facets.
     int (*facet_count)(const struct rs_surface *s);
-    /// The contacts of the convex body b (convex.h) with the surface in pose (NULL: the
+    /// The contacts of the n convex bodies b (convex.h) with the surface in pose (NULL: the
     /// reference configuration), one per owning feature with a gap of at most gap_max,
-    /// appended to out in the principal frame, as closest writes a sphere's (docs/
-    /// conventions.md, "Convex bodies"). With lenient != 0, a deepest point that does not
-    /// settle (a wall curved more sharply than the body) gives the deepest of its iterates,
-    /// with iterations -1, instead of RS_ERR_GEOMETRY. NULL: the kind takes no bodies.
+    /// appended to out[i] for body i in the principal frame, as closest writes a sphere's
+    /// (docs/conventions.md, "Convex bodies"). With lenient != 0, a deepest point that does
+    /// not settle (a wall curved more sharply than the body) gives the deepest of its
+    /// iterates, with iterations -1, instead of RS_ERR_GEOMETRY. NULL: the kind takes no
+    /// bodies.
     int (*body)(const struct rs_surface *s, const rs_pose *pose, const struct rs_body *b,
-                double gap_max, int lenient, struct rs_body_contacts *out, rs_error *err);
+                int n, double gap_max, int lenient, struct rs_body_contacts *out,
+                rs_error *err);
     /// How a surface file describes the kind: its parameters, data lines and the making
     /// of its surface (private to the geometry's reader; NULL: no surface file names it).
     const struct rs_surface_syntax *syntax;

@@ -10,14 +10,7 @@
 
 double rs_body_reach(const rs_body *b)
 {
-    double lo[3], hi[3], r2 = 0.0;
-    rs_shape_bounds(b->shape, lo, hi);
-    for (int c = 0; c < 8; c++) {
-        const double v[3] = {(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1],
-                             (c & 4) ? hi[2] : lo[2]};
-        r2 = fmax(r2, rs_dot3(v, v));
-    }
-    return sqrt(r2);
+    return b->shape->reach;
 }
 
 int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_body *checked,
@@ -85,35 +78,40 @@ void rs_body_contacts_free(rs_body_contacts *l)
     memset(l, 0, sizeof *l);
 }
 
-int rs_body_closest(const rs_surface *s, const rs_pose *pose, const double x[3],
-                    const double *radius, double gap_max, rs_contacts *c, rs_error *err)
+int rs_body_closest(const rs_surface *s, const rs_pose *pose, int n, const double *x,
+                    const double *y, const double *z, const double *radius, double gap_max,
+                    double depth_max, rs_contacts *c, rs_error *err)
 {
-    const double px[1] = {x[0]}, py[1] = {x[1]}, pz[1] = {x[2]};
     rs_query q;
     memset(&q, 0, sizeof q);
-    q.n = 1;
-    q.slave.x = px, q.slave.y = py, q.slave.z = pz;
+    q.n = n;
+    q.slave.x = x, q.slave.y = y, q.slave.z = z;
     q.slave.radius = radius;
     q.pose = pose;
     q.gap_max = gap_max;
-    q.dist_min = -INFINITY;
+    q.dist_min = -depth_max;
     c->n = 0;
-    return s->ops->closest(s, &q, c, err);
+    return n > 0 ? s->ops->closest(s, &q, c, err) : RS_OK;
 }
 
-int rs_body_point_contact(const rs_surface *s, const rs_pose *pose, const double p[3],
-                          double r, double reach, int want, rs_contacts *c, rs_error *err,
-                          int *rc)
+void rs_contacts_offsets(const rs_contacts *c, int n, int *off)
 {
-    const double rad[1] = {r};
-    *rc = rs_body_closest(s, pose, p, r > 0.0 ? rad : NULL, reach, c, err);
-    if (*rc != RS_OK || c->n == 0)
-        return -1;
-    int best = 0;
-    for (int k = 0; k < c->n; k++) {
+    int k = 0;
+    for (int i = 0; i < n; i++) {
+        off[i] = k;
+        while (k < c->n && c->point[k] == i)
+            k++;
+    }
+    off[n] = k;
+}
+
+int rs_contacts_pick(const rs_contacts *c, int k0, int k1, int want)
+{
+    int best = -1;
+    for (int k = k0; k < k1; k++) {
         if (RS_FEATURE_BASE(c->feature[k]) == want)
             return k;
-        if (c->dist[k] < c->dist[best])
+        if (best < 0 || c->dist[k] < c->dist[best])
             best = k;
     }
     return best;

@@ -1,8 +1,10 @@
-/* A convex body against an analytic surface (SEGMENTS, CYLINDER, REVOLUTION), the analytic
+/* Convex bodies against an analytic surface (SEGMENTS, CYLINDER, REVOLUTION), the analytic
  * kinds' body operation (rs_surface_ops.body): per owning feature, the body's deepest
  * point along the feature's normal, found as a fixed point (convex.h,
  * rs_body_surface_contacts; docs/conventions.md, "Convex bodies"). The surface is asked
- * through its own point and sphere query (closest) only. */
+ * through its own point and sphere query (closest) only, for a block of bodies at once:
+ * one query of their reach spheres, then one query of every body's iterate per step of
+ * the fixed point. */
 #include "convex_internal.h"
 #include "rigidsurf/vec.h"
 
@@ -30,72 +32,137 @@ static void take(rs_body_contact *o, const rs_contacts *pc, int j, const double 
     o->curv[1] = pc->curv[1][j];
 }
 
-int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body *body,
-                        double gap_max, int lenient, rs_body_contacts *out, rs_error *err)
-{
-    rs_body checked;
-    int rc = rs_body_check(s, body, gap_max, &checked, err);
-    if (rc != RS_OK)
-        return rc;
-    const rs_body *b = &checked;
-    const double reach = rs_body_reach(b);
-    const int n0 = out->n;
+/* The fixed point of one feature near one body. */
+typedef struct fixed {
+    int body, want, it, conv, found; /* found: a contact at the last iterate (-1: none) */
+    double nrm[3], p[3];
+    rs_body_contact best, got; /* the deepest iterate; the settled one */
+} fixed;
 
-    /* The features near the body: a sphere of its reach about its centre. */
+int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body *body,
+                        int n, double gap_max, int lenient, rs_body_contacts *out,
+                        rs_error *err)
+{
+    rs_body *b = malloc((size_t)(n > 0 ? n : 1) * sizeof *b);
+    double *reach = malloc((size_t)(n > 0 ? n : 1) * 4 * sizeof *reach);
+    int *off = NULL, *live = NULL;
+    int rc = b && reach ? RS_OK
+                        : rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
+    fixed *fx = NULL;
     rs_contacts cand, pc;
     memset(&cand, 0, sizeof cand);
     memset(&pc, 0, sizeof pc);
-    const double cr[1] = {reach};
-    rc = rs_body_closest(s, pose, b->x, cr, gap_max, &cand, err);
-    for (int k = 0; rc == RS_OK && k < cand.n; k++) {
-        double nrm[3] = {cand.nrm[0][k], cand.nrm[1][k], cand.nrm[2][k]};
-        int want = RS_FEATURE_BASE(cand.feature[k]), found = -1, it = 0, conv = 0;
-        double p[3];
-        rs_body_contact best; /* the deepest iterate */
-        best.depth = -INFINITY;
-        for (; it < BODY_ITER_MAX && !conv; it++) {
-            const double down[3] = {-nrm[0], -nrm[1], -nrm[2]};
-            rs_body_support(b, down, p);
-            found = rs_body_point_contact(s, pose, p, 0.0, 2.0 * reach + gap_max, want, &pc,
-                                          err, &rc);
-            if (rc != RS_OK || found < 0)
-                break;
-            if (-pc.dist[found] > best.depth)
-                take(&best, &pc, found, p, -1);
-            const double nn[3] = {pc.nrm[0][found], pc.nrm[1][found], pc.nrm[2][found]};
-            const double turn =
-                fabs(nn[0] - nrm[0]) + fabs(nn[1] - nrm[1]) + fabs(nn[2] - nrm[2]);
-            conv = turn <= 1e-13 && RS_FEATURE_BASE(pc.feature[found]) == want;
-            want = RS_FEATURE_BASE(pc.feature[found]);
-            memcpy(nrm, nn, sizeof nrm);
+    for (int i = 0; rc == RS_OK && i < n; i++) {
+        rc = rs_body_check(s, body + i, gap_max, b + i, err);
+        if (rc == RS_OK)
+            reach[i] = rs_body_reach(b + i);
+    }
+    /* The features near each body: a sphere of its reach about its centre (its centre
+     * sought as deep as twice its reach: a body deeper lies behind the wall). */
+    double *x = reach + n, *y = x + n, *z = y + n, far = gap_max;
+    for (int i = 0; rc == RS_OK && i < n; i++) {
+        x[i] = b[i].x[0], y[i] = b[i].x[1], z[i] = b[i].x[2];
+        far = fmax(far, 2.0 * reach[i] + gap_max);
+    }
+    if (rc == RS_OK)
+        rc = rs_body_closest(s, pose, n, x, y, z, reach, gap_max, far, &cand, err);
+    const int nf = cand.n;
+    if (rc == RS_OK && nf > 0) {
+        fx = malloc((size_t)nf * sizeof *fx);
+        off = malloc((size_t)(nf + 1) * sizeof *off);
+        live = malloc((size_t)nf * sizeof *live);
+        double *xyz = realloc(reach, (size_t)(n + 3 * nf) * sizeof *xyz);
+        if (!fx || !off || !live || !xyz)
+            rc = rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
+        if (xyz)
+            reach = xyz;
+    }
+    for (int k = 0; rc == RS_OK && k < nf; k++) {
+        fixed *f = fx + k;
+        f->body = cand.point[k];
+        f->want = RS_FEATURE_BASE(cand.feature[k]);
+        f->it = f->conv = 0;
+        f->found = -1;
+        f->best.depth = -INFINITY;
+        for (int d = 0; d < 3; d++)
+            f->nrm[d] = cand.nrm[d][k];
+        live[k] = k;
+    }
+    /* Each step: every unsettled iterate's point, the body's support along -n, asked in
+     * one query; n the normal of its feature's contact there (the feature it follows,
+     * else the deepest). */
+    int nact = rc == RS_OK ? nf : 0;
+    while (rc == RS_OK && nact > 0) {
+        x = reach + n, y = x + nact, z = y + nact;
+        double gap = 0.0;
+        for (int a = 0; a < nact; a++) {
+            fixed *f = fx + live[a];
+            const double down[3] = {-f->nrm[0], -f->nrm[1], -f->nrm[2]};
+            rs_body_support(b + f->body, down, f->p);
+            x[a] = f->p[0], y[a] = f->p[1], z[a] = f->p[2];
+            gap = fmax(gap, 2.0 * reach[f->body] + gap_max);
         }
-        if (rc != RS_OK || found < 0)
-            continue; /* the body's deepest point has no contact: none here */
-        rs_body_contact got;
-        if (conv) {
-            take(&got, &pc, found, p, it);
-        } else if (lenient) {
-            got = best;
-        } else {
-            rc = rs_error_set(err, RS_ERR_GEOMETRY,
-                              "body contacts: the deepest point on feature %d of '%s' did "
-                              "not settle in %d iterations (a wall curved more sharply "
-                              "than the body?)",
-                              want, s->name, BODY_ITER_MAX);
+        rc = rs_body_closest(s, pose, nact, x, y, z, NULL, gap, gap, &pc, err);
+        if (rc != RS_OK)
             break;
+        rs_contacts_offsets(&pc, nact, off);
+        int still = 0;
+        for (int a = 0; a < nact; a++) {
+            fixed *f = fx + live[a];
+            const int j = rs_contacts_pick(&pc, off[a], off[a + 1], f->want);
+            f->found = j;
+            if (j < 0)
+                continue; /* the body's deepest point has no contact: none here */
+            if (-pc.dist[j] > f->best.depth)
+                take(&f->best, &pc, j, f->p, -1);
+            const double nn[3] = {pc.nrm[0][j], pc.nrm[1][j], pc.nrm[2][j]};
+            const double turn =
+                fabs(nn[0] - f->nrm[0]) + fabs(nn[1] - f->nrm[1]) + fabs(nn[2] - f->nrm[2]);
+            f->conv = turn <= 1e-13 && RS_FEATURE_BASE(pc.feature[j]) == f->want;
+            f->want = RS_FEATURE_BASE(pc.feature[j]);
+            memcpy(f->nrm, nn, sizeof f->nrm);
+            f->it++;
+            if (f->conv)
+                take(&f->got, &pc, j, f->p, f->it);
+            else if (f->it < BODY_ITER_MAX)
+                live[still++] = live[a];
         }
-        if (!(-got.depth <= gap_max))
+        nact = still;
+    }
+    /* One contact per owning feature of each body, the deepest, in the order found. */
+    for (int k = 0; rc == RS_OK && k < nf; k++) {
+        const fixed *f = fx + k;
+        if (f->found < 0)
             continue;
-        /* one contact per owning feature: the deepest */
+        const rs_body_contact *got = &f->got;
+        if (!f->conv) {
+            if (!lenient) {
+                rc = rs_error_set(err, RS_ERR_GEOMETRY,
+                                  "body contacts: the deepest point on feature %d of '%s' "
+                                  "did not settle in %d iterations (a wall curved more "
+                                  "sharply than the body?)",
+                                  f->want, s->name, BODY_ITER_MAX);
+                break;
+            }
+            got = &f->best;
+        }
+        if (!(-got->depth <= gap_max))
+            continue;
+        rs_body_contacts *l = out + f->body;
         int slot = -1;
-        for (int j = n0; j < out->n; j++)
-            if (out->c[j].feature == got.feature)
+        for (int j = 0; j < l->n; j++)
+            if (l->c[j].feature == got->feature)
                 slot = j;
         if (slot < 0)
-            rc = rs_body_contacts_push(out, &got, err);
-        else if (out->c[slot].depth < got.depth)
-            out->c[slot] = got;
+            rc = rs_body_contacts_push(l, got, err);
+        else if (l->c[slot].depth < got->depth)
+            l->c[slot] = *got;
     }
+    free(b);
+    free(reach);
+    free(fx);
+    free(off);
+    free(live);
     rs_contacts_free(&cand);
     rs_contacts_free(&pc);
     return rc;

@@ -39,7 +39,8 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
     case RS_SHAPE_POLYHEDRON: {
         /* the cap vertices farthest along d (into the wall), farthest first */
         int idx[RS_HULL_FARTHEST_MAX];
-        n = rs_hull_farthest(s, d, cap < RS_HULL_FARTHEST_MAX ? cap : RS_HULL_FARTHEST_MAX, idx);
+        n = rs_hull_farthest(s, d, cap < RS_HULL_FARTHEST_MAX ? cap : RS_HULL_FARTHEST_MAX,
+                             idx);
         for (int k = 0; k < n; k++) {
             memcpy(c[k].p, s->verts + 3 * idx[k], sizeof c[k].p);
             c[k].id = 1 + idx[k] % (RS_MANIFOLD_IDS - 1);
@@ -85,6 +86,14 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
     return n;
 }
 
+/* Does the shape have core points (core_points gives some)? */
+static int core_points_of(const rs_shape *s)
+{
+    return s->kind == RS_SHAPE_BOX || s->kind == RS_SHAPE_POLYHEDRON ||
+           s->kind == RS_SHAPE_CYLINDER || s->kind == RS_SHAPE_CONE ||
+           s->kind == RS_SHAPE_CAPSULE;
+}
+
 /* One manifold point, before it is appended. */
 typedef struct mpoint {
     int id;
@@ -94,7 +103,7 @@ typedef struct mpoint {
 static int append(rs_contacts *c, int point, double radius, int feature, const mpoint *m,
                   rs_error *err)
 {
-    int rc = rs_contacts_reserve(c, c->n + 1, err);
+    int rc = rs_contacts_reserve(c, c->n < c->cap ? c->n + 1 : 2 * c->n + 64, err);
     if (rc)
         return rc;
     const int k = c->n++;
@@ -138,147 +147,240 @@ static int by_depth(const void *a, const void *b)
     return da < db ? 1 : da > db ? -1 : ((const mpoint *)a)->id - ((const mpoint *)b)->id;
 }
 
-int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *body,
-                     int point, double radius, double gap_max, rs_contacts *c,
+/* A core point's query: its body, the feature (index into the body's list) and id, its
+ * point in the world and the lift of its ball. */
+typedef struct corner {
+    int body, f, id;
+    double cw[3], lift;
+} corner;
+
+typedef struct corners {
+    corner *q;
+    double *x; /* x, y, z, radius: 4 cap each */
+    int n, cap;
+} corners;
+
+static int corners_add(corners *a, const corner *q, const double cl[3], double r)
+{
+    if (a->n == a->cap) {
+        const int cap = a->cap ? 2 * a->cap : 64;
+        corner *nq = realloc(a->q, (size_t)cap * sizeof *nq);
+        double *nx = nq ? malloc(4 * (size_t)cap * sizeof *nx) : NULL;
+        if (!nx) {
+            if (nq)
+                a->q = nq;
+            return -1;
+        }
+        for (int k = 0; k < 4; k++)
+            if (a->n)
+                memcpy(nx + (size_t)k * cap, a->x + (size_t)k * a->cap,
+                       (size_t)a->n * sizeof *nx);
+        free(a->x);
+        a->q = nq, a->x = nx, a->cap = cap;
+    }
+    a->q[a->n] = *q;
+    a->x[a->n] = cl[0], a->x[a->cap + a->n] = cl[1], a->x[2 * a->cap + a->n] = cl[2];
+    a->x[3 * a->cap + a->n] = r;
+    a->n++;
+    return 0;
+}
+
+int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *body, int n,
+                     int point0, const double *radius, double gap_max, rs_contacts *c,
                      rs_error *err)
 {
     if (!c || !c->witness)
         return rs_error_set(err, RS_ERR_ARG,
                             "body query: the contact list must keep witness points "
                             "(rs_contacts.witness)");
-    if (!(radius >= 0.0) || !isfinite(radius))
-        return rs_error_set(err, RS_ERR_ARG,
-                            "body query: radius = %g (expected a finite number >= 0)",
-                            radius);
-    rs_body checked;
-    int rc = rs_body_check(s, body, gap_max, &checked, err);
-    if (rc)
-        return rc;
-    const rs_body *b = &checked;
-    if (!s->ops->body)
-        return rs_error_set(err, RS_ERR_ARG,
-                            "body query: surface '%s' (%s) takes no bodies", s->name,
-                            s->ops->name);
-    rs_body_contacts fl = {0, 0, NULL, 0};
-    rc = s->ops->body(s, pose, b, gap_max, 1, &fl, err);
-    if (rc) {
-        rs_body_contacts_free(&fl);
-        return rc;
+    for (int i = 0; i < n; i++)
+        if (!(radius[i] >= 0.0) || !isfinite(radius[i]))
+            return rs_error_set(err, RS_ERR_ARG,
+                                "body query: radius = %g (expected a finite number >= 0)",
+                                radius[i]);
+    if (n < 1)
+        return RS_OK;
+    /* each body's features in a list of its own, on a shared array while they fit */
+    enum { FEATURES = 4 };
+    rs_body *b = malloc((size_t)n * sizeof *b);
+    rs_body_contacts *fl = malloc((size_t)n * sizeof *fl);
+    rs_body_contact *pool = malloc((size_t)n * FEATURES * sizeof *pool);
+    if (!b || !fl || !pool) {
+        free(b);
+        free(fl);
+        free(pool);
+        return rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory for %d bodies",
+                            n);
     }
-    const rs_body_contact *fc = fl.c;
-    const int nf = fl.n;
-    double R[9];
-    rs_body_rotation(b, R);
-    const double rr = rs_shape_core_radius(b->shape), reach = rs_body_reach(b);
+    for (int i = 0; i < n; i++) {
+        const rs_body_contacts l = {0, FEATURES, pool + (size_t)i * FEATURES, 1};
+        fl[i] = l;
+    }
+    int rc = RS_OK;
+    for (int i = 0; i < n && rc == RS_OK; i++)
+        rc = rs_body_check(s, body + i, gap_max, b + i, err);
+    if (rc == RS_OK && !s->ops->body)
+        rc = rs_error_set(err, RS_ERR_ARG, "body query: surface '%s' (%s) takes no bodies",
+                          s->name, s->ops->name);
+    if (rc == RS_OK)
+        rc = s->ops->body(s, pose, b, n, gap_max, 1, fl, err);
+
+    /* Every body's core points that may reach the wall, each rounded toward it, asked in
+     * one query: its own contact with the feature (the same owning feature, else it rests
+     * on another one). flat facets (the FACETED convention): a ball moved along the
+     * normal has the same depth on their planes. */
+    const int mesh = s->ops->frame == RS_FRAME_GLOBAL_X;
+    corners cq = {NULL, NULL, 0, 0};
+    double gap = 0.0;
+    for (int i = 0; i < n && rc == RS_OK; i++) {
+        double R[9];
+        rs_body_rotation(b + i, R);
+        const double rr = rs_shape_core_radius(b[i].shape), reach = rs_body_reach(b + i);
+        gap = fmax(gap, 2.0 * reach + gap_max);
+        for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
+            const rs_body_contact *o = &fl[i].c[f];
+            if (o->feature >= RS_MANIFOLD_STRIDE) {
+                rc = rs_error_set(err, RS_ERR_CAPACITY,
+                                  "body query: feature %d of '%s' is beyond the manifold's "
+                                  "ids (%d)",
+                                  o->feature, s->name, RS_MANIFOLD_STRIDE);
+                break;
+            }
+            double d[3];
+            for (int k = 0; k < 3; k++)
+                d[k] = -(R[k] * o->normal[0] + R[3 + k] * o->normal[1] +
+                         R[6 + k] * o->normal[2]);
+            const double dn = rs_norm3(d);
+            for (int k = 0; k < 3; k++)
+                d[k] /= dn;
+            cand cp[CAND_MAX];
+            const int ncp = core_points(b[i].shape, d, cp, CAND_MAX - 1);
+            /* a wall flat or convex toward the body lies below the tangent plane at the
+             * deepest point: a point higher above it than the depth plus the gap does not
+             * reach it; elsewhere the body's reach bounds it */
+            const double above =
+                o->depth + gap_max +
+                (o->curv[0] >= 0.0 && o->curv[1] >= 0.0 ? 1e-9 : 1.0) * reach;
+            const int flat = mesh || (o->curv[0] == 0.0 && o->curv[1] == 0.0);
+            const double lift = flat ? fmax(o->depth, 0.0) + 1e-9 * reach : 0.0;
+            for (int k = 0; k < ncp; k++) {
+                corner q = {i, f, cp[k].id, {0.0, 0.0, 0.0}, lift};
+                rs_matvec3(R, cp[k].p, q.cw);
+                for (int j = 0; j < 3; j++)
+                    q.cw[j] += b[i].x[j];
+                const double h = rs_dot3(o->normal, q.cw) - rr - rs_dot3(o->normal, o->xs);
+                if (h > above)
+                    continue; /* too high above the deepest point to reach the wall */
+                /* the core point's rounding ball, as a sphere meets the wall; on a MESH,
+                 * whose two sides answer a point by the side it is on, the ball grown by
+                 * lift about its point moved as far out along the pair's normal, so that
+                 * its centre is on the body's side (the same depth on the facets' planes)
+                 */
+                const double cl[3] = {q.cw[0] + lift * o->normal[0],
+                                      q.cw[1] + lift * o->normal[1],
+                                      q.cw[2] + lift * o->normal[2]};
+                if (corners_add(&cq, &q, cl, rr + lift))
+                    rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
+            }
+        }
+    }
     rs_contacts pc;
     memset(&pc, 0, sizeof pc);
-    /* flat facets (the FACETED convention): a ball moved along the normal has the same
-     * depth on their planes */
-    const int k0 = c->n, mesh = s->ops->frame == RS_FRAME_GLOBAL_X;
-    for (int f = 0; f < nf && rc == RS_OK; f++) {
-        const rs_body_contact *o = &fc[f];
-        if (o->feature >= RS_MANIFOLD_STRIDE) {
-            rc = rs_error_set(err, RS_ERR_CAPACITY,
-                              "body query: feature %d of '%s' is beyond the manifold's "
-                              "ids (%d)",
-                              o->feature, s->name, RS_MANIFOLD_STRIDE);
-            break;
-        }
-        mpoint m[CAND_MAX];
-        int nm = 1;
-        m[0].id = 0;
-        m[0].depth = o->depth;
-        memcpy(m[0].xs, o->xs, sizeof m[0].xs);
-        memcpy(m[0].xm, o->xm, sizeof m[0].xm);
-        memcpy(m[0].n, o->normal, sizeof m[0].n);
-        memcpy(m[0].t1, o->t1, sizeof m[0].t1);
-        memcpy(m[0].t2, o->t2, sizeof m[0].t2);
-        memcpy(m[0].curv, o->curv, sizeof m[0].curv);
+    int *off = NULL;
+    if (rc == RS_OK && cq.n > 0) {
+        off = malloc(((size_t)cq.n + 1) * sizeof *off);
+        rc = off ? rs_body_closest(s, pose, cq.n, cq.x, cq.x + cq.cap, cq.x + 2 * cq.cap,
+                                   cq.x + 3 * cq.cap, gap, gap, &pc, err)
+                 : rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
+        if (rc == RS_OK)
+            rs_contacts_offsets(&pc, cq.n, off);
+    }
 
-        /* the core points, each rounded toward the wall, then its own contact with the
-         * feature (the same owning feature, else it rests on another one) */
-        double d[3];
-        for (int i = 0; i < 3; i++)
-            d[i] =
-                -(R[i] * o->normal[0] + R[3 + i] * o->normal[1] + R[6 + i] * o->normal[2]);
-        const double dn = rs_norm3(d);
-        for (int i = 0; i < 3; i++)
-            d[i] /= dn;
-        cand cp[CAND_MAX];
-        const int ncp = core_points(b->shape, d, cp, CAND_MAX - 1);
-        int deep_is_core = 0;
-        for (int k = 0; k < ncp && rc == RS_OK; k++) {
-            double cw[3];
-            rs_matvec3(R, cp[k].p, cw);
-            for (int i = 0; i < 3; i++)
-                cw[i] += b->x[i];
-            const double h = rs_dot3(o->normal, cw) - rr - rs_dot3(o->normal, o->xs);
-            if (h > o->depth + gap_max + reach)
-                continue; /* too high above the deepest point to reach the wall */
-            /* the core point's rounding ball, as a sphere meets the wall; on a MESH, whose
-             * two sides answer a point by the side it is on, the ball grown by lift
-             * about its point moved as far out along the pair's normal, so that its
-             * centre is on the body's side (the same depth on the facets' planes) */
-            const double lift = mesh ? fmax(o->depth, 0.0) + 1e-9 * reach : 0.0;
-            const double cl[3] = {cw[0] + lift * o->normal[0], cw[1] + lift * o->normal[1],
-                                  cw[2] + lift * o->normal[2]};
-            const int j =
-                rs_body_point_contact(s, pose, cl, rr + lift, 2.0 * reach + gap_max,
-                                      RS_FEATURE_BASE(o->feature), &pc, err, &rc);
-            if (rc != RS_OK || j < 0 || !same_wall(&pc, j, o, reach))
-                continue;
-            const double depth = rr + lift - pc.dist[j];
-            if (!(-depth <= gap_max))
-                continue;
-            if (depth >= o->depth - 1e-12 * reach)
-                deep_is_core = 1; /* as deep as the deepest point: it stands for it */
-            double xs[3];
-            for (int i = 0; i < 3; i++)
-                xs[i] = cw[i] - rr * pc.nrm[i][j];
-            mpoint *q = &m[nm++];
-            q->id = cp[k].id;
-            q->depth = depth;
-            for (int i = 0; i < 3; i++) {
-                q->xs[i] = xs[i];
-                q->xm[i] = pc.xm[i][j];
-                q->n[i] = pc.nrm[i][j];
-                q->t1[i] = pc.t1[i][j];
-                q->t2[i] = pc.t2[i][j];
+    /* Each body's manifold per feature, in order: the deepest point and the core points
+     * that rest on the feature's wall. */
+    for (int i = 0, a = 0; i < n && rc == RS_OK; i++) {
+        const int k0 = c->n;
+        const double rr = rs_shape_core_radius(b[i].shape), reach = rs_body_reach(b + i);
+        for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
+            const rs_body_contact *o = &fl[i].c[f];
+            mpoint m[CAND_MAX];
+            int nm = 1;
+            m[0].id = 0;
+            m[0].depth = o->depth;
+            memcpy(m[0].xs, o->xs, sizeof m[0].xs);
+            memcpy(m[0].xm, o->xm, sizeof m[0].xm);
+            memcpy(m[0].n, o->normal, sizeof m[0].n);
+            memcpy(m[0].t1, o->t1, sizeof m[0].t1);
+            memcpy(m[0].t2, o->t2, sizeof m[0].t2);
+            memcpy(m[0].curv, o->curv, sizeof m[0].curv);
+            int deep_is_core = 0;
+            for (; a < cq.n && cq.q[a].body == i && cq.q[a].f == f; a++) {
+                const corner *q = cq.q + a;
+                const int j =
+                    rs_contacts_pick(&pc, off[a], off[a + 1], RS_FEATURE_BASE(o->feature));
+                if (j < 0 || !same_wall(&pc, j, o, reach))
+                    continue;
+                const double depth = rr + q->lift - pc.dist[j];
+                if (!(-depth <= gap_max))
+                    continue;
+                if (depth >= o->depth - 1e-12 * reach)
+                    deep_is_core = 1; /* as deep as the deepest point: it stands for it */
+                mpoint *p = &m[nm++];
+                p->id = q->id;
+                p->depth = depth;
+                for (int k = 0; k < 3; k++) {
+                    p->xs[k] = q->cw[k] - rr * pc.nrm[k][j];
+                    p->xm[k] = pc.xm[k][j];
+                    p->n[k] = pc.nrm[k][j];
+                    p->t1[k] = pc.t1[k][j];
+                    p->t2[k] = pc.t2[k][j];
+                }
+                p->curv[0] = pc.curv[0][j];
+                p->curv[1] = pc.curv[1][j];
             }
-            q->curv[0] = pc.curv[0][j];
-            q->curv[1] = pc.curv[1][j];
+            /* the deepest point stands for itself unless a core point is as deep (is it, or
+             * rests on the wall beside it: a face, a rim); where it did not settle (a fold
+             * sharper than the body) the core points stand for it, and a smooth body keeps
+             * its deepest iterate */
+            if (o->iterations < 0 && core_points_of(b[i].shape))
+                deep_is_core = 1;
+            mpoint *keep = deep_is_core ? m + 1 : m;
+            const int count = deep_is_core ? nm - 1 : nm;
+            for (int k = 1; k < count; k++) /* by depth, a few: by insertion */
+                for (int q = k; q > 0 && by_depth(keep + q - 1, keep + q) > 0; q--) {
+                    const mpoint t = keep[q];
+                    keep[q] = keep[q - 1];
+                    keep[q - 1] = t;
+                }
+            /* two kept points of one id (a polyhedron's vertices i and i + 30): the deeper
+             */
+            int nk = 0;
+            for (int k = 0; k < count && nk < RS_MANIFOLD_MAX; k++) {
+                int dup = 0;
+                for (int q = 0; q < nk; q++)
+                    dup |= keep[q].id == keep[k].id;
+                if (!dup)
+                    keep[nk++] = keep[k];
+            }
+            for (int k = 0; k < nk && rc == RS_OK; k++)
+                rc = append(c, point0 + i, radius[i], o->feature, &keep[k], err);
         }
-        if (rc != RS_OK)
-            break;
-        /* the deepest point stands for itself unless a core point is as deep (is it, or
-         * rests on the wall beside it: a face, a rim); where it did not settle (a fold
-         * sharper than the body) the core points stand for it, and a smooth body keeps
-         * its deepest iterate */
-        if (o->iterations < 0 && ncp > 0)
-            deep_is_core = 1;
-        mpoint *keep = deep_is_core ? m + 1 : m;
-        const int count = deep_is_core ? nm - 1 : nm;
-        qsort(keep, (size_t)count, sizeof *keep, by_depth);
-        /* two kept points of one id (a polyhedron's vertices i and i + 30): the deeper */
-        int nk = 0;
-        for (int k = 0; k < count && nk < RS_MANIFOLD_MAX; k++) {
-            int dup = 0;
-            for (int q = 0; q < nk; q++)
-                dup |= keep[q].id == keep[k].id;
-            if (!dup)
-                keep[nk++] = keep[k];
-        }
-        for (int k = 0; k < nk && rc == RS_OK; k++)
-            rc = append(c, point, radius, o->feature, &keep[k], err);
+        /* Contacts on features that fold concavely under the body (two facets of a drum)
+         * overlap one patch of it: their shares, as a sphere's of radius R on each
+         * witness point (docs/conventions.md, "Shares at concave folds"): weights a^2, a
+         * = sqrt(R^2 - dist^2), cut to 0 where a contact's foot is on the fold line it
+         * begins or ends at. Corners apart by more than their patches keep 1. */
+        if (rc == RS_OK && c->n - k0 > 1)
+            rs_contacts_body_shares(c, k0, c->n - k0, radius[i]);
     }
     rs_contacts_free(&pc);
-    rs_body_contacts_free(&fl);
-    /* Contacts on features that fold concavely under the body (two facets of a drum)
-     * overlap one patch of it: their shares, as a sphere's of radius R on each witness
-     * point (docs/conventions.md, "Shares at concave folds"): weights a^2, a = sqrt(R^2 -
-     * dist^2), cut to 0 where a contact's foot is on the fold line it begins or ends at.
-     * Corners apart by more than their patches keep 1. */
-    if (rc == RS_OK && c->n - k0 > 1)
-        rs_contacts_body_shares(c, k0, c->n - k0, radius);
+    free(off);
+    free(cq.q);
+    free(cq.x);
+    for (int i = 0; i < n; i++)
+        rs_body_contacts_free(fl + i);
+    free(fl);
+    free(pool);
+    free(b);
     return rc;
 }

@@ -39,26 +39,29 @@ int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_body
                   rs_error *err);
 /// Appends o to l; RS_ERR_NOMEM when it cannot grow.
 int rs_body_contacts_push(rs_body_contacts *l, const rs_body_contact *o, rs_error *err);
-/// The contacts of one slave with surface s, into c (emptied first): a point (radius NULL)
-/// or a sphere of radius *radius at x, every penetration kept, by the kind's closest
-/// operation (principal frame).
-int rs_body_closest(const rs_surface *s, const rs_pose *pose, const double x[3],
-                    const double *radius, double gap_max, rs_contacts *c, rs_error *err);
-/// The contact of point p, or of the ball of radius r > 0 about it, with surface s whose
-/// feature base is want, else p's deepest contact, from the kind's closest operation with
-/// gap reach into c (principal frame); -1 when p has none (*rc: the query's status).
-int rs_body_point_contact(const rs_surface *s, const rs_pose *pose, const double p[3],
-                          double r, double reach, int want, rs_contacts *c, rs_error *err,
-                          int *rc);
+/// The contacts of n slaves with surface s, into c (emptied first): points (radius NULL)
+/// or spheres at (x, y, z) with a gap of at most gap_max whose centres lie at most
+/// depth_max behind the surface (a body's points are sought no deeper than twice its
+/// reach: a body deeper than that lies behind the wall), by the kind's closest operation
+/// in one block (principal frame).
+int rs_body_closest(const rs_surface *s, const rs_pose *pose, int n, const double *x,
+                    const double *y, const double *z, const double *radius, double gap_max,
+                    double depth_max, rs_contacts *c, rs_error *err);
+/// Where slave i's contacts start in c (off[i]; off[n] = c->n): a query's contacts of
+/// one slave are consecutive, in block order.
+void rs_contacts_offsets(const rs_contacts *c, int n, int *off);
+/// Among contacts [k0, k1) of one slave, the one of feature base want, else the deepest
+/// (the first of ties); -1 for none.
+int rs_contacts_pick(const rs_contacts *c, int k0, int k1, int want);
 
 /// Does body b hold the world point p, to tol (length): is p within the rounding plus tol
 /// of its core (GJK)? 0 for a body rs_convex_pair refuses.
 int rs_body_holds(const rs_body *b, const double p[3], double tol);
 /// The analytic kinds' body operation (rs_surface_ops.body, body_fixed_point.c): for
-/// each feature near the body (a sphere query of its reach about its centre) the normal
-/// iterated to a fixed point through the kind's point query; one contact per owning
-/// feature, the deepest.
-int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+/// each feature near each of the n bodies (a sphere query of its reach about its centre)
+/// the normal iterated to a fixed point through the kind's point query, the bodies in one
+/// block; one contact per owning feature, the deepest, into out[i] for body i.
+int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body *b, int n,
                         double gap_max, int lenient, rs_body_contacts *out, rs_error *err);
 
 /// Volume moments of a solid about the frame's origin: v = int dV, s = int x dV,

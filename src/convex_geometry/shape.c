@@ -41,6 +41,19 @@ static int begin(rs_shape *s, rs_error *err)
     return RS_OK;
 }
 
+/* The farthest corner of the shape's body-frame bounds from its origin. */
+static void set_reach(rs_shape *s)
+{
+    double lo[3], hi[3], r2 = 0.0;
+    rs_shape_bounds(s, lo, hi);
+    for (int c = 0; c < 8; c++) {
+        const double v[3] = {(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1],
+                             (c & 4) ? hi[2] : lo[2]};
+        r2 = fmax(r2, rs_dot3(v, v));
+    }
+    s->reach = sqrt(r2);
+}
+
 static void shape_init(rs_shape *s, rs_shape_kind kind, double d0, double d1, double d2,
                        double r)
 {
@@ -60,6 +73,7 @@ int rs_shape_make_sphere(rs_shape *s, double radius, double rounding, rs_error *
     if (rc || (rc = check_rounding(rounding, err)))
         return rc;
     shape_init(s, RS_SHAPE_SPHERE, radius, 0.0, 0.0, rounding);
+    set_reach(s);
     return RS_OK;
 }
 
@@ -74,6 +88,7 @@ int rs_shape_make_ellipsoid(rs_shape *s, double a, double b, double c, double ro
         (rc = check_rounding(rounding, err)))
         return rc;
     shape_init(s, RS_SHAPE_ELLIPSOID, a, b, c, rounding);
+    set_reach(s);
     return RS_OK;
 }
 
@@ -88,6 +103,7 @@ int rs_shape_make_box(rs_shape *s, double hx, double hy, double hz, double round
         (rc = check_rounding(rounding, err)))
         return rc;
     shape_init(s, RS_SHAPE_BOX, hx, hy, hz, rounding);
+    set_reach(s);
     return RS_OK;
 }
 
@@ -101,6 +117,7 @@ int rs_shape_make_cylinder(rs_shape *s, double radius, double half_height, doubl
         (rc = check_rounding(rounding, err)))
         return rc;
     shape_init(s, RS_SHAPE_CYLINDER, radius, half_height, 0.0, rounding);
+    set_reach(s);
     return RS_OK;
 }
 
@@ -114,6 +131,7 @@ int rs_shape_make_capsule(rs_shape *s, double radius, double half_length, double
         (rc = check_rounding(rounding, err)))
         return rc;
     shape_init(s, RS_SHAPE_CAPSULE, radius, half_length, 0.0, rounding);
+    set_reach(s);
     return RS_OK;
 }
 
@@ -135,6 +153,7 @@ int rs_shape_make_cone(rs_shape *s, double radius, double height, double roundin
         rs_revolved_moments(prof, 3, rounding, &m);
         s->shift[2] = m.s[2] / m.v;
     }
+    set_reach(s);
     return RS_OK;
 }
 
@@ -160,7 +179,8 @@ int rs_shape_make_polyhedron(rs_shape *s, const double *xyz, int n, double round
         return rs_error_set(err, strstr(msg, "memory") ? RS_ERR_NOMEM : RS_ERR_GEOMETRY,
                             "polyhedron: %s", msg);
     rs_moments m;
-    if (rs_hull_adjacency(s) || rs_polytope_moments(s->verts, s->tris, s->nt, rounding, &m)) {
+    if (rs_hull_adjacency(s) ||
+        rs_polytope_moments(s->verts, s->tris, s->nt, rounding, &m)) {
         rs_shape_free(s);
         memset(s, 0, sizeof *s);
         return rs_error_set(err, RS_ERR_NOMEM, "polyhedron: out of memory");
@@ -179,6 +199,7 @@ int rs_shape_make_polyhedron(rs_shape *s, const double *xyz, int n, double round
     for (int i = 0; i < s->nv; i++)
         for (int k = 0; k < 3; k++)
             s->verts[3 * i + k] -= s->shift[k];
+    set_reach(s);
     return RS_OK;
 }
 
@@ -196,6 +217,7 @@ int rs_shape_make_user(rs_shape *s, const void *obj, rs_support_fn support, doub
     shape_init(s, RS_SHAPE_USER, 0.0, 0.0, 0.0, rounding);
     s->obj = obj;
     s->support = support;
+    set_reach(s);
     return RS_OK;
 }
 

@@ -135,7 +135,7 @@ int rs_mesh_facet_index(const rs_surface *s, int f);
 /// The MESH kind's body operation (rs_surface_ops.body, mesh_body_query.c).
 struct rs_body;
 struct rs_body_contacts;
-int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const struct rs_body *b,
+int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const struct rs_body *b, int n,
                  double gap_max, int lenient, struct rs_body_contacts *out, rs_error *err);
 
 /* What the body operation asks of a MESH s (mesh_body.c), all in the reference

@@ -271,10 +271,10 @@ static int witness_contact(const rs_surface *s, const rs_pose *p, const rs_body 
     return 1;
 }
 
-int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const rs_body *body,
-                 double gap_max, int lenient, rs_body_contacts *out, rs_error *err)
+/* One body's contacts (rs_mesh_body). */
+static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body *body,
+                         double gap_max, rs_body_contacts *out, rs_error *err)
 {
-    (void)lenient; /* no fixed point to settle */
     rs_body checked;
     int rc = rs_body_check(s, body, gap_max, &checked, err);
     if (rc != RS_OK)
@@ -348,5 +348,15 @@ int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const rs_body *body,
         rc = rs_body_contacts_push(out, &l.f[k].c, err);
 done:
     free(heap);
+    return rc;
+}
+
+int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const rs_body *b, int n,
+                 double gap_max, int lenient, rs_body_contacts *out, rs_error *err)
+{
+    (void)lenient; /* no fixed point to settle */
+    int rc = RS_OK;
+    for (int i = 0; i < n && rc == RS_OK; i++)
+        rc = body_contacts(s, pose, b + i, gap_max, out + i, err);
     return rc;
 }
