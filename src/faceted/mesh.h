@@ -151,6 +151,9 @@ int rs_mesh_triangle(const rs_surface *s, int t, double xyz[9], double n[3]);
 /// Does x, a point of t's plane, lie in triangle t (on the inner side of each of its
 /// edges' planes, ties included)?
 int rs_mesh_triangle_holds(const rs_surface *s, int t, const double x[3]);
+/// 1 when no edge of triangle t but a FLAT one, and no vertex but one inside a coplanar
+/// region, comes within r of the point c: a body within r of c meets t at its face.
+int rs_mesh_triangle_plain(const rs_surface *s, int t, const double c[3], double r);
 /// Does x, a point of t's plane, lie beyond a CONCAVE edge of t: outside its line, and
 /// between the perpendiculars at its ends?
 int rs_mesh_beyond_concave(const rs_surface *s, int t, const double x[3]);

@@ -45,6 +45,21 @@ int rs_mesh_triangle_holds(const rs_surface *s, int t, const double x[3])
            side_of(m, t, 2, x) >= 0.0;
 }
 
+int rs_mesh_triangle_plain(const rs_surface *s, int t, const double c[3], double r)
+{
+    const rs_mesh *m = s->impl;
+    const rs_mtri *rec = m->rec + t;
+    for (int j = 0; j < 3; j++) {
+        const double *a = m->xyz + 3 * rec->v[j], *b = m->xyz + 3 * rec->v[(j + 1) % 3];
+        if (rec->kind[j] != RS_EDGE_FLAT && segment_distance2(a, b, c) <= r * r)
+            return 0;
+        const double d[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        if (!m->vflat[rec->v[j]] && rs_dot3(d, d) <= r * r)
+            return 0;
+    }
+    return 1;
+}
+
 int rs_mesh_beyond_concave(const rs_surface *s, int t, const double x[3])
 {
     const rs_mesh *m = s->impl;

@@ -92,6 +92,7 @@ static void set_contact(found *g, int feature, double depth, const double n[3],
 typedef struct cand {
     int t, face, region;
     int reach; /* the body within gap_max of the triangle */
+    int plain; /* the body meets it at its face only: its plane answers for it */
     double tri[9], nf[3];
     rs_convex_contact cc;
 } cand;
@@ -134,6 +135,36 @@ static double deepest_along(const rs_body *b, const rs_pose *p, const double n[3
         foot[d] = xs[d] + depth * n[d];
     rs_pose_to_local(p, foot, F);
     return depth;
+}
+
+/* The pair of body b and candidate ck's plane, as the pair query answers a flat contact:
+ * the body's deepest point along the plane's normal (on the side of its centre; the front
+ * of a one-sided mesh), its depth, the normal from the body toward the plane; apart when
+ * the foot of that point lies off the triangle (the body meets the plane elsewhere: its
+ * own triangle answers there). */
+static void plane_pair(const rs_surface *s, const rs_pose *p, const rs_body *b, cand *ck,
+                       double gap_max)
+{
+    const double *a0 = ck->tri, *nf = ck->nf;
+    const double h =
+        (b->x[0] - a0[0]) * nf[0] + (b->x[1] - a0[1]) * nf[1] + (b->x[2] - a0[2]) * nf[2];
+    const double side = s->sides != 2 || h >= 0.0 ? 1.0 : -1.0;
+    const double ns[3] = {side * nf[0], side * nf[1], side * nf[2]};
+    const double down[3] = {-ns[0], -ns[1], -ns[2]};
+    rs_convex_contact *cc = &ck->cc;
+    rs_body_support(b, down, cc->pa);
+    cc->depth = (a0[0] - cc->pa[0]) * ns[0] + (a0[1] - cc->pa[1]) * ns[1] +
+                (a0[2] - cc->pa[2]) * ns[2];
+    for (int d = 0; d < 3; d++) {
+        cc->normal[d] = down[d];
+        cc->pb[d] = cc->pa[d] + cc->depth * ns[d];
+    }
+    double F[3];
+    rs_pose_to_local(p, cc->pb, F);
+    cc->state = !rs_mesh_triangle_holds(s, ck->t, F) ? RS_CONVEX_APART
+                : cc->depth > 0.0                    ? RS_CONVEX_OVERLAP
+                : -cc->depth <= gap_max              ? RS_CONVEX_NEAR
+                                                     : RS_CONVEX_APART;
 }
 
 /* The candidate of the region (candidates ru[0 .. nr)) whose triangle holds the reference
@@ -315,6 +346,9 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
     member *ru = (member *)(l.f + 2 * nt);
     int *label = (int *)(ru + nt), *scratch = label + nt;
     rs_mesh_flat_regions(s, ids, nt, label, scratch);
+    double C[3]; /* the body's centre in the reference configuration */
+    rs_pose_to_local(pose, b->x, C);
+    const double near = rs_body_reach(b) + gap_max;
     for (int k = 0; k < nt; k++) {
         cand *ck = c + k;
         double X[9], nr[3];
@@ -324,7 +358,13 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
         for (int i = 0; i < 3; i++)
             rs_pose_to_global(pose, X + 3 * i, ck->tri + 3 * i);
         rs_pose_rotate(pose, nr, ck->nf);
-        if ((rc = rs_convex_triangle(b, ck->tri, gap_max, &ck->cc, err)) != RS_OK)
+        /* a triangle the body meets at its face only: the pair's answer would be its
+         * plane's (a flat contact, its witness owned by the face), which its region's
+         * closed form gives; no pair query */
+        ck->plain = rs_mesh_triangle_plain(s, ck->t, C, near);
+        if (ck->plain)
+            plane_pair(s, pose, b, ck, gap_max);
+        else if ((rc = rs_convex_triangle(b, ck->tri, gap_max, &ck->cc, err)) != RS_OK)
             goto done;
         ck->reach = ck->cc.state != RS_CONVEX_APART && ck->cc.depth >= -gap_max;
         ru[k].region = label[k];
@@ -341,7 +381,7 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
     }
     for (int k = 0; k < nt; k++) {
         found g;
-        if (c[k].reach && witness_contact(s, pose, b, c, nt, k, &g))
+        if (c[k].reach && !c[k].plain && witness_contact(s, pose, b, c, nt, k, &g))
             keep(&l, &g);
     }
     for (int k = 0; k < l.n && rc == RS_OK; k++)
