@@ -50,8 +50,9 @@ typedef struct rs_shape {
     int *tris;       ///< polyhedron: triangles (3 * nt), counter-clockwise from outside
     int *adj0;       ///< polyhedron: vertex v's neighbours on the hull are
     int *adj;        ///< adj[adj0[v] .. adj0[v + 1]) (adj0: nv + 1 entries)
-    double reach;    ///< the farthest corner of its body-frame bounds from the origin
-                     ///< (length; set by the make call)
+    double box[6];   ///< its body-frame bounds, lo then hi (rs_shape_bounds; set by
+                     ///< the make call)
+    double reach;    ///< the farthest corner of those bounds from the origin (length)
     const void *obj; ///< user: the object passed to support
     rs_support_fn support; ///< user: the support function of the core (without rounding)
 } rs_shape;

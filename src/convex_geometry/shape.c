@@ -41,10 +41,10 @@ static int begin(rs_shape *s, rs_error *err)
     return RS_OK;
 }
 
-/* The farthest corner of the shape's body-frame bounds from its origin. */
+/* The shape's body-frame bounds, and their farthest corner from its origin. */
 static void set_reach(rs_shape *s)
 {
-    double lo[3], hi[3], r2 = 0.0;
+    double *lo = s->box, *hi = s->box + 3, r2 = 0.0;
     rs_shape_bounds(s, lo, hi);
     for (int c = 0; c < 8; c++) {
         const double v[3] = {(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1],

@@ -197,7 +197,15 @@ void rs_mesh_flat_regions(const rs_surface *s, const int *ids, int n, int *label
     int *pos = sorted + n;
     for (int k = 0; k < n; k++)
         sorted[k] = ids[k];
-    qsort(sorted, (size_t)n, sizeof *sorted, cmp_int);
+    if (n > 16)
+        qsort(sorted, (size_t)n, sizeof *sorted, cmp_int);
+    else /* few: by insertion */
+        for (int i = 1; i < n; i++)
+            for (int j = i; j > 0 && sorted[j - 1] > sorted[j]; j--) {
+                const int t = sorted[j];
+                sorted[j] = sorted[j - 1];
+                sorted[j - 1] = t;
+            }
     /* pos[i]: the index in ids of sorted[i] */
     for (int k = 0; k < n; k++) {
         const int *hit = bsearch(ids + k, sorted, (size_t)n, sizeof *sorted, cmp_int);

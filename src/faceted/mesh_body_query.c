@@ -48,13 +48,57 @@ static void keep(found_list *l, const found *g)
     l->f[l->n++] = *g;
 }
 
+/* The pose's maps, nothing where it is NULL (the identity: the reference configuration). */
+static void to_local(const rs_pose *p, const double x[3], double X[3])
+{
+    if (p)
+        rs_pose_to_local(p, x, X);
+    else
+        memcpy(X, x, 3 * sizeof *X);
+}
+
+static void to_global(const rs_pose *p, const double X[3], double x[3])
+{
+    if (p)
+        rs_pose_to_global(p, X, x);
+    else
+        memcpy(x, X, 3 * sizeof *x);
+}
+
+static void rotate(const rs_pose *p, const double V[3], double v[3])
+{
+    if (p)
+        rs_pose_rotate(p, V, v);
+    else
+        memcpy(v, V, 3 * sizeof *v);
+}
+
+static void unrotate(const rs_pose *p, const double v[3], double V[3])
+{
+    if (p)
+        rs_pose_unrotate(p, v, V);
+    else
+        memcpy(V, v, 3 * sizeof *V);
+}
+
+/* The pose, NULL where it is the identity. */
+static const rs_pose *moved(const rs_pose *p)
+{
+    if (!p)
+        return NULL;
+    for (int a = 0; a < 9; a++)
+        if (p->R[a] != (a % 4 == 0 ? 1.0 : 0.0))
+            return p;
+    return p->T[0] != 0.0 || p->T[1] != 0.0 || p->T[2] != 0.0 ? p : NULL;
+}
+
 /* The box about the body in the reference configuration: the corners of its body-frame
  * bounds, placed and taken back through the pose, widened by gap_max. */
 static void body_box(const rs_body *b, const rs_pose *p, double gap_max, double lo[3],
                      double hi[3])
 {
-    double blo[3], bhi[3], R[9];
-    rs_shape_bounds(b->shape, blo, bhi);
+    const double *blo = b->shape->box, *bhi = b->shape->box + 3;
+    double R[9];
     rs_body_rotation(b, R);
     for (int d = 0; d < 3; d++) {
         lo[d] = INFINITY;
@@ -67,10 +111,10 @@ static void body_box(const rs_body *b, const rs_pose *p, double gap_max, double 
         rs_matvec3(R, v, w);
         for (int d = 0; d < 3; d++)
             w[d] += b->x[d];
-        rs_pose_to_local(p, w, X);
+        to_local(p, w, X);
         for (int d = 0; d < 3; d++) {
-            lo[d] = fmin(lo[d], X[d] - gap_max);
-            hi[d] = fmax(hi[d], X[d] + gap_max);
+            lo[d] = X[d] - gap_max < lo[d] ? X[d] - gap_max : lo[d];
+            hi[d] = X[d] + gap_max > hi[d] ? X[d] + gap_max : hi[d];
         }
     }
 }
@@ -133,7 +177,7 @@ static double deepest_along(const rs_body *b, const rs_pose *p, const double n[3
         (a0[0] - xs[0]) * n[0] + (a0[1] - xs[1]) * n[1] + (a0[2] - xs[2]) * n[2];
     for (int d = 0; d < 3; d++)
         foot[d] = xs[d] + depth * n[d];
-    rs_pose_to_local(p, foot, F);
+    to_local(p, foot, F);
     return depth;
 }
 
@@ -160,7 +204,7 @@ static void plane_pair(const rs_surface *s, const rs_pose *p, const rs_body *b, 
         cc->pb[d] = cc->pa[d] + cc->depth * ns[d];
     }
     double F[3];
-    rs_pose_to_local(p, cc->pb, F);
+    to_local(p, cc->pb, F);
     cc->state = !rs_mesh_triangle_holds(s, ck->t, F) ? RS_CONVEX_APART
                 : cc->depth > 0.0                    ? RS_CONVEX_OVERLAP
                 : -cc->depth <= gap_max              ? RS_CONVEX_NEAR
@@ -219,7 +263,7 @@ static int region_face(const rs_surface *s, const rs_pose *p, const rs_body *b,
     double xc[3], C[3];
     for (int d = 0; d < 3; d++)
         xc[d] = b->x[d] - h * nf[d];
-    rs_pose_to_local(p, xc, C);
+    to_local(p, xc, C);
     const int kc = region_holds(s, c, ru, nr, C);
     if (kc < 0 && ba < RS_BODY_FACE_COS)
         return 0;
@@ -278,8 +322,8 @@ static int witness_contact(const rs_surface *s, const rs_pose *p, const rs_body 
     const double nm[3] = {-cc->normal[0], -cc->normal[1], -cc->normal[2]};
     double P[3], N[3];
     int ft;
-    rs_pose_to_local(p, cc->pb, P);
-    rs_pose_unrotate(p, nm, N);
+    to_local(p, cc->pb, P);
+    unrotate(p, nm, N);
     const int f = rs_mesh_direction_owner(s, ck->t, P, N, &ft);
     if (f == RS_FEATURE_NONE)
         return 0;
@@ -314,11 +358,7 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
     if (!s->impl)
         return rs_error_set(err, RS_ERR_ARG, "body contacts: mesh '%s' has no data",
                             s->name);
-    rs_pose id;
-    if (!pose) {
-        rs_pose_identity(&id);
-        pose = &id;
-    }
+    pose = moved(pose);
     double lo[3], hi[3];
     body_box(b, pose, gap_max, lo, hi);
     /* the candidates' arrays in one block: on the stack for a few, else the heap */
@@ -347,7 +387,7 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
     int *label = (int *)(ru + nt), *scratch = label + nt;
     rs_mesh_flat_regions(s, ids, nt, label, scratch);
     double C[3]; /* the body's centre in the reference configuration */
-    rs_pose_to_local(pose, b->x, C);
+    to_local(pose, b->x, C);
     const double near = rs_body_reach(b) + gap_max;
     for (int k = 0; k < nt; k++) {
         cand *ck = c + k;
@@ -356,8 +396,8 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
         ck->region = label[k];
         ck->face = rs_mesh_triangle(s, ck->t, X, nr);
         for (int i = 0; i < 3; i++)
-            rs_pose_to_global(pose, X + 3 * i, ck->tri + 3 * i);
-        rs_pose_rotate(pose, nr, ck->nf);
+            to_global(pose, X + 3 * i, ck->tri + 3 * i);
+        rotate(pose, nr, ck->nf);
         /* a triangle the body meets at its face only: the pair's answer would be its
          * plane's (a flat contact, its witness owned by the face), which its region's
          * closed form gives; no pair query */
@@ -371,7 +411,12 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
         ru[k].k = k;
     }
     /* each coplanar region by the body's support, then each triangle by its witness */
-    qsort(ru, (size_t)nt, sizeof *ru, cmp_member);
+    for (int i = 1; i < nt; i++) /* few: by insertion */
+        for (int j = i; j > 0 && cmp_member(ru + j - 1, ru + j) > 0; j--) {
+            const member t = ru[j];
+            ru[j] = ru[j - 1];
+            ru[j - 1] = t;
+        }
     for (int i = 0, j; i < nt; i = j) {
         for (j = i + 1; j < nt && ru[j].region == ru[i].region;)
             j++;
