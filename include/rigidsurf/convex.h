@@ -32,6 +32,9 @@ typedef enum rs_shape_kind {
     RS_SHAPE_USER = 7        ///< the user's support function
 } rs_shape_kind;
 
+/// Directions along which a polyhedron keeps its extreme vertex (rs_shape.hint).
+#define RS_HULL_HINTS 26
+
 /// A support function: writes to out the point of the shape farthest along dir (any
 /// length, not zero), both in the shape's body frame. The shape is convex and bounded.
 typedef void (*rs_support_fn)(const void *obj, const double dir[3], double out[3]);
@@ -50,10 +53,12 @@ typedef struct rs_shape {
     int *tris;       ///< polyhedron: triangles (3 * nt), counter-clockwise from outside
     int *adj0;       ///< polyhedron: vertex v's neighbours on the hull are
     int *adj;        ///< adj[adj0[v] .. adj0[v + 1]) (adj0: nv + 1 entries)
-    double box[6];   ///< its body-frame bounds, lo then hi (rs_shape_bounds; set by
-                     ///< the make call)
-    double reach;    ///< the farthest corner of those bounds from the origin (length)
-    const void *obj; ///< user: the object passed to support
+    int hint[RS_HULL_HINTS]; ///< polyhedron: its extreme vertices along the 26 directions
+                             ///< of a cube's neighbours (where a support's climb starts)
+    double box[6];           ///< its body-frame bounds, lo then hi (rs_shape_bounds; set by
+                             ///< the make call)
+    double reach;          ///< the farthest corner of those bounds from the origin (length)
+    const void *obj;       ///< user: the object passed to support
     rs_support_fn support; ///< user: the support function of the core (without rounding)
 } rs_shape;
 

@@ -61,6 +61,30 @@ int rs_hull_adjacency(rs_shape *s)
     return 0;
 }
 
+/* The 26 directions of a cube's neighbours, (a, b, c) in {-1, 0, 1}^3 less the origin:
+ * their extreme vertices are the climb's starts. */
+static void hint_dir(int k, double dir[3])
+{
+    const int m = k < 13 ? k : k + 1; /* skip the centre, 13 */
+    dir[0] = m % 3 - 1.0, dir[1] = (m / 3) % 3 - 1.0, dir[2] = m / 9 - 1.0;
+}
+
+void rs_hull_hints(rs_shape *s)
+{
+    for (int k = 0; k < RS_HULL_HINTS; k++) {
+        double dir[3];
+        hint_dir(k, dir);
+        int best = 0;
+        double bd = -INFINITY;
+        for (int i = 0; i < s->nv; i++) {
+            const double p = rs_dot3(s->verts + 3 * i, dir);
+            if (p > bd)
+                bd = p, best = i;
+        }
+        s->hint[k] = best;
+    }
+}
+
 int rs_hull_support(const rs_shape *s, const double d[3])
 {
     const double *v = s->verts;
@@ -76,10 +100,15 @@ int rs_hull_support(const rs_shape *s, const double d[3])
         }
         return best;
     }
-    /* from the extreme along x on d's side (the vertices are sorted by x), up the graph:
+    /* from the hint nearest d (the extreme vertices along 26 directions), up the graph:
      * to a higher neighbour, or an equal one of a lower index (so that it ends) */
-    int best = d[0] >= 0.0 ? s->nv - 1 : 0;
+    int best = s->hint[0];
     double bd = rs_dot3(v + 3 * best, d);
+    for (int k = 1; k < RS_HULL_HINTS; k++) {
+        const double p = rs_dot3(v + 3 * s->hint[k], d);
+        if (p > bd)
+            bd = p, best = s->hint[k];
+    }
     for (int moved = 1; moved;) {
         moved = 0;
         for (int k = s->adj0[best], e = s->adj0[best + 1]; k < e; k++) {
@@ -122,13 +151,15 @@ int rs_hull_farthest(const rs_shape *s, const double d[3], int cap, int *out)
         return n;
     }
     /* best-first from the support: the frontier (a small heap by key) and the vertices
-     * seen (few: the cap and their neighbours) */
-    enum { SEEN = 8 * RS_HULL_FARTHEST_MAX };
-    int heap[SEEN], seen[SEEN], nh = 0, ns = 0;
+     * seen (few: the cap and their neighbours), in a small open-addressed set */
+    enum { SEEN = 8 * RS_HULL_FARTHEST_MAX, SET = 4 * SEEN };
+    int heap[SEEN], set[SET], nh = 0, ns = 0;
     double hk[SEEN];
+    for (int k = 0; k < SET; k++)
+        set[k] = -1;
     const int s0 = rs_hull_support(s, d);
     heap[nh] = s0, hk[nh++] = rs_dot3(v + 3 * s0, d);
-    seen[ns++] = s0;
+    set[(unsigned)s0 * 2654435761u % SET] = s0, ns++;
     while (nh > 0 && n < cap) {
         const int top = heap[0];
         out[n++] = top;
@@ -151,12 +182,12 @@ int rs_hull_farthest(const rs_shape *s, const double d[3], int cap, int *out)
         }
         for (int k = s->adj0[top], e = s->adj0[top + 1]; k < e; k++) {
             const int w = s->adj[k];
-            int known = 0;
-            for (int q = 0; q < ns && !known; q++)
-                known = seen[q] == w;
-            if (known || ns == SEEN || nh == SEEN)
+            unsigned h = (unsigned)w * 2654435761u % SET;
+            while (set[h] >= 0 && set[h] != w)
+                h = (h + 1) % SET;
+            if (set[h] == w || ns == SEEN || nh == SEEN)
                 continue;
-            seen[ns++] = w;
+            set[h] = w, ns++;
             /* push, sifted up */
             int i = nh++;
             heap[i] = w, hk[i] = rs_dot3(v + 3 * w, d);

@@ -199,6 +199,7 @@ int rs_shape_make_polyhedron(rs_shape *s, const double *xyz, int n, double round
     for (int i = 0; i < s->nv; i++)
         for (int k = 0; k < 3; k++)
             s->verts[3 * i + k] -= s->shift[k];
+    rs_hull_hints(s);
     set_reach(s);
     return RS_OK;
 }
