@@ -81,10 +81,10 @@ static void body_masses(rs_contact_block *cb, const rs_track_out *o,
             /* the row sum over the points that push: n.N / m + u.J U, at least the
              * point's own share of its value alone */
             const double w = o->share ? o->share[e] : 1.0;
-            const double floor = w * alone / nact;
+            const double least = w * alone / nact;
             s = rs_dot3(n, N) / m + rs_dot3(u, JU);
-            if (!(s > floor))
-                s = floor;
+            if (!(s > least))
+                s = least;
             if (!(s > 0.0))
                 s = alone;
         }

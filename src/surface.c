@@ -76,7 +76,8 @@ int rs_body_query(const rs_surface *s, const rs_pose *pose, const rs_body *b, in
     return rc;
 }
 
-/* A block with bodies: runs of spheres and points by the kind, each body alone. */
+/* A block with bodies: runs of spheres and points by the kind, runs of bodies by
+ * rs_body_manifold, each in the kind's frame convention. */
 static int query_bodies(const rs_surface *s, const rs_query *q, rs_contacts *out,
                         rs_error *err)
 {

@@ -7,6 +7,7 @@
  * feature and one per coplanar region. */
 #include "convex_internal.h"
 #include "mesh.h"
+#include "mesh_regions.h"
 #include "rigidsurf/vec.h"
 
 #include <math.h>
@@ -79,17 +80,6 @@ static void unrotate(const rs_pose *p, const double v[3], double V[3])
         rs_pose_unrotate(p, v, V);
     else
         memcpy(V, v, 3 * sizeof *V);
-}
-
-/* The pose, NULL where it is the identity. */
-static const rs_pose *moved(const rs_pose *p)
-{
-    if (!p)
-        return NULL;
-    for (int a = 0; a < 9; a++)
-        if (p->R[a] != (a % 4 == 0 ? 1.0 : 0.0))
-            return p;
-    return p->T[0] != 0.0 || p->T[1] != 0.0 || p->T[2] != 0.0 ? p : NULL;
 }
 
 /* The box about the body in the reference configuration: the corners of its body-frame
@@ -358,7 +348,7 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
     if (!s->impl)
         return rs_error_set(err, RS_ERR_ARG, "body contacts: mesh '%s' has no data",
                             s->name);
-    pose = moved(pose);
+    pose = pose_moved(pose);
     double lo[3], hi[3];
     body_box(b, pose, gap_max, lo, hi);
     /* the candidates' arrays in one block: on the stack for a few, else the heap */

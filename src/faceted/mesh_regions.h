@@ -109,17 +109,22 @@ static inline int box_triangles(const rs_mesh *m, const double p[3], double reac
     return n;
 }
 
-/* The query's pose, NULL where it is the identity (a mesh in its reference
- * configuration): its points and results then need no transform. */
-static inline const rs_pose *moved_pose(const rs_query *q)
+/* A pose, NULL where it is the identity (a mesh in its reference configuration): its
+ * points and results then need no transform. */
+static inline const rs_pose *pose_moved(const rs_pose *p)
 {
-    const rs_pose *p = q->pose;
     if (!p)
         return NULL;
     for (int a = 0; a < 9; a++)
         if (p->R[a] != (a % 4 == 0 ? 1.0 : 0.0))
             return p;
     return p->T[0] != 0.0 || p->T[1] != 0.0 || p->T[2] != 0.0 ? p : NULL;
+}
+
+/* The query's pose, NULL where it is the identity. */
+static inline const rs_pose *moved_pose(const rs_query *q)
+{
+    return pose_moved(q->pose);
 }
 
 /* p, slave i of q, in the reference configuration (pose: moved_pose(q)). */
