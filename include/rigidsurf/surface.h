@@ -209,6 +209,8 @@ typedef struct rs_particle_block {
     const double *vx, *vy, *vz; ///< velocities (tracker)
     const double *wx, *wy, *wz; ///< angular velocities (tracker; NULL: zero)
     const int *id;              ///< ids, for messages and the law's jSlvUid (NULL: index)
+    const int *row;             ///< the engine's index of each particle (the law's
+                                ///< slvRow), optional
     double **dir;               ///< tracker: per particle its directory (capacity doubles)
     double **hist;              ///< tracker: per particle its slot 0
     ptrdiff_t slot_stride;      ///< tracker: doubles from slot j to slot j + 1 (0:
