@@ -1,5 +1,5 @@
 /* One contact's loads from the law's stress, shared by the loads kernel
- * (contact_loads.c) and the one pass (track_hertz.c), so that both compute them with the
+ * (contact_loads.c) and hertz's fused kernel (laws/hertz_fused.c), so that both compute them with the
  * same operations in the same order. Internal to the library. */
 #ifndef RIGIDSURF_LOAD_CONTACT_H
 #define RIGIDSURF_LOAD_CONTACT_H

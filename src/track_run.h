@@ -1,7 +1,7 @@
-/* The tracker's pass 2, shared by rs_track_update (track.c) and the fused hertz path
- * (track_hertz.c): the master's rates over the increment and the runs of live contacts
- * (gather the history, the kinematics, the Abaqus-layout outputs, the history's store).
- * Internal to the library. */
+/* The tracker's pass 2, shared by rs_track_update (track.c) and the laws' fused kernels
+ * (track_fused.c, laws/hertz_fused.c): the master's rates over the increment and the
+ * runs of live contacts (gather the history, the kinematics, the Abaqus-layout outputs,
+ * the history's store). Internal to the library. */
 #ifndef RIGIDSURF_TRACK_RUN_H
 #define RIGIDSURF_TRACK_RUN_H
 
