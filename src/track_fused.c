@@ -3,9 +3,9 @@
 #include "track_fused.h"
 
 /* Whether the block takes the kernel: see track_fused.h. */
-static int qualifies(const rs_tracker *tr, const rs_law *law, const master_rates *mr,
-                     const rs_particles *p, const rs_contacts *c, const rs_track_out *out,
-                     int ne, const double *props, int ident)
+RS_INLINE int qualifies(const rs_tracker *tr, const rs_law *law, const master_rates *mr,
+                        const rs_particles *p, const rs_contacts *c,
+                        const rs_track_out *out, int ne, const double *props, int ident)
 {
     return ident && ne <= RS_FUSED_MAX && law->fused->takes(tr, props, law->nprops) &&
            !mr->belt && p->radius && p->mass && !p->body && !(c->witness && c->xs[0]) &&

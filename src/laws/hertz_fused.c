@@ -35,15 +35,22 @@ typedef struct wall_sums {
     int ncontact;
 } wall_sums;
 
-/* What a run's store and loads read once the block's laws are through: of the tracker,
- * its columns live, rd1, s1, s2 and the contact points; of the law, its state (in, then
- * out), stress and energies. */
-typedef struct run_held {
-    double live[RS_TRACK_RUN], rd1[RS_TRACK_RUN], s1[RS_TRACK_RUN], s2[RS_TRACK_RUN];
-    double px[RS_TRACK_RUN], py[RS_TRACK_RUN], pz[RS_TRACK_RUN];
+/* What a run's store and loads read once the block's laws are through: of the law, its
+ * state (in, then out), stress and energies; of the tracker, its columns live, rd1, s1, s2
+ * and the contact points, in its run itself when the call is one run, else copied. */
+typedef struct run_law_out {
     double sv[2][RS_TRACK_RUN], st[3][RS_TRACK_RUN];
     double sed[RS_TRACK_RUN], svd[RS_TRACK_RUN], sfd[RS_TRACK_RUN];
-} run_held;
+} run_law_out;
+
+typedef struct run_kin {
+    double live[RS_TRACK_RUN], rd1[RS_TRACK_RUN], s1[RS_TRACK_RUN], s2[RS_TRACK_RUN];
+    double px[RS_TRACK_RUN], py[RS_TRACK_RUN], pz[RS_TRACK_RUN];
+} run_kin;
+
+typedef struct kin_cols {
+    const double *live, *rd1, *s1, *s2, *px, *py, *pz;
+} kin_cols;
 
 /* The law on a run's m contacts, entries e0 .. e0+m-1 (contact and particle e), in one
  * loop (which vectorises): hertz's block loop on the run's kinematics, as the law block's
@@ -51,7 +58,7 @@ typedef struct run_held {
  * [[d11, -d21], [d21, d11]], vrel = (vn, v1, v2), unit areas). */
 RS_INLINE void run_law(const track_run *restrict r, int m, int e0, const rs_particles *p,
                        double dt, double Yeff, double Geff, double beta, double mu,
-                       run_held *restrict h)
+                       run_law_out *restrict h)
 {
     const double A = 1.0; /* the unit area's products, as the kernel's UNIT copy has them */
     const double *rad = p->radius + e0, *mass = p->mass + e0;
@@ -69,22 +76,23 @@ RS_INLINE void run_law(const track_run *restrict r, int m, int e0, const rs_part
 
 /* The force of each contact's stress, its torque and its moment about the origin, as
  * rs_cblock_add_loads's kernel computes them for nDir 3 (one loop, which vectorises). */
-RS_INLINE void run_forces(const run_held *restrict h, int m, int e0, const rs_contacts *c,
-                          const rs_particles *p, const double origin[3],
-                          double F[3][RS_TRACK_RUN], double T[3][RS_TRACK_RUN],
-                          double M[3][RS_TRACK_RUN])
+RS_INLINE void run_forces(const kin_cols *k, const run_law_out *restrict h, int m, int e0,
+                          const rs_contacts *c, const rs_particles *p,
+                          const double origin[3], double F[3][RS_TRACK_RUN],
+                          double T[3][RS_TRACK_RUN], double M[3][RS_TRACK_RUN])
 {
     const double A = 1.0;
+    const double *restrict px = k->px, *restrict py = k->py, *restrict pz = k->pz;
     for (int j = 0; j < m; j++) {
-        const int k = e0 + j;
-        const double L[9] = {c->nrm[0][k], c->nrm[1][k], c->nrm[2][k],
-                             c->t1[0][k],  c->t1[1][k],  c->t1[2][k],
-                             c->t2[0][k],  c->t2[1][k],  c->t2[2][k]};
+        const int e = e0 + j;
+        const double L[9] = {c->nrm[0][e], c->nrm[1][e], c->nrm[2][e],
+                             c->t1[0][e],  c->t1[1][e],  c->t1[2][e],
+                             c->t2[0][e],  c->t2[1][e],  c->t2[2][e]};
         const double st[3] = {h->st[0][j], h->st[1][j], h->st[2][j]};
         double f[3], t[3], mo[3];
         rs_load_force3(A, st, L, f);
-        const double x[3] = {h->px[j], h->py[j], h->pz[j]};
-        const double ctr[3] = {p->x[k], p->y[k], p->z[k]};
+        const double x[3] = {px[j], py[j], pz[j]};
+        const double ctr[3] = {p->x[e], p->y[e], p->z[e]};
         rs_load_torques(f, x, ctr, origin, t, mo);
         for (int d = 0; d < 3; d++)
             F[d][j] = f[d], T[d][j] = t[d], M[d][j] = mo[d];
@@ -94,30 +102,30 @@ RS_INLINE void run_forces(const run_held *restrict h, int m, int e0, const rs_co
 /* The wall's sums of a run, in entry order, and its loads onto the engine's and the
  * per-particle rows (rdisp(1:3) and stress(1:3)), as rs_cblock_add_loads's kernel adds
  * them (no leaving contact, a law without heat, creep or plastic dissipation). */
-RS_INLINE void run_sums(const run_held *restrict h, int m, int e0, const rs_load_rows *rows,
-                        double F[3][RS_TRACK_RUN], double T[3][RS_TRACK_RUN],
-                        double M[3][RS_TRACK_RUN], wall_sums *ws)
+RS_INLINE void run_sums(const kin_cols *k, const run_law_out *restrict h, int m, int e0,
+                        const rs_load_rows *rows, double F[3][RS_TRACK_RUN],
+                        double T[3][RS_TRACK_RUN], double M[3][RS_TRACK_RUN], wall_sums *ws)
 {
     const double A = 1.0;
     const int *row = rows->row;
     double *const out6 = rows->out6;
     for (int j = 0; j < m; j++) {
-        const int k = e0 + j;
+        const int e = e0 + j;
         const double f[3] = {F[0][j], F[1][j], F[2][j]};
         const double t[3] = {T[0][j], T[1][j], T[2][j]};
         const double mo[3] = {M[0][j], M[1][j], M[2][j]};
         rs_wall_acc_take(&ws->fm, f, mo);
-        const int rk = row ? row[k] : k;
+        const int rk = row ? row[e] : e;
         rs_load_onto_row(rows, rk, f, t);
         ws->se += A * h->sed[j];
         ws->fd += A * h->sfd[j];
         ws->vd += A * h->svd[j];
-        ws->ncontact += h->rd1[j] > 0.0;
+        ws->ncontact += k->rd1[j] > 0.0;
         if (rows->deepest)
-            rows->deepest[k] = k;
+            rows->deepest[e] = e;
         if (out6) {
             double *o = out6 + 6 * (size_t)rk;
-            o[0] = h->rd1[j], o[1] = h->s1[j], o[2] = h->s2[j];
+            o[0] = k->rd1[j], o[1] = k->s1[j], o[2] = k->s2[j];
             o[3] = h->st[0][j], o[4] = h->st[1][j], o[5] = h->st[2][j];
         }
     }
@@ -126,7 +134,7 @@ RS_INLINE void run_sums(const run_held *restrict h, int m, int e0, const rs_load
 /* The first NaN or Inf of a run's stress as rs_law_call reports it (contact by contact,
  * stress(1) to stress(3)), or RS_OK: one branch-free pass over the run, and the search
  * only when it finds one. */
-static int check_stress(const run_held *h, int m, int e0, const rs_particles *p,
+static int check_stress(const run_law_out *h, int m, int e0, const rs_particles *p,
                         const rs_contacts *c, int ne, rs_error *err)
 {
     uint64_t acc = 0;
@@ -160,11 +168,14 @@ static int hertz_pass(const rs_tracker *tr, const master_rates *mr, double dt,
     double Yeff, Geff, beta, mu;
     rs_hertz_constants(props, &Yeff, &Geff, &beta, &mu);
     track_run r;
-    run_held held[RUNS];
+    run_law_out law[RUNS];
+    run_kin kin[RUNS]; /* the tracker's columns of a call of more runs than one */
+    kin_cols cols[RUNS];
+    const int one = ne <= RS_TRACK_RUN;
     /* the tracker and the law of every run: nothing written yet */
     for (int e0 = 0, q = 0; e0 < ne; e0 += RS_TRACK_RUN, q++) {
         const int m = ne - e0 < RS_TRACK_RUN ? ne - e0 : RS_TRACK_RUN;
-        run_held *h = &held[q];
+        run_law_out *h = &law[q];
         /* the tracker (emit_all's run: entry, contact and particle e); the slot is n, t1
          * and the law's 2 state variables, whose state the gather brings along in so1,
          * so2 */
@@ -180,14 +191,20 @@ static int hertz_pass(const rs_tracker *tr, const master_rates *mr, double dt,
         const int rc = check_stress(h, m, e0, p, c, ne, err);
         if (rc)
             return rc;
+        if (one) {
+            cols[q] = (kin_cols){r.live, r.rd1, r.s1, r.s2, r.px, r.py, r.pz};
+            continue;
+        }
+        run_kin *k = &kin[q];
         const size_t bytes = (size_t)m * sizeof(double);
-        memcpy(h->live, r.live, bytes);
-        memcpy(h->rd1, r.rd1, bytes);
-        memcpy(h->s1, r.s1, bytes);
-        memcpy(h->s2, r.s2, bytes);
-        memcpy(h->px, r.px, bytes);
-        memcpy(h->py, r.py, bytes);
-        memcpy(h->pz, r.pz, bytes);
+        memcpy(k->live, r.live, bytes);
+        memcpy(k->rd1, r.rd1, bytes);
+        memcpy(k->s1, r.s1, bytes);
+        memcpy(k->s2, r.s2, bytes);
+        memcpy(k->px, r.px, bytes);
+        memcpy(k->py, r.py, bytes);
+        memcpy(k->pz, r.pz, bytes);
+        cols[q] = (kin_cols){k->live, k->rd1, k->s1, k->s2, k->px, k->py, k->pz};
     }
     /* every stress is finite: the history, the loads and the sums, run by run */
     wall_sums ws = {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, 0.0, 0.0, 0.0, 0};
@@ -195,11 +212,12 @@ static int hertz_pass(const rs_tracker *tr, const master_rates *mr, double dt,
     out->nleave = 0;
     for (int e0 = 0, q = 0; e0 < ne; e0 += RS_TRACK_RUN, q++) {
         const int m = ne - e0 < RS_TRACK_RUN ? ne - e0 : RS_TRACK_RUN;
-        const run_held *h = &held[q];
-        run_forces(h, m, e0, c, p, origin, F, T, M);
-        run_store(h->live, h->rd1, h->s1, h->s2, m, tr, c, e0, out, e0, 1, h->sv[0],
+        const run_law_out *h = &law[q];
+        const kin_cols *k = &cols[q];
+        run_forces(k, h, m, e0, c, p, origin, F, T, M);
+        run_store(k->live, k->rd1, k->s1, k->s2, m, tr, c, e0, out, e0, 1, h->sv[0],
                   h->sv[1]);
-        run_sums(h, m, e0, rows, F, T, M, &ws);
+        run_sums(k, h, m, e0, rows, F, T, M, &ws);
     }
     out->n = ne;
     w->force[0] = ws.fm.fw0, w->force[1] = ws.fm.fw1, w->force[2] = ws.fm.fw2;

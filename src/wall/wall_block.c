@@ -92,7 +92,7 @@ static void keep_tracked(rs_wall *w, const rs_wall_block *b, const int *idx, int
     for (int e = 0; e < c->n; e++) {
         const int k = c->point[e];
         const double gap = c->dist[e] - R[k];
-        gmin[k] = fmin(gmin[k], gap);
+        gmin[k] = gap < gmin[k] ? gap : gmin[k];
         if (!(c->dist[e] <= tracking + R[k]) || c->dist[e] < dist_min)
             continue; /* the query's own test with gap_max = tracking */
         if (m != e) {
@@ -197,22 +197,27 @@ static double gather(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *row
     const size_t head = ss < 9 ? ss : 9;
     double *const out = rows->peratom;
     double rmax = radius[idx[0]];
+    const int full = om && type && tag; /* the engines' case */
     for (int k = 0; k < n; k++) {
         const int i = idx[k];
         const double *xi = x + 3 * (size_t)i, *vi = v + 3 * (size_t)i;
         const double R = radius[i];
         qx[k] = xi[0], qy[k] = xi[1], qz[k] = xi[2];
         qvx[k] = vi[0], qvy[k] = vi[1], qvz[k] = vi[2];
-        if (om) {
+        if (full) {
             const double *wi = om + 3 * (size_t)i;
             qwx[k] = wi[0], qwy[k] = wi[1], qwz[k] = wi[2];
+            qt[k] = type[i];
+            qid[k] = tag[i];
         } else {
-            qwx[k] = qwy[k] = qwz[k] = 0.0;
+            qwx[k] = om ? om[3 * (size_t)i] : 0.0;
+            qwy[k] = om ? om[3 * (size_t)i + 1] : 0.0;
+            qwz[k] = om ? om[3 * (size_t)i + 2] : 0.0;
+            qt[k] = type ? type[i] : 1;
+            qid[k] = tag ? tag[i] : i + 1;
         }
         qr[k] = R;
         qm[k] = rmass[i];
-        qt[k] = type ? type[i] : 1;
-        qid[k] = tag ? tag[i] : i + 1;
         double *const d = rowbase + (size_t)i * rs, *const h = hist + (size_t)i * ss;
         qd[k] = d;
         qh[k] = h;

@@ -118,7 +118,7 @@ static int flush(rs_wall *w, const rs_wall_block *b, int n, int look_behind, rs_
     double rmax = 0.0;
     for (int k = 0; k < n; k++) {
         const int i = w->bidx[k];
-        rmax = fmax(rmax, b->radius[i]);
+        rmax = rmax < b->radius[i] ? b->radius[i] : rmax;
         const double *d = wall_row(w, i);
         char held = 0;
         for (int j = 0; j < w->capacity; j++)
@@ -261,9 +261,10 @@ int wall_build_candidates(rs_wall *w, const rs_wall_block *b, rs_error *err)
     w->phi_at_build = m->phi;
     w->spin_at_build = m->spin_phi;
     w->rebuild = 0;
-    w->rglob = 0.0;
+    double rglob = 0.0;
     for (int c = 0; c < w->ncand; c++)
-        w->rglob = fmax(w->rglob, b->radius[w->cand[c]]);
+        rglob = rglob < b->radius[w->cand[c]] ? b->radius[w->cand[c]] : rglob;
+    w->rglob = rglob;
     /* No bound yet: every candidate is queried on its next step. */
     if (w->nref < b->n) {
         const int nr = b->n;

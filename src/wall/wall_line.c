@@ -51,22 +51,33 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     w->nrest = 0;
     for (int b0 = 0; b0 < n; b0 += M) {
         const int m = n - b0 < (int)M ? n - b0 : (int)M;
-        for (int j = 0; j < m; j++) {
-            const int i = idx[b0 + j];
-            const double *xi = x + 3 * (size_t)i, *vi = v + 3 * (size_t)i;
-            px[j] = xi[0], py[j] = xi[1], pz[j] = xi[2];
-            pvx[j] = vi[0], pvy[j] = vi[1], pvz[j] = vi[2];
-            if (om) {
-                const double *wi = om + 3 * (size_t)i;
+        const int *ix = idx + b0;
+        if (om && tag && type) /* the engines' case: nothing tested per sphere */
+            for (int j = 0; j < m; j++) {
+                const int i = ix[j];
+                const double *xi = x + 3 * (size_t)i, *vi = v + 3 * (size_t)i,
+                             *wi = om + 3 * (size_t)i;
+                px[j] = xi[0], py[j] = xi[1], pz[j] = xi[2];
+                pvx[j] = vi[0], pvy[j] = vi[1], pvz[j] = vi[2];
                 pwx[j] = wi[0], pwy[j] = wi[1], pwz[j] = wi[2];
-            } else {
-                pwx[j] = pwy[j] = pwz[j] = 0.0;
+                pr[j] = radius[i], pm[j] = rmass[i], pid[j] = tag[i], pty[j] = type[i];
+                pd[j] = rowbase + (size_t)i * rs, ph[j] = w->hist + (size_t)i * ss;
+                row[j] = i;
             }
-            pr[j] = radius[i], pm[j] = rmass[i];
-            pid[j] = tag ? tag[i] : i + 1, pty[j] = type ? type[i] : 1;
-            pd[j] = rowbase + (size_t)i * rs, ph[j] = w->hist + (size_t)i * ss;
-            row[j] = i;
-        }
+        else
+            for (int j = 0; j < m; j++) {
+                const int i = ix[j];
+                const double *xi = x + 3 * (size_t)i, *vi = v + 3 * (size_t)i;
+                px[j] = xi[0], py[j] = xi[1], pz[j] = xi[2];
+                pvx[j] = vi[0], pvy[j] = vi[1], pvz[j] = vi[2];
+                pwx[j] = om ? om[3 * (size_t)i] : 0.0;
+                pwy[j] = om ? om[3 * (size_t)i + 1] : 0.0;
+                pwz[j] = om ? om[3 * (size_t)i + 2] : 0.0;
+                pr[j] = radius[i], pm[j] = rmass[i];
+                pid[j] = tag ? tag[i] : i + 1, pty[j] = type ? type[i] : 1;
+                pd[j] = rowbase + (size_t)i * rs, ph[j] = w->hist + (size_t)i * ss;
+                row[j] = i;
+            }
         rs_line_revolution_faces(w->surf, &w->motion->pose, m, px, py, pz, pr, gap_max, &c,
                                  face);
         rs_frame_orient(w->surf->ops->frame, &c, 0, m);

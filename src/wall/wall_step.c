@@ -36,18 +36,23 @@ static int step_list(rs_wall *w, const rs_wall_block *b, int setup, const int **
     *n = w->ncand;
     if (!(w->bounds_ok || w->list_bounds) || setup)
         return RS_OK;
-    const double *x = b->x, *radius = b->radius, tracking = w->tracking;
+    const double *restrict x = b->x, *restrict radius = b->radius;
+    const double *restrict gapref = w->gapref, *restrict xref = w->xref;
+    const int *restrict cand = w->cand;
+    int *restrict active = w->active;
+    const double tracking = w->tracking;
+    const int ncand = w->ncand;
     int na = 0;
-    for (int c = 0; c < w->ncand; c++) {
-        const int i = w->cand[c];
-        const double room = w->gapref[i] - tracking;
-        const double *xr = &w->xref[4 * (size_t)i], *xi = x + 3 * (size_t)i;
+    for (int c = 0; c < ncand; c++) {
+        const int i = cand[c];
+        const double room = gapref[i] - tracking;
+        const double *xr = &xref[4 * (size_t)i], *xi = x + 3 * (size_t)i;
         if (room > 0.0 && radius[i] == xr[3]) {
             const double dx = xi[0] - xr[0], dy = xi[1] - xr[1], dz = xi[2] - xr[2];
             if (dx * dx + dy * dy + dz * dz < room * room)
                 continue;
         }
-        w->active[na++] = i;
+        active[na++] = i;
     }
     *list = w->active;
     *n = na;
