@@ -75,7 +75,10 @@ void FixWallRigid::liggghts_block(const int *idx, int n, int ne, bool setup_call
         c.mass = bmass_[k];
         c.update_history = !setup_call;
         double F[3], T[3];
-        if (!lig_->contact(c, F, T))
+        const LiggghtsLaw::Result got = lig_->contact(c, F, T);
+        if (got == LiggghtsLaw::kNotFinite)
+            fail_one(lig_->failure());
+        if (got == LiggghtsLaw::kNone)
             continue;
         s[0] = F[0] * nrm[0] + F[1] * nrm[1] + F[2] * nrm[2];
         s[1] = -(F[0] * t1[0] + F[1] * t1[1] + F[2] * t1[2]);
