@@ -387,6 +387,11 @@ void FixWallRigid::parse(int narg, char **arg)
     if (surf_.warning[0] && comm->me == 0)
         error->warning(FLERR,
                        (std::string("fix wall/rigid: surface: ") + surf_.warning).c_str());
+    /* What asks nothing of the user (a plate's or a belt's open rim): one INFO line. */
+    if (surf_.info[0] && comm->me == 0)
+        for (FILE *fp : {screen, logfile})
+            if (fp)
+                std::fprintf(fp, "INFO: fix wall/rigid %s: surface: %s\n", id, surf_.info);
 
     /* State variables. */
     const int law_nsv = law_->nstatev;
