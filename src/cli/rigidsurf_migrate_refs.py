@@ -45,44 +45,47 @@ def ref_point(m):
 
 
 def mapping(mg, m, i):
-    """f_M[i] of mesh m as wall/rigid's output: a text (an f_ reference or a formula), or
-    why it cannot be."""
+    """f_M[i] of mesh m as wall/rigid's output: (True, a text: an f_ reference or a
+    formula), (False, why it cannot be), or None for an index out of LIGGGHTS's range
+    (left as written)."""
     size = sum(grammar.MODULE_VECTOR[x] for x in m.modules)
     if i is None:
-        return "f_%s (the whole vector) reads LIGGGHTS's layout of %d values" % (m.id, size)
+        return False, "f_%s (the whole vector) reads LIGGGHTS's layout of %d values" % (
+            m.id, size)
     if not 1 <= i <= size:
         return None          # out of LIGGGHTS's range: left as written
     r = m.rid
     if i <= 6 and m.stress_off:
-        return "f_%s[%d]: 'stress off' keeps LIGGGHTS's forces at zero" % (m.id, i)
+        return False, "f_%s[%d]: 'stress off' keeps LIGGGHTS's forces at zero" % (m.id, i)
     if i <= 3:
-        return "f_%s[%d]" % (r, i)
+        return True, "f_%s[%d]" % (r, i)
     p, a = ref_point(m), m.origin()
     if p is None:
-        return "f_%s[%d]: its reference point is not a number the tool knows" % (m.id, i)
+        return False, "f_%s[%d]: its reference point is not a number the tool knows" % (
+            m.id, i)
     d = [x - y for x, y in zip(a, p)]
     turns = rotates(mg, m)
     if i <= 6:
         if all(abs(x) <= TINY for x in d):
-            return "f_%s[%d]" % (r, i)
+            return True, "f_%s[%d]" % (r, i)
         if turns:
-            return ("f_%s[%d]: the torque about a point the wall turns away from its "
-                    "surface origin" % (m.id, i))
+            return False, ("f_%s[%d]: the torque about a point the wall turns away from "
+                           "its surface origin" % (m.id, i))
         # M_p = M_a + (a - p) x F
         k = i - 4
         j, l = (k + 1) % 3, (k + 2) % 3
         terms = "".join("%s%s*f_%s[%d]" % ("+" if c > 0 else "-", fmt(abs(c)), r, n)
                         for c, n in ((d[j], l + 1), (-d[l], j + 1)) if abs(c) > TINY)
-        return "(f_%s[%d]%s)" % (r, i, terms) if terms else "f_%s[%d]" % (r, i)
+        return True, ("(f_%s[%d]%s)" % (r, i, terms) if terms else "f_%s[%d]" % (r, i))
     k = (i - 7) % 3
     s = mg.motion_state.get(m.id, {})
     if turns and s.get("rot") is not None:
         o = [float(x) for x in s["rot"][0]] if all(_num(x) for x in s["rot"][0]) else None
         if o is None or any(abs(x - y) > TINY for x, y in zip(o, p)) or \
                 s.get("spin") is not None:
-            return ("f_%s[%d]: a point the wall turns about another origin" % (m.id, i))
-    return "f_%s[%d]" % (r, 15 + k) if abs(p[k]) <= TINY else \
-        "(%s+f_%s[%d])" % (fmt(p[k]), r, 15 + k)
+            return False, "f_%s[%d]: a point the wall turns about another origin" % (m.id, i)
+    return True, ("f_%s[%d]" % (r, 15 + k) if abs(p[k]) <= TINY else
+                  "(%s+f_%s[%d])" % (fmt(p[k]), r, 15 + k))
 
 
 def _num(x):
@@ -107,9 +110,9 @@ def references(mg, commands):
                 continue
             i = int(mt.group(3)) if mt.group(3) else None
             got = mapping(mg, m, i)
-            if got is not None and not got.startswith(("f_%s[" % m.rid, "(")):
+            if got is not None and not got[0]:
                 m.reasons.append("%s reads %s; wall/rigid has no such value" % (
-                    cmd.where(), got))
+                    cmd.where(), got[1]))
 
 
 def in_formula(cmd, pos):
@@ -143,8 +146,9 @@ def rewrite_references(mg, commands):
                 return mt.group(0)
             i = int(mt.group(3))
             got = mapping(mg, m, i)
-            if got is None or got == mt.group(0):
+            if got is None or not got[0] or got[1] == mt.group(0):
                 return mt.group(0)
+            got = got[1]
             if got.startswith("f_") or in_formula(cmd, mt.start()):
                 return got
             name = "rs_%s_%d" % (m.id, i)
