@@ -362,7 +362,7 @@ class Migration:
         parts = []
         incl = getattr(src, "includes", {})
         for p in getattr(src, "jumps", ()):
-            if self.changed(self.deck.sources[p]):
+            if p != src.path and self.changed(self.deck.sources[p]):
                 raise DeckError(None, "%s jumps to %s, whose walls the tool would rewrite: "
                                 "migrate it on its own" % (src.name or "the deck",
                                                            self.deck.sources[p].name))

@@ -13,7 +13,10 @@ value read from a file or the environment is the run's), `next` (the jump after 
 exhausted variable is skipped), `label`, `jump SELF|FILE [label]`, `include`, `if`
 (its commands run through the same path), `run` (the step count), `timestep`,
 `reset_timestep`, `quit`. Every other command is recorded, in the order it runs, with its
-words as substituted (Exec). Where a value depends on the run (a thermo value, a compute,
+words as substituted (Exec). A loop that runs the same commands twice in a row, none of
+which makes, moves or removes a fix, dump or compute, is not run pass by pass: its
+variables go on to their last pass, which runs, and the steps of the passes between are
+counted. Where a value depends on the run (a thermo value, a compute,
 a fix), the words hold it as unknown; an `if` whose condition depends on the run is
 recorded in blind, its commands not run; where such an `if` changes the deck's flow
 (jump, label, include, next) the tool stops following (stopped) and the rest is what the
@@ -27,6 +30,9 @@ import rigidsurf_migrate_expr as expr
 UNKNOWN = "\x00"       # marks a word whose value depends on the run
 MAX_COMMANDS = 200000  # the longest run of commands the tool follows
 FLOW = ("jump", "label", "include", "next", "clear")
+# commands that may make, move, write or remove a wall: a loop that runs one is followed
+# pass by pass
+WALLISH = ("fix", "unfix", "dump", "undump", "compute", "uncompute", "fix_modify")
 
 
 class DeckError(Exception):
@@ -160,6 +166,7 @@ class Deck:
         for name, values in cli_vars:
             self.vars[name] = Var("index", list(values))
         self.trace, self.blind, self.stopped = [], [], None
+        self.ran, self.loops = [], {}   # every command run; the passes of each jump
         self.step, self.dt, self.time = 0, None, 0.0
         self.unknown = {}       # why a word is unknown: reason by marker
         self.evaluating = set()
@@ -311,6 +318,7 @@ class Deck:
             words = split_words(self.substitute(cmd.body, cmd), cmd)
             if not words:
                 continue
+            self.ran.append((cmd, words))
             res = self.execute(cmd, words, None, stack, jump_skip)
             jump_skip = False
             if res == "quit":
@@ -452,6 +460,8 @@ class Deck:
         if not all(known(x) for x in args):
             return self.stop(via or cmd, "jump %s: %s" % (" ".join(args), self.why(
                 " ".join(args))), stack, [None])
+        if via is None:
+            self.loop_ahead(cmd)
         if args[0] == "SELF":
             stack[-1][1] = 0
         else:
@@ -462,6 +472,44 @@ class Deck:
             (via or cmd).source.jumps = getattr((via or cmd).source, "jumps", set())
             (via or cmd).source.jumps.add(path)
         return ("label", args[1]) if len(args) == 2 else None
+
+    def loop_ahead(self, cmd):
+        """At a jump that closes a loop: when its last two passes ran the same commands,
+        none of WALLISH, the loop variables (those of its `next`) go on to their last
+        pass, and the step and time to where the passes between would take them; a
+        `run` of those steps stands for them in the trace. Variables the pass sets from
+        substituted values are the run's from here."""
+        here = len(self.ran)
+        prev = self.loops.get(cmd)
+        self.loops[cmd] = (here, None, self.step, self.time)
+        if prev is None:
+            return
+        start, sig_prev, step_prev, time_prev = prev
+        body = self.ran[start:here]
+        sig = tuple(c for c, _ in body)
+        self.loops[cmd] = (here, sig, self.step, self.time)
+        if sig != sig_prev or any(w[0] in WALLISH for _, w in body):
+            return
+        nexts = [n for _, w in body if w[0] == "next" for n in w[1:]]
+        if not nexts or any(n not in self.vars for n in nexts):
+            return
+        ahead = min(len(self.vars[n].values) - self.vars[n].which for n in nexts) - 1
+        if ahead <= 0:
+            return
+        for n in nexts:
+            self.vars[n].which += ahead
+        per = None if self.step is None or step_prev is None else self.step - step_prev
+        ex = Exec(cmd, ["run", str(per * ahead) if per is not None else UNKNOWN], None,
+                  self.step, self.dt)
+        ex.nsteps = None if per is None else per * ahead
+        self.trace.append(ex)
+        self.step = None if per is None else self.step + per * ahead
+        self.time = None if self.time is None or time_prev is None else \
+            self.time + (self.time - time_prev) * ahead
+        for c, w in body:
+            if w[0] == "variable" and len(w) > 2 and "$" in c.body and w[1] not in nexts:
+                self.vars[w[1]] = Var("run", [None], "%s, set by the loop of %s" % (
+                    w[1], cmd.where()))
 
     def ifthen(self, cmd, args, via, stack):
         if len(args) < 3 or args[1] != "then":

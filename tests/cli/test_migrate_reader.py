@@ -233,6 +233,20 @@ rc, mig, err = migrate("variable a equal 2\n" + LOOP.replace(
 check("a loop whose mesh's placement differs at each pass: exit 1 (one line, three "
       "placements)", rc == 1 and "runs more than once and would be written differently"
       in err, err)
+LONG = BOX + """timestep 1e-4
+""" + MESH % "" + """fix mv all move/mesh mesh m linear 0.1 0 0
+variable n loop 100000
+label pass
+run 10
+next n
+jump SELF pass
+unfix mv
+fix r all move/mesh mesh m rotate origin 1 0 0 axis 0 0 1 period 2
+"""
+rc, mig, err = migrate(LONG)
+check("a loop of 100000 passes: its steps counted (the mesh moved 0.1 m/s x 100 s when "
+      "the rotation is made: the origin 1 - 10 in the wall's reference)",
+      rc == 0 and "rotate origin -9 0 0 axis 0 0 1" in flat(mig), err + flat(mig)[-400:])
 STOP = BOX + PLANE % ("w", "0") + """label settle
 run 100
 variable k equal ke
