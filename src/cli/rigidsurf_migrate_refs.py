@@ -227,9 +227,12 @@ def notes_for_dumps(mg):
                         "; not written: " + " ".join(lost) if lost else "")
                     if written or lost else "")
         else:
-            mg.note(d.ex.cmd, "dump %s writes %s as LIGGGHTS meshes kept for it alone (no "
-                    "wall); their walls are wall/rigid %s" % (
-                        d.id, ids, " ".join(m.rid for m in mine)))
+            one = len(mine) == 1
+            mg.note(d.ex.cmd, "dump %s writes %s %s, kept as %s for it alone (without a "
+                    "wall); the wall%s wall/rigid %s" % (
+                        d.id, "mesh" if one else "meshes", ids,
+                        "a LIGGGHTS mesh" if one else "LIGGGHTS meshes",
+                        " is" if one else "s are", " ".join(m.rid for m in mine)))
 
 
 def cwl(mg, ex, alive):

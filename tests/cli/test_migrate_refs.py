@@ -92,7 +92,8 @@ check("a dump mesh/stl of four meshes: every wall migrated, the meshes kept as L
       rc == 0 and all("fix m%d all mesh/surface file p%d.stl type 1\n" % (k, k) in out and
                       "fix rs_m%d all wall/rigid" % k in out for k in range(4)) and
       "dump d all mesh/stl 100 post/walls*.stl\n" in out and "wall/gran" not in out and
-      "NOTE: dump d writes m0 m1 m2 m3 as LIGGGHTS meshes kept for it alone" in err,
+      "NOTE: dump d writes meshes m0 m1 m2 m3, kept as LIGGGHTS meshes for it alone "
+      "(without a wall); the walls are wall/rigid rs_m0 rs_m1 rs_m2 rs_m3" in err,
       out + err)
 rc, out, err = migrate(BOX + meshes(1, "mesh/surface/stress") + wall(["m0"]) +
                        "dump dm all mesh/vtk 100 post/m*.vtk id stress stresscomponents vel\n"
