@@ -19,7 +19,7 @@ import rigidsurf_migrate_folds as folds  # noqa: E402
 import rigidsurf_migrate_motion as motion  # noqa: E402
 import rigidsurf_migrate_refs as refs  # noqa: E402
 import rigidsurf_migrate_walls as walls  # noqa: E402
-from rigidsurf_migrate_deck import Deck, DeckError, known, split_words  # noqa: E402
+from rigidsurf_migrate_deck import Deck, DeckError, split_words  # noqa: E402
 
 USAGE = """usage: rigidsurf-migrate DECK [-var NAME VALUE ...] > DECK.rigid
 
@@ -70,21 +70,24 @@ class Migration:
         self.heat, self.box_half = False, None
 
     # -- reports ------------------------------------------------------------------
-    def report(self, cmd, text, kept):
-        order = list(self.deck.sources).index(cmd.source.path) if cmd else 0
-        self.reports.append(((order, cmd.lineno if cmd else 0), "%s: %s" % (
-            cmd.where() if cmd else "DECK", text), kept))
+    def report(self, cmd, text):
+        """A line of stderr, sorted by file (in the order read) and line."""
+        order = list(self.deck.sources).index(cmd.source.path)
+        self.reports.append(((order, cmd.lineno), "%s: %s" % (cmd.where(), text)))
 
     def note(self, cmd, text):
         if text:
-            self.report(cmd, "NOTE: " + text, False)
+            self.report(cmd, "NOTE: " + text)
+
+    @staticmethod
+    def refuse_if(ex):
+        raise DeckError(ex.via, "an if runs '%s': the tool rewrites a wall's commands where "
+                        "they stand; write it as a line of its own" % " ".join(ex.words[:4]))
 
     def commit(self, ex, lines):
         """The text of ex's command: lines (None: as written); one text per command."""
         if ex.via is not None:
-            raise DeckError(ex.via, "an if runs '%s': the tool rewrites a wall's commands "
-                            "where they stand; write it as a line of its own"
-                            % " ".join(ex.words[:4]))
+            self.refuse_if(ex)
         prev = self.out.get(ex.cmd, MISSING)
         if prev is not MISSING and prev != lines:
             raise DeckError(ex.cmd, "it runs more than once and would be written "
@@ -115,7 +118,7 @@ class Migration:
         ids = self.ids()
         for ex in self.deck.trace:
             if ex.via is not None and wall_related(ex.words, ids):
-                self.commit(ex, None)
+                self.refuse_if(ex)
         for cmd, reason, branches in self.deck.blind:
             for _, cmds in branches:
                 for c in cmds:
@@ -276,22 +279,23 @@ class Migration:
 
     # -- output -------------------------------------------------------------------
     def emit(self):
-        defined_L = False
-        L = walls.half_length(self.box_half)
+        L, with_L = walls.half_length(self.box_half), None
         for wall in self.walls:
             if not wall.ok:
                 for r in wall.why:
-                    self.report(wall.cmd, "fix %s: %s" % (wall.id, r), True)
-                self.report(wall.cmd, "fix %s: the wall is kept as LIGGGHTS's" % wall.id, True)
+                    self.report(wall.cmd, "fix %s: %s" % (wall.id, r))
+                self.report(wall.cmd, "fix %s: the wall is kept as LIGGGHTS's" % wall.id)
                 continue
             for n in wall.notes:
                 self.note(wall.cmd, "fix %s: %s" % (wall.id, n))
             if wall.kind == "primitive":
                 lines = []
-                if L is None and not defined_L:
+                if L is None and with_L in (None, wall.cmd):
+                    # the box's size where create_box's region is not known, before the
+                    # first such wall
                     lines.append("variable rs_L equal 10*(abs(xlo)+abs(xhi)+abs(ylo)+"
                                  "abs(yhi)+abs(zlo)+abs(zhi))")
-                    defined_L = True
+                    with_L = wall.cmd
                 lines.append(walls.primitive(wall, L or "${rs_L}", self.heat))
             else:
                 lines = []
@@ -401,9 +405,6 @@ class Migration:
         self.emit()
         self.refs_out = refs.rewrite_references(self, [c for c in commands
                                                        if c not in self.out])
-        for cmd, names in self.after.items():
-            if cmd not in self.out:
-                self.out[cmd] = [None]
         return self.text_of(self.deck.main)
 
 
@@ -439,7 +440,7 @@ def main(argv):
         return 1
     sys.stdout.write(out)
     done = set()
-    for _, text, _ in sorted(mg.reports, key=lambda r: r[0]):
+    for _, text in sorted(mg.reports, key=lambda r: r[0]):
         if text not in done:
             sys.stderr.write(text + "\n")
         done.add(text)

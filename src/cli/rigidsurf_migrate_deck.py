@@ -189,7 +189,6 @@ class Deck:
         except (OSError, UnicodeDecodeError) as e:
             raise DeckError(cmd, "Cannot open input script %s (%s)" % (name or path, e))
         src = Source(name, path, text)
-        src.text = text
         self.sources[path] = src
         return src
 

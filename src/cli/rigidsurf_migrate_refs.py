@@ -17,7 +17,7 @@ import re
 
 import rigidsurf_migrate_commands as grammar
 from rigidsurf_migrate_deck import DeckError
-from rigidsurf_migrate_walls import fmt
+from rigidsurf_migrate_walls import fmt, number
 
 REF = re.compile(r"\bf_(\w+)(\[(\d+)\])?")
 TINY = 1e-12
@@ -37,7 +37,6 @@ def ref_point(m):
     else reference_point, else the origin; None when not a number the tool knows."""
     if m.servo:
         k = m.servo.index("com")
-        from rigidsurf_migrate_walls import number
         p = [number(x) for x in m.servo[k + 1:k + 4]]
     else:
         p = m.refpoint or [0.0, 0.0, 0.0]
@@ -193,7 +192,7 @@ def dumps(mg):
                 m.rid = "rs_" + m.id
             continue
         for m in mine:
-            if getattr(m, "vtk", None):
+            if m.vtk:
                 m.reasons.append("two dumps write its stress (%s and %s): wall/rigid writes "
                                  "one vtk" % (m.vtk_dump.ex.cmd.where(), d.ex.cmd.where()))
             name = d.file if len(mine) == len(d.meshes) == 1 else \

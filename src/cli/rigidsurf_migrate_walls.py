@@ -93,6 +93,7 @@ class Mesh:
         self.reasons, self.notes, self.walls, self.users = [], [], [], []
         self.type, self.opts, self.wear, self.refpoint, self.servo = "1", {}, None, None, []
         self.stress_off, self.display, self.rid = False, False, self.id
+        self.vtk = self.vtk_dump = None   # the vtk FILE N a dump of its stress gives
         try:
             self.modules = grammar.mesh_modules(self.style)
             self.file, kws = grammar.parse_mesh(w[3:])
@@ -319,7 +320,7 @@ def mesh_wall(wall, m, motion, heat):
         words += ["store_force", "into", wall.id]
     if m.wear == "finnie":
         words += ["wear", "finnie"]
-    if getattr(m, "vtk", None):
+    if m.vtk:
         words += ["vtk"] + m.vtk
     if m.servo:
         words += ["servo"] + m.servo

@@ -7,7 +7,6 @@ names its line), its exit status, and the outputs docs/migration.md shows.
 Usage: test_migrate.py PATH/TO/rigidsurf-migrate
 """
 import difflib
-import importlib.util
 import math
 import os
 import random

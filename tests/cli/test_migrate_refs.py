@@ -11,7 +11,6 @@ Usage: test_migrate_refs.py PATH/TO/rigidsurf-migrate
 """
 import math
 import os
-import re
 import shutil
 import subprocess
 import sys

@@ -30,7 +30,6 @@ import os
 import re
 import shutil
 import subprocess
-import sys
 
 import liglib as L
 
