@@ -295,7 +295,8 @@ class Deck:
     def follow(self):
         """Runs the deck's commands in LIGGGHTS's order; returns self."""
         stack = self.stack = [[self.main, 0]]
-        label, jump_skip, count = None, False, 0
+        label, count = None, 0
+        self.jump_skip = False   # an exhausted `next` skips the next jump (Input::jump)
         while stack:
             src, pos = stack[-1]
             if pos >= len(src.commands):
@@ -318,28 +319,26 @@ class Deck:
             if not words:
                 continue
             self.ran.append((cmd, words))
-            res = self.execute(cmd, words, None, stack, jump_skip)
-            jump_skip = False
+            res = self.execute(cmd, words, None, stack)
             if res == "quit":
                 return self
-            if res == "skip_next_jump":
-                jump_skip = True
-            elif isinstance(res, tuple) and res[0] == "label":
+            if isinstance(res, tuple) and res[0] == "label":
                 label = res[1]
             elif res == "stop":
                 return self
         return self
 
-    def execute(self, cmd, words, via, stack, jump_skip):
+    def execute(self, cmd, words, via, stack):
         name, args = words[0], words[1:]
         if name == "variable":
             self.variable(cmd, args)
         elif name == "next":
-            return "skip_next_jump" if self.next_vars(cmd, args) else None
+            self.jump_skip |= self.next_vars(cmd, args)
         elif name == "label":
             pass
         elif name == "jump":
-            if jump_skip:
+            if self.jump_skip:
+                self.jump_skip = False
                 return None
             return self.jump(cmd, args, via, stack)
         elif name == "include":
@@ -368,6 +367,8 @@ class Deck:
         if name == "timestep" and len(words) > 1:
             dt = expr.atof(words[1]) if known(words[1]) else None
             self.dt = dt
+        elif name == "read_restart":
+            self.step = self.time = None   # the restart file's
         elif name == "reset_timestep" and len(words) > 1:
             self.step = int(expr.atof(words[1])) if known(words[1]) else None
             self.time = None
@@ -549,7 +550,7 @@ class Deck:
                 words = split_words(self.substitute(c, cmd), cmd)
                 if not words:
                     continue
-                res = self.execute(cmd, words, cmd, stack, False)
+                res = self.execute(cmd, words, cmd, stack)
                 if res is not None:
                     return res
             return None

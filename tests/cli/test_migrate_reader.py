@@ -213,6 +213,7 @@ label top
 fix w$i all wall/gran model hertz tangential history primitive type 1 zplane $(0.1*v_i)
 print "W w$i $(0.1*v_i)"
 next i
+print "the exhausted next skips the next jump, not the next command"
 jump SELF top
 if "${a} > 1" then "print A1" elif "${a} > 0" "print A0" else "print A-"
 """
@@ -220,8 +221,8 @@ rc, out = stock("variable a equal 2\n" + LOOP.replace(
     "fix w$i all wall/gran model hertz tangential history primitive type 1 zplane $(0.1*v_i)\n",
     ""))
 rc2, mig, err = migrate("variable a equal 2\n" + LOOP)
-check("a loop (label, next, jump SELF) runs its wall line 3 times, as LIGGGHTS does; the "
-      "line is written once, with its words as written",
+check("a loop (label, next, a command, jump SELF) runs its wall line 3 times, as LIGGGHTS "
+      "does; the line is written once, with its words as written",
       out.count("\nW ") == 3 and rc2 == 0 and "fix w$i all wall/rigid surface inline cylinder "
       "a 0 0 $(0.1*v_i)" in flat(mig) and "1 of 1 wall/gran fixes translated" in err,
       out + mig + err)
