@@ -85,7 +85,11 @@ def parse_mesh(words):
     if len(words) < 3 or words[1] not in ("file", "fix"):
         raise Grammar("%s: expects 'file FILE' first" % what)
     groups = MESH_GROUPS + [MESH_MODULES[m] for m in mods]
-    return words[2], parse_groups(words[3:], groups, what)
+    kws = parse_groups(words[3:], groups, what)
+    if not any(k == "type" for k, _ in kws):
+        raise Grammar("%s: expects 'type T' among the keywords before its placement "
+                      "(LIGGGHTS: expecting keyword 'type')" % what)
+    return words[2], kws
 
 
 # ---- fix wall/gran (FixWallGran) and its contact model ---------------------------------

@@ -305,6 +305,14 @@ check("a missing mesh file: exit 1 naming the mesh's line and the file", rc == 1
 rc, mig, err = migrate(BOX + "fix m all mesh/surface file a.stl type 1 scale 2 curvature_x 3\n")
 check("an unknown mesh/surface keyword: exit 1 naming it", rc == 1 and "'curvature_x' is not "
       "one of its keywords" in err, err)
+# LIGGGHTS's order (FixMesh, then FixMeshSurface): type before scale, curvature after it
+for args, want in (("scale 1 type 1", "'type' is not one of its keywords, or comes "
+                                     "after"),
+                   ("type 1 curvature 0.1 scale 1", "'scale' is not one of its keywords, "
+                                                    "or comes after"),
+                   ("scale 1", "expects 'type T'")):
+    rc, mig, err = migrate(BOX + "fix m all mesh/surface file a.stl %s\n" % args)
+    check("mesh/surface '%s': exit 1, as LIGGGHTS stops" % args, rc == 1 and want in err, err)
 
 print("%d passed, %d failed" % (passed, failed))
 shutil.rmtree(TMP, ignore_errors=True)
