@@ -200,8 +200,8 @@ def parse_settings(model, words):
     """The model's settings [(name, value)] (LIGGGHTS's Settings::parseArguments)."""
     allowed = {}
     for key in MODEL_KEYWORDS:
-        name = model.get(key, {"tangential": "history", "cohesion": "off",
-                               "rolling_friction": "off", "surface": "default"}.get(key))
+        # a keyword not given: its model off (no settings), the surface's default
+        name = model.get(key, "default" if key == "surface" else None)
         if name is not None:
             for s in MODELS[key][name]:
                 allowed[s] = SETTING_VALUES.get(s, ("on", "off"))

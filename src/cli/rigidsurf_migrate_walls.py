@@ -218,8 +218,10 @@ class Wall:
 
 
 def law(model, settings, reasons):
-    """wall/rigid's law for LIGGGHTS's model words and settings."""
-    plain = model.get("tangential", "history") == "history" and \
+    """wall/rigid's law for LIGGGHTS's model words and settings. Without `tangential`
+    LIGGGHTS's selector takes no tangential model (TANGENTIAL_OFF): no friction, which
+    only law liggghts with the same words gives."""
+    plain = model.get("tangential") == "history" and \
         model.get("cohesion", "off") == "off" and \
         model.get("rolling_friction", "off") == "off" and not settings
     surface = model.get("surface", "default")
@@ -239,8 +241,6 @@ def law(model, settings, reasons):
     for key in grammar.MODEL_KEYWORDS:
         if key in model:
             words += [key, model[key]]
-    if "tangential" not in model:
-        words[3:3] = ["tangential", "history"]
     for s, v in settings:
         words += [s, v]
     return " ".join(words)

@@ -297,6 +297,10 @@ rc, mig, err = migrate(BOX + "fix w all wall/gran model hertz tangential history
                        "type 1 zplane 0 tangential_damping off\n")
 check("a setting of the model: law liggghts with it", rc == 0 and "law liggghts model hertz "
       "tangential history tangential_damping off type 1" in flat(mig), err)
+rc, mig, err = migrate(BOX + "fix w all wall/gran model hertz primitive type 1 zplane 0\n")
+check("model words without tangential: LIGGGHTS's selector takes no tangential model, so "
+      "law liggghts with the words as written (not law hertz)", rc == 0 and
+      "law liggghts model hertz type 1" in flat(mig), mig + err)
 rc, mig, err = migrate(BOX + "fix m all mesh/surface file nosuch.stl type 1\n"
                        "fix w all wall/gran model hertz tangential history mesh n_meshes 1 "
                        "meshes m\n")

@@ -22,6 +22,8 @@ planes, where wall/rigid's contacts are LIGGGHTS's to rounding: test_mesh_wall).
   its stress: the wall's vtk, at the dump's steps; the piston's force f_piston[3] read.
 - local: `compute wall/gran/local` on the mesh wall: that wall stays LIGGGHTS's (exit
   3), a plane migrates, and the deck runs.
+- frictionless: `model hertz` without `tangential` (no friction in LIGGGHTS): a
+  sphere slides on as in stock.
 - include: the walls in an included file, placed by `$(-2^2*0.001)` (+0.004 by
   LIGGGHTS's rules), run in a loop of `label`, `next`, `jump`; `fix_modify energy yes`
   of the mesh wall/gran: pe the same.
@@ -243,8 +245,22 @@ def include(s):
                rigid)
 
 
+def frictionless(s):
+    """`model hertz` without `tangential`: LIGGGHTS's selector takes no tangential model,
+    so a sphere slides on without friction (friction 0.5 is set)."""
+    text = head() + L.sphere(1, (0.0, 0.0, R + 0.0001), R, RHO, v=(0.2, 0.0, 0.0))
+    text += "fix floor all wall/gran model hertz primitive type 2 zplane 0\n"
+    text += "fix grav all gravity 9.81 vector 0 0 -1\nfix integr all nve/sphere\n"
+    text += printer(["vx[1]"]) + L.dump_lines("d", PRINT, "DUMP") + "run 2000\n"
+    rigid, a, _ = run_pair(s, "frictionless", text)
+    v = values(a)
+    s.ck.check("frictionless: law liggghts with the words as written, and the sphere slides "
+               "on at 0.2 m/s", "law liggghts model hertz type 2" in rigid.replace(
+                   " &\n    ", " ") and abs(v[max(v)][0] - 0.2) < 1e-9, "vx %.12g" % v[max(v)][0])
+
+
 def body(s):
-    for case in (servo, unfix, dumps, stress, local, include):
+    for case in (servo, unfix, dumps, stress, local, include, frictionless):
         try:
             case(s)
         except L.RunError:
