@@ -191,6 +191,10 @@ class Wall:
                 if vals[0] == "yes":
                     self.opts["store_force"] = ["yes"]
             elif key == "shear":
+                if self.kind != "primitive":
+                    raise DeckError(ex.cmd, "fix %s: shear needs the primitive wall before it "
+                                    "(LIGGGHTS: have to define primitive wall before "
+                                    "'shear')" % self.id)
                 self.shear = vals
             elif key == "track_energy":
                 self.notes.append("track_energy is set and read nowhere by LIGGGHTS 3.8; "

@@ -283,6 +283,10 @@ REFUSED = {
     "zplane": "'primitive' expects 4 values",
     "zblob 0": "'zblob' is not a primitive wall of LIGGGHTS",
 }
+rc, mig, err = migrate(BOX + "fix w all wall/gran model hertz tangential history shear x 1 "
+                       "primitive type 1 zplane 0\n")
+check("refused: shear before the primitive wall (LIGGGHTS's order)", rc == 1 and
+      "shear needs the primitive wall before it" in err, err)
 for args, want in REFUSED.items():
     rc, mig, err = migrate(BOX + "fix w all wall/gran model hertz tangential history "
                            "primitive type 1 " + args + "\n")
