@@ -135,7 +135,7 @@ def in_formula(cmd, pos):
 
 
 def rewrite_references(mg, commands):
-    """The text of each command of commands whose f_M[i] change: {cmd: new physical
+    """The text of each command of commands whose f_M[i] change: {cmd: its physical
     lines}; the variables that argument contexts need go to mg.after (after the wall)."""
     out = {}
     for cmd in commands:

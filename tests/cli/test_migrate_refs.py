@@ -87,7 +87,7 @@ FOUR = BOX + meshes(4) + wall(["m0", "m1"], "wa") + wall(["m2", "m3"], "wb") + \
     "dump d all mesh/stl 100 post/walls*.stl\nrun 10\n"
 rc, out, err = migrate(FOUR)
 check("a dump mesh/stl of four meshes: every wall migrated, the meshes kept as LIGGGHTS's "
-      "for the dump, the walls under new IDs",
+      "for the dump, the walls under IDs of their own",
       rc == 0 and all("fix m%d all mesh/surface file p%d.stl type 1\n" % (k, k) in out and
                       "fix rs_m%d all wall/rigid" % k in out for k in range(4)) and
       "dump d all mesh/stl 100 post/walls*.stl\n" in out and "wall/gran" not in out and
@@ -134,8 +134,8 @@ rc, out, err = migrate(BOX + meshes(1) + wall(["m0"]) + "fix ins all insert/stre
                        "123457 distributiontemplate pdd nparticles 10 massrate 0.1 "
                        "insertion_face m0 extrude_length 0.1\n")
 check("a mesh another command uses (an insertion face) stays a LIGGGHTS mesh for it; its "
-      "wall migrates under a new ID", rc == 0 and "fix m0 all mesh/surface file p0.stl" in
-      out and "fix rs_m0 all wall/rigid" in out and "insertion_face m0" in out and
+      "wall migrates under an ID of its own", rc == 0 and
+      "fix m0 all mesh/surface file p0.stl" in out and "fix rs_m0 all wall/rigid" in out and "insertion_face m0" in out and
       "mesh m0 stays a LIGGGHTS mesh, without a wall, for LINE 5 (fix ins all "
       "insert/stream)" in err, out + err)
 

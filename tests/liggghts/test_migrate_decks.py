@@ -162,7 +162,7 @@ def dumps(s):
     text += "dump stl all mesh/stl 500 DUMP_*.stl\n"
     text += printer(["z[1]", "z[4]"]) + L.dump_lines("d", PRINT, "DUMP") + "run 2000\n"
     rigid, a, b = run_pair(s, "dumps", text)
-    s.ck.check("dumps: four walls under new IDs, the plates kept for the dump",
+    s.ck.check("dumps: four walls under IDs of their own, the plates kept for the dump",
                all("fix rs_pl%d all wall/rigid" % k in rigid and
                    "fix pl%d all mesh/surface" % k in rigid for k in range(4)), rigid)
     same, n = True, 0
