@@ -135,8 +135,8 @@ rc, out, err = migrate(BOX + meshes(1) + wall(["m0"]) + "fix ins all insert/stre
                        "insertion_face m0 extrude_length 0.1\n")
 check("a mesh another command uses (an insertion face) stays a LIGGGHTS mesh for it; its "
       "wall migrates under an ID of its own", rc == 0 and
-      "fix m0 all mesh/surface file p0.stl" in out and "fix rs_m0 all wall/rigid" in out and "insertion_face m0" in out and
-      "mesh m0 stays a LIGGGHTS mesh, without a wall, for LINE 5 (fix ins all "
+      "fix m0 all mesh/surface file p0.stl" in out and "fix rs_m0 all wall/rigid" in out and
+      "insertion_face m0" in out and "mesh m0 stays a LIGGGHTS mesh, without a wall, for LINE 5 (fix ins all "
       "insert/stream)" in err, out + err)
 
 # ---- the servo's and a turning mesh's values -----------------------------------------------
