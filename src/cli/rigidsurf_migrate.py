@@ -66,7 +66,7 @@ class Migration:
         self.deck = Deck(path, cli_vars)
         self.reports, self.out, self.after = [], {}, {}
         self.meshes, self.walls, self.dumps = {}, [], []
-        self.wall_execs, self.motion_lines = {}, {}
+        self.wall_execs, self.motion_lines, self.motion_state = {}, {}, {}
         self.heat, self.box_half = False, None
 
     # -- reports ------------------------------------------------------------------
@@ -226,7 +226,6 @@ class Migration:
 
     def wall(self, ex, alive):
         wall = walls.Wall(ex)
-        wall.mesh_objs = []
         if wall.kind == "mesh":
             for mid in wall.meshes:
                 m = alive.get(mid)
@@ -418,7 +417,7 @@ def main(argv):
         return 1
     path, cli_vars, k = args[0], [], 1
     while k < len(args):
-        if args[k] in ("-var", "-v") and k + 2 < len(args) + 1 and k + 1 < len(args):
+        if args[k] in ("-var", "-v") and k + 1 < len(args):
             j = k + 2
             while j < len(args) and not args[j].startswith("-"):
                 j += 1

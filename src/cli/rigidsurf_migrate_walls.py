@@ -93,6 +93,7 @@ class Mesh:
         self.reasons, self.notes, self.walls, self.users = [], [], [], []
         self.type, self.opts, self.wear, self.refpoint, self.servo = "1", {}, None, None, []
         self.stress_off, self.display, self.rid = False, False, self.id
+        self.ok, self.wall = False, None   # set by the caller once all walls are read
         self.vtk = self.vtk_dump = None   # the vtk FILE N a dump of its stress gives
         try:
             self.modules = grammar.mesh_modules(self.style)
@@ -167,7 +168,9 @@ class Wall:
         # as written, for the line that stands where this one does
         self.id_raw, self.group_raw = ex.rawword(1, w[1]), ex.rawword(2, w[2])
         self.reasons, self.notes, self.meshes, self.opts = [], [], [], {}
-        self.kind, self.ok = None, False
+        self.kind, self.shear = None, None
+        # set by the caller: its Mesh objects, whether it is migrated and why not
+        self.mesh_objs, self.ok, self.why = [], False, []
         try:
             model, kws, settings = grammar.parse_wall(w[4:])
         except grammar.Grammar as e:
@@ -204,7 +207,7 @@ class Wall:
                 if key != "store_force_contact" or vals[0] == "yes":
                     self.reasons.append("wall/gran keyword '%s' has no wall/rigid counterpart"
                                         % " ".join([key] + vals))
-        if self.kind == "primitive" and getattr(self, "shear", None):
+        if self.kind == "primitive" and self.shear:
             if self.shear[0] not in ("x", "y", "z"):
                 raise DeckError(ex.cmd, "fix %s: shear expects x, y or z, got '%s' (LIGGGHTS: "
                                 "illegal 'shear' dim)" % (self.id, self.shear[0]))
