@@ -23,6 +23,7 @@
 
 #include <climits>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <mpi.h>
@@ -66,6 +67,11 @@ int host_material(void *ctx, const char *name, int i, int j, int required, const
 void host_warning(void *ctx, const char *msg)
 {
     self(ctx)->warning(msg);
+}
+
+void host_info(void *ctx, const char *msg)
+{
+    self(ctx)->info(msg);
 }
 
 int host_engine_law(void *ctx, const char *const *words, int nwords, const rs_law **law,
@@ -119,6 +125,13 @@ double FixWallRigid::variable_eval(int index, int why)
 void FixWallRigid::warning(const char *msg)
 {
     error->warning(FLERR, msg);
+}
+
+void FixWallRigid::info(const char *msg)
+{
+    for (FILE *fp : {screen, logfile})
+        if (fp)
+            std::fprintf(fp, "INFO: %s\n", msg);
 }
 
 /* LIGGGHTS's material properties (fix property/global), looked up as fix wall/gran looks
@@ -197,6 +210,7 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
     host_.variable_eval = host_variable_eval;
     host_.material = host_material;
     host_.warning = host_warning;
+    host_.info = host_info;
     host_.engine_law = host_engine_law;
     host_.engine_law_name = "liggghts";
     rs_error err;
@@ -270,6 +284,15 @@ void FixWallRigid::fail_one(const std::string &msg)
     }
     error->one(FLERR, m.c_str());
     std::abort();
+}
+
+/* A failed step: law liggghts's full account of a model's non-finite output (its history
+ * by name) when that is what failed, else the wall's message. */
+void FixWallRigid::step_failed(const rs_error &err)
+{
+    if (lig_ && err.code == RS_ERR_NONFINITE && !lig_->failure().empty())
+        fail_one(lig_->failure());
+    fail_one(err.msg);
 }
 
 int FixWallRigid::setmask()
@@ -456,7 +479,7 @@ void FixWallRigid::setup(int)
     rs_error err;
     rs_error_clear(&err);
     if (rs_wall_setup(wall_, &b, &r, NULL, &err) != RS_OK)
-        fail_one(err.msg);
+        step_failed(err);
 }
 
 void FixWallRigid::initial_integrate(int)
@@ -479,7 +502,7 @@ void FixWallRigid::post_force(int)
     rs_error err;
     rs_error_clear(&err);
     if (rs_wall_step(wall_, &b, &r, update->dt, NULL, &err) != RS_OK)
-        fail_one(err.msg);
+        step_failed(err);
 }
 
 void FixWallRigid::final_integrate()

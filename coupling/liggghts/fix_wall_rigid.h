@@ -62,6 +62,7 @@ class FixWallRigid : public Fix
     int variable_find(const char *name);
     double variable_eval(int index, int why);
     void warning(const char *msg);
+    void info(const char *msg);
     int material(const char *name, int i, int j, int required, const char *who,
                  double *value, rs_error *err);
     int engine_law(const char *const *words, int nwords, const rs_law **law);
@@ -73,6 +74,7 @@ class FixWallRigid : public Fix
   private:
     [[noreturn]] void fail(const std::string &msg);
     [[noreturn]] void fail_one(const std::string &msg);
+    [[noreturn]] void step_failed(const rs_error &err);
     rs_wall_block block(bool setup) const;
     rs_wall_rows rows();
     void begin_wallforce();

@@ -19,7 +19,6 @@ using namespace LAMMPS_NS;
 
 int FixWallRigid::liggghts_update(rs_law_block *b, rs_error *err)
 {
-    (void)err;
     double **v = atom->v, **omega = atom->omega, **x = atom->x;
     const int nd = b->nDir, ns = b->nStateVar;
     const rs_motion *motion = rs_wall_motion(wall_);
@@ -72,7 +71,10 @@ int FixWallRigid::liggghts_update(rs_law_block *b, rs_error *err)
         c.jtype = b->wall_type;
         c.mass = b->mass[e];
         c.update_history = !b->setup;
-        if (!lig_->contact(c, F, T))
+        const LiggghtsLaw::Result got = lig_->contact(c, F, T);
+        if (got == LiggghtsLaw::kNotFinite)
+            return rs_error_set(err, RS_ERR_NONFINITE, "%s", lig_->failure().c_str());
+        if (got == LiggghtsLaw::kNone)
             continue;
         s[0] = F[0] * nrm[0] + F[1] * nrm[1] + F[2] * nrm[2];
         s[1] = -(F[0] * t1[0] + F[1] * t1[1] + F[2] * t1[2]);

@@ -179,7 +179,10 @@ typedef struct rs_surface {
     double zmin, zmax; ///< CYLINDER: extent along the generator, local z
     void *impl;        ///< the kind's query data
     char warning[512]; ///< what reading repaired or found doubtful (MESH: dropped facets,
-                       ///< open or non-manifold edges), empty when nothing
+                       ///< non-manifold edges, holes in a surface that otherwise
+                       ///< closes), empty when nothing
+    char info[256];    ///< what reading found that asks nothing of the user (MESH: the
+                       ///< rim of an open surface), empty when nothing
 } rs_surface;
 
 /// Number of local directions: 2 for SEGMENTS, 3 otherwise, 0 for a surface without a

@@ -51,8 +51,8 @@ enum { RS_VAR_MISSING = -1, RS_VAR_NOT_EQUAL = -2 };
 enum { RS_VAR_MOTION = 0, RS_VAR_SERVO = 1 };
 
 /// What only the engine knows. Every pointer may be NULL where the engine has nothing
-/// of the kind: one rank, no variables, no material properties, no warnings, no law of
-/// its own.
+/// of the kind: one rank, no variables, no material properties, no warnings or lines of
+/// information, no law of its own.
 typedef struct rs_wall_host {
     void *ctx;  ///< passed to every callback
     int rank;   ///< this process (0: writes files, prints warnings)
@@ -73,6 +73,9 @@ typedef struct rs_wall_host {
                     const char *who, double *value, rs_error *err);
     /// A warning, on rank 0 (the wall calls it there only).
     void (*warning)(void *ctx, const char *msg);
+    /// A line of information that asks nothing of the user, on rank 0 (the wall calls it
+    /// there only); the engine prints it as `INFO: msg`.
+    void (*info)(void *ctx, const char *msg);
     /// The engine's own contact models as a law (`law NAME words ...` with NAME =
     /// engine_law_name): the words up to the next keyword of the wall. The descriptor stays
     /// the engine's (it outlives the wall).

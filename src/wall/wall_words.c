@@ -492,6 +492,11 @@ int wall_parse(rs_wall *w, const char *const *arg, int narg, rs_error *err)
              "the wear is kept per facet");
     if (w->surf->warning[0])
         wall_warn(w, "fix wall/rigid: surface: %s", w->surf->warning);
+    if (w->surf->info[0] && w->host.rank == 0 && w->host.info) {
+        char msg[sizeof w->surf->info + 2 * WALL_NAME];
+        snprintf(msg, sizeof msg, "fix wall/rigid %s: surface: %s", w->id, w->surf->info);
+        w->host.info(w->host.ctx, msg);
+    }
     if ((rc = state_variables(w, err)))
         return rc;
     return properties(w, err);

@@ -324,10 +324,14 @@ def check_layout(ck, a, prefix):
     path = os.path.join(binp, "rigidsurf-migrate")
     if ck.check("installed %s/rigidsurf-migrate" % a.bindir, os.access(path, os.X_OK)):
         p = subprocess.run([path, "--help"], capture_output=True, text=True, env=clean_env())
-        ck.check("rigidsurf-migrate runs and prints its usage",
-                 p.returncode == 2 and "usage: rigidsurf-migrate" in p.stderr, p.stderr)
-        # a motion, through the module installed in share/rigidsurf
+        ck.check("rigidsurf-migrate runs and prints its usage and exit codes",
+                 p.returncode == 0 and "usage: rigidsurf-migrate" in p.stdout and
+                 "Exit status" in p.stdout, p.stderr)
+        # a motion, through the modules installed in share/rigidsurf
         deck = os.path.join(os.path.dirname(os.path.normpath(prefix)), "in.wiggle")
+        with open(os.path.join(os.path.dirname(deck), "p.stl"), "w") as f:
+            f.write("solid p\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n"
+                    "   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\nendsolid p\n")
         with open(deck, "w") as f:
             f.write("fix p all mesh/surface file p.stl type 1\n"
                     "fix w all wall/gran model hertz tangential history mesh n_meshes 1 "
