@@ -3,7 +3,7 @@
  * sphere the bodies of its local coordinates, points_one_line's face and map_revolution's
  * mapping, revolution_point.h, and the shares of 1 of rs_contacts_fold_shares), on the run
  * alone and in one loop. */
-#include "rigidsurf/line_revolution.h"
+#include "line_revolution.h"
 
 #include "revolution_point.h"
 #include "rs_compiler.h"

@@ -1,7 +1,7 @@
 # Installation, in one place (included once at the end of the top-level CMakeLists.txt):
 #   bin/                     liggghts-rigidsurf, rigidsurf-frames, rigidsurf-build-law,
 #                            rigidsurf-migrate
-#   share/rigidsurf/         rigidsurf_migrate_motion.py (rigidsurf-migrate's module)
+#   share/rigidsurf/         rigidsurf_migrate_*.py (rigidsurf-migrate's modules)
 #   lib/                     librigidsurf.a, librigidsurf_abaqus.so,
 #                            cmake/rigidsurf/ (find_package(rigidsurf CONFIG):
 #                            rigidsurf::rigidsurf), pkgconfig/rigidsurf.pc
@@ -84,9 +84,8 @@ endforeach()
 install(TARGETS ${RS_INSTALL_PROGRAMS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(PROGRAMS ${PROJECT_SOURCE_DIR}/src/cli/rigidsurf_migrate.py
   DESTINATION ${CMAKE_INSTALL_BINDIR} RENAME rigidsurf-migrate)
-# its module, where it looks for it: ../share/rigidsurf from bin/
-install(FILES ${PROJECT_SOURCE_DIR}/src/cli/rigidsurf_migrate_motion.py
-  DESTINATION share/rigidsurf)
+# its modules, where it looks for them: ../share/rigidsurf from bin/
+install(FILES ${RS_MIGRATE_MODULES} DESTINATION share/rigidsurf)
 
 # ---- Docs and examples ------------------------------------------------------------------
 # README.md beside docs/ and examples/, so that its relative links hold.

@@ -17,7 +17,7 @@ double rs_effective_radius(double R, double k1, double k2)
     return 1.0 / sqrt(c1 * c2);
 }
 
-enum { NDOUBLE = 19 };
+enum { NDOUBLE = 21 };
 
 /// Slots of a slice's node table: a power of two above twice its most nodes.
 #define RS_FACET_HASH 2048
@@ -29,18 +29,19 @@ static void double_arrays(rs_contact_block *cb, size_t n, double **p[NDOUBLE],
     const size_t ns = cb->nstatev > 0 ? (size_t)cb->nstatev : 1,
                  np = cb->npred > 0 ? (size_t)cb->npred : 1,
                  nd = cb->ndir > 0 ? (size_t)cb->ndir : 3;
-    double **const a[NDOUBLE] = {&cb->stiff,    &cb->cond,     &cb->area,   &cb->radius,
-                                 &cb->mass,     &cb->reff,     &cb->temp,   &cb->dtemp,
-                                 &cb->pred,     &cb->dpred,    &cb->stress, &cb->statev,
-                                 &cb->flux_slv, &cb->flux_mst, &cb->sed,    &cb->sfd,
-                                 &cb->scd,      &cb->spd,      &cb->svd};
+    double **const a[NDOUBLE] = {
+        &cb->stiff,    &cb->cond,     &cb->area,  &cb->radius, &cb->mass,   &cb->reff,
+        &cb->temp,     &cb->dtemp,    &cb->pred,  &cb->dpred,  &cb->stress, &cb->statev,
+        &cb->flux_slv, &cb->flux_mst, &cb->sed,   &cb->sfd,    &cb->scd,    &cb->spd,
+        &cb->svd,      &cb->force,    &cb->torque};
     for (int i = 0; i < NDOUBLE; i++) {
         p[i] = a[i];
         len[i] = n;
     }
-    len[8] = len[9] = n * np; /* pred, dpred */
-    len[10] = n * nd;         /* stress */
-    len[11] = n * ns;         /* statev */
+    len[8] = len[9] = n * np;  /* pred, dpred */
+    len[10] = n * nd;          /* stress */
+    len[11] = n * ns;          /* statev */
+    len[19] = len[20] = 3 * n; /* force, torque */
 }
 
 void rs_cblock_free(rs_contact_block *cb)
@@ -52,6 +53,7 @@ void rs_cblock_free(rs_contact_block *cb)
         free(*p[i]);
     free(cb->uid);
     free(cb->type);
+    free(cb->row);
     free(cb->fac_node);
     free(cb->fac_shape);
     free(cb->fac_xyz);
@@ -81,7 +83,8 @@ int rs_cblock_reserve(rs_contact_block *cb, int cap, rs_error *err)
     double **p[NDOUBLE];
     size_t len[NDOUBLE];
     double_arrays(cb, n, p, len);
-    int ok = (cb->uid = calloc(n, sizeof(int))) && (cb->type = calloc(n, sizeof(int)));
+    int ok = (cb->uid = calloc(n, sizeof(int))) && (cb->type = calloc(n, sizeof(int))) &&
+             (cb->row = calloc(n, sizeof(int)));
     for (int i = 0; ok && i < NDOUBLE; i++)
         ok = (*p[i] = calloc(len[i], sizeof(double))) != NULL;
     if (!ok) {
@@ -125,6 +128,10 @@ void rs_cblock_inputs(rs_contact_block *cb, const rs_track_out *o,
     if (p->type)
         for (int e = 0; e < ne; e++)
             ctype[e] = p->type[pt[e]];
+    cb->has_row = p->row != NULL;
+    if (p->row)
+        for (int e = 0; e < ne; e++)
+            cb->row[e] = p->row[pt[e]];
 
     double *restrict area = cb->area, *restrict crad = cb->radius,
                      *restrict cmass = cb->mass, *restrict stiffa = cb->stiff,
@@ -358,6 +365,11 @@ int rs_cblock_call(rs_contact_block *cb, const rs_law *law, const rs_law_block *
             b.dpreDefSlv = cb->dpred + u0 * np;
         }
         b.slv_type = cb->has_type ? cb->type + u0 : NULL;
+        b.slvRow = cb->has_row ? cb->row + u0 : NULL;
+        if (cb->law_sets & RS_LAW_SETS_FORCE) {
+            b.force = cb->force + u0 * 3;
+            b.torque = cb->torque + u0 * 3;
+        }
         b.stress = cb->stress + u0 * nd;
         b.statev = ns ? cb->statev + u0 * ns : NULL;
         b.fluxSlv = cb->flux_slv + u0;

@@ -37,7 +37,7 @@ RS_INLINE void loads(const rs_contact_block *cb, const rs_track_out *o,
                      const rs_particle_block *p, const double origin[3], double *f,
                      double *t, double *q, const rs_load_rows *rows, rs_wall_load *w,
                      const int ND, const int LEAVE, const int UNIT, const int LEAN,
-                     const int ROWS)
+                     const int ROWS, const int FORCE)
 {
     const int ne = o->n;
     const int *restrict pt = o->point;
@@ -72,19 +72,23 @@ RS_INLINE void loads(const rs_contact_block *cb, const rs_track_out *o,
         const double *s = stress + (size_t)e * ND;
         const double *L = L0 + (size_t)e * ND * ND; /* columns n, t1[, t2] */
         const double *xc = X0 + (size_t)e * ND;
-        double F[3], x[3];
-        if (ND == 3) {
-            rs_load_force3(A, s, L, F);
-            x[0] = xc[0], x[1] = xc[1], x[2] = xc[2];
-        } else {
-            F[0] = A * (s[0] * L[0] - s[1] * L[2]);
-            F[1] = A * (s[0] * L[1] - s[1] * L[3]);
-            F[2] = 0.0;
-            x[0] = xc[0], x[1] = xc[1], x[2] = pz[k];
-        }
+        double F[3], x[3], T[3], M[3];
         const double c[3] = {px[k], py[k], pz[k]};
-        double T[3], M[3];
-        rs_load_torques(F, x, c, origin, T, M);
+        if (FORCE) {
+            rs_load_force_law(A, cb->force + 3 * (size_t)e, cb->torque + 3 * (size_t)e, c,
+                              origin, F, T, M);
+        } else {
+            if (ND == 3) {
+                rs_load_force3(A, s, L, F);
+                x[0] = xc[0], x[1] = xc[1], x[2] = xc[2];
+            } else {
+                F[0] = A * (s[0] * L[0] - s[1] * L[2]);
+                F[1] = A * (s[0] * L[1] - s[1] * L[3]);
+                F[2] = 0.0;
+                x[0] = xc[0], x[1] = xc[1], x[2] = pz[k];
+            }
+            rs_load_torques(F, x, c, origin, T, M);
+        }
         rs_wall_acc_take(&acc, F, M);
         const double qe = LEAN ? 0.0 : A * fslv[e];
         if (ROWS) {
@@ -128,19 +132,20 @@ RS_INLINE void loads(const rs_contact_block *cb, const rs_track_out *o,
 RS_INLINE void by_leave_unit(const rs_contact_block *cb, const rs_track_out *o,
                              const rs_particle_block *p, const double origin[3], double *f,
                              double *t, double *q, const rs_load_rows *rows,
-                             rs_wall_load *w, const int ND, const int LEAN, const int ROWS)
+                             rs_wall_load *w, const int ND, const int LEAN, const int ROWS,
+                             const int FORCE)
 {
     const int unit = unit_area(cb, o, p);
     if (o->nleave > 0) {
         if (unit)
-            loads(cb, o, p, origin, f, t, q, rows, w, ND, 1, 1, LEAN, ROWS);
+            loads(cb, o, p, origin, f, t, q, rows, w, ND, 1, 1, LEAN, ROWS, FORCE);
         else
-            loads(cb, o, p, origin, f, t, q, rows, w, ND, 1, 0, LEAN, ROWS);
+            loads(cb, o, p, origin, f, t, q, rows, w, ND, 1, 0, LEAN, ROWS, FORCE);
     } else {
         if (unit)
-            loads(cb, o, p, origin, f, t, q, rows, w, ND, 0, 1, LEAN, ROWS);
+            loads(cb, o, p, origin, f, t, q, rows, w, ND, 0, 1, LEAN, ROWS, FORCE);
         else
-            loads(cb, o, p, origin, f, t, q, rows, w, ND, 0, 0, LEAN, ROWS);
+            loads(cb, o, p, origin, f, t, q, rows, w, ND, 0, 0, LEAN, ROWS, FORCE);
     }
 }
 
@@ -150,12 +155,14 @@ RS_INLINE void dispatch(const rs_contact_block *cb, const rs_track_out *o,
                         double *t, double *q, const rs_load_rows *rows, rs_wall_load *w,
                         const int ROWS)
 {
-    if (o->ndir == 2)
-        by_leave_unit(cb, o, p, origin, f, t, q, rows, w, 2, 0, ROWS);
+    if (cb->law_sets & RS_LAW_SETS_FORCE) /* the force law's own F and T, any nDir */
+        by_leave_unit(cb, o, p, origin, f, t, q, rows, w, o->ndir == 2 ? 2 : 3, 0, ROWS, 1);
+    else if (o->ndir == 2)
+        by_leave_unit(cb, o, p, origin, f, t, q, rows, w, 2, 0, ROWS, 0);
     else if (lean_law(cb))
-        by_leave_unit(cb, o, p, origin, f, t, q, rows, w, 3, 1, ROWS);
+        by_leave_unit(cb, o, p, origin, f, t, q, rows, w, 3, 1, ROWS, 0);
     else
-        by_leave_unit(cb, o, p, origin, f, t, q, rows, w, 3, 0, ROWS);
+        by_leave_unit(cb, o, p, origin, f, t, q, rows, w, 3, 0, ROWS, 0);
 }
 
 void rs_cblock_loads(const rs_contact_block *cb, const rs_track_out *o,

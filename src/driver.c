@@ -2,7 +2,6 @@
  * convex bodies) against one rigid master, the law called on the tracker's blocks
  * (driver.h). */
 #include "rigidsurf/driver.h"
-#include "driver_history.h"
 #include "rigidsurf/vec.h"
 
 #include <math.h>
@@ -56,11 +55,8 @@ int rs_driver_init(rs_driver *d, const rs_surface *s, int n, rs_error *err)
     d->shape = zalloc(un, sizeof(const rs_shape *), &ok);
     d->owned = zalloc(un, sizeof(rs_shape), &ok);
     d->body = zalloc(un, sizeof(rs_body), &ok);
-    d->temp_prev = zalloc(un, sizeof(double), &ok);
-    d->dtemp = zalloc(un, sizeof(double), &ok);
     d->id = zalloc(un, sizeof(int), &ok);
-    d->hist_ptr = zalloc(un, sizeof(double *), &ok);
-    d->dir_ptr = zalloc(un, sizeof(double *), &ok);
+    d->xv = zalloc(10 * un, sizeof(double), &ok);
     if (!ok) {
         rs_driver_free(d);
         return rs_error_set(err, RS_ERR_NOMEM, "driver: out of memory for %d nodes", n);
@@ -148,16 +144,8 @@ int rs_driver_set_body(rs_driver *d, int i, const rs_shape *shape, double densit
     return RS_OK;
 }
 
-/* A slot as the tracker lays it out for the law (track.h): what the law reads of the
- * contact's last call, the energies included. */
-static ptrdiff_t slot_stride(const rs_driver *d)
-{
-    return rs_track_slot_size(&d->tracker);
-}
-
-/* The nodes as one particle block, which the query, the tracker and the law's inputs
- * read (surface.h, rs_particle_block); the bodies in their pose of the increment. */
-static rs_particle_block node_block(rs_driver *d)
+/* The bodies in their pose of the increment; 1 when a node is one. */
+static int pose_bodies(rs_driver *d)
 {
     int bodies = 0;
     for (int i = 0; i < d->n; ++i) {
@@ -172,125 +160,93 @@ static rs_particle_block node_block(rs_driver *d)
         memcpy(b->inertia, d->inertia + 3 * (size_t)i, sizeof b->inertia);
         b->axes[0] = b->axes[4] = b->axes[8] = 1.0; /* a node's body axes are principal */
     }
-    for (int i = 0; i < d->n; ++i)
-        d->dtemp[i] = d->temp[i] - d->temp_prev[i];
-    const rs_particle_block p = {.n = d->n,
-                                 .x = d->x,
-                                 .y = d->y,
-                                 .z = d->z,
-                                 .radius = d->radius,
-                                 .body = bodies ? d->body : NULL,
-                                 .vx = d->vx,
-                                 .vy = d->vy,
-                                 .vz = d->vz,
-                                 .wx = d->wx,
-                                 .wy = d->wy,
-                                 .wz = d->wz,
-                                 .id = d->id,
-                                 .dir = d->dir_ptr,
-                                 .hist = d->hist_ptr,
-                                 .slot_stride = slot_stride(d),
-                                 .mass = d->mass,
-                                 .area = d->area,
-                                 .heatcap = d->heatcap,
-                                 .temp = d->temp,
-                                 .dtemp = d->dtemp};
-    return p;
+    return bodies;
 }
 
-/* The contacts of every node at x_k: one query of the block (driver.h, step 2). A list
- * with bodies keeps the witness points. */
-static int query_nodes(rs_driver *d, const rs_particle_block *p, rs_error *err)
+/* The nodes as the wall reads them at x_k with v_{k-1/2}: every node in one block. */
+static rs_wall_block node_block(rs_driver *d)
 {
-    rs_query q;
-    memset(&q, 0, sizeof q);
-    q.n = d->n;
-    q.slave = *p;
-    q.pose = &d->motion.pose;
-    q.gap_max = d->tracking;
-    q.dist_min = -INFINITY;
-    d->contacts.n = 0;
-    d->contacts.witness = p->body != NULL;
-    return rs_surface_query(d->surface, &q, &d->contacts, err);
-}
-
-/* History storage, allocated on the first increment (capacity and nstatev are known):
- * per node its directory (capacity), then its slots. */
-static int alloc_history(rs_driver *d, rs_error *err)
-{
-    d->tracker.capacity = d->capacity;
-    d->tracker.nstatev = d->nstatev;
-    d->tracker.ndir = rs_surface_ndir(d->surface);
-    d->tracker.tracking = d->tracking;
-    d->tracker.drop = rs_law_drops(d->law);
-    const ptrdiff_t stride = slot_stride(d);
-    size_t per = (size_t)d->capacity * (size_t)(1 + stride);
-    free(d->hist); /* a first increment that failed and is tried again */
-    d->hist = (double *)calloc((size_t)d->n * per, sizeof(double));
-    if (!d->hist)
-        return rs_error_set(err, RS_ERR_NOMEM, "driver: out of memory for contact history");
-    for (int i = 0; i < d->n; ++i) {
-        d->dir_ptr[i] = d->hist + (size_t)i * per;
-        d->hist_ptr[i] = d->dir_ptr[i] + d->capacity;
-        rs_track_clear(&d->tracker, d->dir_ptr[i], d->hist_ptr[i], stride);
-        d->temp_prev[i] = d->temp[i];
+    const int n = d->n;
+    double *x = d->xv, *v = x + 3 * (size_t)n, *w = v + 3 * (size_t)n;
+    for (int i = 0; i < n; ++i) {
+        x[3 * i] = d->x[i], x[3 * i + 1] = d->y[i], x[3 * i + 2] = d->z[i];
+        v[3 * i] = d->vx[i], v[3 * i + 1] = d->vy[i], v[3 * i + 2] = d->vz[i];
+        w[3 * i] = d->wx[i], w[3 * i + 1] = d->wy[i], w[3 * i + 2] = d->wz[i];
     }
+    rs_wall_block b;
+    memset(&b, 0, sizeof b);
+    b.n = n;
+    b.x = x;
+    b.v = v;
+    b.omega = w;
+    b.radius = d->radius;
+    b.mass = d->mass;
+    b.id = d->id;
+    b.temp = d->temp;
+    b.heatcap = d->heatcap;
+    b.area = d->area;
+    b.body = pose_bodies(d) ? d->body : NULL;
+    b.step = d->inc;
+    b.inc = d->inc + 1;
+    b.time = d->t;
+    /* The first call sees the initial state: no increment of motion lies behind it. */
+    b.still = d->inc == 0;
+    return b;
+}
+
+/* A name the law sees, blank-padded to RS_LAW_NAMELEN, as a string. */
+static void law_name(const char src[RS_LAW_NAMELEN], char dst[RS_LAW_NAMELEN + 1])
+{
+    int k = RS_LAW_NAMELEN;
+    while (k > 0 && src[k - 1] == ' ')
+        k--;
+    memcpy(dst, src, (size_t)k);
+    dst[k] = '\0';
+}
+
+/* The wall over the master, made on the first increment (the law, capacity and tracking
+ * thickness are known): every node a candidate at every step, its contacts at any depth,
+ * one Abaqus step whose increments count from 1. */
+static int make_wall(rs_driver *d, rs_error *err)
+{
+    char inter[RS_LAW_NAMELEN + 1], slave[RS_LAW_NAMELEN + 1];
+    law_name(d->surfInt, inter);
+    law_name(d->surfSlv, slave);
+    rs_wall_def def;
+    memset(&def, 0, sizeof def);
+    def.surface = d->surface;
+    def.law = d->law;
+    def.props = d->props;
+    def.nprops = d->nprops;
+    def.nstatev = d->nstatev;
+    def.capacity = d->capacity;
+    def.tracking = d->tracking;
+    def.area_mode = RS_AREA_NODE;
+    def.area_const = 1.0;
+    def.temperature = d->tmaster;
+    def.interaction = inter;
+    def.slave = slave;
+    def.master = d->surface->name;
+    def.motion = &d->motion;
+    def.moving = d->moving;
+    def.warn = d->warn;
+    def.warn_ctx = d->warn_ctx;
+    int rc = rs_wall_make(&def, NULL, &d->wall, err);
+    if (rc)
+        return rc;
+    rs_wall_run run;
+    memset(&run, 0, sizeof run);
+    run.dt = d->dt;
+    run.every_particle = 1;
+    run.has_temp = run.has_heatflux = 1;
+    rs_surface_bounds(d->surface, run.box_lo, run.box_hi);
+    if ((rc = rs_wall_grow(d->wall, d->n, err)))
+        return rc;
+    const rs_wall_block b = node_block(d);
+    if ((rc = rs_wall_init(d->wall, &run, &b, err)))
+        return rc;
     d->tmaster_prev = d->tmaster;
     return RS_OK;
-}
-
-static int grow_contacts(rs_driver *d, int nc, int nd, rs_error *err)
-{
-    if (nc <= d->cb.cap && d->cb.ndir == nd)
-        return RS_OK;
-    int cap = d->cb.cap ? d->cb.cap : 64;
-    while (cap < nc)
-        cap *= 2;
-    d->cb.area_mode = RS_AREA_NODE;
-    d->cb.ndir = nd;
-    d->cb.nstatev = d->nstatev;
-    d->cb.npred = 0;
-    return rs_cblock_reserve(&d->cb, cap, err);
-}
-
-/* The law on the tracker's contacts: previous stress and state from history
- * (rs_track_load), the per-contact inputs from the nodes (rs_cblock_inputs). */
-static int call_law(rs_driver *d, const rs_particle_block *p, int nd, rs_error *err)
-{
-    const int ns = d->nstatev;
-    rs_track_load(&d->tracker, &d->trk, rs_law_stress_in(d->law) ? d->cb.stress : NULL,
-                  ns ? d->cb.statev : NULL);
-    rs_cblock_inputs(&d->cb, &d->trk, p, d->dt);
-    rs_track_load_energy(&d->tracker, &d->trk, d->cb.sed, d->cb.flux_slv, d->cb.flux_mst);
-
-    /* One Abaqus step per driver; its increments count from 1, the call at t_k being
-     * increment k + 1 from t_k to t_k + dt. */
-    const double dtm = d->tmaster - d->tmaster_prev;
-    rs_law_block b;
-    rs_law_block_init(&b);
-    b.kStep = 1;
-    b.kInc = d->inc + 1;
-    b.analytic_master = !rs_surface_has_facets(d->surface);
-    b.nDir = nd;
-    b.nSurfDir = nd - 1;
-    b.nStateVar = ns;
-    b.nProps = d->nprops;
-    b.timStep = b.timGlb = d->t;
-    b.dTimCur = d->dt;
-    memcpy(b.surfInt, d->surfInt, RS_LAW_NAMELEN);
-    memcpy(b.surfSlv, d->surfSlv, RS_LAW_NAMELEN);
-    rs_law_block_set_name(b.surfMst, d->surface->name);
-    b.props = d->props;
-    b.tempMst = &d->tmaster;
-    b.dtempMst = &dtm;
-    b.warn = d->warn;
-    b.warn_ctx = d->warn_ctx;
-    if (!b.analytic_master && rs_law_takes_facets(d->law)) {
-        const int rc = rs_cblock_facets(&d->cb, &d->trk, d->surface, &d->motion.pose, err);
-        if (rc)
-            return rc;
-    }
-    return rs_cblock_call(&d->cb, d->law, &b, &d->trk, err);
 }
 
 int rs_driver_step(rs_driver *d, rs_error *err)
@@ -300,12 +256,15 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     if (!(d->dt > 0.0))
         return rs_error_set(err, RS_ERR_ARG, "driver: dt = %g, expected > 0", d->dt);
     int rc;
-    const int n = d->n, nd = rs_surface_ndir(d->surface);
-    if (d->inc == 0) {
-        rc = alloc_history(d, err);
-        if (rc)
+    const int n = d->n;
+    if (d->inc == 0 && !d->wall) {
+        rc = make_wall(d, err);
+        if (rc) { /* a retry starts from no wall */
+            rs_wall_free(d->wall);
+            d->wall = NULL;
             return rc;
-    } else {
+        }
+    } else if (d->inc > 0) {
         rc = rs_motion_advance(&d->motion, d->dt, err);
         if (rc)
             return rc;
@@ -316,62 +275,24 @@ int rs_driver_step(rs_driver *d, rs_error *err)
             return rc;
     }
 
-    /* query and tracker at x_k with v_{k-1/2} */
-    const rs_particle_block p = node_block(d);
-    rc = query_nodes(d, &p, err);
-    if (rc)
-        return rc;
-    /* The first call sees the initial state: no increment of motion lies behind it. */
-    rc = rs_track_update(&d->tracker, d->surface, d->moving ? &d->motion : NULL,
-                         d->inc == 0 ? 0.0 : d->dt, &p, &d->contacts, &d->trk, err);
-    while (rc == RS_ERR_CAPACITY && d->capacity < RS_TRACK_MAX_CAPACITY) {
-        /* the slots double, as an engine's do (the tracker changed nothing) */
-        rc = rs_driver_grow_history(d, err);
-        if (rc == RS_OK)
-            rc = rs_track_update(&d->tracker, d->surface, d->moving ? &d->motion : NULL,
-                                 d->inc == 0 ? 0.0 : d->dt, &p, &d->contacts, &d->trk, err);
-    }
-    if (rc)
-        return rc;
-    rc = grow_contacts(d, d->trk.n, nd, err);
-    if (rc)
-        return rc;
-    rc = call_law(d, &p, nd, err);
-    if (rc)
-        return rc;
-    const rs_contact_block *cb = &d->cb;
-
-    /* contact forces and torques, heat and energies (rs_cblock_loads), scattered; before
-     * the commit, which frees the slots of leaving contacts (they apply nothing) */
-    const int ne = d->trk.n;
-    if (ne > d->load_cap) {
-        double *grown = realloc(d->load, 7 * (size_t)ne * sizeof(double));
-        if (!grown)
-            return rs_error_set(err, RS_ERR_NOMEM, "driver: out of memory for %d contacts",
-                                ne);
-        d->load = grown;
-        d->load_cap = ne;
-    }
-    double *lf = d->load, *lt = lf + 3 * (size_t)ne, *lq = lt + 3 * (size_t)ne;
-    double origin[3];
-    rs_pose_to_global(&d->motion.pose, d->surface->a, origin);
-    rs_wall_load wl;
-    rs_cblock_loads(cb, &d->trk, &p, origin, lf, lt, lq, &wl);
-    rs_track_commit_energy(&d->tracker, &d->trk, cb->sed, cb->flux_slv, cb->flux_mst);
-    rs_track_commit(&d->tracker, &d->trk, cb->stress, d->nstatev ? cb->statev : NULL);
+    /* the contacts at x_k with v_{k-1/2}, their law and loads; the master's temperature
+     * and its change over the last increment */
+    const rs_wall_block b = node_block(d);
+    double *qslv = d->xv + 9 * (size_t)n;
     memset(d->fcon, 0, 3 * (size_t)n * sizeof(double));
     memset(d->tcon, 0, 3 * (size_t)n * sizeof(double));
-    double *qslv = d->temp_prev; /* reused below after the old temperatures are saved */
-    for (int i = 0; i < n; ++i)
-        qslv[i] = 0.0;
-    for (int e = 0; e < ne; ++e) {
-        const int i = d->trk.point[e];
-        for (int c = 0; c < 3; ++c) {
-            d->fcon[3 * i + c] += lf[3 * e + c];
-            d->tcon[3 * i + c] += lt[3 * e + c];
-        }
-        qslv[i] += lq[e];
-    }
+    memset(qslv, 0, (size_t)n * sizeof(double));
+    rs_wall_rows rows;
+    memset(&rows, 0, sizeof rows);
+    rows.f = d->fcon;
+    rows.torque = d->tcon;
+    rows.heatflux = qslv;
+    rs_wall_set_temperature(d->wall, d->tmaster, d->tmaster - d->tmaster_prev);
+    rs_wall_load wl;
+    rc = rs_wall_step(d->wall, &b, &rows, d->dt, &wl, err);
+    if (rc)
+        return rc;
+    rs_wall_last(d->wall, &d->trk, &d->cb);
     rs_driver_energy *en = &d->energy;
     en->allse = wl.se;
     en->allfd += wl.fd;
@@ -412,7 +333,6 @@ int rs_driver_step(rs_driver *d, rs_error *err)
     for (int i = 0; i < n; ++i) {
         const double qi = qslv[i] * d->dt;
         en->heat_slv += qi;
-        qslv[i] = d->temp[i]; /* temp_prev now holds T_k */
         if (d->heatcap[i] > 0.0)
             d->temp[i] += qi / d->heatcap[i];
     }
@@ -456,15 +376,8 @@ void rs_driver_free(rs_driver *d)
         rs_shape_free(&d->owned[i]);
     free(d->owned);
     free(d->body);
-    free(d->temp_prev);
     free(d->id);
-    free(d->hist_ptr);
-    free(d->dir_ptr);
-    free(d->hist);
-    free(d->dtemp);
-    free(d->load);
-    rs_cblock_free(&d->cb);
-    rs_track_out_free(&d->trk);
-    rs_contacts_free(&d->contacts);
+    free(d->xv);
+    rs_wall_free(d->wall); /* and with it the contacts of d->trk and d->cb */
     memset(d, 0, sizeof *d);
 }

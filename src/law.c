@@ -159,6 +159,11 @@ static int rs_law_check_block(const rs_law *law, const rs_law_block *b, rs_error
                                 need[i].what);
         }
     }
+    if ((law->sets & RS_LAW_SETS_FORCE) && (!b->force || !b->torque)) {
+        return rs_error_set(
+            err, RS_ERR_ARG,
+            "law '%s': a force law's block arrays force and torque are NULL", name);
+    }
     if (b->nStateVar > 0 && !b->statev) {
         return rs_error_set(err, RS_ERR_ARG, "law '%s': block array statev is NULL", name);
     }
@@ -200,6 +205,10 @@ int rs_law_call(const rs_law *law, rs_law_block *b, rs_error *err)
     for (int k = 0; k < n; ++k) {
         acc |= rs_nonfinite_bit(b->fluxSlv[k]) | rs_nonfinite_bit(b->fluxMst[k]);
     }
+    const int force = (law->sets & RS_LAW_SETS_FORCE) != 0;
+    for (int k = 0; force && k < 3 * n; ++k) {
+        acc |= rs_nonfinite_bit(b->force[k]) | rs_nonfinite_bit(b->torque[k]);
+    }
     const int bad = (int)(acc >> 63);
     if (!bad) {
         return RS_OK;
@@ -217,6 +226,14 @@ int rs_law_call(const rs_law *law, rs_law_block *b, rs_error *err)
         }
         if (!isfinite(b->fluxMst[k])) {
             return rs_law_nonfinite(law, b, k, "fluxMst", b->fluxMst[k], err);
+        }
+        static const char *const fname[6] = {"force(1)",  "force(2)",  "force(3)",
+                                             "torque(1)", "torque(2)", "torque(3)"};
+        for (int i = 0; force && i < 6; ++i) {
+            const double v = i < 3 ? b->force[3 * k + i] : b->torque[3 * k + i - 3];
+            if (!isfinite(v)) {
+                return rs_law_nonfinite(law, b, k, fname[i], v, err);
+            }
         }
     }
     return RS_OK;

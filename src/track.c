@@ -48,27 +48,12 @@ static RS_NOINLINE int find_fast(const double *d, int cap, double f)
     return RS_DIR_IS_LIVE(f) ? (js < cap ? js : -1) : cap;
 }
 
-/* 1 when a directory of capacity 4 holds f in slot 0 and the other slots are free (bit
- * patterns compared, as in find_fast). */
-RS_INLINE int dir_usual4(const double *d, double f)
-{
-    const double empty = RS_DIR_EMPTY;
-    uint64_t u0, u1, u2, u3, fb, eb;
-    memcpy(&u0, d, sizeof u0);
-    memcpy(&u1, d + 1, sizeof u1);
-    memcpy(&u2, d + 2, sizeof u2);
-    memcpy(&u3, d + 3, sizeof u3);
-    memcpy(&fb, &f, sizeof fb);
-    memcpy(&eb, &empty, sizeof eb);
-    return ((u0 ^ fb) | (u1 ^ eb) | (u2 ^ eb) | (u3 ^ eb)) == 0;
-}
-
 /* find_fast for capacity 4, first testing the usual directory at once: the contact (f
  * live) in slot 0 and the other slots free, or no contact (f = RS_DIR_EMPTY) and every
  * slot free. */
 RS_INLINE int find_fast4(const double *d, double f)
 {
-    if (dir_usual4(d, f))
+    if (rs_track_dir_usual(d, 4, f))
         return RS_DIR_IS_LIVE(f) ? 0 : 4;
     return find_fast(d, 4, f);
 }
@@ -123,7 +108,7 @@ pass1_dense(int i, int np, const int *restrict cfeat, const double *restrict cdi
         for (; i < np; i++) {
             double *h = hist[i], *d = dir[i];
             if (!h || !d || cdist[i] - prad[i] > tracking ||
-                !dir_usual4(d, RS_DIR_LIVE(cfeat[i])))
+                !rs_track_dir_usual(d, 4, RS_DIR_LIVE(cfeat[i])))
                 break;
             opoint[e] = i;
             oslot[e] = h;
@@ -280,7 +265,7 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
             r.drd1[j] = -r.vn[j] * dt;
         }
         run_outputs(&r, m, c, k0, out, e0, nd, !(tr->drop & RS_DROP_COORDMST));
-        run_store(&r, m, tr, c, k0, out, e0, lean, NULL, NULL);
+        run_store(r.live, r.rd1, r.s1, r.s2, m, tr, c, k0, out, e0, lean, NULL, NULL);
     }
 }
 

@@ -1,7 +1,7 @@
-/* The tracker's pass 2, shared by rs_track_update (track.c) and the fused hertz path
- * (track_hertz.c): the master's rates over the increment and the runs of live contacts
- * (gather the history, the kinematics, the Abaqus-layout outputs, the history's store).
- * Internal to the library. */
+/* The tracker's pass 2, shared by rs_track_update (track.c) and the laws' fused kernels
+ * (track_fused.c, laws/hertz_fused.c): the master's rates over the increment and the
+ * runs of live contacts (gather the history, the kinematics, the Abaqus-layout outputs,
+ * the history's store). Internal to the library. */
 #ifndef RIGIDSURF_TRACK_RUN_H
 #define RIGIDSURF_TRACK_RUN_H
 
@@ -12,6 +12,7 @@
 #include "rs_v4.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 /* Below this value of 1 + a.b the normal has turned by ~180 deg and a.b x stops defining
@@ -292,19 +293,22 @@ RS_INLINE void run_outputs(const track_run *restrict r, int m, const rs_contacts
 
 /* The history of a run: directory entry, frame, slip and rdisp1 (lean: frame only, the
  * tracker drops the slip and rdisp1, RS_DROP_SLIP); a new contact's stress and statev
- * start at zero. Also the entries' particle and feature ids. x6, x7 (lean, slots of 8
- * or more values): the columns to store at the slot's values 6 and 7, which then are not
- * zeroed for a new contact; NULL for none. */
-RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *tr,
-                         const rs_contacts *c, int k0, rs_track_out *o, int e0,
-                         const int lean, const double *x6, const double *x7)
+ * start at zero. Also the entries' particle and feature ids. live, rd1, s1, s2: the run's
+ * columns of those names (track_run; rd1, s1 and s2 are read unless lean). x6, x7 (lean,
+ * slots of 8 or more values): the columns to store at the slot's values 6 and 7, which
+ * then are not zeroed for a new contact; NULL for none. */
+RS_INLINE void run_store(const double *restrict live, const double *restrict rd1,
+                         const double *restrict s1, const double *restrict s2, int m,
+                         const rs_tracker *tr, const rs_contacts *c, int k0,
+                         rs_track_out *o, int e0, const int lean, const double *x6,
+                         const double *x7)
 {
     const double *n0 = c->nrm[0] + k0, *n1 = c->nrm[1] + k0, *n2 = c->nrm[2] + k0;
     const double *a0 = c->t1[0] + k0, *a1 = c->t1[1] + k0, *a2 = c->t1[2] + k0;
     double *const *slot = o->slot + e0;
     const int hs = rs_track_slot_size(tr);
     const int rows = !lean || x6; /* values 4 to 7 are one row of 4 */
-    const double *c6 = lean ? x6 : r->s1, *c7 = lean ? x7 : r->s2;
+    const double *c6 = lean ? x6 : s1, *c7 = lean ? x7 : s2;
     int j = 0;
     for (; j + 4 <= m; j += 4) {
         double *const *h = slot + j;
@@ -334,11 +338,11 @@ RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *t
     for (j = 0; j < m; j++) {
         const int k = k0 + j, e = e0 + j;
         double *h = slot[j];
-        if (r->live[j] == 0.0)
+        if (live[j] == 0.0)
             for (int b = z; b < hs; b++)
                 h[b] = 0.0;
         if (!lean)
-            h[RS_H_RDISP1] = r->rd1[j];
+            h[RS_H_RDISP1] = rd1[j];
         /* Stored only when it changes (a new contact, a handover): a held contact's entry
          * already names its feature, and its directory's line then stays clean, which
          * saves writing it back to memory in a large bed. */
@@ -351,6 +355,34 @@ RS_INLINE void run_store(const track_run *restrict r, int m, const rs_tracker *t
         op[j] = c->point[k0 + j];
         of[j] = c->feature[k0 + j];
     }
+}
+
+/* Whether the directory d (cap entries) holds f in slot 0 and nothing else: f =
+ * RS_DIR_LIVE(feature), a held contact alone in slot 0 (the usual particle); f =
+ * RS_DIR_EMPTY, every slot free. Entries and f are whole numbers as doubles, never -0 or
+ * NaN, so equality is that of the bit patterns, compared as integers (the capacity 4 of
+ * most walls unrolled). */
+RS_INLINE int rs_track_dir_usual(const double *d, int cap, double f)
+{
+    const double empty = RS_DIR_EMPTY;
+    uint64_t fb, eb, u;
+    memcpy(&fb, &f, sizeof fb);
+    memcpy(&eb, &empty, sizeof eb);
+    if (cap == 4) {
+        uint64_t u0, u1, u2, u3;
+        memcpy(&u0, d, sizeof u0);
+        memcpy(&u1, d + 1, sizeof u1);
+        memcpy(&u2, d + 2, sizeof u2);
+        memcpy(&u3, d + 3, sizeof u3);
+        return ((u0 ^ fb) | (u1 ^ eb) | (u2 ^ eb) | (u3 ^ eb)) == 0;
+    }
+    memcpy(&u, d, sizeof u);
+    uint64_t acc = u ^ fb;
+    for (int j = 1; j < cap; j++) {
+        memcpy(&u, d + j, sizeof u);
+        acc |= u ^ eb;
+    }
+    return acc == 0;
 }
 
 /// Pass 1 of rs_track_update (the contacts matched to their slots, the leaving slots

@@ -54,6 +54,13 @@
    particle-steps are spheres in the skin, not touching. Variants none, prim, ours (no
    keyword beyond the law: tracking is the law's reach, 0 for hertz) and ours_skin
    (tracking = the skin, every sphere in the skin an open contact).
+1f. A DEM code of one's own against the fix: examples/coupling/walls.c (the wall layer's
+   calls over particles read from a dump, --walls PATH; bench/CMakeLists.txt builds it as
+   bench_walls_client) on the static deck of section 1. The deck runs once with the fix
+   and a dump of its last step; the client holds that bed for the deck's steps, its wall
+   made from the fix's words, and prints its time per particle-step, which section 1's
+   wall cost of the fix (loop time minus the baseline, measured in the same repetitions)
+   is set against.
 2. Scaling: the same for N = 1e3 .. max-n (ours and prim; mesh at 1e4 only).
 3. Strong scaling: a rotating drum (REVOLUTION mantle and end caps, 2 rad/s, gravity)
    with a settling bed of interacting spheres, 1 and 2 MPI ranks, loop time.
@@ -73,7 +80,7 @@ R, RHO, RC, F0, DT = 1.0e-3, 2500.0, 0.05, 1.0e-3, 1.0e-5
 VFLOW = 0.5  # hoop speed of the flowing bed (m/s)
 SKIN = 0.0005  # neighbour skin of the decks (m)
 GAP_NEAR = 3.0e-4  # gap of the spheres of section 1d (m), inside the tracking thickness
-SECTIONS = ["1", "1b", "1c", "1d", "1e", "2", "3"]
+SECTIONS = ["1", "1b", "1c", "1d", "1e", "1f", "2", "3"]
 VKICK = 0.2  # inward speed of the bouncing bed at the start (m/s), section 1e
 N_BOUNCE = 20000  # spheres of the bouncing bed
 STEPS_BOUNCE = 1000  # its steps (10 ms: the first flight and the rebounds after it)
@@ -313,6 +320,8 @@ def main():
     ap.add_argument("--max-n", type=int, default=1000000)
     ap.add_argument("--reps", type=int, default=5)
     ap.add_argument("--out", default=None, help="also write the report here")
+    ap.add_argument("--walls", default=None,
+                    help="the walls client (bench_walls_client), for section 1f")
     ap.add_argument("--sections", default=",".join(SECTIONS),
                     help="comma-separated sections to run (default: all, %s)" % ",".join(SECTIONS))
     args = ap.parse_args()
@@ -386,12 +395,60 @@ def main():
         log("ours / prim = %s (target <= 1.2)" % ratio(r, "ours", "prim"))
         log("ours_skin / prim = %s" % ratio(r, "ours_skin", "prim"))
 
+    if "1f" in want:
+        if not args.walls:
+            ap.error("section 1f needs --walls PATH (bench_walls_client)")
+        log("## 1f. a DEM code of one's own (examples/coupling/walls.c) against the fix, "
+            "static deck")
+        client(exe, os.path.abspath(args.walls), work, n1, reps, log)
+
     if "2" in want:
         scaling(exe, work, args, reps, log)
     if "3" in want:
         strong_scaling(exe, work, reps, log)
     if report:
         report.close()
+
+
+def client(exe, walls, work, n, reps, log):
+    """Section 1f: the static deck's wall cost in the fix and in the walls client, each
+    repetition the baseline, the fix (with a dump of its last step) and the client holding
+    that bed, back to back."""
+    data, height = write_bed(work, n, None, "mono_client.data")
+    steps = int(min(10000, max(100, 1.0e7 / n)))
+    words = "surface cyl.inp law hertz type 2 props 1e7 0.3 1e8 0.3 0.5 0.5 0"
+    with open(os.path.join(work, "client.scene"), "w") as f:
+        f.write("dt %r\nskin %r\nbox %r %r %r %r %r %r\nwall w %s\n" % (
+            DT, SKIN, -RC - 0.005, RC + 0.005, -RC - 0.005, RC + 0.005, -0.005,
+            height + 0.005, words))
+    fix_cost, ours = [], []
+    for rep in range(reps):
+        base = run_deck(exe, work, "none_client", wall_deck("none", data, steps, height))
+        d = wall_deck("ours", data, steps, height)
+        d = d.replace("law hertz type 2\n", "law hertz type 2 props 1e7 0.3 1e8 0.3 0.5 0.5 0\n")
+        d = d.replace("run %d\n" % steps, "dump bed all custom %d bed.dump id x y z vx vy vz "
+                      "omegax omegay omegaz radius mass\ndump_modify bed sort id format "
+                      "\"%%d%s\"\nrun %d\n" % (steps, " %.17g" * 11, steps))
+        r = run_deck(exe, work, "ours_client", d)
+        fix_cost.append((r["loop"] - base["loop"]) / (n * steps))
+        # the dump's last frame: the bed as the fix held it
+        with open(os.path.join(work, "bed.dump")) as f:
+            frames = f.read().split("ITEM: TIMESTEP\n")
+        with open(os.path.join(work, "bed_last.dump"), "w") as f:
+            f.write("ITEM: TIMESTEP\n" + frames[-1])
+        p = subprocess.run([walls, "client.scene", "bed_last.dump", "--hold", str(steps)],
+                           cwd=work, capture_output=True, text=True)
+        m = re.search(r"([0-9.eE+-]+) ns per particle-step", p.stdout)
+        if p.returncode != 0 or not m:
+            sys.exit("bench: the walls client failed:\n" + p.stdout + p.stderr)
+        ours.append(float(m.group(1)) * 1e-9)
+    os.remove(data)
+    rep = [a / b for a, b in zip(ours, fix_cost) if b > 0]
+    log("N=%-8d steps=%-5d fix %.3g us, client %.3g us per particle-step (fastest)"
+        % (n, steps, 1e6 * min(fix_cost), 1e6 * min(ours)))
+    log("client / fix = %.2f (fastest runs), %s (median of %d repetitions) (target <= 1.05)"
+        % (min(ours) / min(fix_cost), "%.2f" % statistics.median(rep) if rep else "n/a",
+           len(rep)))
 
 
 def scaling(exe, work, args, reps, log):

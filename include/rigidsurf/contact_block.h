@@ -40,12 +40,15 @@ typedef struct rs_contact_block {
     int ndir, nstatev, npred;
 
     int cap;
-    int *uid, *type;
+    int *uid, *type, *row;
     double *stiff, *cond, *area, *radius, *mass, *reff, *temp, *dtemp, *pred, *dpred;
     double *stress, *statev, *flux_slv, *flux_mst, *sed, *sfd, *scd, *spd, *svd;
+    double *force, *torque; ///< (3, cap) each: a force law's force and torque
+                            ///< (RS_LAW_SETS_FORCE), which the loads then apply
     unsigned law_sets; ///< rs_law.sets of the law of the last rs_cblock_call: the loads
                        ///< leave out the outputs it declares zero
-    int has_type, has_temp; ///< the last rs_cblock_inputs had types, temperatures
+    int has_type, has_temp, has_row; ///< the last rs_cblock_inputs had types,
+                                     ///< temperatures, the engine's indices
     /* Contacts [0, uni_n) hold the values of the key (R, m, A, k1, k2, dt) of a block
      * whose contacts all share it (a monodisperse bed on one feature): the next block
      * with that key refills only past them. */
@@ -109,22 +112,28 @@ typedef struct rs_wall_load {
 /// its share, A its area), into f (3, o->n), its torque (x_cp - x_i) x F_e about the
 /// particle's centre (p's x, y, z) into t (3, o->n), and its heat flow w A fluxSlv into q
 /// (o->n; NULL: not wanted); a leaving contact gets zeros. SEGMENTS (nDir 2): the
-/// contact point keeps the particle's z, F has no z part. The wall's totals, with the
-/// moment about origin, into *w. The engine adds f, t and q onto its particles.
+/// contact point keeps the particle's z, F has no z part. A force law
+/// (RS_LAW_SETS_FORCE) gives F_e = w A force_e and T_e = w A torque_e itself, and the
+/// wall's moment is -((x_i - o) x F_e + T_e). The wall's totals, with the moment about
+/// origin, into *w. The engine adds f, t and q onto its particles.
 void rs_cblock_loads(const rs_contact_block *cb, const rs_track_out *o,
                      const rs_particle_block *p, const double origin[3], double *f,
                      double *t, double *q, rs_wall_load *w);
 
 /// Where rs_cblock_add_loads puts each particle's loads: the engine's own per-particle
-/// rows (LIGGGHTS's atom->f, atom->torque), particle k of the block at row[k].
+/// arrays (3 doubles a row for vectors: LIGGGHTS's and LAMMPS's atom->f[0],
+/// atom->torque[0]), particle k of the block at row[k].
 typedef struct rs_load_rows {
-    const int *row;        ///< per block particle, its row (NULL: row k for particle k)
-    double *const *f;      ///< force rows (3 each): += F
-    double *const *t;      ///< torque rows (3 each): += (x_cp - x_i) x F
-    double *const *fstore; ///< NULL, or rows that also take += F (a stored wall force)
-    double *q;             ///< NULL, or heat flow per row: += w A fluxSlv
-    int *deepest;          ///< NULL, or per block particle (p->n) its live contact entry of
-                           ///< largest rdisp1, -1 for none
+    const int *row; ///< per block particle, its row (NULL: row k for particle k)
+    double *f;      ///< forces, 3 a row: += F
+    double *t;      ///< torques, 3 a row: += (x_cp - x_i) x F
+    double *fstore; ///< NULL, or stored forces, 3 a row, that also take += F
+    double *q;      ///< NULL, or heat flow per row: += w A fluxSlv
+    int *deepest;   ///< NULL, or per block particle (p->n) its live contact entry of
+                    ///< largest rdisp1, -1 for none
+    double *out6;   ///< NULL, or 6 a row: rdisp(1:3) and stress(1:3) of the particle's
+                    ///< contact, which a law's fused kernel writes (rs_cblock_add_loads
+                    ///< leaves it)
 } rs_load_rows;
 
 /// rs_cblock_loads in one pass onto the engine's rows: each live contact's F and torque

@@ -9,19 +9,22 @@
  *
  * Increment k (time t_k = k dt) of rs_driver_step:
  *  1. The master moves to t_k (rs_motion_advance; not on the first increment).
- *  2. Query and tracker at the positions x_k with the velocities v_{k-1/2} and angular
- *     velocities w_{k-1/2} (without spin, the slip increment of the tracker is then
- *     exactly the displacement x_k - x_{k-1}). Spheres and points are queried in runs
- *     of consecutive nodes (rs_surface_query), a body alone in its pose q_k
- *     (rs_body_query: its manifold's contacts, each at its own witness point).
+ *  2. The contacts of every node, at any depth, through the wall (rs_wall_step, one
+ *     block of every node): query and tracker at the positions x_k with the velocities
+ *     v_{k-1/2} and angular velocities w_{k-1/2} (without spin, the slip increment of the
+ *     tracker is then exactly the displacement x_k - x_{k-1}). Spheres and points are
+ *     queried in runs of consecutive nodes (rs_surface_query), a body alone in its pose
+ *     q_k (rs_body_query: its manifold's contacts, each at its own witness point). A node
+ *     that touches more features than its history slots has them grown.
  *  3. The law, in blocks of at most RS_BLOCK contacts. On entry stress is the previous
  *     increment's, its shear rotated by drot (law.h). Temperatures are those at t_k.
  *  4. Contact force on node i: F = areaSlv (s1 n - s2 t1 - s3 t2) summed over its
  *     contacts, and contact torque (x_cp - x) x F about its centre, x_cp the contact
- *     point (docs/conventions.md, "Stress, flux, energy signs"), by rs_cblock_loads,
- *     which also gives the master's force and moment (fwall, mwall). A contact that
- *     left (rdisp = RS_MAXVAL) applies nothing and counts in no energy total, whatever
- *     the law wrote for it. Then the law's results go into the history.
+ *     point (docs/conventions.md, "Stress, flux, energy signs"), by the wall's loads
+ *     (rs_cblock_add_loads), which also give the master's force and moment (fwall,
+ *     mwall). A contact that left (rdisp = RS_MAXVAL) applies nothing and counts in no
+ *     energy total, whatever the law wrote for it. Then the law's results go into the
+ *     history.
  *  5. v_{k+1/2} = v_{k-1/2} + dt (F + f_ext) / m for free components; prescribed
  *     components take vpres. x_{k+1} = x_k + dt v_{k+1/2}.
  *     Rotation (rs_rotation_step): the torque kicks the angular momentum, L_{k+1/2} =
@@ -50,6 +53,7 @@
 #include "rigidsurf/surface.h"
 #include "rigidsurf/track.h"
 #include "rigidsurf/types.h"
+#include "rigidsurf/wall.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -87,8 +91,9 @@ typedef struct rs_driver {
     int nstatev;     ///< state variables per contact (>= law->nstatev)
     double dt;       ///< time increment (> 0)
     double tracking; ///< tracking thickness: contacts kept while gap <= it
-    int capacity;    ///< contacts per node (tracker slots), default 4; doubles (up to
-                     ///< RS_TRACK_MAX_CAPACITY) when a node has more
+    int capacity;    ///< contacts per node (tracker slots) to begin with, default 4; the
+                     ///< wall's slots double (up to RS_TRACK_MAX_CAPACITY) when a node has
+                     ///< more
     char surfInt[RS_LAW_NAMELEN], surfSlv[RS_LAW_NAMELEN]; ///< names passed to the law
 
     /* Node data (SoA, n each), allocated and zeroed by rs_driver_init. */
@@ -129,22 +134,20 @@ typedef struct rs_driver {
     double t; ///< time t_k of the next increment
     int inc;  ///< increments done
     rs_driver_energy energy;
-    rs_tracker tracker;
-    rs_track_out trk;    ///< contacts of the last increment (kinematics)
-    rs_contact_block cb; ///< their law inputs and results: stress (nDir, trk.n),
-                         ///< statev, sed, sfd, spd, svd, scd, flux_slv, flux_mst
+    rs_track_out trk;     ///< contacts of the last increment (kinematics; the wall's, valid
+                          ///< until the next increment)
+    rs_contact_block cb;  ///< their law inputs and results: stress (nDir, trk.n),
+                          ///< statev, sed, sfd, spd, svd, scd, flux_slv, flux_mst
+    struct rs_wall *wall; ///< the wall that computes each increment's contacts
+                          ///< (rs_wall_step; made on the first increment)
 
     /* Internal storage. */
-    double *hist; ///< per particle: directory (capacity), then capacity slots
-    double **hist_ptr, **dir_ptr;
     int *id;
-    double *temp_prev, *dtemp;
     double tmaster_prev;
-    rs_contacts contacts;
     rs_body *body;   ///< the bodies in their pose of the increment (n)
     rs_shape *owned; ///< polyhedra turned into their principal axes (n, unused: zero)
-    double *load;    ///< the contacts' loads: f (3, m), t (3, m), q (m), m <= load_cap
-    int load_cap;
+    double *xv;      ///< the nodes' positions, velocities and angular velocities as the
+                     ///< wall reads them (3, n each), and their heat flows (n)
 } rs_driver;
 
 /// Allocates n nodes on surface s (not owned): positions and velocities 0, mass 1,

@@ -132,12 +132,17 @@ typedef struct rs_law_block {
     const double *curv;   ///< (2, n) principal wall curvatures, > 0 convex toward the
                           ///< particle, 0 for a plane
     const int *slv_type;  ///< (n) particle material type (NULL: one material)
-    int wall_type;        ///< wall material type
-    int setup;            ///< nonzero on a setup call (LIGGGHTS setup, before step 1):
-                          ///< compute forces but do not advance history (statev)
-    int analytic_master;  ///< nonzero: the master is an analytic surface (SEGMENTS,
-                          ///< CYLINDER, REVOLUTION), which has no nodes: a Fortran
-                          ///< VUINTER then sees nFacNod = nMstNod = 0
+    const int *slvRow;    ///< (n) the engine's index of each contact's particle (NULL where
+                          ///< the engine gives none)
+    /// (3, n) a force law's force on the particle and (3, n) its torque about the
+    /// particle's centre (RS_LAW_SETS_FORCE; NULL for other laws)
+    double *force, *torque;
+    int wall_type;       ///< wall material type
+    int setup;           ///< nonzero on a setup call (LIGGGHTS setup, before step 1):
+                         ///< compute forces but do not advance history (statev)
+    int analytic_master; ///< nonzero: the master is an analytic surface (SEGMENTS,
+                         ///< CYLINDER, REVOLUTION), which has no nodes: a Fortran
+                         ///< VUINTER then sees nFacNod = nMstNod = 0
 
     /* A faceted master's facets under the contacts, VUINTER's facet arguments
      * (fac_nFacNod = 0: none; the engines fill them for laws that take them,
@@ -217,6 +222,10 @@ struct rs_law {
     unsigned skips; ///< RS_LAW_SKIPS_ flags: inputs the law never reads (0: it reads all)
     unsigned sets;  ///< RS_LAW_SETS_ flags: what the law writes of every contact's
                     ///< outputs (0: nothing is promised)
+    /// A built-in law's fused kernel: the tracker, the law and the loads of a block of
+    /// particles that each hold one contact, in one pass, with the numbers of the staged
+    /// calls (internal to the library; NULL for every other law).
+    const struct rs_law_fused *fused;
 };
 
 /* What a law declares it does not read on entry, so that the contact's history need not
@@ -247,6 +256,14 @@ struct rs_law {
 #define RS_LAW_SETS_NO_HEAT 2u
 #define RS_LAW_SETS_NO_CREEP_PLASTIC 4u
 #define RS_LAW_SETS_STRESS 8u
+/* A force law (RS_LAW_SETS_FORCE) is a DEM contact model that gives each contact's force
+ * on the particle and torque about its centre itself (rs_law_block.force, .torque; an
+ * engine's own models, whose torque may hold more than the force's lever, a rolling
+ * resistance): the engine applies those, times the contact's area and share, and the wall
+ * takes -F and the moment -((x - o) x F + T) about its origin o, so that the pair's angular
+ * momentum is kept. Its stress is F in the contact's frame, F = s1 n - s2 t1 - s3 t2, for
+ * the outputs. */
+#define RS_LAW_SETS_FORCE 16u
 
 /// The tracker's RS_DROP_ flags for law (track.h): what its contacts' slots need not keep.
 unsigned rs_law_drops(const rs_law *law);

@@ -191,7 +191,10 @@ typedef struct rs_surface {
     double zmin, zmax; ///< CYLINDER: extent along the generator, local z
     void *impl;        ///< the kind's query data
     char warning[512]; ///< what reading repaired or found doubtful (MESH: dropped facets,
-                       ///< open or non-manifold edges), empty when nothing
+                       ///< non-manifold edges, holes in a surface that otherwise
+                       ///< closes), empty when nothing
+    char info[256];    ///< what reading found that asks nothing of the user (MESH: the
+                       ///< rim of an open surface), empty when nothing
 } rs_surface;
 
 /// Number of local directions: 2 for SEGMENTS, 3 otherwise, 0 for a surface without a
@@ -220,6 +223,8 @@ typedef struct rs_particle_block {
     const double *vx, *vy, *vz; ///< velocities (tracker)
     const double *wx, *wy, *wz; ///< angular velocities (tracker; NULL: zero)
     const int *id;              ///< ids, for messages and the law's jSlvUid (NULL: index)
+    const int *row;             ///< the engine's index of each particle (the law's
+                                ///< slvRow), optional
     double **dir;               ///< tracker: per particle its directory (capacity doubles)
     double **hist;              ///< tracker: per particle its slot 0
     ptrdiff_t slot_stride;      ///< tracker: doubles from slot j to slot j + 1 (0:

@@ -318,6 +318,8 @@ int main(int argc, char **argv)
     }
     if (s.warning[0])
         fprintf(stderr, "rigidsurf-frames: warning: %s\n", s.warning);
+    if (s.info[0])
+        fprintf(stderr, "rigidsurf-frames: info: %s\n", s.info);
     int ndir = rs_surface_ndir(&s);
 
     point_list pts = {0};

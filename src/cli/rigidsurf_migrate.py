@@ -1,759 +1,454 @@
 #!/usr/bin/python3
-"""rigidsurf-migrate DECK > DECK.rigid
+"""rigidsurf-migrate: a LIGGGHTS deck's walls as `fix wall/rigid` (docs/migration.md).
 
-Rewrites the walls of a LIGGGHTS deck into `fix wall/rigid` (docs/migration.md):
-
-- `fix wall/gran ... primitive type T xplane|yplane|zplane|xcylinder|ycylinder|zcylinder`
-  becomes one `fix wall/rigid` with the same ID, acting on both sides (`sides 2`);
-- `fix wall/gran ... mesh n_meshes K meshes M1 .. MK` with its `fix mesh/surface` (or
-  `mesh/surface/stress`, `mesh/surface/planar`) lines becomes one `fix wall/rigid` per
-  mesh, each with the ID of its mesh fix, at the place of the `wall/gran` line; the
-  mesh lines go;
-- `fix move/mesh` (linear, linear/variable, wiggle, viblin, rotate, rotate/variable,
-  riggle, vibrot) and the `unfix` of it become `variable` lines that set the wall's
-  rates (`v_rs_MESH_vx` ...; rigidsurf_migrate_motion.py);
-- `shear` of a primitive wall along a plane or a cylinder's axis becomes `surface_vel`;
-- a wall's `temperature` under `fix heat/gran` gets `conduction liggghts` (LIGGGHTS's wall
-  conduction) with the wall/gran's `contact_area`, `store_force yes` becomes `store_force yes` (`store_force into ID` on the
-  walls of a wall/gran's meshes), so `f_force_ID[1-3]` read the same vector;
-- `dump mesh/gran/VTK` of one migrated mesh becomes the wall's `vtk FILE N`.
-
-Every other line is copied byte for byte, comments included. What the tool cannot
-translate it keeps as written and says so on stderr, with the line number. Exit status:
-0 when every wall was translated, 3 when some were kept as LIGGGHTS's (or a reference
-to a wall could not be kept), 2 on a usage or read error.
+The deck is read and followed as LIGGGHTS runs it (rigidsurf_migrate_deck.py); each
+`fix wall/gran` becomes wall/rigid (rigidsurf_migrate_walls.py), its mesh's `fix
+move/mesh` lines the wall's rates (rigidsurf_migrate_motion.py), and every command that
+names the wall or its mesh is kept working (rigidsurf_migrate_refs.py). Every other line
+is copied byte for byte.
 """
-import math
 import os
-import re
 import sys
 
-# The motion module lies beside this file (source and build trees) or, installed, in
+# The modules lie beside this file (source and build trees) or, installed, in
 # share/rigidsurf.
 _HERE = os.path.dirname(os.path.realpath(__file__))
 sys.path[:0] = [_HERE, os.path.join(_HERE, "..", "share", "rigidsurf")]
+import rigidsurf_migrate_commands as grammar  # noqa: E402
+import rigidsurf_migrate_folds as folds  # noqa: E402
 import rigidsurf_migrate_motion as motion  # noqa: E402
+import rigidsurf_migrate_refs as refs  # noqa: E402
+import rigidsurf_migrate_walls as walls  # noqa: E402
+from rigidsurf_migrate_deck import Deck, DeckError, split_words  # noqa: E402
 
-EXIT_KEPT = 3
-LAWS = {"hertz": "hertz", "hooke": "hooke"}
-# fix wall/gran's own keywords after the wall style (not contact-model settings)
-WALL_KEYWORDS = ("temperature", "shear", "store_force", "store_force_contact",
-                 "store_force_contact_every", "store_force_contact_stress",
-                 "contact_area", "track_energy", "compute_wall_gran_local",
-                 "sum_normal_force", "primitive", "mesh", "type", "n_meshes", "meshes")
-MESH_STYLES = ("mesh/surface", "mesh/surface/stress", "mesh/surface/planar",
-               "mesh/surface/stress/servo")
-# the servo's words and how many values each takes (LIGGGHTS's mesh module servo)
-SERVO_WORDS = {"com": 3, "ctrlPV": 1, "axis": 3, "target_val": 1, "vel_max": 1, "kp": 1,
-               "ki": 1, "kd": 1, "mode": 1, "ratio": 1}
-MESH_FILE_EXT = (".stl", ".obj", ".off", ".ply")
-HEAT_FIXES = re.compile(r"^heat/gran")
-FLOW = ("jump", "label", "next", "include", "if", "loop")
-WRAP = 88
+USAGE = """usage: rigidsurf-migrate DECK [-var NAME VALUE ...] > DECK.rigid
 
+Writes the LIGGGHTS deck DECK with its walls as `fix wall/rigid` (liggghts-rigidsurf):
+each `fix wall/gran` primitive or mesh wall, its meshes, their `fix move/mesh` motion,
+and what names them (f_ID[i] values, dumps of meshes, unfix, fix_modify). Every other
+line is copied byte for byte. The deck is read as LIGGGHTS runs it: its variables
+(`-var` as on LIGGGHTS's command line), formulas, `include` (a file with walls is
+written into the deck in place of its include line), `jump`, `label`, `next` and `if`.
+Reports go to stderr, one per line, each with its line number.
 
-# ---- the deck ------------------------------------------------------------------------
-
-class Cmd:
-    """One command: its physical lines (raw, newlines included), first line number,
-    words (continuations joined, the comment cut) and the trailing comment."""
-
-    def __init__(self, lineno, raw):
-        self.lineno = lineno
-        self.raw = raw
-        joined = ""
-        for phys in raw:
-            s = phys.rstrip("\r\n")
-            t = s.rstrip()
-            joined += (t[:-1] + " ") if t.endswith("&") else s
-        self.comment = ""
-        cut = _comment_start(joined)
-        if cut is not None:
-            self.comment = joined[cut:].rstrip()
-            joined = joined[:cut]
-        self.words = joined.split()
-
-    def word(self, i):
-        return self.words[i] if i < len(self.words) else None
+Exit status:
+  0  every wall was migrated: the deck runs with liggghts-rigidsurf and reads the same
+     quantities as with LIGGGHTS (NOTE lines name what differs in what it writes and
+     where the walls' physics differs from LIGGGHTS's: docs/migration.md)
+  3  some walls are kept as LIGGGHTS's, each listed with its line and the reason; the
+     deck still runs with liggghts-rigidsurf as it runs with LIGGGHTS
+  1  an error, named with its line (a deck LIGGGHTS would stop at, control flow the
+     tool cannot follow to a wall, a missing file, a usage error); nothing is written
+"""
+NUM = type("Num", (), {"value": staticmethod(walls.number)})()
+MISSING = object()
 
 
-def _comment_start(text):
-    quote = None
-    for i, ch in enumerate(text):
-        if quote:
-            if ch == quote:
-                quote = None
-        elif ch in "\"'":
-            quote = ch
-        elif ch == "#":
-            return i
-    return None
+def wall_related(words, ids):
+    """Whether a command's words (as written) make, move, write or remove a wall or mesh."""
+    if len(words) >= 4 and words[0] == "fix" and (
+            words[3] in ("wall/gran", "move/mesh") or words[3].startswith("mesh/surface")):
+        return True
+    if len(words) >= 4 and words[0] == "dump" and words[3] in grammar.DUMP_MESH_STYLES:
+        return True
+    if len(words) >= 4 and words[0] == "compute" and words[3] == "wall/gran/local":
+        return True
+    if words[:1] and words[0] in ("unfix", "undump", "fix_modify") and len(words) > 1:
+        return words[1] in ids or "$" in words[1]
+    if words[:1] == ["if"]:
+        return any(wall_related(split_words(c, None, strict=False), ids) for c in words[2:]
+                   if c not in ("then", "elif", "else"))
+    return False
 
-
-def read_deck(text):
-    """The deck's commands, in order; the physical lines of all of them are the text."""
-    lines = text.splitlines(keepends=True)
-    cmds, i = [], 0
-    while i < len(lines):
-        j = i
-        while j < len(lines) - 1 and lines[j].rstrip().endswith("&") \
-                and _comment_start(lines[j]) is None:
-            j += 1
-        cmds.append(Cmd(i + 1, lines[i:j + 1]))
-        i = j + 1
-    return cmds
-
-
-# ---- numbers the deck computes -------------------------------------------------------
-
-class Numbers:
-    """Values of the deck's numeric variables as LIGGGHTS sets them (equal, index,
-    internal, constant forms), in deck order; None where it cannot know them."""
-
-    def __init__(self):
-        self.vars = {}
-
-    def define(self, words):
-        if len(words) >= 4 and words[2] in ("equal", "index", "internal"):
-            self.vars[words[1]] = self.value(" ".join(words[3:]).strip("\"'"))
-        elif len(words) >= 2:
-            self.vars[words[1]] = None
-
-    def value(self, text):
-        """A number from a word or formula of numbers, ${x}, $(...), v_x, PI, + - * / ^."""
-        if text is None:
-            return None
-        t = re.sub(r"\$\{(\w+)\}|\bv_(\w+)|\$(\w)",
-                   lambda m: self._sub(m.group(1) or m.group(2) or m.group(3)), text)
-        if "?" in t:
-            return None
-        t = t.replace("$(", "(").replace("PI", "(%r)" % math.pi).replace("^", "**")
-        if not re.fullmatch(r"[0-9eE+\-*/(). ]+", t):
-            return None
-        try:
-            v = float(eval(t, {"__builtins__": {}}, {}))
-        except Exception:
-            return None
-        return v if math.isfinite(v) else None
-
-    def _sub(self, name):
-        v = self.vars.get(name)
-        return "?" if v is None else "(%r)" % v
-
-
-def fmt(v):
-    """A computed coordinate, to 12 significant digits, without a negative zero."""
-    if abs(v) < 1e-12:
-        return "0"
-    s = "%.12g" % v
-    return s
-
-
-# ---- placement -----------------------------------------------------------------------
-
-def rot(axis, deg):
-    ax = math.sqrt(sum(c * c for c in axis))
-    x, y, z = (c / ax for c in axis)
-    a = math.radians(deg)
-    c, s, C = math.cos(a), math.sin(a), 1 - math.cos(a)
-    return [[c + x * x * C, x * y * C - z * s, x * z * C + y * s],
-            [y * x * C + z * s, c + y * y * C, y * z * C - x * s],
-            [z * x * C - y * s, z * y * C + x * s, c + z * z * C]]
-
-
-def matvec(m, v):
-    return [sum(m[i][k] * v[k] for k in range(3)) for i in range(3)]
-
-
-def matmul(a, b):
-    return [[sum(a[i][k] * b[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
-
-
-def compose_placement(ops):
-    """LIGGGHTS's `scale s`, `move m`, `rotate axis A angle θ` applied in the order given
-    (each about the global origin), as wall/rigid's scale s and place a b c:
-    x = a + s (X ex + Y ey + Z ez), a the image of the file's origin, b = a + ex,
-    c = a + ey. ops: ("scale", s) | ("move", (x, y, z)) | ("rotate", (ax, ay, az), θ)."""
-    s, R, t = 1.0, [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]], [0.0, 0.0, 0.0]
-    for op in ops:
-        if op[0] == "scale":
-            s *= op[1]
-            t = [op[1] * c for c in t]
-        elif op[0] == "move":
-            t = [c + m for c, m in zip(t, op[1])]
-        else:
-            r = rot(op[1], op[2])
-            R, t = matmul(r, R), matvec(r, t)
-    ex = [R[i][0] for i in range(3)]
-    ey = [R[i][1] for i in range(3)]
-    return s, t, [a + e for a, e in zip(t, ex)], [a + e for a, e in zip(t, ey)]
-
-
-# ---- primitive walls ------------------------------------------------------------------
-
-def shear(shape, dim, v):
-    """wall/gran's `shear DIM V` of a primitive wall as wall/rigid's surface_vel, or why
-    not. LIGGGHTS (fix_wall_gran.cpp) gives every contact the wall velocity V along DIM
-    when DIM is the cylinder's axis or the wall is a plane (the wall does not move, its
-    material slides); along a plane's tangent, or a cylinder's axis, that is surface_vel
-    V e_DIM. Along a plane's normal it is a velocity into the wall, and for a cylinder
-    with DIM across its axis LIGGGHTS turns it into (V e_axis) x r of the particle's
-    centre: neither has a wall/rigid counterpart."""
-    if dim not in ("x", "y", "z") or shape is None:
-        return ("wall/gran keyword 'shear %s' has no wall/rigid counterpart (it needs a "
-                "primitive wall and x, y or z)" % dim)
-    if shape.endswith("plane") and shape[0] == dim:
-        return ("shear %s of %s is a velocity along the plane's normal: wall/rigid's "
-                "surface_vel slides in the tangent plane only" % (dim, shape))
-    if shape.endswith("cylinder") and shape[0] != dim:
-        return ("shear %s of %s is LIGGGHTS's spin (%s e_%s) x r about the axis, at the "
-                "particle's centre: wall/rigid has no counterpart" % (dim, shape, v, shape[0]))
-    return [v if d == dim else "0" for d in "xyz"]
-
-
-# ---- the tool ------------------------------------------------------------------------
 
 class Migration:
-    def __init__(self, text):
-        self.cmds = read_deck(text)
-        self.reports = []          # (lineno, text, kept)
-        self.out = {}              # cmd index -> replacement text ("" removes)
-        self.num = Numbers()
+    def __init__(self, path, cli_vars=()):
+        self.deck = Deck(path, cli_vars)
+        self.reports, self.out, self.after = [], {}, {}
+        self.meshes, self.walls, self.dumps = {}, [], []
+        self.wall_execs, self.motion_lines, self.motion_state = {}, {}, {}
+        self.heat, self.box_half = False, None
 
-    def report(self, cmd, fid, text, kept=True):
-        self.reports.append((cmd.lineno, "LINE %d: %s%s" % (
-            cmd.lineno, ("fix %s: " % fid) if fid else "", text), kept))
+    # -- reports ------------------------------------------------------------------
+    def report(self, cmd, text):
+        """A line of stderr, sorted by file (in the order read) and line."""
+        order = list(self.deck.sources).index(cmd.source.path)
+        self.reports.append(((order, cmd.lineno), "%s: %s" % (cmd.where(), text)))
 
-    # -- pass 1: what the deck holds ---------------------------------------------------
+    def note(self, cmd, text):
+        if text:
+            self.report(cmd, "NOTE: " + text)
+
+    @staticmethod
+    def refuse_if(ex):
+        raise DeckError(ex.via, "an if runs '%s': the tool rewrites a wall's commands where "
+                        "they stand; write it as a line of its own" % " ".join(ex.words[:4]))
+
+    def commit(self, ex, lines):
+        """The text of ex's command: lines (None: as written); one text per command."""
+        if ex.via is not None:
+            self.refuse_if(ex)
+        prev = self.out.get(ex.cmd, MISSING)
+        if prev is not MISSING and prev != lines:
+            raise DeckError(ex.cmd, "it runs more than once and would be written "
+                            "differently each time (%s / %s)" % (
+                                " | ".join(prev or ["as written"]),
+                                " | ".join(x or "as written" for x in lines or [None])))
+        self.out[ex.cmd] = lines
+
+    def mesh_wall(self, fid):
+        """The migrated mesh wall/gran of that ID, or None."""
+        for w in self.walls:
+            if w.id == fid and w.ok and w.kind == "mesh":
+                return w
+        return None
+
+    # -- the deck -------------------------------------------------------------------
+    def ids(self):
+        out = set()
+        for ex in self.deck.trace:
+            w = ex.words
+            if len(w) >= 4 and w[0] in ("fix", "dump", "compute") and \
+                    wall_related(w, ()):
+                out.add(w[1])
+        return out
+
+    def check_flow(self):
+        """Control flow the tool does not follow must not decide a wall's commands."""
+        ids = self.ids()
+        for ex in self.deck.trace:
+            if ex.via is not None and wall_related(ex.words, ids):
+                self.refuse_if(ex)
+        for cmd, reason, branches in self.deck.blind:
+            for _, cmds in branches:
+                for c in cmds:
+                    if wall_related(split_words(c, cmd, strict=False), ids):
+                        raise DeckError(cmd, "the tool cannot follow this if: its condition "
+                                        "depends on the run (%s), and it decides whether "
+                                        "'%s' runs" % (reason, c))
+        if self.deck.stopped is None:
+            return
+        cmd, reason, stack, targets = self.deck.stopped
+        starts = list(stack)
+        for t in targets:
+            starts += self.target(stack[-1][0], t, cmd)
+        for c in self.reachable(starts, cmd):
+            if wall_related(c.raw_words, ids):
+                raise DeckError(cmd, "the tool cannot follow the deck past this line (%s), "
+                                "and %s ('%s') may run after it" % (
+                                    reason, c.where(), " ".join(c.raw_words[:4])))
+        self.note(cmd, "the tool follows the deck up to this line (%s); no wall command "
+                  "runs after it" % reason)
+
+    def target(self, src, words, cmd):
+        """Where a jump (its words after 'jump') may go on: [(source, command index)]; for
+        a target the tool does not know, every file it has read."""
+        if not words or any("$" in w for w in words):
+            return [(s, 0) for s in list(self.deck.sources.values())]
+        if words[0] != "SELF":
+            path = self.deck.resolve(words[0])
+            if path is None:
+                return []
+            src = self.deck.source(words[0], path, cmd)
+        for c in src.commands:
+            if len(words) > 1 and c.raw_words[:2] == ["label", words[1]]:
+                return [(src, c.index)]
+        return [(src, 0)]
+
+    def reachable(self, starts, cmd):
+        """The commands LIGGGHTS may run from the places starts, through includes and
+        jumps, read as written."""
+        seen, out, work = set(), [], list(starts)
+        while work:
+            src, pos = work.pop()
+            for c in src.commands[pos:]:
+                if c in seen:
+                    break
+                seen.add(c)
+                out.append(c)
+                w = c.raw_words
+                if w[:1] == ["include"] and len(w) == 2:
+                    work += self.target(src, w[1:], cmd)
+                elif w[:1] == ["jump"] and len(w) > 1:
+                    work += self.target(src, w[1:], cmd)
+        return out
+
     def scan(self):
-        self.meshes, self.walls, self.heat = {}, [], False
-        self.box_half = None
-        regions = {}
-        for i, c in enumerate(self.cmds):
-            w = c.words
-            if not w:
-                continue
-            if w[0] == "variable":
-                self.num.define(w)
-            elif w[0] == "region" and len(w) >= 9 and w[2] == "block":
-                regions[w[1]] = [self.num.value(x) for x in w[3:9]]
-            elif w[0] == "create_box" and len(w) >= 3 and self.box_half is None:
+        alive, regions, self.cwl = {}, {}, set()
+        for ex in self.deck.trace:
+            w = ex.words
+            c = w[0]
+            if c == "fix" and len(w) >= 4:
+                fid, style = w[1], w[3]
+                self.heat |= style.startswith("heat/gran")
+                if style.startswith("mesh/surface"):
+                    m = walls.Mesh(ex, self.deck)
+                    if fid in self.meshes and self.meshes[fid].cmd is not ex.cmd:
+                        raise DeckError(ex.cmd, "mesh %s was made by %s before: the tool "
+                                        "follows one definition of each mesh" % (
+                                            fid, self.meshes[fid].cmd.where()))
+                    self.meshes[fid] = alive[fid] = m
+                elif style == "wall/gran":
+                    self.wall(ex, alive)
+                else:
+                    if style == "move/mesh" and not (len(w) > 5 and isinstance(
+                            alive.get(w[5]), walls.Mesh)):
+                        raise DeckError(ex.cmd, "fix move/mesh expects 'mesh ID' of a fix "
+                                        "mesh/surface made before it")
+                    if style != "move/mesh":
+                        self.uses(ex, alive)
+                    alive[fid] = style
+            elif c == "unfix" and len(w) > 1:
+                alive.pop(w[1], None)
+            elif c == "region" and len(w) >= 9 and w[2] == "block":
+                regions[w[1]] = [walls.number(x) for x in w[3:9]]
+            elif c == "create_box" and len(w) >= 3 and self.box_half is None:
                 b = regions.get(w[2])
                 if b and None not in b:
                     self.box_half = max(abs(x) for x in b)
-            elif w[0] == "fix" and len(w) >= 4:
-                style = w[3]
-                if HEAT_FIXES.match(style):
-                    self.heat = True
-                if style.startswith("mesh/surface"):
-                    self.meshes[w[1]] = self.parse_mesh(i, c)
-                elif style == "wall/gran":
-                    self.walls.append(self.parse_wall(i, c))
+            elif c == "dump" and len(w) >= 4 and w[3] in grammar.DUMP_MESH_STYLES:
+                self.dumps.append(refs.Dump(ex, [k for k, v in alive.items()
+                                                 if isinstance(v, walls.Mesh)]))
+            elif c == "compute" and len(w) >= 4 and w[3] == "wall/gran/local":
+                refs.cwl(self, ex, alive)
+                self.cwl.add(w[1])
+            elif c == "uncompute" and len(w) > 1:
+                self.cwl.discard(w[1])
+            elif c == "fix_modify" and len(w) > 2:
+                m = alive.get(w[1])
+                if isinstance(m, walls.Mesh) and w[2] != "energy":
+                    m.reasons.append("%s: fix_modify %s has no wall/rigid counterpart" % (
+                        ex.cmd.where(), " ".join(w[2:])))
+            elif c == "clear" and self.walls:
+                raise DeckError(ex.cmd, "the tool does not follow a deck past 'clear'")
+            elif c not in ("unfix", "undump", "dump_modify", "uncompute"):
+                self.uses(ex, alive)
 
-    def parse_mesh(self, i, c):
-        w, m = c.words, dict(index=i, cmd=c, id=c.words[1], ops=[], opts={}, reasons=[],
-                             notes=[], type="1", stress=c.words[3] != "mesh/surface",
-                             wear=None, refpoint=None, used=[])
-        if w[3] not in MESH_STYLES:
-            m["reasons"].append("%s has no wall/rigid counterpart yet" % w[3])
-        k = 4
-        try:
-            while k < len(w):
-                key = w[k]
-                if key == "file":
-                    m["file"] = w[k + 1]
-                    k += 2
-                elif key == "type":
-                    m["type"] = w[k + 1]
-                    k += 2
-                elif key == "scale":
-                    m["ops"].append(("scale", w[k + 1]))
-                    k += 2
-                elif key == "move":
-                    m["ops"].append(("move", w[k + 1:k + 4]))
-                    k += 4
-                elif key == "rotate" and w[k + 1] == "axis" and w[k + 5] == "angle":
-                    m["ops"].append(("rotate", w[k + 2:k + 5], w[k + 6]))
-                    k += 7
-                elif key == "temperature":
-                    m["opts"]["temperature"] = [w[k + 1]]
-                    k += 2
-                elif key == "surface_vel":
-                    m["opts"]["surface_vel"] = w[k + 1:k + 4]
-                    k += 4
-                elif key in ("curvature", "curvature_tolerant", "precision", "heal",
-                             "verbose", "min_feature_length"):
-                    m["notes"].append("mesh/surface's %s %s is not needed: wall/rigid finds "
-                                      "a face's, edge's or vertex's contact from the geometry "
-                                      "and welds and checks the mesh itself; left out"
-                                      % (key, w[k + 1]))
-                    k += 2
-                elif key == "wear" and m["stress"]:
-                    if w[k + 1] not in ("finnie", "off"):
-                        m["reasons"].append("wear %s has no wall/rigid counterpart" % w[k + 1])
-                    m["wear"] = w[k + 1]
-                    k += 2
-                elif key == "stress" and m["stress"]:
-                    k += 2
-                elif key == "reference_point" and m["stress"]:
-                    m["refpoint"] = w[k + 1:k + 4]
-                    k += 4
-                elif key in SERVO_WORDS and w[3] == "mesh/surface/stress/servo":
-                    n = SERVO_WORDS[key]
-                    if len(w) < k + 1 + n:
-                        raise IndexError
-                    m.setdefault("servo", []).extend(w[k:k + 1 + n])
-                    k += 1 + n
-                else:
-                    m["reasons"].append("mesh/surface keyword '%s' has no wall/rigid "
-                                        "counterpart yet" % key)
-                    break
-        except IndexError:
-            m["reasons"].append("its line ends inside a keyword")
-        ops, vals = [], []
-        for op in m["ops"]:
-            if op[0] == "scale":
-                ops.append(("scale", self.num.value(op[1])))
-                vals.append(ops[-1][1])
-            elif op[0] == "move":
-                ops.append(("move", [self.num.value(x) for x in op[1]]))
-                vals += ops[-1][1]
-            else:
-                ops.append(("rotate", [self.num.value(x) for x in op[1]],
-                            self.num.value(op[2])))
-                vals += ops[-1][1] + [ops[-1][2]]
-        if None in vals:
-            m["reasons"].append("its scale, move or rotate uses values the tool cannot "
-                                "compute")
-        else:
-            m["placement"] = compose_placement(ops)
-        f = m.get("file")
-        if f is None:
-            m["reasons"].append("a mesh not read from a file has no wall/rigid counterpart")
-        elif not f.lower().endswith(MESH_FILE_EXT):
-            m["reasons"].append("wall/rigid reads STL, OBJ, OFF or PLY meshes, not '%s'" % f)
-        return m
+    def wall(self, ex, alive):
+        wall = walls.Wall(ex)
+        if wall.kind == "mesh":
+            for mid in wall.meshes:
+                m = alive.get(mid)
+                if not isinstance(m, walls.Mesh):
+                    raise DeckError(ex.cmd, "fix %s: mesh %s is not a fix mesh/surface made "
+                                    "before it (LIGGGHTS: could not find fix mesh id you "
+                                    "provided)" % (wall.id, mid))
+                m.walls.append(wall)
+                wall.mesh_objs.append(m)
+            if self.cwl:
+                wall.reasons.append("compute %s (wall/gran/local) reads the contacts of the "
+                                    "mesh walls made while it exists" % " ".join(self.cwl))
+        elif wall.kind is None:
+            raise DeckError(ex.cmd, "fix %s: expects 'primitive' or 'mesh' (LIGGGHTS: Need to "
+                            "use define style 'mesh' or 'primitive')" % wall.id)
+        self.walls.append(wall)
+        self.wall_execs[ex] = wall
+        alive[wall.id] = wall
 
-    def parse_wall(self, i, c):
-        w = c.words
-        wall = dict(index=i, cmd=c, id=w[1], group=w[2], reasons=[], law=None, vtk=None)
-        k, model = 4, []
-        while k + 1 < len(w) and w[k] in ("model", "tangential", "cohesion",
-                                          "rolling_friction", "surface"):
-            model += w[k:k + 2]
-            k += 2
-        words = dict(zip(model[::2], model[1::2]))
-        law = None
-        if not model and k < len(w) and w[k] not in ("primitive", "mesh"):
-            wall["reasons"].append("the old wall/gran arguments ('%s ...') have no wall/rigid "
-                                   "law yet" % " ".join(w[4:8]))
-        else:
-            plain = words.get("tangential", "history") == "history" and \
-                words.get("cohesion", "off") == "off" and \
-                words.get("rolling_friction", "off") == "off" and \
-                words.get("surface", "default") == "default"
-            law = LAWS.get(words.get("model", "hertz")) if plain else None
-            surface = words.get("surface", "default")
-            if surface != "default":
-                wall["reasons"].append(
-                    "model words '%s': surface %s needs LIGGGHTS's own wall (%s); law "
-                    "liggghts takes the default surface model only" % (
-                        " ".join(model), surface,
-                        "the expanded radii of fix multicontact/halfspace"
-                        if surface == "multicontact" else "superquadric particles"))
-            elif law is None:
-                # any other combination: LIGGGHTS's own model through law liggghts
-                law = " ".join(["liggghts"] + (model if "model" in words
-                                                else ["model", "hertz"] + model))
-        wall["law"] = law
-        rest = w[k:]
-        if rest[:1] == ["primitive"]:
-            wall["kind"] = "primitive"
-            self.parse_primitive(wall, rest[1:])
-        elif rest[:1] == ["mesh"]:
-            wall["kind"] = "mesh"
-            self.parse_wall_meshes(wall, rest[1:])
-        elif not wall["reasons"]:
-            wall["kind"] = None
-            wall["reasons"].append("no 'primitive' or 'mesh' wall style")
-        return wall
+    def uses(self, ex, alive):
+        for word in ex.words[1:]:
+            m = alive.get(word)
+            if isinstance(m, walls.Mesh) and ex not in m.users:
+                m.users.append(ex)
 
-    def general(self, wall, rest):
-        """The general and model keywords after the wall style's own arguments."""
-        k, opts = 0, {}
-        while k < len(rest):
-            key = rest[k]
-            if key == "temperature" and k + 1 < len(rest):
-                opts["temperature"] = [rest[k + 1]]
-                k += 2
-            elif key == "contact_area" and rest[k + 1:k + 2] in (["overlap"], ["projection"]):
-                opts["contact_area"] = [rest[k + 1]]
-                k += 2
-            elif key == "contact_area" and rest[k + 1:k + 2] == ["constant"] and \
-                    k + 2 < len(rest):
-                opts["contact_area"] = rest[k + 1:k + 3]
-                k += 3
-            elif key == "store_force" and k + 1 < len(rest) and rest[k + 1] == "yes":
-                opts["store_force"] = ["yes"]
-                k += 2
-            elif key == "shear" and k + 2 < len(rest):
-                vel = shear(wall.get("shape"), rest[k + 1], rest[k + 2])
-                if isinstance(vel, str):
-                    wall["reasons"].append(vel)
-                else:
-                    opts["surface_vel"] = vel
-                k += 3
-            elif key in ("store_force", "store_force_contact", "store_force_contact_stress") \
-                    and k + 1 < len(rest) and rest[k + 1] == "no":
-                k += 2
-            elif k + 1 < len(rest) and wall["law"] and rest[k] not in WALL_KEYWORDS:
-                # a setting of the contact model (tangential_damping off, limitForce on,
-                # ...): LIGGGHTS's model takes it through law liggghts
-                law = wall["law"]
-                if not law.startswith("liggghts"):
-                    law = "liggghts model %s tangential history" % law
-                wall["law"] = law + " " + " ".join(rest[k:k + 2])
-                k += 2
-            else:
-                wall["reasons"].append("wall/gran keyword '%s' has no wall/rigid counterpart "
-                                       "yet" % " ".join(rest[k:k + 2]))
-                break
-        return opts
-
-    def parse_primitive(self, wall, r):
-        shapes = {"xplane": 1, "yplane": 1, "zplane": 1,
-                  "xcylinder": 3, "ycylinder": 3, "zcylinder": 3}
-        if len(r) < 4 or r[0] != "type" or r[2] not in shapes or \
-                len(r) < 3 + shapes[r[2]]:
-            wall["reasons"].append("primitive arguments '%s' not understood" % " ".join(r))
-            return
-        wall["type"], wall["shape"] = r[1], r[2]
-        n = shapes[r[2]]
-        wall["args"] = r[3:3 + n]
-        wall["opts"] = self.general(wall, r[3 + n:])
-
-    def parse_wall_meshes(self, wall, r):
-        try:
-            assert r[0] == "n_meshes" and r[2] == "meshes"
-            n = int(r[1])
-            wall["meshes"] = r[3:3 + n]
-            assert len(wall["meshes"]) == n
-        except (AssertionError, IndexError, ValueError):
-            wall["reasons"].append("mesh arguments '%s' not understood" % " ".join(r))
-            wall["meshes"] = []
-            return
-        wall["opts"] = self.general(wall, r[3 + n:])
-        for mid in wall["meshes"]:
-            m = self.meshes.get(mid)
-            if m is None:
-                wall["reasons"].append("mesh %s is not a fix mesh/surface defined before it"
-                                       % mid)
-            else:
-                m["used"].append(wall)
-
-    # -- pass 2: motion, in deck order -------------------------------------------------
-    def motion(self):
-        """Every fix move/mesh of the meshes, in deck order (rigidsurf_migrate_motion)."""
-        motion.follow(self, Numbers, FLOW, fmt)
-
-    # -- pass 3: who else names a mesh or a wall ----------------------------------------
-    def uses(self):
-        """Commands other than the wall's own that name a mesh (they need LIGGGHTS's mesh:
-        the wall stays), and dumps of meshes."""
-        self.dumps = []
-        own = {m["index"] for m in self.meshes.values()} | {w["index"] for w in self.walls}
-        for i, c in enumerate(self.cmds):
-            w = c.words
-            if i in own or not w or w[0] == "unfix":
-                continue
-            if w[0] == "fix" and len(w) > 5 and w[3] == "move/mesh":
-                continue
-            if w[0] == "dump" and len(w) > 5 and w[3] in ("mesh/gran/VTK", "mesh/vtk"):
-                self.dumps.append((i, c))
-                continue
-            for word in w[1:]:
-                m = self.meshes.get(word)
-                if m is not None and m["used"]:
-                    m["reasons"].append("LINE %d (%s) uses it as a LIGGGHTS mesh"
-                                        % (c.lineno, " ".join(w[:4])))
-
+    # -- decisions ------------------------------------------------------------------
     def decide(self):
         for m in self.meshes.values():
-            if len(m["used"]) > 1:
-                m["reasons"].append("%d wall/gran fixes use it" % len(m["used"]))
-            if m["cmd"].words[2] not in ("all", ) and m["used"] and \
-                    m["cmd"].words[2] != m["used"][0]["group"]:
-                m["reasons"].append("its group %s is not its wall's" % m["cmd"].words[2])
-        for wall in self.walls:
-            reasons = list(wall["reasons"])
-            if wall.get("kind") == "mesh":
-                for mid in wall["meshes"]:
-                    m = self.meshes.get(mid)
-                    for r in (m["reasons"] if m else []):
-                        reasons.append("mesh %s (LINE %d): %s" % (mid, m["cmd"].lineno, r))
-            wall["ok"] = not reasons
-            if not wall["ok"]:
-                for r in reasons:
-                    self.report(wall["cmd"], wall["id"], r)
-                self.report(wall["cmd"], wall["id"], "the wall is kept as LIGGGHTS's")
-        self.done = {mid for wall in self.walls if wall["ok"] and wall["kind"] == "mesh"
-                     for mid in wall["meshes"]}
-
-    # -- output --------------------------------------------------------------------------
-    def half_length(self, lines):
-        """L, the half-length of a plane's LINE and a cylinder's: past the box."""
-        if self.box_half is not None and self.box_half > 0:
-            return fmt(10.0 ** math.ceil(math.log10(4 * self.box_half)))
-        if not self.defined_L:
-            lines.append("variable rs_L equal 10*(abs(xlo)+abs(xhi)+abs(ylo)+abs(yhi)"
-                         "+abs(zlo)+abs(zhi))")
-            self.defined_L = True
-        return "${rs_L}"
-
-    def primitive(self, wall):
-        lines = []
-        L = self.half_length(lines)
-        mL = L[1:] if L.startswith("-") else "-" + L
-        shape, args = wall["shape"], wall["args"]
-        if shape.endswith("plane"):
-            X = args[0]
-            a, b, c = {"x": ([X, 0, 0], [X, 1, 0], [X, 0, -1]),
-                       "y": ([0, X, 0], [0, X, 1], [-1, X, 0]),
-                       "z": ([0, 0, X], [1, 0, X], [0, -1, X])}[shape[0]]
-            surf = (["cylinder", "a"] + a + ["b"] + b + ["c"] + c +
-                    ["sides", "2", "profile", "START", mL, "0", "LINE", L, "0", "end"])
-        else:
-            R, c1, c2 = args
-            origin, axis = {"x": ([0, c1, c2], [1, 0, 0]), "y": ([c2, 0, c1], [0, 1, 0]),
-                            "z": ([c1, c2, 0], [0, 0, 1])}[shape[0]]
-            surf = (["revolution", "origin"] + origin + ["axis"] + axis +
-                    ["sides", "2", "profile", "START", R, mL, "LINE", R, L, "end"])
-        words = ["fix", wall["id"], wall["group"], "wall/rigid", "surface", "inline"] + \
-            surf + ["law"] + wall["law"].split() + ["type", wall["type"]]
-        for key, vals in wall["opts"].items():
-            if key != "contact_area":
-                words += [key] + vals
-        words += self.conduction(wall["opts"], wall["opts"])
-        return lines + [wrap(words)]
-
-    def conduction(self, opts, wall_opts):
-        """A wall's temperature under fix heat/gran conducts heat into the particles that
-        touch it (fix_wall_gran.cpp, addHeatFlux): wall/rigid's conduction liggghts, with
-        the wall/gran's contact_area (which sets that conduction's area only)."""
-        if "temperature" not in opts or not self.heat:
-            return []
-        area = wall_opts.get("contact_area")
-        return ["conduction", "liggghts"] + (["contact_area"] + area if area else [])
-
-    def mesh_wall(self, wall, m):
-        s = self.motion_state[m["id"]]
-        scale, a, b, c = m["placement"] if m.get("placement") else (1.0, None, None, None)
-        words = ["fix", m["id"], wall["group"], "wall/rigid", "surface", "inline", "mesh",
-                 m["file"]]
-        if scale != 1.0:
-            words += ["scale", fmt(scale)]
-        if a is not None and [fmt(x) for x in a + b + c] != \
-                ["0", "0", "0", "1", "0", "0", "0", "1", "0"]:
-            words += ["place"] + [fmt(x) for x in a + b + c]
-        words += ["law"] + wall["law"].split() + ["type", m["type"]]
-        for key, vals in m["opts"].items():
-            words += [key] + vals
-        words += self.conduction(m["opts"], wall["opts"])
-        if wall["opts"].get("store_force"):
-            # wall/gran keeps one force_ID for all its meshes: each mesh's wall adds to it
-            words += ["store_force", "into", wall["id"]]
-        if m["wear"] == "finnie":
-            words += ["wear", "finnie"]
-        if m.get("vtk"):
-            words += ["vtk"] + m["vtk"]
-        if m.get("servo"):
-            words += ["servo"] + m["servo"]
-        pre = []
-        if s["lin_used"]:
-            words += ["move", "linear"] + ["v_rs_%s_%s" % (m["id"], k) for k in ("vx", "vy",
-                                                                              "vz")]
-        if s["rot"] is not None and s["centre"] == "fixed":
-            # the origin where LIGGGHTS's first mover keeps it, in space
-            words += ["rotate", "origin"] + list(s["rot"][4]) + ["axis"] + list(s["rot"][1]) \
-                + ["omega", "v_rs_%s_om" % m["id"], "centre", "fixed"]
-        elif s["rot"] is not None:
-            words += ["rotate", "origin"] + list(s["rot"][0]) + ["axis"] + list(s["rot"][1]) \
-                + ["omega", "v_rs_%s_om" % m["id"]]
-        if s["spin"] is not None:
-            words += ["spin", "origin"] + list(s["spin"][0]) + ["axis"] + list(s["spin"][1]) \
-                + ["omega", "v_rs_%s_om2" % m["id"]]
-        used = (["vx", "vy", "vz"] if s["lin_used"] else []) + (["om"] if s["rot"] else []) \
-            + (["om2"] if s["spin"] is not None else [])
-        for k in used:
-            if k not in s["pre_wall"]:
-                pre.append("variable rs_%s_%s equal 0" % (m["id"], k))
-        return pre + [wrap(words)]
-
-    def emit(self):
-        self.defined_L = False
-        self.out = {}
+            if len({w.cmd for w in m.walls}) > 1:
+                m.reasons.append("%d wall/gran fixes use it" % len({w.cmd for w in m.walls}))
+            if m.group != "all" and any(m.group != w.group for w in m.walls):
+                m.reasons.append("its group %s is not its wall's" % m.group)
+        self.settle()
+        refs.dumps(self)
+        self.settle()
         for m in self.meshes.values():
-            for n in m["notes"]:
-                if m["id"] in self.done:
-                    self.report(m["cmd"], m["id"], n, kept=False)
-        self.dump_refs()
+            if m.ok and m.users:
+                m.display, m.rid = True, "rs_" + m.id
+
+    def settle(self):
         for wall in self.walls:
-            if not wall["ok"]:
-                continue
-            if wall["kind"] == "primitive":
-                self.out[wall["index"]] = self.primitive(wall)
-                continue
-            lines = []
-            for mid in wall["meshes"]:
-                m = self.meshes[mid]
-                self.out[m["index"]] = []
-                lines += self.mesh_wall(wall, m)
-                self.out.update(self.motion_state[mid]["lines"])
-            self.out[wall["index"]] = lines
-            # last made, first unfixed: the wall that made force_ID (store_force) deletes
-            # it when it goes, after the others
-            for i, c in enumerate(self.cmds):
-                if c.words[:2] == ["unfix", wall["id"]]:
-                    self.out[i] = ["unfix %s" % mid for mid in reversed(wall["meshes"])]
-        self.references()
+            reasons = list(wall.reasons)
+            for m in wall.mesh_objs:
+                reasons += ["mesh %s (%s): %s" % (m.id, m.cmd.where(), r) for r in m.reasons]
+            wall.ok = not reasons
+            wall.why = reasons
+        for m in self.meshes.values():
+            m.ok = bool(m.walls) and all(w.ok for w in m.walls)
+            m.wall = m.walls[0] if m.walls else None
 
-    def dump_refs(self):
-        self.gone_dumps = set()
-        for i, c in self.dumps:
-            w = c.words
-            named = [x for x in w[6:] if x in self.meshes]
-            mine = [x for x in named if x in self.done]
-            if not named:
-                if self.done:
-                    self.report(c, None, "dump %s writes the meshes LIGGGHTS still has; the "
-                                "migrated walls are not among them (wall/rigid's vtk FILE N "
-                                "writes a wall)" % w[1], kept=False)
+    # -- output -------------------------------------------------------------------
+    def emit(self):
+        L, with_L = walls.half_length(self.box_half), None
+        for wall in self.walls:
+            if not wall.ok:
+                for r in wall.why:
+                    self.report(wall.cmd, "fix %s: %s" % (wall.id, r))
+                self.report(wall.cmd, "fix %s: the wall is kept as LIGGGHTS's" % wall.id)
                 continue
-            if len(named) == 1 and mine:
-                m = self.meshes[mine[0]]
-                m["vtk"] = [w[5], w[4]]
-                self.out[i] = []
-                self.gone_dumps.add(w[1])
-                self.report(c, None, "dump %s is now the vtk of wall %s (cell data sigma_n, "
-                            "sigma_t, wear)" % (w[1], mine[0]), kept=False)
-            elif mine:
-                self.report(c, None, "dump %s names migrated meshes %s beside others: it is "
-                            "kept and fails; give each wall/rigid its vtk FILE N"
-                            % (w[1], " ".join(mine)))
-        for i, c in enumerate(self.cmds):
-            if c.words[:1] == ["undump"] and c.words[1:2] and c.words[1] in self.gone_dumps:
-                self.out[i] = []
+            for n in wall.notes:
+                self.note(wall.cmd, "fix %s: %s" % (wall.id, n))
+            if wall.kind == "primitive":
+                lines = []
+                if L is None and with_L in (None, wall.cmd):
+                    # the box's size where create_box's region is not known, before the
+                    # first such wall
+                    lines.append("variable rs_L equal 10*(abs(xlo)+abs(xhi)+abs(ylo)+"
+                                 "abs(yhi)+abs(zlo)+abs(zhi))")
+                    with_L = wall.cmd
+                lines.append(walls.primitive(wall, L or "${rs_L}", self.heat))
+            else:
+                lines = []
+                for m in wall.mesh_objs:
+                    lines += walls.mesh_wall(wall, m, self.motion_state[m.id], self.heat)
+                    self.mesh(m)
+            self.commit(wall.ex, lines)
+        refs.unfixes(self)
+        for ex, lines in self.motion_lines.items():
+            self.commit(ex, lines)
+        removed = set()
+        for d in self.dumps:
+            lines = refs.dump_lines(self, d)
+            if lines is not None:
+                self.commit(d.ex, lines)
+                if not lines:
+                    removed.add(d.id)
+        for ex in self.deck.trace:
+            if ex.words[0] in ("undump", "dump_modify") and len(ex.words) > 1 and \
+                    ex.words[1] in removed:
+                self.commit(ex, [])
+                if ex.words[0] == "undump":
+                    self.note(ex.cmd, "undump %s: the walls that write its meshes' vtk go on "
+                              "writing it" % ex.words[1])
+        refs.notes_for_dumps(self)
 
-    def references(self):
-        """f_ID of a migrated mesh or of a migrated mesh wall, in the lines that stay."""
-        walls = {w["id"]: w for w in self.walls if w["ok"] and w["kind"] == "mesh"}
-        pat = re.compile(r"\bf_(\w+)(\[(\d+)\])?")
-        for i, c in enumerate(self.cmds):
-            if i in self.out:
-                continue
-            for word in c.words:
-                for mt in pat.finditer(word):
-                    fid, idx = mt.group(1), mt.group(3)
-                    if fid in walls:
-                        self.report(c, None, "%s: wall/gran %s is now the wall/rigid fixes "
-                                    "%s; this reference is not kept" % (
-                                        mt.group(0), fid, " ".join(walls[fid]["meshes"])))
-                    elif fid in self.done:
-                        m = self.meshes[fid]
-                        ref0 = m["refpoint"] is None or \
-                            all(self.num.value(x) == 0 for x in m["refpoint"])
-                        n = int(idx) if idx else 0
-                        if m.get("servo"):
-                            sv = m["servo"]
-                            com = sv[sv.index("com") + 1:sv.index("com") + 4]
-                            a = (m.get("placement") or (1.0, [0, 0, 0]))[1] or [0, 0, 0]
-                            # LIGGGHTS's servo gives the torque about com, which moves
-                            # with the wall: the same moment where com is the origin
-                            ref0 = all(self.num.value(x) == float(y)
-                                       for x, y in zip(com, a))
-                        if m.get("servo") and 7 <= n <= 9:
-                            self.report(c, None, "%s: the servo's centre; wall/rigid %s "
-                                        "offers its translation as f_%s[%d] (add com)"
-                                        % (mt.group(0), fid, fid, n + 8))
-                        elif not (1 <= n <= 3 or (4 <= n <= 6 and ref0)):
-                            self.report(c, None, "%s: wall/rigid %s offers the force "
-                                        "(f_%s[1-3]) and the moment about the mesh's placed "
-                                        "origin (f_%s[4-6]) of mesh/surface/stress; this "
-                                        "reference is not kept" % (mt.group(0), fid, fid,
-                                                                   fid))
+    def mesh(self, m):
+        """A migrated mesh's lines: gone, or kept as a LIGGGHTS mesh for the commands that
+        use it; its move/mesh lines become the wall's rates."""
+        if not m.display:
+            self.commit(m.ex, [])
+        elif m.users:
+            self.note(m.cmd, "mesh %s stays a LIGGGHTS mesh, without a wall, for %s; its wall "
+                      "is wall/rigid %s" % (m.id, ", ".join(sorted({
+                          "%s (%s)" % (u.cmd.where(), " ".join(u.words[:4]))
+                          for u in m.users})), m.rid))
+        for n in m.notes:
+            self.note(m.cmd, "fix %s: %s" % (m.id, n))
+        if m.path:
+            text = folds.note(m.path)
+            if text:
+                self.note(m.cmd, "mesh %s (%s): %s" % (m.id, m.file, text))
+        for ex, lines in self.motion_state[m.id]["lines"].items():
+            self.motion_lines[ex] = ([None] if m.display else []) + lines
 
-    def text(self):
+    def render(self, cmd, lines):
+        """The text of a rewritten command: its lines, its comment on the last of them (or
+        on a line of its own), its line ending."""
+        lines = ["".join(cmd.raw).rstrip("\r\n") if x is None else x for x in lines]
+        lines += list(self.after.get(cmd, {}).values())
+        if cmd.comment:
+            if lines and lines[-1] is not None:
+                lines[-1] += " " + cmd.comment
+            else:
+                lines = [cmd.comment]
+        nl = "\n" if cmd.raw[-1].endswith("\n") else ""
+        return "\n".join(lines) + (nl if lines else "")
+
+    def changed(self, src, seen=()):
+        if src.path in seen:
+            return False
+        seen = seen + (src.path,)
+        incl = getattr(src, "includes", {})
+        return any(c in self.out or c in self.refs_out for c in src.commands) or any(
+            self.changed(self.deck.sources[p], seen) for p in incl.values())
+
+    def text_of(self, src):
         parts = []
-        for i, c in enumerate(self.cmds):
-            if i not in self.out:
-                parts.append("".join(c.raw))
-                continue
-            lines = list(self.out[i])
-            if c.comment:
-                if lines:
-                    lines[-1] += " " + c.comment
-                else:
-                    lines = [c.comment]
-            nl = "\n" if c.raw[-1].endswith("\n") else ""
-            parts.append("\n".join(lines) + (nl if lines else ""))
+        incl = getattr(src, "includes", {})
+        for p in getattr(src, "jumps", ()):
+            if p != src.path and self.changed(self.deck.sources[p]):
+                raise DeckError(None, "%s jumps to %s, whose walls the tool would rewrite: "
+                                "migrate it on its own" % (src.name or "the deck",
+                                                           self.deck.sources[p].name))
+        for cmd in src.commands:
+            if cmd in self.out:
+                parts.append(self.render(cmd, self.out[cmd]))
+            elif cmd.index in incl and self.changed(self.deck.sources[incl[cmd.index]]):
+                inc = self.deck.sources[incl[cmd.index]]
+                if any(c.raw_words[:1] in (["jump"], ["label"]) for c in inc.commands):
+                    raise DeckError(cmd, "the included %s holds walls and jump or label: "
+                                    "the tool writes an included file into the deck, where "
+                                    "its jumps would mean the deck" % inc.name)
+                body = self.text_of(inc)
+                parts.append("# rigidsurf-migrate: %s, migrated\n%s%s"
+                             "# rigidsurf-migrate: end of %s\n" % (
+                                 cmd.text.strip(), body, "" if body.endswith("\n") or
+                                 not body else "\n", inc.name))
+                self.note(cmd, "%s holds walls or their names: its commands, migrated, "
+                          "stand in the deck in place of this line" % inc.name)
+            elif cmd in self.refs_out:
+                parts.append("".join(self.refs_out[cmd]))
+            else:
+                parts.append("".join(cmd.raw))
         return "".join(parts)
 
     def run(self):
+        self.deck.follow()
+        self.check_flow()
         self.scan()
-        self.motion()
-        self.uses()
+        motion.follow(self, NUM, walls.fmt)
+        for m in self.meshes.values():
+            self.motion_state.setdefault(m.id, motion.blank())
+        commands = [c for s in self.deck.sources.values() for c in s.commands]
+        refs.references(self, commands)
         self.decide()
         self.emit()
-        return self.text()
-
-
-def wrap(words, width=WRAP):
-    """One command, continued with ' &' and four spaces where it grows past width, before
-    a keyword (so a keyword stays with its values)."""
-    groups = []
-    for word in (str(x) for x in words):
-        keyword = word[0].isalpha() and not word.startswith("v_")
-        if groups and (not keyword or " " not in groups[-1] and groups[-1] != "end"):
-            groups[-1] += " " + word
-        else:
-            groups.append(word)
-    lines, cur = [], ""
-    for word in groups:
-        if cur and len(cur) + 1 + len(word) > width - 2:
-            lines.append(cur + " &")
-            cur = "    " + word
-        else:
-            cur = (cur + " " + word) if cur else word
-    return "\n".join(lines + [cur])
-
-
-def migrate(text):
-    """(the migrated deck, the report lines in line order, whether a wall was kept)."""
-    mg = Migration(text)
-    out = mg.run()
-    reps = sorted(mg.reports, key=lambda r: r[0])
-    return out, [r[1] for r in reps], any(r[2] for r in reps), mg
+        self.refs_out = refs.rewrite_references(self, [c for c in commands
+                                                       if c not in self.out])
+        return self.text_of(self.deck.main)
 
 
 def main(argv):
-    if len(argv) != 2 or argv[1] in ("-h", "--help"):
-        sys.stderr.write("usage: rigidsurf-migrate DECK > DECK.rigid\n")
-        return 2
+    args = argv[1:]
+    if args[:1] in (["-h"], ["--help"]):
+        sys.stdout.write(USAGE)
+        return 0
+    if not args:
+        sys.stderr.write(USAGE)
+        return 1
+    path, cli_vars, k = args[0], [], 1
+    while k < len(args):
+        if args[k] in ("-var", "-v") and k + 1 < len(args):
+            j = k + 2
+            while j < len(args) and not args[j].startswith("-"):
+                j += 1
+            cli_vars.append((args[k + 1], args[k + 2:j]))
+            k = j
+        else:
+            sys.stderr.write("rigidsurf-migrate: unknown argument '%s'\n%s" % (args[k], USAGE))
+            return 1
+    if not os.path.isfile(path):
+        sys.stderr.write("rigidsurf-migrate: %s: no such file\n" % path)
+        return 1
+    mg = Migration(path, cli_vars)
     try:
-        with open(argv[1], newline="") as f:
-            text = f.read()
-    except OSError as e:
-        sys.stderr.write("rigidsurf-migrate: %s\n" % e)
-        return 2
-    out, reps, kept, mg = migrate(text)
+        out = mg.run()
+    except DeckError as e:
+        where = e.where.where() if e.where is not None else os.path.basename(path)
+        sys.stderr.write("rigidsurf-migrate: %s: ERROR: %s\nrigidsurf-migrate: nothing "
+                         "written\n" % (where, e))
+        return 1
     sys.stdout.write(out)
-    for r in reps:
-        sys.stderr.write(r + "\n")
-    n_ok = sum(1 for w in mg.walls if w["ok"])
+    done = set()
+    for _, text in sorted(mg.reports, key=lambda r: r[0]):
+        if text not in done:
+            sys.stderr.write(text + "\n")
+        done.add(text)
+    lines = {w.cmd for w in mg.walls}
+    ok = lines - {w.cmd for w in mg.walls if not w.ok}
+    kept = len(lines) - len(ok)
     sys.stderr.write("rigidsurf-migrate: %d of %d wall/gran fixes translated%s\n" % (
-        n_ok, len(mg.walls), "; some kept as LIGGGHTS's or a reference not kept (above)"
-        if kept else ""))
-    return EXIT_KEPT if kept else 0
+        len(ok), len(lines), "; %d kept as LIGGGHTS's (above)" % kept if kept else ""))
+    return 3 if kept else 0
 
 
 if __name__ == "__main__":

@@ -107,8 +107,9 @@ def wave(num, amp, per, ph, kind):
     return lambda t: -sum(aj * wj * math.sin(wj * t + fj) for aj, wj, fj in zip(a, w, f))
 
 
-def parse(style, a, fid, num):
-    """One move/mesh line's motion: a dict with kind 'linear' or 'rotate', its rates
+def parse(style, a, ra, fid, num):
+    """One move/mesh line's motion, from its words a (as substituted) and ra (as written,
+    where they can be: the rates' text): a dict with kind 'linear' or 'rotate', its rates
     (by name), the constant velocity (vals, for the displacement a later rotation's origin
     needs; None when it varies), for a rotation the origin and axis (words and values),
     and t0 (whether it needs the time origin); or a string, why it cannot be read."""
@@ -118,16 +119,16 @@ def parse(style, a, fid, num):
             return "move/mesh %s arguments not understood" % style
         if style == "linear":
             vals = [num.value(x) for x in a]
-            return dict(kind="linear", rates=dict(zip(LIN, a)), t0=False, vals=vals,
+            return dict(kind="linear", rates=dict(zip(LIN, ra)), t0=False, vals=vals,
                         vel=None if None in vals else (lambda tt: vals))
-        return dict(kind="linear", rates=dict(zip(LIN, [vname(x) for x in a])), t0=False,
+        return dict(kind="linear", rates=dict(zip(LIN, [vname(x) for x in ra])), t0=False,
                     vals=None, vel=None)
     if style == "wiggle":
         if len(a) != 6 or a[0] != "amplitude" or a[4] != "period":
             return "move/mesh wiggle arguments not understood (amplitude AX AY AZ period P)"
-        w = "2*PI/%s" % par(a[5])
-        rates = {k: "0" if is_zero(num, x) else "%s*%s*cos(%s*%s)" % (par(x), w, w, t)
-                 for k, x in zip(LIN, a[1:4])}
+        w = "2*PI/%s" % par(ra[5])
+        rates = {k: "0" if is_zero(num, x) else "%s*%s*cos(%s*%s)" % (par(r), w, w, t)
+                 for k, x, r in zip(LIN, a[1:4], ra[1:4])}
         v = wave(num, ["1"], a[5:6], ["0"], "cos")
         amp = [num.value(x) for x in a[1:4]]
         vel = None if v is None or None in amp else \
@@ -142,7 +143,7 @@ def parse(style, a, fid, num):
         e = unit(num, a[1:4])
         if e is None:
             return "move/mesh viblin: its axis is not a non-zero vector of numbers"
-        s = harmonics(a, 6, n, t)
+        s = harmonics(ra, 6, n, t)
         rates = {k: "0" if x == 0.0 else "%r*(%s)" % (x, s) for k, x in zip(LIN, e)}
         v = wave(num, a[7:7 + n], a[9 + 2 * n:], a[8 + n:8 + 2 * n], "sin")
         vel = None if v is None else (lambda tt: [c * v(tt) for c in e])
@@ -157,18 +158,18 @@ def parse(style, a, fid, num):
             key = "period" if style == "rotate" else "omega"
             if len(a) != 10 or a[8] != key:
                 return "move/mesh %s arguments not understood" % style
-            om = "2*PI/(%s)" % a[9] if style == "rotate" else vname(a[9])
+            om = "2*PI/(%s)" % ra[9] if style == "rotate" else vname(ra[9])
         elif style == "riggle":
             if len(a) != 12 or a[8] != "period" or a[10] != "amplitude":
                 return ("move/mesh riggle arguments not understood (origin X Y Z axis AX AY "
                         "AZ period P amplitude A)")
-            w = "2*PI/%s" % par(a[9])
-            om = "%s*PI/180*%s*cos(%s*%s)" % (par(a[11]), w, w, t)
+            w = "2*PI/%s" % par(ra[9])
+            om = "%s*PI/180*%s*cos(%s*%s)" % (par(ra[11]), w, w, t)
         else:
             n, why = order(num, a, 8, style, "origin X Y Z axis AX AY AZ")
             if why:
                 return why
-            om = harmonics(a, 10, n, t)
+            om = harmonics(ra, 10, n, t)
         rot["rates"] = {"om": om}
         return rot
     return "move/mesh %s has no wall/rigid motion yet" % style
@@ -188,40 +189,28 @@ def rate_lines(mid, active, kind):
     return ["variable rs_%s_%s equal %s" % (mid, k, total(active, kind, k)) for k in keys]
 
 
-def follow(mg, Numbers, FLOW, fmt):
-    """Follows every fix move/mesh of mg's meshes in deck order: the lines that set each
-    mesh's rates (state 'lines': command index -> text), the rates set before the wall
-    exists, the rotation axis, and the displacement a later rotation's origin needs."""
-    num, dt, step, restart = Numbers(), None, 0.0, None
-    st = {mid: dict(active={}, wall=False, D=[0.0, 0.0, 0.0], D_rot=None, rot=None,
-                    lin_used=False, lin_since_rot=False, assigned=set(), pre_wall=set(),
-                    lines={}, centre=None, spin=None)
-          for mid in mg.meshes}
+def follow(mg, num, fmt):
+    """Follows every fix move/mesh of mg's meshes over the deck's trace (the commands in
+    the order they ran): the lines that set each mesh's rates (state 'lines': Exec ->
+    text), the rates set before the wall exists, the rotation axis, and the displacement
+    a later rotation's origin needs. num.value(word) is a word's number or None."""
+    dt, restart = None, None
+    st = {}
     mg.motion_state = st
-    for i, c in enumerate(mg.cmds):
-        w = c.words
-        if not w:
-            continue
-        if w[0] == "variable":
-            num.define(w)
-        elif w[0] == "timestep" and len(w) > 1:
+    for ex in mg.deck.trace:
+        w = ex.words
+        if w[0] == "timestep" and len(w) > 1:
             dt = num.value(w[1])
         elif w[0] == "read_restart":
-            restart = c.lineno
-        elif w[0] in FLOW:
-            step = None
+            restart = ex.cmd.where()
         elif w[0] == "run" and len(w) > 1:
-            n = num.value(w[1])
-            upto = "upto" in w[2:]
-            nsteps = None if n is None or (upto and step is None) else \
-                (n - step if upto else n)
-            step = None if nsteps is None or step is None else step + nsteps
+            nsteps = ex.nsteps
             for mid, s in st.items():
                 if not s["active"]:
                     continue
                 if not s["wall"]:
-                    mg.meshes[mid]["reasons"].append("LINE %d runs while it moves and before "
-                                                     "its wall exists" % c.lineno)
+                    mg.meshes[mid].reasons.append("%s runs while it moves and before "
+                                                  "its wall exists" % ex.cmd.where())
                 for mo in s["active"].values():
                     if mo["kind"] == "linear" and s["D"] is not None:
                         s["D"] = advance(s["D"], mo, nsteps, dt)
@@ -230,15 +219,25 @@ def follow(mg, Numbers, FLOW, fmt):
             for mid, s in st.items():
                 if w[1] in s["active"]:
                     kind = s["active"].pop(w[1])["kind"]
-                    s["lines"][i] = rate_lines(mid, s["active"], kind)
+                    s["lines"][ex] = rate_lines(mid, s["active"], kind)
         elif w[0] == "fix" and len(w) >= 4 and w[3] == "wall/gran" and "mesh" in w:
             for mid in w[w.index("mesh"):]:
                 if mid in st:
                     st[mid]["wall"] = True
                     st[mid]["pre_wall"] = set(st[mid]["assigned"])
+        elif w[0] == "fix" and len(w) >= 4 and w[3].startswith("mesh/surface") and \
+                w[1] in mg.meshes:
+            st[w[1]] = blank()
         elif w[0] == "fix" and len(w) >= 7 and w[3] == "move/mesh" and w[4] == "mesh" \
                 and w[5] in st:
-            move(i, c, num, st[w[5]], mg.meshes[w[5]], restart, fmt)
+            move(ex, num, st[w[5]], mg.meshes[w[5]], restart, fmt)
+
+
+def blank():
+    """A mesh's motion state before any move/mesh."""
+    return dict(active={}, wall=False, D=[0.0, 0.0, 0.0], D_rot=None, rot=None,
+                lin_used=False, lin_since_rot=False, assigned=set(), pre_wall=set(),
+                lines={}, centre=None, spin=None)
 
 
 def advance(D, mo, nsteps, dt):
@@ -257,26 +256,28 @@ def advance(D, mo, nsteps, dt):
     return [d + x * dt for d, x in zip(D, acc)]
 
 
-def move(i, c, num, s, m, restart, fmt):
-    fid, style, mid = c.words[1], c.words[6], c.words[5]
-    mo = parse(style, c.words[7:], fid, num)
+def move(ex, num, s, m, restart, fmt):
+    c = ex.cmd
+    fid, style, mid = ex.words[1], ex.words[6], ex.words[5]
+    mo = parse(style, ex.words[7:], [ex.rawword(k, x) for k, x in enumerate(ex.words)][7:],
+               fid, num)
     if isinstance(mo, str):
-        m["reasons"].append("LINE %d: %s" % (c.lineno, mo))
+        m.reasons.append("%s: %s" % (c.where(), mo))
         return
     mo["k"] = 0
     kinds = {x["kind"] for x in s["active"].values()}
     if mo["t0"] and restart is not None:
-        m["reasons"].append("LINE %d: move/mesh %s after read_restart (LINE %d): LIGGGHTS "
+        m.reasons.append("%s: move/mesh %s after read_restart (%s): LIGGGHTS "
                             "takes the time since the fix was made from the restart file"
-                            % (c.lineno, style, restart))
+                            % (c.where(), style, restart))
     if mo["kind"] == "linear":
         if "spin" in kinds:
             # a mover carries the origins of the movers made after it only: this
             # translation leaves the spin's origin where the first rotation puts it,
             # where wall/rigid's move carries the spin's point
-            m["reasons"].append("LINE %d moves it while two rotations turn it: LIGGGHTS's "
+            m.reasons.append("%s moves it while two rotations turn it: LIGGGHTS's "
                                 "translation, made after them, does not carry the second "
-                                "one's origin, which wall/rigid's would" % c.lineno)
+                                "one's origin, which wall/rigid's would" % c.where())
         if "rotate" in kinds:
             rid = [f for f, x in s["active"].items() if x["kind"] == "rotate"][0]
             # the rotation came first: its origin stays in space; else a translation
@@ -289,8 +290,8 @@ def move(i, c, num, s, m, restart, fmt):
         spin(c, s, m, mo)
     else:
         if "spin" in kinds:
-            m["reasons"].append("LINE %d turns it while a second rotation turns it: "
-                                "wall/rigid has a rotation and a spin" % c.lineno)
+            m.reasons.append("%s turns it while a second rotation turns it: "
+                                "wall/rigid has a rotation and a spin" % c.where())
         # a rotation made while translations run: they come first among the mesh's movers
         # and carry its origin (FixMesh::move), as wall/rigid's translation carries the
         # rotation's origin; made alone, it is the first mover
@@ -300,7 +301,7 @@ def move(i, c, num, s, m, restart, fmt):
         rotation(c, num, s, m, mo, fmt)
     s["active"][fid] = mo
     pre = ["variable rs_%s_t0 equal $(time)" % fid] if mo["t0"] else []
-    s["lines"][i] = pre + rate_lines(mid, s["active"], mo["kind"])
+    s["lines"][ex] = pre + rate_lines(mid, s["active"], mo["kind"])
     s["assigned"] |= set(keys_of(mo["kind"]))
 
 
@@ -317,10 +318,10 @@ def spin(c, s, m, mo):
     first = [x for x in s["active"].values() if x["kind"] == "rotate"][0]
     if s["spin"] is not None or len(s["active"]) != 1 or not first["first"] or \
             first["k"] != 0 or s["lin_used"]:
-        m["reasons"].append(
-            "LINE %d turns it while another move/mesh turns it, where wall/rigid's spin "
+        m.reasons.append(
+            "%s turns it while another move/mesh turns it, where wall/rigid's spin "
             "needs the other to be the mesh's only mover, made at the same point of the "
-            "deck, and the mesh not translated before" % c.lineno)
+            "deck, and the mesh not translated before" % c.where())
         return
     mo["kind"] = "spin"
     mo["rates"] = {"om2": mo["rates"]["om"]}
@@ -331,11 +332,11 @@ def centre(c, s, m, mode, rid):
     """The wall's rotation centre, 'moving' with its translation or 'fixed' in space, as
     the movers running together at LINE c ask; one wall has one."""
     if s["centre"] not in (None, mode):
-        m["reasons"].append(
-            "LINE %d makes a translation and a rotation run together with the rotation's "
+        m.reasons.append(
+            "%s makes a translation and a rotation run together with the rotation's "
             "origin %s, where before it was %s: one wall/rigid turns about an origin "
             "that is fixed in space or moves with the wall, not both" % (
-                c.lineno, "carried by the translation" if mode == "moving"
+                c.where(), "carried by the translation" if mode == "moving"
                 else "fixed in space (move/mesh %s came first)" % rid,
                 "carried by the translation" if s["centre"] == "moving"
                 else "fixed in space"))
@@ -353,9 +354,9 @@ def rotation(c, num, s, m, mo, fmt):
     if s["rot"] is None:
         if s["lin_used"]:
             if s["D"] is None or None in origin:
-                m["reasons"].append(
-                    "LINE %d turns it about a point after a translation the tool cannot "
-                    "compute (it needs the steps run and constant rates)" % c.lineno)
+                m.reasons.append(
+                    "%s turns it about a point after a translation the tool cannot "
+                    "compute (it needs the steps run and constant rates)" % c.where())
                 return
             o = [fmt(p - d) for p, d in zip(origin, s["D"])]
         else:
@@ -364,6 +365,6 @@ def rotation(c, num, s, m, mo, fmt):
         s["D_rot"] = list(s["D"]) if s["D"] is not None else None
     elif s["lin_since_rot"] or s["D"] != s["D_rot"] or origin != s["rot"][2] \
             or axis != s["rot"][3] or None in origin + axis:
-        m["reasons"].append("LINE %d turns it about another axis, or after it moved on since "
+        m.reasons.append("%s turns it about another axis, or after it moved on since "
                             "its first rotation: one wall/rigid has one rotation axis fixed "
-                            "in it" % c.lineno)
+                            "in it" % c.where())

@@ -82,14 +82,24 @@ typedef struct rs_mesh {
 /// Builds the mesh of a polygon soup: scale and placement (rot row-major columns ex, ey,
 /// ez and origin a: x = a + s (X ex + Y ey + Z ez)), welding, elements, edges, a
 /// consistent orientation per connected component, edge kinds and the tree. Warnings
-/// (dropped degenerate triangles, non-manifold and open edges, no consistent orientation)
-/// go to warn; *two_sided is set where no consistent orientation exists. origin names the
-/// file in messages.
+/// (dropped degenerate triangles, non-manifold edges, holes, no consistent orientation)
+/// go to warn, the open boundary of an open surface to info (rs_mesh_boundary_report);
+/// *two_sided is set where no consistent orientation exists. origin names the file in
+/// messages.
 struct rs_soup;
 int rs_mesh_build(const struct rs_soup *soup, double scale, const double a[3],
                   const double ex[3], const double ey[3], const double ez[3],
                   const char *origin, rs_mesh **out, int *two_sided, char *warn,
-                  size_t warncap, rs_error *err);
+                  size_t warncap, char *info, size_t infocap, rs_error *err);
+
+/// A loop of open edges narrower than this fraction of the mesh's size (its bounds'
+/// diagonal) is a hole; a wider one the rim of an open surface.
+#define RS_HOLE_FRACTION 0.1
+/// Appends the report of m's open boundary edges, if any: to warn when every loop of them
+/// is a hole (a surface that otherwise closes: particles that fit through them leave it),
+/// else to info (the rim of an open surface). Returns -1 when out of memory, else 0.
+int rs_mesh_boundary_report(const rs_mesh *m, const char *origin, char *warn,
+                            size_t warncap, char *info, size_t infocap);
 void rs_mesh_free(rs_mesh *m);
 
 /// The frame of a mesh's placement a, b, c (abc): frame[0] the origin a, frame[1 .. 3]

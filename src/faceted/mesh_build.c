@@ -515,7 +515,8 @@ done:
 
 int rs_mesh_build(const rs_soup *soup, double scale, const double a[3], const double ex[3],
                   const double ey[3], const double ez[3], const char *origin, rs_mesh **out,
-                  int *two_sided, char *warn, size_t warncap, rs_error *err)
+                  int *two_sided, char *warn, size_t warncap, char *info, size_t infocap,
+                  rs_error *err)
 {
     *out = NULL;
     *two_sided = 0;
@@ -693,15 +694,13 @@ int rs_mesh_build(const rs_soup *soup, double scale, const double a[3], const do
     }
     if (build_edges(m) || finish_topology(m, *two_sided))
         goto nomem;
-    int nopen = 0, nnm = 0;
-    for (int e = 0; e < m->ne; e++) {
-        nopen += m->edge_kind[e] == RS_EDGE_BOUNDARY;
+    int nnm = 0;
+    for (int e = 0; e < m->ne; e++)
         nnm += m->edge_kind[e] == RS_EDGE_NONMANIFOLD;
-    }
-    if (nopen || nnm) {
+    if (nnm) {
         char piece[200];
-        snprintf(piece, sizeof piece, "%s: %d open boundary edge%s, %d non-manifold edge%s",
-                 origin, nopen, nopen == 1 ? "" : "s", nnm, nnm == 1 ? "" : "s");
+        snprintf(piece, sizeof piece, "%s: %d non-manifold edge%s", origin, nnm,
+                 nnm == 1 ? "" : "s");
         warn_add(warn, warncap, piece);
     }
     for (int d = 0; d < 3; d++) {
@@ -714,6 +713,8 @@ int rs_mesh_build(const rs_soup *soup, double scale, const double a[3], const do
             m->hi[d] = fmax(m->hi[d], m->xyz[3 * v + d]);
         }
     m->size = size;
+    if (rs_mesh_boundary_report(m, origin, warn, warncap, info, infocap))
+        goto nomem;
     m->tree = rs_cgal_tree_new(m->nt, m->xyz, m->tri);
     if (!m->tree)
         goto nomem;

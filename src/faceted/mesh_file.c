@@ -125,8 +125,9 @@ int rs_mesh_surface_soup(rs_surface *s, const rs_soup *soup, double scale,
 {
     rs_mesh *m = NULL;
     int two = 0;
-    int rc = rs_mesh_build(soup, scale, frame[0], frame[1], frame[2], frame[3], origin, &m,
-                           &two, s->warning, sizeof s->warning, err);
+    int rc =
+        rs_mesh_build(soup, scale, frame[0], frame[1], frame[2], frame[3], origin, &m, &two,
+                      s->warning, sizeof s->warning, s->info, sizeof s->info, err);
     if (rc)
         return rc;
     s->impl = m;

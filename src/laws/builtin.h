@@ -13,10 +13,12 @@ extern const rs_law rs_law_linear_softening;
 extern const rs_law rs_law_hertz;
 extern const rs_law rs_law_hooke;
 extern const rs_law rs_law_coulomb;
+/// hertz's fused kernel (hertz_fused.c, track_fused.h).
+extern const struct rs_law_fused rs_hertz_fused;
 
 /// rs_law_call's error for a law that returned a NaN or Inf (what = "stress(1)", ...,
 /// value) for contact k of n, on particle pid and feature f (law.c); an engine that calls
-/// a built-in law's kernel itself (track_hertz.c) reports it the same way.
+/// a built-in law's kernel itself (hertz_fused.c) reports it the same way.
 int rs_law_nonfinite_error(const rs_law *law, int pid, int f, int k, int n, const char *what,
                            double value, rs_error *err);
 

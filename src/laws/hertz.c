@@ -129,4 +129,5 @@ const rs_law rs_law_hertz = {
              RS_LAW_SKIPS_SLIP | RS_LAW_SKIPS_DRDISP1,
     .sets = RS_LAW_SETS_ENERGIES | RS_LAW_SETS_NO_HEAT | RS_LAW_SETS_NO_CREEP_PLASTIC |
             RS_LAW_SETS_STRESS,
+    .fused = &rs_hertz_fused,
 };

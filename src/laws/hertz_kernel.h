@@ -1,5 +1,5 @@
 /* The hertz law's block loop (hertz.c), shared with the fused path of the usual block
- * (track_hertz.c, the tracker, this law and the loads in one pass), so that both compute
+ * (hertz_fused.c, the tracker, this law and the loads in one pass), so that both compute
  * every contact with the same operations: its property order, its constants and
  * hertz_block. Internal to the library. */
 #ifndef RIGIDSURF_HERTZ_KERNEL_H

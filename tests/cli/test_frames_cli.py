@@ -128,8 +128,8 @@ check("vtk_surface_nodes_and_a_vertex_per_frame",
 
 # MESH: a unit cube of quads in an OFF file next to the surface file. Above a face, the
 # face's normal and the FACETED frame (n = +z: t1 = x, t2 = y); beyond an edge, the
-# normal toward the point; the VTK holds the cube's 12 triangles; an open boundary is a
-# warning on stderr.
+# normal toward the point; the VTK holds the cube's 12 triangles; the open boundary of a
+# sheet is a line of information on stderr, a hole in a closed surface a warning.
 write("cube.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
       "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n")
 cube = write("cube.inp", "*SURFACE, TYPE=MESH, NAME=cube, FILE=cube.off\n")
@@ -146,8 +146,38 @@ check("mesh_vtk_written", code == 0 and "POLYGONS 12 48" in text, err)
 write("open.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
 opn = write("open.inp", "*SURFACE, TYPE=MESH, NAME=tri, FILE=open.off\n")
 code, out, err = run([opn], "0.2 0.2 0.5\n")
-check("mesh_open_edges_warned", code == 0 and "warning" in err and "3 open boundary edges" in err,
-      err)
+check("mesh_open_sheet_info", code == 0 and "warning" not in err and
+      "info: " in err and "an open surface: 3 open boundary edges on 1 rim" in err, err)
+# the cube less one of its triangles: a hole as wide as a face, a rim; the same cube of
+# 10 x 10 quads a face, less one quad, a small hole: a warning
+write("holed.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n"
+      "0 1 1\n3 0 3 2\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n")
+pts, quads = [], []
+for face in range(6):
+    axis, side = face // 2, float(face % 2)
+    u, v = (axis + 1) % 3, (axis + 2) % 3
+    for r in range(10):
+        for c in range(10):
+            if face == 0 and (r, c) == (3, 4):
+                continue
+            corners = [(c, r), (c + 1, r), (c + 1, r + 1), (c, r + 1)]
+            if not face % 2:
+                corners.reverse()
+            ids = []
+            for cu, cv in corners:
+                p = [0.0, 0.0, 0.0]
+                p[axis], p[u], p[v] = side, cu / 10.0, cv / 10.0
+                ids.append(len(pts))
+                pts.append(p)
+            quads.append(ids)
+write("fine.off", "OFF\n%d %d 0\n" % (len(pts), len(quads)) +
+      "".join("%r %r %r\n" % tuple(p) for p in pts) +
+      "".join("4 %d %d %d %d\n" % tuple(q) for q in quads))
+for name, want in (("holed", "info: "), ("fine", "warning: ")):
+    code, out, err = run([write(name + ".inp", "*SURFACE, TYPE=MESH, NAME=%s, FILE=%s.off\n"
+                                % (name, name))], "0.5 0.5 0.5\n")
+    check("mesh_open_%s_%s" % (name, want[:-2]), code == 0 and want in err and
+          ("around 1 hole" in err) == (name == "fine"), err)
 
 # Errors: one line, naming the file and the line, non-zero exit.
 bad = write("bad.inp", "*SURFACE, TYPE=SEGMENTS, NAME=x\nSTART, 0, 0\nLINE, 1, zero\n")

@@ -1,12 +1,12 @@
 #!/usr/bin/python3
 """rigidsurf-migrate on small decks: the placement against the hand translations of
 docs/migration.md and against LIGGGHTS's transforms applied point by point, the lines it
-must keep byte for byte, its reports (each names its line) and its exit status.
+must keep byte for byte, the walls, models and motions it translates, its reports (each
+names its line), its exit status, and the outputs docs/migration.md shows.
 
 Usage: test_migrate.py PATH/TO/rigidsurf-migrate
 """
 import difflib
-import importlib.util
 import math
 import os
 import random
@@ -17,11 +17,17 @@ import tempfile
 
 EXE = sys.argv[1]
 HERE = os.path.dirname(os.path.abspath(__file__))
-spec = importlib.util.spec_from_file_location(
-    "rigidsurf_migrate", os.path.join(HERE, "..", "..", "src", "cli", "rigidsurf_migrate.py"))
-M = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(M)
+sys.path.insert(0, os.path.join(HERE, "..", "..", "src", "cli"))
+import rigidsurf_migrate_walls as M  # noqa: E402
 TMP = tempfile.mkdtemp(prefix="rs_migrate_")
+# the meshes the decks below name: one triangle each (the tool reads every mesh it
+# migrates, and stops at one it cannot find, as LIGGGHTS does)
+TRI = ("solid t\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n"
+       "   vertex 0 1 0\n  endloop\n endfacet\nendsolid t\n")
+os.makedirs(os.path.join(TMP, "meshes"))
+for name in ("a.stl", "b.stl", "p.stl", "plate.stl", "meshes/a.stl"):
+    with open(os.path.join(TMP, name), "w") as f:
+        f.write(TRI)
 passed = failed = 0
 
 
@@ -167,6 +173,7 @@ check("the mesh wall takes its mesh's ID and placement, and the motion as rates"
       out)
 
 # ---- reports ------------------------------------------------------------------------------
+# (a wall kept as LIGGGHTS's: exit 3, each report on its wall's line)
 BAD = """region reg block 0 1 0 1 0 1 units box
 create_box 1 reg
 fix w1 all wall/gran model hertz tangential history rolling_friction cdt primitive type 1 zplane 0
@@ -226,33 +233,40 @@ check("a surface model is reported and its wall kept",
       rc == 3 and "LINE 5: fix m: model words" in err and "surface multicontact needs "
       "LIGGGHTS's own wall" in err and SET.splitlines()[4] + "\n" in out, err)
 
+# the servo's values (LIGGGHTS: force 1-3, torque about its centre 4-6, the centre 7-9
+# and 10-12) from wall/rigid's (force 1-3, moment about the surface origin 4-6, the
+# translation 15-17): where they differ a formula, through a variable outside formulas
 SERVO = """region reg block 0 1 0 1 0 1 units box
 create_box 1 reg
 fix s all mesh/surface/stress/servo file a.stl type 1 com 0 0 0.5 ctrlPV force axis 0 0 1 target_val -2 vel_max 0.1 kp 0.5 ki 0.1
 fix w all wall/gran model hertz tangential history mesh n_meshes 1 meshes s
 fix f all ave/time 1 1 1 f_s[3] f_s[6] f_s[9]
+variable z equal f_s[12]+f_s[4]
 """
 rc, out, err = run(SERVO)
-check("a servo's force is kept, its torque about com (not the origin) and its centre are "
-      "named, with the translation's place",
-      rc == 3 and "servo com 0 0 0.5 ctrlPV force axis 0 0 1 target_val -2 vel_max 0.1 kp "
-      "0.5 ki 0.1" in out.replace(" &\n    ", " ") and "f_s[3]" not in err and
-      "LINE 5: f_s[6]" in err and "LINE 5: f_s[9]: the servo's centre" in err and
-      "f_s[17]" in err, out + err)
+flat = out.replace(" &\n    ", " ")
+check("a servo's force, torque about its centre and centre read wall/rigid's values",
+      rc == 0 and "servo com 0 0 0.5 ctrlPV force axis 0 0 1 target_val -2 vel_max 0.1 kp "
+      "0.5 ki 0.1" in flat and
+      "fix f all ave/time 1 1 1 f_s[3] f_s[6] v_rs_s_9\n" in out and
+      "variable rs_s_9 equal (0.5+f_s[17])" in out and
+      "variable z equal (0.5+f_s[17])+(f_s[4]+0.5*f_s[2])\n" in out, out + err)
 
 REF = """region reg block 0 1 0 1 0 1 units box
 create_box 1 reg
 fix m all mesh/surface/stress file b.stl type 1 move 0 0 0.5
 fix w all wall/gran model hertz tangential history mesh n_meshes 1 meshes m
-fix f all ave/time 1 1 1 f_m[1] f_m[3] f_m[7] f_w
+fix f all ave/time 1 1 1 f_m[1] f_m[3] f_m[7] f_m[9] f_m[4]
 """
 rc, out, err = run(REF)
-check("a reference it cannot keep is named, one it can is not",
-      rc == 3 and "LINE 5: f_m[7]" in err and "LINE 5: f_w:" in err and "f_m[1]" not in err
-      and "f_m[3]" not in err, err)
+check("a stress mesh's reference point (the origin, the mesh placed 0.5 above it) is the "
+      "wall's translation, its torque about it wall/rigid's moment moved",
+      rc == 0 and "fix f all ave/time 1 1 1 f_m[1] f_m[3] f_m[15] f_m[17] v_rs_m_4\n" in out
+      and "variable rs_m_4 equal (f_m[4]-0.5*f_m[2])" in out, out + err)
 rc, out, err = run("fix a all wall/gran model hertz\n")
-check("a line it cannot read is kept and reported", rc == 3 and out == "fix a all wall/gran "
-      "model hertz\n" and "LINE 1: fix a:" in err, err)
+check("a wall/gran LIGGGHTS would refuse (no wall style): exit 1 naming the line, nothing "
+      "written", rc == 1 and out == "" and "LINE 1: ERROR: fix a: expects 'primitive' or "
+      "'mesh'" in err, err)
 rc, out, err = run("")
 check("an empty deck: exit 0, nothing out", rc == 0 and out == "", err)
 
@@ -510,7 +524,12 @@ for deck, want in examples:
     check("the doc's example is the tool's output (%s)" % deck.splitlines()[2][:40],
           rc == 0 and out == want, "\n--- tool\n%s%s" % (out, err))
 p = subprocess.run([EXE], capture_output=True, text=True)
-check("no argument: usage, exit 2", p.returncode == 2 and "usage" in p.stderr, p.stderr)
+check("no argument: usage, exit 1", p.returncode == 1 and "usage" in p.stderr, p.stderr)
+p = subprocess.run([EXE, "--help"], capture_output=True, text=True)
+doc_codes = re.search(r"<!-- exit-codes[^>]*-->\n```\n(.*?)```", doc, re.S)
+check("--help states the exit codes, as docs/migration.md does", p.returncode == 0 and
+      "Exit status:" in p.stdout and doc_codes is not None and
+      doc_codes.group(1) in p.stdout, p.stdout)
 
 print("%d passed, %d failed" % (passed, failed))
 sys.exit(1 if failed else 0)

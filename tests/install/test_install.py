@@ -24,6 +24,13 @@ outside the tree as a user would.
    on at 5/7 of it (m rho^2 / (I + m rho^2), rho = R - delta/2) to 0.5 % (the bounces
    before they roll move them a little off it).
 
+5. The walls example (examples/coupling/walls.c), built the same way, makes a rotating
+   drum (a REVOLUTION) and a baffle (a MESH) from the words of the fix wall/rigid lines of
+   a deck, and reads the particles of the deck's dump (moved by fix move: their states at
+   each step are those the fix saw): every particle's force from each wall, at the setup
+   call and every step, equals the force the fix stored (store_force), bit for bit, and
+   contacts came, slid on the turning drum and pressed on the baffle.
+
 `cmake --install` writes install_manifest.txt into the build directory; the test puts
 back what was there before. Everything else lives in a temporary directory, removed at
 the end (kept with --keep).
@@ -317,10 +324,14 @@ def check_layout(ck, a, prefix):
     path = os.path.join(binp, "rigidsurf-migrate")
     if ck.check("installed %s/rigidsurf-migrate" % a.bindir, os.access(path, os.X_OK)):
         p = subprocess.run([path, "--help"], capture_output=True, text=True, env=clean_env())
-        ck.check("rigidsurf-migrate runs and prints its usage",
-                 p.returncode == 2 and "usage: rigidsurf-migrate" in p.stderr, p.stderr)
-        # a motion, through the module installed in share/rigidsurf
+        ck.check("rigidsurf-migrate runs and prints its usage and exit codes",
+                 p.returncode == 0 and "usage: rigidsurf-migrate" in p.stdout and
+                 "Exit status" in p.stdout, p.stderr)
+        # a motion, through the modules installed in share/rigidsurf
         deck = os.path.join(os.path.dirname(os.path.normpath(prefix)), "in.wiggle")
+        with open(os.path.join(os.path.dirname(deck), "p.stl"), "w") as f:
+            f.write("solid p\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n"
+                    "   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\nendsolid p\n")
         with open(deck, "w") as f:
             f.write("fix p all mesh/surface file p.stl type 1\n"
                     "fix w all wall/gran model hertz tangential history mesh n_meshes 1 "
@@ -497,6 +508,117 @@ def check_coupling_example(ck, a, prefix, tmp):
                      "speed %.6g m/s, closed form %.6g m/s" % (speed, roll))
 
 
+# The walls example's deck: spheres moved by fix move (no integrator: the states the fix
+# sees are those dumped) into a drum's mantle that turns, and onto a baffle plate; each
+# wall stores its force on every particle. The walls' words are the deck's.
+WALLS_DRUM = ("surface inline revolution origin 0 0 0 axis 0 0 1 profile START 0.1 -0.05 "
+              "LINE 0.1 0.05 end law hertz props 5e6 0.3 5e7 0.25 0.5 0.3 0 type 2 "
+              "rotate origin 0 0 0 axis 0 0 1 period 0.5 store_force into drum")
+WALLS_BAFFLE = ("surface inline mesh baffle.stl law hertz props 5e6 0.3 5e7 0.25 0.6 0.4 0 "
+                "type 2 store_force into baffle")
+WALLS_STEPS = 400
+BAFFLE_STL = """solid baffle
+facet normal 0 -1 0
+outer loop
+vertex -0.09 0.06 -0.05
+vertex 0.09 0.06 -0.05
+vertex 0.09 0.06 0.05
+endloop
+endfacet
+facet normal 0 -1 0
+outer loop
+vertex -0.09 0.06 -0.05
+vertex 0.09 0.06 0.05
+vertex -0.09 0.06 0.05
+endloop
+endfacet
+endsolid baffle
+"""
+
+
+def walls_deck():
+    atoms = []
+    k = 0
+    for i in range(6):  # near the mantle at +x, near the baffle at +y, in between
+        th = -0.3 + 0.12 * i
+        for j, (x, y) in enumerate(((0.0972 * math.cos(th), 0.0972 * math.sin(th)),
+                                    (-0.05 + 0.02 * i, 0.0574 - 0.0001 * i),
+                                    (0.02 * i - 0.06, -0.02))):
+            k += 1
+            atoms.append("create_atoms 1 single %.6f %.6f %.6f units box" % (x, y, 0.01 * (j - 1)))
+    lines = [
+        "units si", "atom_style granular", "atom_modify map array", "boundary f f f",
+        "newton off", "communicate single vel yes",
+        "region box block -0.12 0.12 -0.12 0.12 -0.06 0.06 units box", "create_box 2 box",
+        "neighbor 0.002 bin", "neigh_modify delay 0",
+        "fix m1 all property/global youngsModulus peratomtype 5e6 5e7",
+        "fix m2 all property/global poissonsRatio peratomtype 0.3 0.25",
+        "fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5",
+        "fix m4 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3",
+        "pair_style gran model hertz tangential history", "pair_coeff * *",
+        "timestep 1e-5"] + atoms + [
+        "set group all diameter 0.004 density 2500",
+        "set group all omegax 40 omegay -25 omegaz 60",
+        "fix drum all wall/rigid " + WALLS_DRUM,
+        "fix baffle all wall/rigid " + WALLS_BAFFLE,
+        "fix push all move linear 0.3 0.25 0.02",
+        "dump d all custom 1 replay.dump id x y z vx vy vz omegax omegay omegaz radius mass "
+        "f_force_drum[1] f_force_drum[2] f_force_drum[3] f_force_baffle[1] f_force_baffle[2] "
+        "f_force_baffle[3]",
+        'dump_modify d sort id format "%d' + " %.17g" * 17 + '"',
+        "run %d" % WALLS_STEPS]
+    return "\n".join(lines) + "\n"
+
+
+def check_walls_example(ck, a, prefix, tmp):
+    bdir = os.path.join(tmp, "coupling-build")
+    exe = os.path.join(bdir, "walls")
+    if not ck.check("walls example: built with the coupling examples", os.access(exe, os.X_OK)):
+        return
+    work = os.path.join(tmp, "walls")
+    os.makedirs(work)
+    with open(os.path.join(work, "baffle.stl"), "w") as f:
+        f.write(BAFFLE_STL)
+    with open(os.path.join(work, "in.walls"), "w") as f:
+        f.write(walls_deck())
+    with open(os.path.join(work, "scene"), "w") as f:
+        f.write("dt 1e-5\nskin 0.002\nbox -0.12 0.12 -0.12 0.12 -0.06 0.06\n"
+                "wall drum %s\nwall baffle %s\n" % (WALLS_DRUM, WALLS_BAFFLE))
+    env = clean_env()
+    run(ck, "walls example: the deck runs in the installed liggghts-rigidsurf",
+        [os.path.join(prefix, a.bindir, "liggghts-rigidsurf"), "-in", "in.walls", "-log",
+         "none", "-echo", "none"], work, env)
+    out = run(ck, "walls example: runs on the deck's dump",
+              [exe, "scene", "replay.dump"], work, env)
+    ours = {}
+    for line in out.splitlines():
+        w = line.split()
+        if len(w) == 9 and w[0] == "step":
+            ours[(int(w[1]), w[3], int(w[5]))] = tuple(float(v) for v in w[6:9])
+    fix, step = {}, None
+    with open(os.path.join(work, "replay.dump")) as f:
+        lines = f.read().splitlines()
+    for i, line in enumerate(lines):
+        if line.startswith("ITEM: TIMESTEP"):
+            step = int(lines[i + 1])
+        elif step is not None and line and line[0].isdigit() and len(line.split()) == 18:
+            w = line.split()
+            fix[(step, "drum", int(w[0]))] = tuple(float(v) for v in w[12:15])
+            fix[(step, "baffle", int(w[0]))] = tuple(float(v) for v in w[15:18])
+    ck.check("walls example: a force for every particle, wall and step",
+             len(fix) == 2 * 18 * (WALLS_STEPS + 1) and set(fix) == set(ours),
+             "%d of the fix's, %d of the example's" % (len(fix), len(ours)))
+    differ = [k for k in fix if ours.get(k) != fix[k]]
+    ck.check("walls example: every force equals the fix's, bit for bit", not differ,
+             "%d differ, the first %s: %s against %s" % (
+                 len(differ), differ[0], ours.get(differ[0]), fix[differ[0]])
+             if differ else "%d forces" % len(fix))
+    touched = {w: sum(1 for k, f in fix.items() if k[1] == w and any(f)) for w in
+               ("drum", "baffle")}
+    ck.check("walls example: both walls pressed particles",
+             touched["drum"] > 100 and touched["baffle"] > 100, str(touched))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -540,7 +662,7 @@ def main():
                 os.remove(manifest)
         check_layout(ck, a, prefix)
         for step in (check_probe_cmake, check_probe_pkgconfig, check_vuinter,
-                     check_coupling_example):
+                     check_coupling_example, check_walls_example):
             try:
                 step(ck, a, prefix, tmp)
             except Failed:

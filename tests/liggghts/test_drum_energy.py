@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """A revolved LINE conserves energy and holds every sphere: elastic, frictionless spheres
-bouncing inside a drum (the per-sphere path of a revolved LINE, line_block, for every
+bouncing inside a drum (the per-sphere path of a revolved LINE, the wall's line path, for every
 held contact).
 
 30 Hertz spheres (R = 2 mm) start at random points inside a drum of radius 50 mm about

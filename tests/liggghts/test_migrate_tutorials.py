@@ -2,18 +2,23 @@
 """Every Tutorials_public deck with a `fix wall/gran`, run by stock LIGGGHTS as written
 and by liggghts-rigidsurf as rigidsurf-migrate rewrites it, and compared.
 
-Each deck is first shortened (DECKS: fewer particles, fewer steps, the reason), its
-dumps taken out and a monitor added (liglib.MONITOR: count, KE, mean vx every 1000
-steps); the shortened deck is what stock LIGGGHTS runs and what the tool migrates. The
-comparison, at the end, where both beds are at rest (KE below REST of m g H over the
-last 5000 steps) or in steady flow:
-- the same number of particles;
-- the bed's centre of mass within a tenth of a particle diameter of stock's;
-- at rest in both runs, or (a stream) the same mean x velocity over the window, to 10%.
-Decks that stock Debian LIGGGHTS cannot run, that need other couplings, or whose beds
-come to rest only past the test's CPU budget, are named in EXCLUDED with the reason; the tool is still run on each and must name the walls it keeps
-(exit 3) or translate them (exit 0) as the table says. Decks whose walls the tool keeps
-(KEPT) have nothing to compare; their report lines are checked.
+Each deck is first shortened or lengthened (DECKS, STEPS: the reason), its dumps taken
+out and a monitor added (liglib.MONITOR: count, KE, mean vx every 1000 steps); that deck
+is what stock LIGGGHTS runs and what the tool migrates. Two comparisons:
+- DECKS, at the end, where both beds are at rest (KE below REST of m g H over the last
+  5000 steps): the same number of particles, the bed's centre of mass within a tenth of
+  a particle diameter of stock's, at rest in both runs;
+- STEPS, at matching steps (every 1000 of a shortened run, with the bed's centre of mass
+  every 500) against stock's own rounding: stock runs the deck a second time with its
+  time step one unit of the last place larger, and at every step the migrated run's
+  count, KE, mean vx and centre of mass must be as close to stock's as that second run
+  is, within two decades (the largest difference over the run, at least 1e-12 of the
+  value): a difference of the walls beyond rounding stands out by many decades there,
+  before the bed's chaos has grown the rounding.
+Decks that stock Debian LIGGGHTS cannot run or that need other couplings are named in
+EXCLUDED with the reason; the tool is still run on each and must translate its walls
+(exit 0), keep them (exit 3) or refuse the deck (exit 1) as the table says. Decks whose
+walls the tool keeps (KEPT) have nothing to compare; their report lines are checked.
 
 The table in docs/migration.md (between the `migrate-table` markers) must equal the one
 this test prints from its own results' pins (the rows are the decks, what was migrated
@@ -23,8 +28,8 @@ only their rows of the doc's table); RS_MIGRATE_PART runs one of PARTS, as CTest
 """
 import os
 import re
+import shutil
 import subprocess
-import sys
 
 import liglib as L
 
@@ -56,51 +61,73 @@ DECKS = {
                          "20000 steps more with the piston stopped: as written the deck ends "
                          "with the piston rising and the gel beads still moving"),
 }
-# The CTest tests (RS_MIGRATE_PART), side by side: about 100 and 70 s of CPU.
+# Decks compared at matching steps (name: folder, deck, shortening pairs, the time step
+# as written, why). The monolayers (spheres of 1.5 mm on the floor of a 10 cm cylinder,
+# friction 0.05, restitution 0.9, no rolling friction) come to rest only after about
+# step 65000; ParScale's packing (10 spheres, restitution 0.97, in a box periodic in x
+# and y) never does.
+MONO = ("a monolayer rolling on the floor without rolling friction, at rest only after "
+        "step 65000: run to step 15000 (not 50000), the 1000 spheres inserted and landed")
+DT = "timestep\t0.00001"
+STEPS = {
+    "cohesion": ("cohesion", "in.cohesion",
+                 [("run\t\t\t50000 upto", "run\t\t\t15000 upto")], DT, MONO),
+    "noCohesion": ("cohesion", "in.noCohesion",
+                   [("run\t\t\t50000 upto", "run\t\t\t15000 upto")], DT, MONO),
+    "hysteresis": ("hysteresis", "in.hysteresis",
+                   [("run\t\t\t50000 upto", "run\t\t\t15000 upto")], DT, MONO),
+    "noHysteresis": ("hysteresis", "in.noHysteresis",
+                     [("run\t\t\t50000 upto", "run\t\t\t15000 upto")], DT, MONO),
+    "ParScale_init": ("ParScale/fluidizedBedTempParScale", "in.liggghts_init",
+                      [("run             200000", "run             20000")],
+                      "timestep\t${timeStep}",
+                      "its variables from the included in.DEM; run to step 20000 (not "
+                      "200000): 10 spheres with restitution 0.97 bounce on the floor and "
+                      "never rest"),
+}
+DECADES = 2
+# The CTest tests (RS_MIGRATE_PART), side by side: about 100, 70 and 25 s of CPU.
 PARTS = {"beds": ["newModels", "heatTransfer_1", "heatTransfer_2"],
-         "others": ["multisphere", "packing", "hydrogel_default"]}
+         "others": ["multisphere", "packing", "hydrogel_default"],
+         "steps": ["cohesion", "noCohesion", "hysteresis", "noHysteresis", "ParScale_init"]}
 # Decks whose walls the tool keeps: (folder, deck, the report the tool must give).
 KEPT = {
     "hydrogel_multicontact": ("hydrogel_multicontact", "in.hydrogel_multicontact",
                               "model words 'model hertz tangential history surface multicontact'"
                               ": surface multicontact needs LIGGGHTS's own wall"),
 }
-# Decks not run: (folder, deck, why, the report the tool must give or None).
-MONOLAYER = ("a monolayer rolling on the floor without rolling friction: %s, not at rest "
-             "(KE < 1e-4 m g H) before about step 65000 with its 1000 spheres, "
-             "over the test's CPU budget; fewer spheres roll longer")
+# Decks not run: (folder, deck, why, the tool's exit status and a report it must give
+# or None, the deck's -var arguments).
 EXCLUDED = {
     "oldModels": ("contactModels", "in.oldModels", "LIGGGHTS 2's pair_style "
                   "gran/hertz/history: Debian's 3.8.0 stops with 'Invalid pair style'",
-                  "the old wall/gran arguments"),
+                  (1, "LIGGGHTS 2's numeric arguments are not LIGGGHTS 3.8's"), []),
     "superquadric": ("superquadric", "in.particle_particle", "atom_style superquadric: "
                      "Debian's build stops with 'Invalid atom style'",
-                     "rolling_friction epsd2 surface superquadric"),
-    # The four monolayer decks: spheres of 1.5 mm on the floor of a 10 cm cylinder,
-    # friction 0.05, restitution 0.9 and no rolling friction, so a rolling sphere loses
-    # energy only in collisions. As written (1000 spheres, to step 50000) the beds are
-    # not at rest in stock LIGGGHTS (KE about 2e-4 m g H, H the box height); hysteresis
-    # comes to rest about step 65000, about 0.3 s of CPU per 1000 steps, so the eight
-    # runs would take the test's whole budget. With particles_in_region 100 (400
-    # spheres) the bed is a rolling gas: KE still 2-6e-4 m g H at step 100000 and,
-    # without cohesion, the centres of mass 0.3-0.7 d apart. The cohesive bed (sjkr)
-    # creeps at 5-7e-5 m g H from step 50000 to 70000.
-    "cohesion": ("cohesion", "in.cohesion", MONOLAYER % "the cohesive bed creeps", None),
-    "noCohesion": ("cohesion", "in.noCohesion", MONOLAYER % "the bed rolls", None),
-    "hysteresis": ("hysteresis", "in.hysteresis", MONOLAYER % "the bed rolls", None),
-    "noHysteresis": ("hysteresis", "in.noHysteresis", MONOLAYER % "the bed rolls", None),
-    "ParScale_init": ("ParScale/fluidizedBedTempParScale", "in.liggghts_init",
-                      "the packing of a ParScale (couple/pascal) case", None),
+                     (3, "rolling_friction epsd2 surface superquadric"),
+                     ["-var", "blockiness1", "2", "-var", "blockiness2", "2", "-var",
+                      "angle", "0"]),
     "ParScale_run": ("ParScale/fluidizedBedTempParScale", "in.liggghts_run",
-                     "needs couple/pascal and couple/cfd (ParScale, CFDEM)", None),
+                     "needs couple/pascal and couple/cfd (ParScale, CFDEM)", (0, None), []),
     "ParScale_bed": ("ParScale/heatTransferBed_paScal", "in.liggghts",
-                     "ParScale's particletemplate options: Debian's build stops", None),
+                     "ParScale's particletemplate options: Debian's build stops", (0, None),
+                     []),
 }
 
 
-def migrate(s, name, text):
-    path = s.write(name + ".stock.in", text)
-    p = subprocess.run([MIGRATE, path], capture_output=True, text=True, timeout=60)
+def migrate(s, name, text, folder=None, args=()):
+    """The tool's exit status, output and reports for text, written in the scratch folder
+    (or in a copy of the tutorial's folder, for the files it names)."""
+    d = s.dir
+    if folder:
+        d = os.path.join(s.dir, name + "_tool")
+        if not os.path.isdir(d):
+            shutil.copytree(folder, d)
+    path = os.path.join(d, name + ".stock.in")
+    with open(path, "w") as f:
+        f.write(text)
+    p = subprocess.run([MIGRATE, path] + list(args), capture_output=True, text=True,
+                       timeout=60)
     return p.returncode, p.stdout, p.stderr
 
 
@@ -119,10 +146,11 @@ def compare(s, name, spec, rows):
     folder, deck, radius, height, pins, pairs, why = spec
     src_dir = os.path.join(L.TUTORIALS, folder)
     stock = edit(L.no_dumps(open(os.path.join(src_dir, deck)).read()), pairs) + L.BED
-    rc, ours, err = migrate(s, name, stock)
+    rc, ours, err = migrate(s, name, stock, src_dir)
     walls = len(re.findall(r"^fix\s+\S+\s+\S+\s+wall/gran", stock, re.M))
-    s.ck.check(name + ": the tool translates every wall (exit 0)", rc == 0 and
-               "wall/gran" not in ours, "exit %d, %d wall/gran" % (rc, walls), err)
+    left = len(re.findall(r"^\s*fix\s+\S+\s+\S+\s+wall/gran", ours, re.M))
+    s.ck.check(name + ": the tool translates every wall (exit 0)", rc == 0 and not left,
+               "exit %d, %d of %d wall/gran left" % (rc, left, walls), err)
     _, a, ta, ca = L.run_tutorial(s, name, "liggghts", L.STOCK_LIGGGHTS, src_dir, stock)
     _, b, tb, cb = L.run_tutorial(s, name, "rigidsurf", s.exe, src_dir, ours)
     if not (a and b and ta and tb):
@@ -147,13 +175,75 @@ def compare(s, name, spec, rows):
     return ca + cb
 
 
+# the bed's centre of mass every 500 steps (`TZ` lines), beside liglib.MONITOR
+CENTRE = ('variable tzx equal xcm(all,x)\nvariable tzy equal xcm(all,y)\n'
+          'variable tzz equal xcm(all,z)\n'
+          'fix tzprint all print 500 "TZ $(step) ${tzx} ${tzy} ${tzz}"\n')
+
+
+def series(out):
+    """{step: values} of the TUT lines (count, KE, mean vx) and TZ lines (centre)."""
+    rows = {}
+    for line in out.splitlines():
+        w = line.split()
+        if w[:1] in (["TUT"], ["TZ"]) and len(w) > 2:
+            rows.setdefault((w[0], int(w[1])), [float(x) for x in w[2:]])
+    return rows
+
+
+def compare_steps(s, name, spec, rows):
+    """The migrated run against stock's, and stock's against its own run with a time
+    step larger by one unit of the last place, at every monitored step."""
+    folder, deck, pairs, dt, why = spec
+    src_dir = os.path.join(L.TUTORIALS, folder)
+    stock = edit(L.no_dumps(open(os.path.join(src_dir, deck)).read()), pairs)
+    stock = stock.replace(L.MONITOR, L.MONITOR + CENTRE)
+    twin = stock.replace(dt, "timestep\t1.0000000000000002e-05")
+    s.ck.check(name + ": the twin run's time step differs", twin != stock)
+    rc, ours, err = migrate(s, name, stock, src_dir)
+    s.ck.check(name + ": the tool translates every wall (exit 0)", rc == 0 and not
+               re.search(r"^\s*fix\s+\S+\s+\S+\s+wall/gran", ours, re.M), "exit %d" % rc, err)
+    cpu, got = 0.0, {}
+    for tag, exe, text in (("liggghts", L.STOCK_LIGGGHTS, stock),
+                           ("liggghts_twin", L.STOCK_LIGGGHTS, twin),
+                           ("rigidsurf", s.exe, ours)):
+        out, _, _, c = L.run_tutorial(s, name, tag, exe, src_dir, text)
+        got[tag], cpu = series(out), cpu + c
+    a, b, c = got["liggghts"], got["liggghts_twin"], got["rigidsurf"]
+    keys = sorted(k for k in a if k in b and k in c)
+    names = {"TUT": ("count", "KE", "mean vx"), "TZ": ("x_c", "y_c", "z_c")}
+    ok, worst = bool(keys), []
+    for kind in ("TUT", "TZ"):
+        for j, label in enumerate(names[kind]):
+            ks = [k for k in keys if k[0] == kind]
+            if not ks:
+                ok = False
+                continue
+            scale = max(abs(a[k][j]) for k in ks) or 1.0
+            base = max(abs(b[k][j] - a[k][j]) for k in ks)
+            mine = max(abs(c[k][j] - a[k][j]) for k in ks)
+            bound = 10 ** DECADES * max(base, 1e-12 * scale)
+            ok &= mine <= bound
+            worst.append("%s %.2g (stock's own %.2g)" % (label, mine / scale, base / scale))
+    s.ck.check(name + ": at every monitored step to step %d, as close to stock as stock's "
+               "twin run is (within %d decades)" % (max(k[1] for k in keys) if keys else 0,
+                                                    DECADES),
+               ok, "; ".join(worst))
+    tut = [k for k in keys if k[0] == "TUT"]
+    rows.append((name, "%s/%s" % (folder, deck), why, "%d" % a[tut[-1]][0] if tut else "",
+                 "matching steps: count, KE, mean vx, centre of mass as close as stock's "
+                 "twin" if ok else "FAILS"))
+    return cpu
+
+
 def body(s):
     if not s.ck.check("stock tutorials present", os.path.isdir(L.TUTORIALS), L.TUTORIALS):
         return
     only = os.environ.get("RS_MIGRATE_DECKS")
     only = set(only.split(",")) if only else None
     part = os.environ.get("RS_MIGRATE_PART")
-    s.ck.check("the parts run every deck once", sorted(sum(PARTS.values(), [])) == sorted(DECKS)
+    s.ck.check("the parts run every deck once",
+               sorted(sum(PARTS.values(), [])) == sorted(list(DECKS) + list(STEPS))
                and (part is None or part in PARTS), "part %s" % part)
     if part in PARTS:
         only = set(PARTS[part])
@@ -165,30 +255,37 @@ def body(s):
             if f.startswith("in.") and re.search(r"^\s*fix\s+\S+\s+\S+\s+wall/gran",
                                                  open(p, errors="replace").read(), re.M):
                 found.add(os.path.relpath(p, L.TUTORIALS))
-    listed = {os.path.join(v[0], v[1]) for t in (DECKS, KEPT, EXCLUDED) for v in t.values()}
+    listed = {os.path.join(v[0], v[1]) for t in (DECKS, STEPS, KEPT, EXCLUDED)
+              for v in t.values()}
     listed |= {os.path.join(f, d) for f, d in MESH_DECKS.values()}
     s.ck.check("every tutorial deck with a fix wall/gran is listed", found <= listed,
                "%d decks" % len(found), "not listed: %s" % sorted(found - listed))
     for name, (folder, deck, want) in KEPT.items():
-        rc, out, err = migrate(s, name, open(os.path.join(L.TUTORIALS, folder, deck)).read())
+        src = os.path.join(L.TUTORIALS, folder)
+        rc, out, err = migrate(s, name, open(os.path.join(src, deck)).read(), src)
         lines = [l for l in err.splitlines() if l.startswith("LINE ")]
         s.ck.check(name + ": the tool keeps its walls and says why, line by line (exit 3)",
                    rc == 3 and want in err and all(re.match(r"LINE \d+: ", l) for l in lines),
                    "%d report lines" % len(lines), err)
-    for name, (folder, deck, why, want) in EXCLUDED.items():
-        rc, out, err = migrate(s, name, open(os.path.join(L.TUTORIALS, folder, deck)).read())
-        s.ck.check(name + ": excluded (%s); the tool %s" % (
-            why, "reports its walls" if want else "translates it"),
-            (rc == 3 and want in err) if want else rc == 0, "exit %d" % rc, err)
+    for name, (folder, deck, why, (want_rc, want), args) in EXCLUDED.items():
+        src = os.path.join(L.TUTORIALS, folder)
+        rc, out, err = migrate(s, name, open(os.path.join(src, deck)).read(), src, args)
+        s.ck.check(name + ": excluded (%s); the tool exits %d%s" % (
+            why, want_rc, " naming '%s'" % want if want else ""),
+            rc == want_rc and (want is None or want in err), "exit %d" % rc, err)
     rows, cpu = [], 0.0
     for name, spec in DECKS.items():
         if only is None or name in only:
             cpu += compare(s, name, spec, rows)
+    for name, spec in STEPS.items():
+        if only is None or name in only:
+            cpu += compare_steps(s, name, spec, rows)
     print("CPU of the runs: %.0f s" % cpu)
     for name, (folder, deck, want) in KEPT.items():
         rows.append((name, "%s/%s" % (folder, deck), "not run", "", "walls kept: " + want))
-    for name, (folder, deck, why, want) in EXCLUDED.items():
-        rows.append((name, "%s/%s" % (folder, deck), "excluded: " + why, "", ""))
+    for name, (folder, deck, why, (want_rc, want), _) in EXCLUDED.items():
+        rows.append((name, "%s/%s" % (folder, deck), "excluded: " + why, "",
+                     "the tool exits %d" % want_rc))
     table = "\n".join("| %s |" % " | ".join(r) for r in rows)
     print(table)
     # The doc's rows are the decks' rows in table order; a run of some decks
@@ -197,7 +294,7 @@ def body(s):
     m = re.search(r"<!-- migrate-table -->\n(.*?)\n<!-- /migrate-table -->", doc, re.S)
     have = [l for l in (m.group(1).splitlines() if m else []) if l.startswith("| ")
             and not l.startswith("| deck")]
-    names = [n for t in (DECKS, KEPT, EXCLUDED) for n in t]
+    names = [n for t in (DECKS, STEPS, KEPT, EXCLUDED) for n in t]
     s.ck.check("docs/migration.md's table has one row per deck, in order",
                [l.split(" | ")[0][2:] for l in have] == names,
                why="the doc's rows:\n%s" % "\n".join(have))

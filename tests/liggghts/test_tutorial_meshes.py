@@ -1,12 +1,13 @@
 #!/usr/bin/python3
-"""LIGGGHTS's mesh-wall tutorials run with their mesh walls swapped by the migration
-table of docs/migration.md, and end as stock LIGGGHTS ends them.
+"""LIGGGHTS's mesh-wall tutorials run as rigidsurf-migrate rewrites them, and end as stock
+LIGGGHTS ends them.
 
 Tutorials (liggghts-doc, Tutorials_public), each run twice: by stock `liggghts` as
-written, and by `liggghts-rigidsurf` with every `fix mesh/surface` + `fix wall/gran ...
-mesh` (+ `fix move/mesh`) wall replaced by one `fix wall/rigid ... surface inline mesh`
-line with the default sides (both, as LIGGGHTS's mesh walls). Each runs until both beds
-are at rest, or in steady flow, and they are compared there. The environment variable
+written (shortened or lengthened below), and by `liggghts-rigidsurf` as
+`rigidsurf-migrate` rewrites that deck: every `fix mesh/surface` + `fix wall/gran ...
+mesh` (+ `fix move/mesh`) wall one `fix wall/rigid ... surface inline mesh` line with the
+default sides (both, as LIGGGHTS's mesh walls), the tool's exit status 0. Each runs
+until both beds are at rest, or in steady flow, and they are compared there. The environment variable
 RS_TUTORIAL names one tutorial to run alone (CTest runs each as a test of its own). Every deck prints its atom
 count, kinetic energy and mean x velocity every 1000 steps (`TUT` lines), from which:
 
@@ -43,6 +44,8 @@ over its facets of the VTK's `wear`) within 10% of the stock run's (the beds' pa
 part, as any two DEM runs do). Each run's wall-clock and CPU time is printed.
 """
 import os
+import re
+import subprocess
 
 import liglib as L
 
@@ -61,84 +64,66 @@ def edit(text, pairs):
     return text
 
 
-def meshgran():
+def migrate(s, name, text, after=None):
+    """text as rigidsurf-migrate rewrites it (the tool run in the tutorial's folder, where
+    the deck names its meshes); after: (the start of a wall/rigid line, text to add after
+    that command), for what only the migrated run can print."""
+    path = s.write(name + ".stock.in", text)
+    p = subprocess.run([MIGRATE, path], capture_output=True, text=True, timeout=60,
+                       cwd=os.path.join(ROOT, name))
+    s.ck.check(name + ": the tool migrates every wall (exit 0)", p.returncode == 0 and not
+               re.search(r"^\s*fix\s+\S+\s+\S+\s+wall/gran", p.stdout, re.M),
+               p.stderr.strip().splitlines()[-1] if p.stderr.strip() else "", p.stderr)
+    out = p.stdout
+    if after:
+        k = out.index(after[0])
+        while out[out.index("\n", k) - 1] == "&":
+            k = out.index("\n", k) + 1
+        k = out.index("\n", k) + 1
+        out = out[:k] + after[1] + out[k:]
+    return out
+
+
+def meshgran(s):
     src = open(os.path.join(ROOT, "meshGran", "in.meshGran")).read()
     ref = edit(no_dumps(src), [("nparticles 10000 particlerate 1000",
                                 "nparticles 400 particlerate 1000"),
                                ("run\t\t\t10000 upto", "run\t\t\t8000 upto"),
                                ("run\t\t\t40000 upto", "run\t\t\t60000 upto")]) + BED
-    ours = edit(ref, [
-        ("fix\t\tcad all mesh/surface file meshes/mesh.stl type 1 scale 0.001 move 0. 0. 0. "
-         "rotate axis 1. 0. 0. angle -90. #temperature 100.\n", ""),
-        ("fix granwalls all wall/gran model hooke tangential history mesh n_meshes 1 meshes cad",
-         "fix granwalls all wall/rigid surface inline mesh meshes/mesh.stl scale 0.001 "
-         "place 0 0 0 1 0 0 0 0 -1 law hooke type 1")])
-    return dict(name="meshGran", ref=ref, ours=ours, radius=0.005, height=1.23)
+    return dict(name="meshGran", ref=ref, ours=migrate(s, "meshGran", ref), radius=0.005,
+                height=1.23)
 
 
-def movingmeshgran():
+def movingmeshgran(s):
     src = open(os.path.join(ROOT, "movingMeshGran", "in.movingMeshGran")).read()
     ref = edit(no_dumps(src), [("run\t\t29999 upto", "run\t\t19999 upto"),
                                ("run\t\t30000 upto", "run\t\t20000 upto"),
                                ("run\t\t\t25000", "run\t\t\t10000\nunfix movecad2\nrun 40000")])
     ref += BED
-    # The bucket's placement: LIGGGHTS moves (-50, -250, 0), scales by 0.002 and turns
-    # 90 deg about y, then about z; that is x = a + 0.002 (X ex + Y ey + Z ez) with
-    # ex = (0, 0, -1), ey = (-1, 0, 0), a = 0.002 Rz Ry (-50, -250, 0) = (0.5, 0, 0.1).
-    # The moves become rates: -0.5, 0, -0.3 m/s for 15000 steps, then 2 pi / 2 rad/s
-    # about y through the origin, which the translation has carried to
-    # -(-0.375, 0, -0.225) in the reference configuration.
-    ours = edit(ref, [
-        ("fix\t\tcad1 all mesh/surface file meshes/bucket.stl type 1  move -50. -250. 0. &\n"
-         "\t\tscale 0.002  rotate axis 0. 1. 0. angle 90.  rotate axis 0. 0. 1. angle 90.\n", ""),
-        ("fix bucket_wall all wall/gran model hooke tangential history mesh n_meshes 1 meshes cad1",
-         "variable bvx equal (step>20000)*(step<=35000)*(-0.5)\n"
-         "variable bvz equal (step>20000)*(step<=35000)*(-0.3)\n"
-         "variable bom equal (step>35000)*(step<=45000)*2*PI/2.0\n"
-         "fix bucket_wall all wall/rigid surface inline mesh meshes/bucket.stl scale 0.002 "
-         "place 0.5 0 0.1 0.5 0 -0.9 -0.5 0 0.1 law hooke type 1 "
-         "move linear v_bvx 0 v_bvz rotate origin 0.375 0 0.225 axis 0 1 0 omega v_bom\n"
-         "variable nc equal f_bucket_wall[7]\n"
-         "fix ncmax all ave/time 100 1 100 v_nc\nvariable ncmax equal f_ncmax\n"
-         "thermo_style custom step atoms ke v_nc"),
-        ("fix\t\tmovecad1 all move/mesh mesh cad1  linear -0.5 0. -0.3\n", ""),
-        ("unfix\t\tmovecad1\n", ""),
-        ("fix\t\t\tmovecad2 all move/mesh mesh cad1   rotate origin 0. 0. 0. axis 0. 1. 0. "
-         "period 2.\n", ""),
-        ("unfix movecad2\n", "")])
+    # the bucket's contacts, which only wall/rigid's output gives (f_ID[7])
+    ours = migrate(s, "movingMeshGran", ref, (
+        "fix cad1 all wall/rigid",
+        "variable nc equal f_cad1[7]\nthermo_style custom step atoms ke v_nc\n"))
     return dict(name="movingMeshGran", ref=ref, ours=ours, radius=0.04, height=1.0,
                 contacts=True)
 
 
-def conveyor():
+def conveyor(s):
     src = open(os.path.join(ROOT, "conveyor", "in.conveyor")).read()
     ref = edit(no_dumps(src), [("run\t\t\t140000 upto", "run\t\t\t80000 upto")])
     ref += "run 400000 upto\n" + BED
-    ours = edit(ref, [
-        ("fix\t\tcv all mesh/surface file meshes/conveyor.stl type 1 surface_vel -4.5 0. 0.\n",
-         ""),
-        ("fix\t\tbx all mesh/surface file meshes/box.stl      type 1 \n", ""),
-        ("fix wall all wall/gran model hertz tangential history mesh n_meshes 2 meshes bx cv",
-         "fix belt all wall/rigid surface inline mesh meshes/conveyor.stl law hertz "
-         "type 1 surface_vel -4.5 0 0\n"
-         "fix box all wall/rigid surface inline mesh meshes/box.stl law hertz type 1")])
-    return dict(name="conveyor", ref=ref, ours=ours, radius=0.025, height=0.55, rest=1e-3,
-                stream=(50000, 80000))
+    return dict(name="conveyor", ref=ref, ours=migrate(s, "conveyor", ref), radius=0.025,
+                height=0.55, rest=1e-3, stream=(50000, 80000))
 
 
-def chute_wear():
+def chute_wear(s):
     src = open(os.path.join(ROOT, "chute_wear", "in.chute_wear")).read()
     ref = edit(no_dumps(src), [("#insert particles",
                       "dump dumpstress all mesh/gran/VTK 50000 post/mesh_*.vtk stress wear cad\n"
                       "#insert particles")]) + BED
-    ours = edit(ref, [
-        ("fix  cad all mesh/surface/stress file meshes/simple_chute.stl type 1 wear finnie\n",
-         ""),
-        ("fix  granwalls all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad",
-         "fix  granwalls all wall/rigid surface inline mesh meshes/simple_chute.stl "
-         "law hertz type 1 wear finnie vtk post/mesh_*.vtk 50000"),
-        ("dump dumpstress all mesh/gran/VTK 50000 post/mesh_*.vtk stress wear cad\n", "")])
-    return dict(name="chute_wear", ref=ref, ours=ours, radius=0.0025, stream=(80000, 100000))
+    # the dump of the chute's stress and wear: the wall's vtk, the same files
+    return dict(name="chute_wear", ref=ref, ours=migrate(s, "chute_wear", ref),
+                radius=0.0025, stream=(80000, 100000))
 
 
 def total_wear(path):
@@ -162,7 +147,8 @@ def body(s):
         return
     # RS_TUTORIAL names one tutorial (CTest runs each as a test of its own); unset, all
     only = os.environ.get("RS_TUTORIAL")
-    cases = [case() for case in (meshgran, movingmeshgran, conveyor, chute_wear)]
+    cases = [case(s) for case in (meshgran, movingmeshgran, conveyor, chute_wear)
+             if not only or case.__name__ == only.lower()]
     if only and not s.ck.check("tutorial %s known" % only,
                                any(c["name"] == only for c in cases)):
         return
@@ -223,4 +209,7 @@ def body(s):
 
 
 if __name__ == "__main__":
-    L.main_guard(L.Session(__doc__), body)
+    SES = L.Session(__doc__)
+    MIGRATE = os.environ.get("RS_MIGRATE") or os.path.join(os.path.dirname(SES.exe), "..",
+                                                           "rigidsurf-migrate")
+    L.main_guard(SES, body)

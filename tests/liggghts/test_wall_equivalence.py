@@ -102,7 +102,7 @@ def body(s):
     # 5b. held contacts for thousands of steps: without gravity, spheres sent along the
     #     inside of the drum at 1.2 m/s (and a little outward) stay pressed against it,
     #     slide, then roll around it, so that the per-sphere path for a held face contact
-    #     on a revolved LINE (line_block) carries the contact almost the whole run. The
+    #     on a revolved LINE (the wall's line path) carries the contact almost the whole run. The
     #     answer is the same drum whose mantle is two collinear LINEs: a profile of more
     #     than one segment takes the block query and the staged stages, and the sphere at
     #     z = 0 crosses the joint (its history handed over between the faces).

@@ -187,11 +187,9 @@ static void add_loads_case(int unit)
         }
         Qh[r] += q[e];
     }
-    double *fr[3] = {F[0], F[1], F[2]}, *tr[3] = {T[0], T[1], T[2]},
-           *sr[3] = {S[0], S[1], S[2]};
     int deepest[3];
     const rs_load_rows rows = {
-        .row = row, .f = fr, .t = tr, .fstore = sr, .q = Q, .deepest = deepest};
+        .row = row, .f = F[0], .t = T[0], .fstore = S[0], .q = Q, .deepest = deepest};
     rs_cblock_add_loads(&cb, &o, &p, origin, &rows, &wa);
     for (int r = 0; r < 3; r++) {
         for (int c = 0; c < 3; c++) {
@@ -234,9 +232,8 @@ static void lean_loads(rs_contact_block *cb, const rs_track_out *o,
                        const rs_particle_block *p, double rows_out[12], rs_wall_load *w)
 {
     double F[2][3] = {{1, 2, 3}, {4, 5, 6}}, T[2][3] = {{0}}, Q[2] = {0.5, -0.5};
-    double *fr[2] = {F[0], F[1]}, *tr[2] = {T[0], T[1]};
     const int row[2] = {1, 0};
-    const rs_load_rows rows = {.row = row, .f = fr, .t = tr, .q = Q};
+    const rs_load_rows rows = {.row = row, .f = F[0], .t = T[0], .q = Q};
     const double origin[3] = {0, 0, 1};
     rs_cblock_add_loads(cb, o, p, origin, &rows, w);
     for (int r = 0; r < 2; r++)

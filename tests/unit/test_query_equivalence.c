@@ -5,7 +5,7 @@
  * query of a REVOLUTION of one LINE, whose per-sphere face contacts
  * (rs_line_revolution_faces) are the block query's. */
 #include "profile.h"
-#include "rigidsurf/line_revolution.h"
+#include "line_revolution.h"
 #include "rigidsurf/motion.h"
 #include "rigidsurf/surface.h"
 #define RS_TEST_SEED 0x2545F4914F6CDD1Dull

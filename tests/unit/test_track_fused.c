@@ -1,16 +1,18 @@
-/* The usual block in one pass (rs_track_hertz) against the staged calls it stands for
- * (rs_track_update, rs_track_load, rs_cblock_inputs, rs_cblock_call with the built-in
- * hertz law, rs_cblock_add_loads, rs_track_commit), on a cylinder's mantle that turns
- * about a tilted axis and translates: the forces, torques, stored forces, per-atom rows,
- * the wall's sums and every history value, bit for bit, over increments in which
- * contacts stick, slide and open, after one in which they begin (the tracker's general
- * pass, then the staged calls). A block that does not qualify is left to the
- * staged calls, and a NaN in the law's stress is reported as rs_law_call reports it. */
+/* The built-in hertz law's fused kernel (rs_track_fused, the usual block in one pass)
+ * against the staged calls it stands for (rs_track_update, rs_track_load,
+ * rs_cblock_inputs, rs_cblock_call with the built-in hertz law, rs_cblock_add_loads,
+ * rs_track_commit), on a cylinder's mantle that turns about a tilted axis and translates:
+ * the forces, torques, stored forces, per-atom rows, the wall's sums and every history
+ * value, bit for bit, over increments in which contacts stick, slide and open, after one
+ * in which they begin (the tracker's general pass, then the staged calls). A block that
+ * does not qualify is left to the staged calls, and a NaN in the law's stress is reported
+ * as rs_law_call reports it, with nothing written: the rows, the slots and the
+ * directories are as before the call. */
 #include "rigidsurf/contact_block.h"
 #include "rigidsurf/law.h"
 #include "rigidsurf/motion.h"
-#include "rigidsurf/track_hertz.h"
 #include "rs_test.h"
+#include "track_fused.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -33,7 +35,6 @@ typedef struct engine {
     double dir[NP][CAP], hist[NP][CAP * 8];
     double *dp[NP], *hp[NP];
     double f[NP][3], t[NP][3], fs[NP][3], o6[NP][6];
-    double *fr[NP], *tr[NP], *sr[NP], * or [NP];
     rs_track_out out;
     rs_wall_load w;
 } engine;
@@ -55,7 +56,6 @@ static void engine_init(engine *g, const rs_tracker *tr)
         g->dp[i] = g->dir[i];
         g->hp[i] = g->hist[i];
         rs_track_clear(tr, g->dir[i], g->hist[i], 0);
-        g->fr[i] = g->f[i], g->tr[i] = g->t[i], g->sr[i] = g->fs[i], g->or [i] = g->o6[i];
     }
 }
 
@@ -129,9 +129,11 @@ static void clear_rows(engine *g)
     memset(g->o6, 0, sizeof g->o6);
 }
 
+/* The engine's rows; the fused kernel also writes each particle's rdisp and stress into
+ * o6 (the staged calls write them below, as the wall does). */
 static rs_load_rows rows_of(engine *g)
 {
-    return (rs_load_rows){.f = g->fr, .t = g->tr, .fstore = g->sr};
+    return (rs_load_rows){.f = g->f[0], .t = g->t[0], .fstore = g->fs[0], .out6 = g->o6[0]};
 }
 
 /* The staged calls, as the LIGGGHTS fix makes them; continue_only: the tracker ran. */
@@ -202,8 +204,8 @@ static void step_both(scene *sc, engine *A, engine *B, rs_contact_block *cb, int
     rs_particles p = block(sc, B);
     const rs_load_rows rows = rows_of(B);
     *done = -1;
-    ENSURE(rs_track_hertz(&sc->tr, &sc->s, &sc->mo, DT, &p, &sc->c, &B->out, props, sc->s.a,
-                          &rows, B->or, &B->w, done, &err) == RS_OK);
+    ENSURE(rs_track_fused(&sc->tr, rs_law_find("hertz"), &sc->s, &sc->mo, DT, &p, &sc->c,
+                          &B->out, props, sc->s.a, &rows, &B->w, done, &err) == RS_OK);
     if (!*done)
         ENSURE(staged(sc, B, cb, 1, &err) == RS_OK);
 }
@@ -265,23 +267,38 @@ static void test_one_pass_is_the_staged_calls(void)
     ENSURE(done == 1);
     ENSURE(same_engines(&A, &B));
 
-    /* A NaN velocity: the law's stress is NaN, reported as rs_law_call reports it. */
-    int kn = 0; /* a sphere pressed into the wall */
-    while (kn < NP - 1 && !(A.out.rdisp[3 * kn] > 0.0))
-        kn++;
+    /* A NaN velocity: the law's stress is NaN, reported as rs_law_call reports it; the
+     * sphere is the last one pressed into the wall, in the block's last run, so that the
+     * runs before it hold finite stresses: the call writes nothing, not the rows, nor the
+     * slots, nor the directories. */
+    int kn = NP - 1; /* a sphere pressed into the wall */
+    while (kn > 0 && !(A.out.rdisp[3 * kn] > 0.0))
+        kn--;
+    ENSURE(kn >= 3 * 32);
     sc.vx[kn] = NAN;
     query(&sc);
+    clear_rows(&B);
+    for (int i = 0; i < NP; i++)
+        for (int d = 0; d < 3; d++)
+            B.f[i][d] = 0.25 * i + d, B.o6[i][d] = -1.0 - i;
+    static engine before;
+    memcpy(&before, &B, sizeof B);
     rs_error ea, eb;
     ENSURE(staged(&sc, &A, &cb, 0, &ea) == RS_ERR_NONFINITE);
     rs_particles p = block(&sc, &B);
     const rs_load_rows rows = rows_of(&B);
     done = 1;
-    ENSURE(rs_track_hertz(&sc.tr, &sc.s, &sc.mo, DT, &p, &sc.c, &B.out, props, sc.s.a,
-                          &rows, B.or, &B.w, &done, &eb) == RS_ERR_NONFINITE);
+    ENSURE(rs_track_fused(&sc.tr, rs_law_find("hertz"), &sc.s, &sc.mo, DT, &p, &sc.c,
+                          &B.out, props, sc.s.a, &rows, &B.w, &done,
+                          &eb) == RS_ERR_NONFINITE);
     ENSURE(done == 0);
     char who[32];
     snprintf(who, sizeof who, "particle %d,", sc.id[kn]);
     ENSURE(strcmp(ea.msg, eb.msg) == 0 && strstr(ea.msg, who) != NULL);
+    ENSURE(!memcmp(before.dir, B.dir, sizeof B.dir));
+    ENSURE(!memcmp(before.hist, B.hist, sizeof B.hist));
+    ENSURE(!memcmp(before.f, B.f, sizeof B.f) && !memcmp(before.t, B.t, sizeof B.t));
+    ENSURE(!memcmp(before.fs, B.fs, sizeof B.fs) && !memcmp(before.o6, B.o6, sizeof B.o6));
 
     rs_cblock_free(&cb);
     rs_track_out_free(&A.out);
@@ -290,7 +307,7 @@ static void test_one_pass_is_the_staged_calls(void)
     rs_surface_free(&sc.s);
 }
 
-/* The entry for a caller that has found the block usual (the fix's line_block): the same
+/* The entry for a caller that has found the block usual (the wall's line path): the same
  * numbers as the staged calls, and an error, not a silent result, for a block it cannot
  * take. */
 static void test_usual_entry_is_the_staged_calls(void)
@@ -299,6 +316,7 @@ static void test_usual_entry_is_the_staged_calls(void)
     static engine A, C;
     rs_contact_block cb;
     setup(&sc, &A, &C, &cb);
+    const rs_law *hertz = rs_law_find("hertz");
     rs_error err;
     int all_same = 1;
     for (int step = 0; step < 12; step++) {
@@ -313,8 +331,8 @@ static void test_usual_entry_is_the_staged_calls(void)
         } else {
             rs_particles p = block(&sc, &C);
             const rs_load_rows rows = rows_of(&C);
-            ENSURE(rs_track_hertz_usual(&sc.tr, &sc.mo, DT, &p, &sc.c, &C.out, props,
-                                        sc.s.a, &rows, C.or, &C.w, &err) == RS_OK);
+            ENSURE(rs_track_fused_usual(&sc.tr, hertz, &sc.mo, DT, &p, &sc.c, &C.out, props,
+                                        sc.s.a, &rows, &C.w, &err) == RS_OK);
         }
         all_same &= same_engines(&A, &C);
     }
@@ -325,18 +343,18 @@ static void test_usual_entry_is_the_staged_calls(void)
     rs_particles p = block(&sc, &C);
     const rs_load_rows rows = rows_of(&C);
     sc.c.point[2] = 3; /* contact 2 names another particle */
-    ENSURE(rs_track_hertz_usual(&sc.tr, &sc.mo, DT, &p, &sc.c, &C.out, props, sc.s.a, &rows,
-                                C.or, &C.w, &err) == RS_ERR_ARG);
-    ENSURE(strstr(err.msg, "rs_track_hertz_usual") != NULL);
+    ENSURE(rs_track_fused_usual(&sc.tr, hertz, &sc.mo, DT, &p, &sc.c, &C.out, props, sc.s.a,
+                                &rows, &C.w, &err) == RS_ERR_ARG);
+    ENSURE(strstr(err.msg, "rs_track_fused_usual") != NULL);
     sc.c.point[2] = 2;
     p.mass = NULL; /* not spheres with masses */
-    ENSURE(rs_track_hertz_usual(&sc.tr, &sc.mo, DT, &p, &sc.c, &C.out, props, sc.s.a, &rows,
-                                C.or, &C.w, &err) == RS_ERR_ARG);
+    ENSURE(rs_track_fused_usual(&sc.tr, hertz, &sc.mo, DT, &p, &sc.c, &C.out, props, sc.s.a,
+                                &rows, &C.w, &err) == RS_ERR_ARG);
     p = block(&sc, &C);
     const double belt[3] = {0.0, 0.0, 0.1}; /* a surface velocity */
     memcpy(sc.mo.belt, belt, sizeof belt);
-    ENSURE(rs_track_hertz_usual(&sc.tr, &sc.mo, DT, &p, &sc.c, &C.out, props, sc.s.a, &rows,
-                                C.or, &C.w, &err) == RS_ERR_ARG);
+    ENSURE(rs_track_fused_usual(&sc.tr, hertz, &sc.mo, DT, &p, &sc.c, &C.out, props, sc.s.a,
+                                &rows, &C.w, &err) == RS_ERR_ARG);
 
     rs_cblock_free(&cb);
     rs_track_out_free(&A.out);

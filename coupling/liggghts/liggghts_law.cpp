@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <sstream>
 
 using namespace LAMMPS_NS;
 namespace LCM = LIGGGHTS::ContactModels;
@@ -237,8 +238,9 @@ LiggghtsLaw::~LiggghtsLaw()
     delete model_;
 }
 
-int LiggghtsLaw::add_history_value(std::string, std::string)
+int LiggghtsLaw::add_history_value(std::string name, std::string)
 {
+    hist_names_.push_back(name);
     return nhist_++;
 }
 
@@ -266,7 +268,7 @@ void LiggghtsLaw::wall_rows()
     wrows_.push_back(wall_spin_);
 }
 
-bool LiggghtsLaw::contact(const LiggghtsContact &c, double F[3], double T[3])
+LiggghtsLaw::Result LiggghtsLaw::contact(const LiggghtsContact &c, double F[3], double T[3])
 {
     F[0] = F[1] = F[2] = T[0] = T[1] = T[2] = 0.0;
     const double gap = -c.overlap;
@@ -274,8 +276,9 @@ bool LiggghtsLaw::contact(const LiggghtsContact &c, double F[3], double T[3])
     if (!touching && !(gap < (close_factor() - 1.0) * c.radius)) {
         for (int h = 0; h < nhist_; h++)
             c.history[h] = 0.0;
-        return false;
+        return kNone;
     }
+    hist_in_.assign(c.history, c.history + nhist_);
     LCM::SurfacesIntersectData sd;
     sd.is_wall = true;
     sd.radi = c.radius;
@@ -323,11 +326,55 @@ bool LiggghtsLaw::contact(const LiggghtsContact &c, double F[3], double T[3])
     }
     atom->v = vsrc_;
     atom->omega = wsrc_;
+    bool finite = true;
+    for (int h = 0; h < nhist_; h++)
+        finite = finite && std::isfinite(c.history[h]);
+    for (int d = 0; d < 3; d++)
+        finite =
+            finite && std::isfinite(fi.delta_F[d]) && std::isfinite(fi.delta_torque[d]);
+    if (!finite) {
+        nonfinite(c, hist_in_.data(), fi.delta_F, fi.delta_torque);
+        return kNotFinite;
+    }
     if (!sd.has_force_update)
-        return false;
+        return kNone;
     for (int d = 0; d < 3; d++) {
         F[d] = fi.delta_F[d];
         T[d] = fi.delta_torque[d];
     }
-    return true;
+    return kForce;
+}
+
+/* LIGGGHTS's models have no answer outside the states they were written for, and return
+ * NaN there (stock LIGGGHTS then loses the particle and ends with a segmentation fault).
+ * The message gives what the model started from. thornton_ning (Thornton and Ning's JKR
+ * model) takes the square root of F + fc, with F its last normal force and fc = 3/2 pi
+ * gamma R the pull-off force, which it keeps in its history as 'fo': a contact whose
+ * force fell below -fc within one step (the whole adhesive branch unloaded at once)
+ * cannot go on. */
+void LiggghtsLaw::nonfinite(const LiggghtsContact &c, const double *h0, const double F[3],
+                            const double T[3])
+{
+    std::ostringstream o;
+    o.precision(6);
+    o << "law liggghts " << desc_ << ": LIGGGHTS's model gives particle "
+      << lmp_->atom->tag[c.i] << " (overlap " << c.overlap << ") a force (" << F[0] << ", "
+      << F[1] << ", " << F[2] << ") and torque (" << T[0] << ", " << T[1] << ", " << T[2]
+      << ") that are not finite, from the contact's history";
+    int fold = -1, fo = -1;
+    for (int h = 0; h < nhist_; h++) {
+        o << (h ? ", " : " ") << hist_names_[h] << " = " << h0[h];
+        if (hist_names_[h] == "force_old")
+            fold = h;
+        else if (hist_names_[h] == "fo")
+            fo = h;
+    }
+    if (fold >= 0 && fo >= 0 && h0[fold] < -std::fabs(h0[fo]))
+        o << ". Its last normal force " << h0[fold]
+          << " lies below the pull-off force -fc = " << -std::fabs(h0[fo])
+          << " (fc = 3/2 pi surfaceEnergy R), where thornton_ning's JKR branch ends: the "
+             "contact unloaded past its whole adhesive branch within one time step. A time "
+             "step small enough that the force changes by a fraction of fc per step "
+             "follows the branch";
+    failure_ = o.str();
 }

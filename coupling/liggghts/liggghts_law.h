@@ -66,11 +66,24 @@ class LiggghtsLaw final : public LIGGGHTS::IContactHistorySetup
         return desc_;
     }
 
-    /// Evaluates one contact: the force and torque on the particle. Returns false when
-    /// the model applies nothing (apart beyond the contact distance, or a close contact
-    /// whose model asked no force); then F and T are zero. A contact apart beyond the
-    /// contact distance has its history cleared, as LIGGGHTS's walls clear it.
-    bool contact(const LiggghtsContact &c, double F[3], double T[3]);
+    /// What contact() found.
+    enum Result {
+        kNone,     ///< the model applies nothing; F and T are zero
+        kForce,    ///< F and T are the model's
+        kNotFinite ///< the model returned a value that is not finite: failure() says why
+    };
+    /// Evaluates one contact: the force and torque on the particle. kNone when the model
+    /// applies nothing (apart beyond the contact distance, or a close contact whose model
+    /// asked no force). A contact apart beyond the contact distance has its history
+    /// cleared, as LIGGGHTS's walls clear it. A force, torque or history value that is
+    /// not finite gives kNotFinite, and failure() names the particle, the overlap and the
+    /// history the model started from.
+    Result contact(const LiggghtsContact &c, double F[3], double T[3]);
+    /// The message of the last kNotFinite.
+    const std::string &failure() const
+    {
+        return failure_;
+    }
 
     int add_history_value(std::string name, std::string newtonflag) override;
 
@@ -78,9 +91,15 @@ class LiggghtsLaw final : public LIGGGHTS::IContactHistorySetup
     /// atom->v and atom->omega with one row more, at atom->nmax, for the wall (see
     /// contact()); rebuilt when the atom arrays move or grow.
     void wall_rows();
+    /// failure_ for a contact whose model returned a value that is not finite; h0: the
+    /// history the call started from.
+    void nonfinite(const LiggghtsContact &c, const double *h0, const double F[3],
+                   const double T[3]);
 
     LAMMPS *lmp_;
-    std::string desc_;
+    std::string desc_, failure_;
+    std::vector<std::string> hist_names_; ///< the model's history values, by offset
+    std::vector<double> hist_in_;         ///< the history a call starts from
     struct Model;
     Model *model_;
     int nhist_;

@@ -26,7 +26,8 @@ int rs_line_revolution(const rs_surface *s);
 /// c's columns (xm, nrm, t1, t2, dist, curv, share, point, feature) must hold m; c->n is
 /// set to m, c->shared and c->witness to 0. With c->xm, c->curv and c->share NULL the
 /// master points, curvatures and shares are left out (the frame, distance, point and
-/// feature are all the one pass of rs_track_hertz_usual reads).
+/// feature are all a law's fused kernel reads, rs_track_fused_usual). Internal to the
+/// library: the wall's line path (src/wall/wall_line.c) calls it.
 void rs_line_revolution_faces(const rs_surface *s, const rs_pose *pose, int m,
                               const double *x, const double *y, const double *z,
                               const double *radius, double gap_max, rs_contacts *c,

@@ -1,0 +1,149 @@
+/* The wall's line path: a block on a revolved LINE (a cylinder's mantle, a cone) with a law
+ * whose fused kernel takes it, in runs of spheres: the spheres whose directory is usual
+ * (rs_wall.usual: one contact, in slot 0) gathered from the engine's arrays, their face
+ * contacts computed (rs_line_revolution_faces) and those that still hold just that
+ * contact passed to the kernel (rs_track_fused_usual), so that no block-wide column is
+ * written and no directory row read; the other spheres go through wall_block afterwards,
+ * but those whose distance bound keeps them away. */
+#include "wall_impl.h"
+
+#include "line_revolution.h"
+#include "track_fused.h"
+
+#include <math.h>
+#include <string.h>
+
+int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
+                    const int *idx, int n, double dt, rs_error *err)
+{
+    const double *props = NULL;
+    int nprops = 0;
+    const int t0 = b->type ? b->type[idx[0]] : 1;
+    if (b->still || !wall_block_props(w, t0, &props, &nprops) || nprops != w->law->nprops ||
+        !w->law->fused->takes(&w->tracker, props, nprops))
+        return wall_block(w, b, rows, idx, n, dt, 0, err);
+    const double *x = b->x, *v = b->v, *om = b->omega;
+    const double *radius = b->radius, *rmass = b->mass;
+    const int *tag = b->id;
+    const double gap_max = w->tracking + w->lookahead;
+    double origin[3];
+    rs_pose_to_global(&w->motion->pose, w->surf->a, origin);
+    const rs_motion *mp = w->moving || w->belt ? w->motion : NULL;
+    const size_t ss = (size_t)wall_slot_size(w);
+
+    /* One run: the query's columns at every sphere, then those of the spheres still usual
+     * compacted in place to the front (the kernel reads entries 0 .. nu-1). */
+    enum { M = RS_TRACK_LINE_RUN };
+    double px[M], py[M], pz[M], pvx[M], pvy[M], pvz[M], pwx[M], pwy[M], pwz[M], pr[M],
+        pm[M];
+    double *ph[M];
+    int pid[M], row[M], face[M];
+    /* the frames, distances and features: what the kernel reads (no master points,
+     * curvatures or shares: rs_line_revolution_faces leaves them out) */
+    double cn[3][M], ct1[3][M], ct2[3][M], cd[M];
+    int cpt[M], cft[M];
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    c.cap = M;
+    for (int d = 0; d < 3; d++)
+        c.nrm[d] = cn[d], c.t1[d] = ct1[d], c.t2[d] = ct2[d];
+    c.dist = cd, c.point = cpt, c.feature = cft;
+    w->nrest = 0;
+    const int *const usual = w->usual;
+    double live[M];
+    double *pl[M];
+    for (int j = 0; j < M; j++)
+        pl[j] = &live[j];
+    int next = 0;
+    while (next < n) {
+        /* The next run: particles whose directory is usual (their one contact in slot 0,
+         * which the kernel takes if it is still the face's); the others join the rest,
+         * but those whose distance bound keeps them away. */
+        int ix[M], m = 0;
+        for (; next < n && m < M; next++) {
+            const int i = idx[next];
+            if (usual[i])
+                ix[m++] = i;
+            else if (!(w->bounds_ok && wall_kept_away(w, x, radius, i)))
+                w->rest[w->nrest++] = i;
+        }
+        if (m == 0)
+            continue;
+        for (int j = 0; j < m; j++) {
+            const int i = ix[j];
+            const double *xi = x + 3 * (size_t)i, *vi = v + 3 * (size_t)i;
+            px[j] = xi[0], py[j] = xi[1], pz[j] = xi[2];
+            pvx[j] = vi[0], pvy[j] = vi[1], pvz[j] = vi[2];
+            pr[j] = radius[i], pm[j] = rmass[i];
+            pid[j] = tag ? tag[i] : i + 1;
+            ph[j] = w->hist + (size_t)i * ss;
+            row[j] = i;
+        }
+        if (om)
+            for (int j = 0; j < m; j++) {
+                const double *wi = om + 3 * (size_t)ix[j];
+                pwx[j] = wi[0], pwy[j] = wi[1], pwz[j] = wi[2];
+            }
+        else
+            for (int j = 0; j < m; j++)
+                pwx[j] = pwy[j] = pwz[j] = 0.0;
+        rs_line_revolution_faces(w->surf, &w->motion->pose, m, px, py, pz, pr, gap_max, &c,
+                                 face);
+        rs_frame_orient(w->surf->ops->frame, &c, 0, m);
+        /* Usual still: the face contact within the tracking thickness (keep_tracked's
+         * test and the tracker's), the feature the directory holds. */
+        int nu = 0;
+        for (int j = 0; j < m; j++) {
+            const int still_usual = face[j] && c.dist[j] <= w->tracking + pr[j] &&
+                                    !(c.dist[j] - pr[j] > w->tracker.tracking) &&
+                                    usual[row[j]] == c.feature[j] + 1;
+            if (!still_usual) {
+                w->rest[w->nrest++] = row[j];
+                continue;
+            }
+            if (nu != j) {
+                px[nu] = px[j], py[nu] = py[j], pz[nu] = pz[j];
+                pvx[nu] = pvx[j], pvy[nu] = pvy[j], pvz[nu] = pvz[j];
+                pwx[nu] = pwx[j], pwy[nu] = pwy[j], pwz[nu] = pwz[j];
+                pr[nu] = pr[j], pm[nu] = pm[j], pid[nu] = pid[j];
+                ph[nu] = ph[j], row[nu] = row[j];
+                for (int d = 0; d < 3; d++)
+                    cn[d][nu] = cn[d][j], ct1[d][nu] = ct1[d][j], ct2[d][nu] = ct2[d][j];
+                cd[nu] = cd[j], cft[nu] = cft[j];
+            }
+            /* the directory entry the kernel reads: the one the row holds */
+            live[nu] = RS_DIR_LIVE(cft[nu]);
+            cpt[nu] = nu;
+            nu++;
+        }
+        if (nu == 0)
+            continue;
+        c.n = nu;
+        rs_particle_block p;
+        memset(&p, 0, sizeof p);
+        p.n = nu;
+        p.x = px, p.y = py, p.z = pz;
+        p.vx = pvx, p.vy = pvy, p.vz = pvz;
+        p.wx = pwx, p.wy = pwy, p.wz = pwz;
+        p.radius = pr, p.mass = pm, p.id = pid, p.row = row;
+        p.dir = pl, p.hist = ph;
+        p.slot_stride = wall_slot_stride(w);
+        rs_load_rows lr = wall_load_rows(w, rows, row, 0);
+        lr.out6 = rows->peratom;
+        rs_wall_load wl;
+        const int rc = rs_track_fused_usual(&w->tracker, w->law, mp, dt, &p, &c, &w->tout,
+                                            props, origin, &lr, &wl, err);
+        if (rc)
+            return rc;
+        wall_add_load(w, &wl, 0);
+    }
+    /* The rest, in their order, in blocks as wall_compute forms them (one particle type).
+     */
+    for (int b0 = 0; b0 < w->nrest; b0 += w->bcap) {
+        const int nb = w->nrest - b0 < w->bcap ? w->nrest - b0 : w->bcap;
+        const int rc = wall_block(w, b, rows, w->rest + b0, nb, dt, 0, err);
+        if (rc)
+            return rc;
+    }
+    return RS_OK;
+}

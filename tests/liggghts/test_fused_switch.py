@@ -1,0 +1,84 @@
+#!/usr/bin/python3
+"""Keyword fused: the law's fused kernel against the staged calls, in the fix.
+
+The static, flowing and bouncing decks of bench/liggghts/bench_walls.py (sections 1, 1b
+and 1e: a monolayer of spheres pressed on the inside of a REVOLUTION cylinder by a radial
+push, at rest, rolling around it, or kicked off it and bouncing back), each run with
+`law hertz` as it is (where every sphere of a block holds one contact, the tracker, the
+law and the loads run in one pass: on the revolved LINE per run of spheres) and with
+`fused no` (every block through the staged calls). The positions, velocities and spins of
+every sphere and the wall's per-atom array (peratom yes) at the end are the same, bit for
+bit, and so they are when the bouncing bed also rolls around the cylinder with its atoms
+sorted every 20 steps, so that spheres change places in the atom arrays while some hold
+their contact and others fly (LIGGGHTS's atom sort permutes the wall's per-particle
+history through its copy callback); the wall's
+global sums agree to rounding (1e-12 relative: the line path adds them up per run of
+spheres, the staged calls per block).
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                "bench", "liggghts"))
+import liglib as L  # noqa: E402
+import bench_walls as B  # noqa: E402
+
+N = 1500
+
+
+def deck(s, kind, fused):
+    data, height = B.write_bed(s.dir, N, None, "mono_%s.data" % kind)
+    bouncing = kind.startswith("bouncing")
+    steps = 400 if not bouncing else 600
+    d = B.wall_deck("ours", data, steps, height, flow=kind == "flowing",
+                    kick=B.VKICK if bouncing else 0.0)
+    if kind == "bouncing_sorted":
+        # the bouncing bed rolling around the cylinder too, kicked at speeds that differ
+        # from sphere to sphere, its atoms sorted by bins of R every 20 steps: spheres
+        # change places in the atom arrays while some hold their contact and others fly
+        d = d.replace("atom_modify map array\n",
+                      "atom_modify map array sort 20 %r\n" % B.R)
+        d = d.replace("set group all vx v_kx vy v_ky\n",
+                      "variable hx atom (1.0+0.6*sin(id))*v_kx-%r*y/sqrt(x*x+y*y)\n"
+                      "variable hy atom (1.0+0.6*sin(id))*v_ky+%r*x/sqrt(x*x+y*y)\n"
+                      "set group all vx v_hx vy v_hy\n" % (B.VFLOW, B.VFLOW))
+    fix = "law hertz type 2 peratom yes%s\n" % ("" if fused else " fused no")
+    d = d.replace("law hertz type 2\n", fix)
+    tag = "%s_%s" % (kind, "fused" if fused else "staged")
+    out = ("thermo_style custom step f_w[1] f_w[2] f_w[7] f_w[8] f_w[11]\n"
+           "thermo_modify format float %.17g\n")
+    out += L.dump_lines("d", steps, tag + ".dump",
+                        L.DUMP_COLS + " f_w[1] f_w[2] f_w[3] f_w[4] f_w[5] f_w[6]")
+    return d.replace("run %d\n" % steps, out + "run %d\n" % steps), tag, steps
+
+
+def body(s):
+    for kind in ("static", "flowing", "bouncing", "bouncing_sorted"):
+        texts = []
+        for fused in (True, False):
+            d, tag, steps = deck(s, kind, fused)
+            _, out = s.run(tag, d, timeout=600)
+            with open(s.path(tag + ".dump")) as f:
+                dump = f.read()
+            # the wall's sums at the last step, from the thermo line
+            wall = [l for l in out.splitlines() if l.split()[:1] == [str(steps)]]
+            texts.append((dump, wall[-1] if wall else ""))
+        (da, wa), (db, wb) = texts
+        rows = [l for l in da.splitlines() if l and l[0].isdigit() and len(l.split()) > 10]
+        s.ck.check(kind + ": the dump holds every sphere at the end", len(rows) >= N,
+                   "%d rows" % len(rows))
+        touching = sum(1 for l in rows if float(l.split()[10]) > 0.0)
+        s.ck.check(kind + ": spheres press the wall at the end (rdisp1 > 0)", touching > 0,
+                   "%d of %d" % (touching, len(rows)))
+        s.ck.check(kind + ": fused and staged give the same spheres, bit for bit", da == db)
+        va = [float(v) for v in wa.split()[1:]]
+        vb = [float(v) for v in wb.split()[1:]]
+        worst = max((abs(a - b) / max(abs(b), 1e-300) for a, b in zip(va, vb)), default=1.0)
+        s.ck.check(kind + ": fused and staged give the same wall sums to 1e-12",
+                   len(va) == 5 and len(vb) == 5 and va[2] == vb[2] and worst <= 1e-12,
+                   "fused %s, staged %s" % (wa.strip(), wb.strip()))
+
+
+if __name__ == "__main__":
+    L.main_guard(L.Session(__doc__), body)
