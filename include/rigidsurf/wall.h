@@ -128,7 +128,8 @@ typedef struct rs_wall_block {
     const double *area;        ///< contact areas areaSlv (n); NULL: the wall's `area`
     const double *const *pred; ///< the `predef` fields, one array (n) per name; or NULL
     const rs_body *body; ///< per particle its convex body (n; shape NULL: a sphere), or
-                         ///< NULL for spheres only
+                         ///< NULL for spheres only; bodies need a run that asks every
+                         ///< particle (rs_wall_run.every_particle)
     long long step;      ///< the engine's step number (VTK names, messages)
     int inc;             ///< this call's increment within the run, from 1 (kInc)
     double time;         ///< the time at the start of this call's increment (at a

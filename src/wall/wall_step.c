@@ -61,6 +61,16 @@ int wall_compute(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows, d
         return rs_error_set(err, RS_ERR_ARG,
                             "wall: %d particles but history for %d (rs_wall_grow)", b->n,
                             w->nmax);
+    /* A body reaches farther than its characteristic length, and turns without moving:
+     * the candidate lists, distance bounds and line path, made for spheres, would miss
+     * its contacts. */
+    for (int i = 0; b->body && !w->run.every_particle && i < b->n; i++)
+        if (b->body[i].shape && wall_in_group(b, i))
+            return rs_error_set(err, RS_ERR_ARG,
+                                "wall: particle %d is a convex body, which a wall takes in "
+                                "a run that asks every particle at every step "
+                                "(rs_wall_run.every_particle)",
+                                b->id ? b->id[i] : i + 1);
     for (int d = 0; d < 3; d++)
         w->f_wall[d] = w->m_wall[d] = 0.0;
     w->se_now = 0.0;
