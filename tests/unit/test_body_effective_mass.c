@@ -208,9 +208,9 @@ static void test_restitution_does_not_depend_on_how_many_points_touch(void)
             drop_out o;
             ENSURE(drop(which, law, &o));
             ENSURE(o.points == points[which]);
-            /* measured: 2e-6 to 3.5e-5 (before: 0.366 and 0.223 for hertz e = 0.5 on two
-             * and four points); on the corner 2.1e-3 and 1.1e-3, the lever arm turning by a
-             * few mrad during the impact */
+            /* measured: 2e-6 to 3.5e-5 (the body's mass once per point would give 0.366
+             * and 0.223 for hertz e = 0.5 on two and four points); on the corner 2.1e-3
+             * and 1.1e-3, the lever arm turning by a few mrad during the impact */
             ENSURE_NEAR(o.e, closed[law], which == 4 ? 5e-3 : 1e-4);
             if (which < 4)
                 continue;
@@ -268,7 +268,8 @@ static void test_sharp_box_with_zeta_t_0_7_slides_when_it_should(void)
         double a;
         ENSURE(slope(th, mu, &a));
         /* measured: sticks to 1e-15 g at 20 degrees, slides at the closed form to 1e-10
-         * (before: stuck up to 40 degrees, 1.4 m/s^2 instead of 4.4 at 50) */
+         * (the body's mass once per point would keep it stuck up to 40 degrees, and give
+         * 1.4 m/s^2 instead of 4.4 at 50) */
         if (tan(th) < mu)
             ENSURE_SMALL(a, 1e-6 * g);
         else

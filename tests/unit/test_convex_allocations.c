@@ -1,10 +1,9 @@
 /* The convex geometry's use of the heap, counted by the link (tests/CMakeLists.txt wraps
  * malloc, calloc, realloc, free and C++'s operator new and delete of this program):
- * - a body's contacts with a MESH ask the heap nothing for a few candidate triangles
- *   (before: five allocations a body a call);
+ * - a body's contacts with a MESH ask the heap nothing for a few candidate triangles;
  * - a hull whose allocations fail, each in turn, answers RS_ERR_NOMEM without arrays
- *   and gives back every block from its first C allocation on (before: its output arrays
- *   leaked when a vector threw after them); once none fails it is the hull of the run
+ *   and gives back every block from its first C allocation on (its output arrays too,
+ *   when a vector throws after them); once none fails it is the hull of the run
  *   that never failed. Under the sanitizers, whose allocators answer an impossible
  *   request by stopping the program, C++'s allocations are not made to fail. */
 #include "rigidsurf/convex.h"

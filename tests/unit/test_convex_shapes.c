@@ -552,8 +552,8 @@ static void test_large_hull_support_climbs_to_the_top(void)
 }
 
 /* A make call that fails leaves no shape: the mass properties and a body refuse it by
- * name (before: the shape as it was, and "out of memory"); a hull whose volume is lost
- * to rounding is a geometry error (before: "out of memory"). */
+ * name; a hull whose volume is lost to rounding is a geometry error, not "out of
+ * memory". */
 static void test_a_failed_make_leaves_no_shape(void)
 {
     rs_shape s;
