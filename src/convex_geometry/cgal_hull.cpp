@@ -57,6 +57,29 @@ std::size_t root(std::vector<std::size_t> &g, std::size_t k)
 
 typedef std::array<std::size_t, 3> Tri;
 
+/* Is the triangle set (points p, triangles t) a closed hull: at least four points, every
+ * index in range, each directed edge found again reversed? CGAL's quickhull takes points
+ * whose orientation the exact tests see as a volume for coplanar when its inexact
+ * constructions (a plane through denormal coordinates) lose them, and answers a polygon. */
+bool closed(const std::vector<Point> &p, const std::vector<Tri> &t)
+{
+    if (p.size() < 4 || t.size() < 4)
+        return false;
+    std::vector<std::pair<std::size_t, std::size_t>> e;
+    e.reserve(3 * t.size());
+    for (const Tri &f : t)
+        for (int j = 0; j < 3; j++) {
+            if (f[j] >= p.size())
+                return false;
+            e.emplace_back(f[j], f[(j + 1) % 3]);
+        }
+    std::sort(e.begin(), e.end());
+    for (const auto &ab : e)
+        if (!std::binary_search(e.begin(), e.end(), std::make_pair(ab.second, ab.first)))
+            return false;
+    return true;
+}
+
 /* The hull (points p, triangles t, counter-clockwise seen from outside) as a canonical
  * list of vertices (sorted, extreme points only) and triangles (each facet a fan from its
  * least vertex, the triangles sorted). */
@@ -215,6 +238,14 @@ extern "C" int rs_cgal_convex_hull(const double *xyz, int n, double **verts, int
         std::vector<Point> hp;
         std::vector<Tri> ht;
         CGAL::convex_hull_3(pts.begin(), pts.end(), hp, ht);
+        if (!closed(hp, ht)) {
+            std::snprintf(msg, cap,
+                          "the %d points lie too close to one plane for the hull's "
+                          "constructions in double precision (expected points that span "
+                          "a volume the doubles resolve)",
+                          n);
+            return -1;
+        }
         std::vector<double> v;
         std::vector<int> t;
         canonical(hp, ht, v, t);

@@ -15,8 +15,9 @@ extern "C" {
 /// verts, counter-clockwise seen from outside, so the right-hand normal points out; each
 /// facet a fan from its least vertex, the triangles sorted): the same for the same points
 /// in any order. Arrays are malloc'ed; the caller frees them. Returns 0, or -1 with a
-/// one-line reason in msg: fewer than four points that are not coplanar, a non-finite
-/// coordinate, or memory (nothing is left allocated).
+/// one-line reason in msg: fewer than four points that are not coplanar (to the exact
+/// tests, or to the hull's constructions in double precision), a non-finite coordinate,
+/// or memory (nothing is left allocated).
 int rs_cgal_convex_hull(const double *xyz, int n, double **verts, int *nv, int **tris,
                         int *nt, char *msg, size_t cap);
 

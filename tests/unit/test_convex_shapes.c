@@ -553,7 +553,9 @@ static void test_large_hull_support_climbs_to_the_top(void)
 
 /* A make call that fails leaves no shape: the mass properties and a body refuse it by
  * name; a hull whose volume is lost to rounding is a geometry error, not "out of
- * memory". */
+ * memory"; so are points that span a volume to the exact tests only by a denormal
+ * coordinate, which CGAL's hull constructions in doubles take for a plane (a fuzz input,
+ * tests/fuzz/corpus/body_hull_denormal_plane.bin: its polygon was read past its end). */
 static void test_a_failed_make_leaves_no_shape(void)
 {
     rs_shape s;
@@ -571,6 +573,11 @@ static void test_a_failed_make_leaves_no_shape(void)
     const double tiny[12] = {0, 0, 0, 1e-110, 0, 0, 0, 1e-110, 0, 0, 0, 1e-110};
     ENSURE_ERR(rs_shape_make_polyhedron(&s, tiny, 4, 0.0, &e_), RS_ERR_GEOMETRY,
                "has volume 0 (expected a volume > 0");
+    ENSURE(s.verts == NULL);
+    const double h = 4.6875, dn = 4.9406564584124654e-324;
+    const double denormal[15] = {h, h, h, h, h, 0, 0, dn, -7.5, -8, -8, -8, -8, -8, -8};
+    ENSURE_ERR(rs_shape_make_polyhedron(&s, denormal, 5, 0.0, &e_), RS_ERR_GEOMETRY,
+               "too close to one plane");
     ENSURE(s.verts == NULL);
 }
 
