@@ -587,7 +587,7 @@ static void test_body_rolls_in_a_meshed_drum_as_in_the_analytic_one(void)
 
 /* A hull of 500 points (not in principal axes: the driver turns it) dropped tumbling onto
  * the plane with friction: one run, then another from the same points, each making its
- * own hulls, end in the same state bit for bit (before, 0.4 mm apart). */
+ * own hulls, end in the same state bit for bit. */
 static int hull_run(double out[7])
 {
     enum { N = 500 };
