@@ -383,8 +383,8 @@ static void test_a_body_answers_every_owning_feature(void)
 
 /* Each kind (SEGMENTS, CYLINDER, REVOLUTION, MESH): a box's quaternion with a NaN, of
  * norm 0.5 or 1 + 2e-6 is refused by rs_body_query and rs_body_surface_contacts, naming
- * the quaternion (before, the analytic kinds gave no contact and no error); of norm 1 +
- * 1e-7 it is taken normalised: the contacts of the unit quaternion. */
+ * the quaternion (not answered with no contact and no error, a body falling through); of
+ * norm 1 + 1e-7 it is taken normalised: the contacts of the unit quaternion. */
 static void test_every_kind_checks_the_pose(void)
 {
     static const char *SEG = "*SURFACE, TYPE=SEGMENTS, NAME=line\nSTART, -1, 0\n"
