@@ -160,7 +160,7 @@ static void free_scratch(rs_wall *w)
         free(*d[k]);
         *d[k] = NULL;
     }
-    int **i[] = {&w->bid, &w->btype, &w->bidx, &w->deepest, &w->rest, &w->bncand};
+    int **i[] = {&w->bid, &w->btype, &w->bidx, &w->deepest, &w->bncand};
     for (size_t k = 0; k < sizeof i / sizeof i[0]; k++) {
         free(*i[k]);
         *i[k] = NULL;
@@ -460,7 +460,6 @@ int wall_scratch(rs_wall *w, int np, rs_error *err)
     ALLOC(w->btype, n);
     ALLOC(w->bidx, n);
     ALLOC(w->deepest, n);
-    ALLOC(w->rest, n);
     ALLOC(w->bncand, n);
     ALLOC(w->bdir, n);
     ALLOC(w->bhist, n);

@@ -144,8 +144,7 @@ struct rs_wall {
     rs_track_out tout;
     double *bx, *by, *bz, *bvx, *bvy, *bvz, *bwx, *bwy, *bwz, *brad, *bgap;
     double *bmass, *bheat, *btemp, *bdtemp, *bpred, *bdpred, *barea;
-    int *bid, *btype, *bidx, *deepest, *rest;
-    int nrest;
+    int *bid, *btype, *bidx, *deepest;
     double **bdir, **bhist;
     const int **bcand;
     int *bncand;
@@ -217,15 +216,23 @@ static inline double *wall_slot0(const rs_wall *w, int i)
 /// Whether particle i's distance bound keeps it beyond the tracking thickness this step:
 /// it has one (no contact held, set at its last query) and has moved less than the room
 /// the bound leaves, with the radius it had then.
-static inline int wall_kept_away(const rs_wall *w, const double *x, const double *radius,
-                                 int i)
+/// The test on the bounds' arrays themselves (gapref, xref, tracking), for loops that keep
+/// them in registers.
+static inline int wall_kept_away_at(const double *gapref, const double *xref,
+                                    double tracking, const double *x, const double *radius,
+                                    int i)
 {
-    const double room = w->gapref[i] - w->tracking;
-    const double *xr = &w->xref[4 * (size_t)i], *xi = x + 3 * (size_t)i;
+    const double room = gapref[i] - tracking;
+    const double *xr = &xref[4 * (size_t)i], *xi = x + 3 * (size_t)i;
     if (!(room > 0.0) || radius[i] != xr[3])
         return 0;
     const double dx = xi[0] - xr[0], dy = xi[1] - xr[1], dz = xi[2] - xr[2];
     return dx * dx + dy * dy + dz * dz < room * room;
+}
+static inline int wall_kept_away(const rs_wall *w, const double *x, const double *radius,
+                                 int i)
+{
+    return wall_kept_away_at(w->gapref, w->xref, w->tracking, x, radius, i);
 }
 /// What a directory row holds in short (rs_wall.usual): f + 1 when slot 0 holds feature
 /// f's contact alone, else 0.
@@ -285,8 +292,10 @@ int wall_compute(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows, d
                  int setup, rs_error *err);
 int wall_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows, const int *idx,
                int n, double dt, int setup, rs_error *err);
+int wall_blocks(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
+                const int *list, int n, double dt, int setup, rs_error *err);
 int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
-                    const int *idx, int n, double dt, rs_error *err);
+                    const int *list, int n, double dt, rs_error *err);
 int wall_block_props(const rs_wall *w, int t, const double **props, int *nprops);
 void wall_add_load(rs_wall *w, const rs_wall_load *wl, int setup);
 rs_load_rows wall_load_rows(const rs_wall *w, const rs_wall_rows *rows, const int *idx,
