@@ -175,6 +175,7 @@ int FixWallRigid::lammps_update(rs_law_block *b, rs_error *)
     const int nh = m.nhistory(), ns = b->nStateVar;
     const bool jkr = m.jkr(), keep = ns > nh;
     double **x = atom->x, **v = atom->v, **omega = atom->omega;
+    rs_wall_force_begin(b);
     for (int e = 0; e < b->nSlvNod; e++) {
         rs_force_contact c;
         if (!rs_wall_force_contact(wall_, b, e, x[0], &c))

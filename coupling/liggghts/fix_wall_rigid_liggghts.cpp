@@ -20,6 +20,7 @@ using namespace LAMMPS_NS;
 int FixWallRigid::liggghts_update(rs_law_block *b, rs_error *err)
 {
     (void)err;
+    rs_wall_force_begin(b);
     for (int e = 0; e < b->nSlvNod; e++) {
         rs_force_contact c;
         if (!rs_wall_force_contact(wall_, b, e, atom->x[0], &c))

@@ -292,10 +292,14 @@ typedef struct rs_force_contact {
     int setup;       ///< a setup call: the history is not advanced
 } rs_force_contact;
 
-/// Contact e of a force law's block b: zeroes its outputs (stress, force, torque, heat,
-/// energies) and, for a live contact, describes it in *c and returns 1; a contact leaving
-/// the tracking thickness returns 0 (it applies nothing). x: the engine's positions (3, n).
-int rs_wall_force_contact(const rs_wall *w, rs_law_block *b, int e, const double *x,
+/// The outputs of a force law's block b zeroed (stress, force, torque, heat, energies):
+/// what a contact the law skips, or one leaving, gives. First in the law's call.
+void rs_wall_force_begin(rs_law_block *b);
+
+/// Contact e of a force law's block b: for a live contact, describes it in *c and returns
+/// 1; a contact leaving the tracking thickness returns 0 (it applies nothing). x: the
+/// engine's positions (3, n).
+int rs_wall_force_contact(const rs_wall *w, const rs_law_block *b, int e, const double *x,
                           rs_force_contact *c);
 
 /// The model's force F on the particle and its torque T about the particle's centre for
