@@ -340,9 +340,8 @@ static int state_variables(rs_wall *w, rs_error *err)
                  "match",
                  w->law_name, w->law_words, law_nsv, user);
         if (w->props_given)
-            FAIL("law %s reads its material properties from fix property/global "
-                 "(youngsModulus, poissonsRatio, ...), as fix wall/gran does; 'props' "
-                 "does not apply",
+            FAIL("law %s takes its coefficients as the engine's walls take them (its "
+                 "words, the engine's material properties); 'props' does not apply",
                  w->law_name);
         if (w->area_mode != WALL_AREA_NODE)
             FAIL("law %s gives a force, not a stress; 'area' does not apply", w->law_name);
@@ -435,9 +434,12 @@ int wall_parse(rs_wall *w, const char *const *arg, int narg, rs_error *err)
             surf_name = arg[i + 1];
             i += 2;
         } else if (strcmp(kw, "law") == 0) {
-            if (i + 1 >= narg)
+            if (i + 1 >= narg) {
+                const char *engine = w->host.engine_law ? w->host.engine_law_name : NULL;
                 FAIL("keyword 'law' expects a law name (hertz, hooke, bonded_interface, "
-                     "linear_softening, coulomb, user, vuinter, uinter, fric)");
+                     "linear_softening, coulomb, user, vuinter, uinter, fric%s%s)",
+                     engine ? ", " : "", engine ? engine : "");
+            }
             if (have_law)
                 FAIL("keyword 'law' given twice");
             have_law = 1;
