@@ -193,6 +193,9 @@ class Deck:
         self.step, self.dt, self.time = 0, None, 0.0
         self.unknown = {}       # why a word is unknown: reason by marker
         self.evaluating = set()
+        # observer(exec): called as each command is recorded, the deck's variables, step
+        # and time then as they are where it runs
+        self.observer = None
 
     # -- files --------------------------------------------------------------------
     def resolve(self, name):
@@ -414,6 +417,8 @@ class Deck:
             return "quit"
         else:
             self.trace.append(Exec(cmd, words, via, self.step, self.dt))
+            if self.observer is not None:
+                self.observer(self.trace[-1])
             self.track(cmd, words)
         return None
 
