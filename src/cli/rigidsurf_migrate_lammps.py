@@ -241,14 +241,15 @@ class LammpsMigration:
                 self.note(wall.cmd, "fix %s: %s" % (wall.id, n))
             meshes = [fid for fid, s in wall.pieces if s.kind == "mesh"]
             if meshes:
-                self.note(wall.cmd, "fix %s: the %s's faces are written to %s beside the "
-                          "deck" % (wall.id, "block or prism", " ".join(
-                              "rs_%s.stl" % m for m in meshes)))
+                self.note(wall.cmd, "fix %s: region %s's faces are written to %s beside the "
+                          "deck" % (wall.id, wall.observed[0].id, " ".join(
+                              "%s.%s.stl" % (os.path.basename(self.deck.main.path), m)
+                              for m in meshes)))
             if wall.contacts:
                 self.note(wall.cmd, "fix %s: contacts: f_%s[2-4] (the force) read "
                           "wall/rigid's store_force f_force_%s[1-3]" % (wall.id, wall.id,
                                                                        wall.id))
-            self.commit(wall.ex, wall.lines(ctx.L, self.deck.dir, self.files))
+            self.commit(wall.ex, wall.lines(ctx.L, self.deck.main.path, self.files))
         alive = {}
         for ex in self.deck.trace:
             w = ex.words

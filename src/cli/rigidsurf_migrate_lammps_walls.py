@@ -231,14 +231,15 @@ class Wall:
                 words += ["reff", "region"]
         return words + self.model
 
-    def lines(self, L, deck_dir, files):
+    def lines(self, L, deck_path, files):
         """The wall/rigid lines of the wall (after its pre lines); files: {path: text} the
-        meshes to write beside the deck."""
+        meshes to write beside the deck at deck_path."""
         out = list(self.pre)
         many = len(self.pieces) > 1
         for k, (fid, s) in enumerate(self.pieces):
             words = ["fix", fid, self.group_raw, "wall/rigid", "surface", "inline"]
-            words += surface_words(s, L, fid, deck_dir, files)
+            words += surface_words(s, L, fid, os.path.dirname(os.path.abspath(deck_path)),
+                                   os.path.basename(deck_path), files)
             words += self.law_words(s)
             if self.contacts:
                 words += ["store_force", "into", self.id] if many else ["store_force", "yes"]
@@ -273,8 +274,9 @@ class Wall:
         return notes
 
 
-def surface_words(s, L, fid, deck_dir, files):
-    """The words after 'surface inline' of a Surf."""
+def surface_words(s, L, fid, deck_dir, deck_name, files):
+    """The words after 'surface inline' of a Surf; a mesh's file, DECK_NAME.FID.stl in
+    the deck's folder, goes to files."""
     sides = ["sides", "2"] if s.two_sided else []
     if s.kind == "plane":
         a, b, c = plane_points(s.point, s.normal)
@@ -288,7 +290,7 @@ def surface_words(s, L, fid, deck_dir, files):
         return (["cylinder", "a"] + [num(x) for x in s.a] + ["b"] + [num(x) for x in s.b] +
                 ["c"] + [num(x) for x in s.c] + sides + ["profile"] +
                 items_words(s.items) + ["end"])
-    name = "rs_%s.stl" % fid
+    name = "%s.%s.stl" % (deck_name, fid)
     files[os.path.join(deck_dir, name)] = stl(s.triangles, fid)
     return ["mesh", name, "sides", "2" if s.two_sided else "1"]
 
