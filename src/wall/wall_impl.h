@@ -50,6 +50,9 @@ struct rs_wall {
     int moving, belt; ///< belt: surface_vel, the tracker gets the motion even at rest
     char var_vel[3][WALL_NAME], var_omega[WALL_NAME], var_spin[WALL_NAME];
     int ivar_vel[3], ivar_omega, ivar_spin;
+    char var_disp[3][WALL_NAME]; ///< move variable: the translation's variables
+    int ivar_disp[3];
+    double disp_given[3]; ///< move variable: the translation's numbers
     int rot_by_period, spin_by_period;
     double period;
     rs_error rates_err; ///< why a rates callback stopped the motion
