@@ -5,10 +5,11 @@ docs/migration.md, *LAMMPS walls*).
   facing +axis, hi facing -axis), `sides 2`: LAMMPS pushes a sphere away from a plane on
   whichever side its centre is (FixWallGran::post_force); `zcylinder R`: the cylinder of
   radius R about the z axis, `sides 2`;
-- `wiggle dim A P` along a plane (or a zcylinder's axis), which moves the wall's material
-  and not its shape: `move linear` with LAMMPS's velocity A w sin(w (step - s0) dt),
-  w = 2 pi / P, s0 the step the fix was made at, the same formula; `shear dim V`:
-  `surface_vel`;
+- `wiggle dim A P`: LAMMPS's velocity A w sin(w (step - s0) dt), w = 2 pi / P, s0 the
+  step the fix was made at, the same formula: along a plane (or a zcylinder's axis),
+  which moves the wall's material and not its shape, the rate of `move linear`; along a
+  plane's normal the velocity of `move variable`, whose translation is LAMMPS's place of
+  the plane, A - A cos(w (step - s0) dt); `shear dim V`: `surface_vel`;
 - `fix wall/gran/region MODEL region ID`: the region's surfaces
   (rigidsurf_migrate_lammps_regions.py), one wall/rigid each, the first with the fix's
   ID; a region moved by `move v_x v_y v_z` and turned by `rotate v_theta P A` gets
@@ -122,12 +123,6 @@ class Wall:
         g = self.g
         dim, A, P = (self.word(k) for k in g.wiggle)
         rA, rP = (self.raw(k) for k in g.wiggle[1:])
-        if g.wall.endswith("plane") and g.wall[0] == dim:
-            raise geo.Unmigratable(
-                "wiggle %s of %s moves the plane along its normal: LAMMPS sets its "
-                "position A (1 - cos w t) and its velocity A w sin w t at once, where "
-                "wall/rigid's position is the sum of its velocities times dt" % (
-                    dim, g.wall))
         a, p = number(A), number(P)
         if a is None or p is None or p == 0.0:
             raise geo.Unmigratable("wiggle: its amplitude and period are not numbers the "
@@ -136,13 +131,22 @@ class Wall:
             raise geo.Unmigratable("wiggle: its amplitude reaches past the wall's ends")
         s0 = self.ex.step
         w = "(2*PI/%s)" % par(rP)
-        rate = "%s*%s*sin(%s*(step-%s)*dt)" % (par(rA), w, w, s0 if s0 is not None else
-                                                "v_rs_%s_s0" % self.id)
+        arg = "%s*(step-%s)*dt" % (w, s0 if s0 is not None else "v_rs_%s_s0" % self.id)
         if s0 is None:
             self.pre.append("variable rs_%s_s0 equal $(step)" % self.id)
-        self.pre.append("variable rs_%s_w equal %s" % (self.id, rate))
-        self.motion = ["move", "linear"] + ["v_rs_%s_w" % self.id if d == dim else "0"
-                                            for d in "xyz"]
+        self.pre.append("variable rs_%s_w equal %s*%s*sin(%s)" % (self.id, par(rA), w, arg))
+        rate = ["v_rs_%s_w" % self.id if d == dim else "0" for d in "xyz"]
+        if g.wall.endswith("plane") and g.wall[0] == dim:
+            # along the normal: LAMMPS places the plane at lo + A - A cos(arg) and gives
+            # it the velocity A w sin(arg), each a formula of the step
+            self.pre.append("variable rs_%s_d equal %s-%s*cos(%s)" % (self.id, par(rA),
+                                                                      par(rA), arg))
+            self.motion = ["move", "variable"] + [
+                "v_rs_%s_d" % self.id if d == dim else "0" for d in "xyz"] + rate
+        else:
+            # along the plane or the cylinder's axis: the wall's material moves, its
+            # shape stays where it is
+            self.motion = ["move", "linear"] + rate
 
     def shear(self):
         g = self.g

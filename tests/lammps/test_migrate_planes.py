@@ -18,6 +18,10 @@ wall/rigid with law lammps and the same model words (checked on its output). The
 - zplane with wiggle y A P (granular mindlin): spheres resting on a floor shaken along
   itself (LAMMPS's wall velocity A w sin(w (step - s0) dt), the plane in place; the
   migrated plane moves along itself at that rate, which leaves it where it is);
+- zplane lo hi with wiggle z, xplane lo with wiggle x: spheres resting on a floor (on a
+  wall, gravity along -x) shaken along its normal, and one thrown to the ceiling (LAMMPS
+  places the planes at lo + A (1 - cos w t) with the velocity A w sin w t; the migrated
+  planes by `move variable` at the same place and velocity);
 - zcylinder R with wiggle z (hertz/history with friction): spheres inside and outside the
   cylinder (LAMMPS's zcylinder acts on both sides) hitting it while it wiggles along its
   axis; and with shear z (granular);
@@ -74,6 +78,12 @@ CASES = [
      "NULL shear x 0.3", RESTING, "0 0 -1", lambda a: a["vx"] > 0.06),
     ("zplane_wiggle", "fix w all wall/gran %s zplane 0 NULL wiggle y 0.002 0.02" % GRANULAR,
      RESTING, "0 0 -1", lambda a: abs(a["vy"]) > 1e-3),
+    ("zplane_wiggle_normal", "fix w all wall/gran %s zplane 0.0 0.06 wiggle z 0.0005 0.02"
+     % HERTZ, RESTING + FLOOR[2:], "0 0 -1", lambda a: a["z"] > R + 4e-4),
+    ("xplane_wiggle_normal", "fix w all wall/gran hooke/history 2e5 NULL 50 NULL 0.5 1 "
+     "xplane -0.05 NULL wiggle x 0.004 0.05", [((-0.05 + R, 0.0, 0.05), R, (0.0, 0.1, 0.0),
+                                               (0.0, 0.0, 0.0))], "-1 0 0",
+     lambda a: a["x"] > -0.05 + R + 1e-3),
     ("zcylinder_wiggle", "fix w all wall/gran hertz/history 2e8 NULL 5e3 NULL 0.5 1 "
      "zcylinder 0.05 wiggle z 0.003 0.01", DRUM, None, lambda a: at_drum(a)),
     ("zcylinder_shear", "fix w all wall/gran granular hertz 2e8 0.3 tangential "
