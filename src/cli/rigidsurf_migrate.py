@@ -434,8 +434,11 @@ def main(argv):
         return 1
     path, cli_vars, k, engine = args[0], [], 1, None
     while k < len(args):
-        if args[k] == "--engine" and k + 1 < len(args) and \
-                args[k + 1] in ("liggghts", "lammps"):
+        if args[k] == "--engine":
+            if k + 1 >= len(args) or args[k + 1] not in ("liggghts", "lammps"):
+                sys.stderr.write("rigidsurf-migrate: --engine expects liggghts or lammps, "
+                                 "got '%s'\n" % (args[k + 1] if k + 1 < len(args) else ""))
+                return 1
             engine = args[k + 1]
             k += 2
         elif args[k] in ("-var", "-v") and k + 1 < len(args):

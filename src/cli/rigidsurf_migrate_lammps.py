@@ -140,11 +140,13 @@ class LammpsMigration:
         return out
 
     def scan(self):
-        alive = {}
+        alive, restart = {}, None
         for ex in self.deck.trace:
             w = ex.words
             c = w[0]
-            if c == "units" and len(w) > 1:
+            if c == "read_restart":
+                restart = ex.cmd
+            elif c == "units" and len(w) > 1:
                 self.units = w[1]
             elif c == "dimension" and len(w) > 1:
                 self.dimension = int(w[1]) if w[1].isdigit() else 3
@@ -162,15 +164,40 @@ class LammpsMigration:
                     raise DeckError(ex.via or ex.cmd, "fix %s: %s in a periodic dimension "
                                     "(LAMMPS: Cannot use wall in periodic dimension)" % (
                                         wall.id, wall.g.wall))
+                if restart is not None:
+                    wall.notes.append(
+                        "read_restart (%s): a restart file of stock lmp holds fix %s's "
+                        "contact history, which wall/rigid does not read (its contacts "
+                        "start anew); one that lmp-rigidsurf wrote holds wall/rigid's" % (
+                            restart.where(), wall.style))
                 self.walls.append(wall)
                 self.wall_execs[ex] = wall
                 alive[wall.id] = wall
             elif c == "unfix" and len(w) > 1:
                 alive.pop(w[1], None)
             elif c == "fix_modify" and len(w) > 1 and isinstance(alive.get(w[1]), Wall):
-                alive[w[1]].reasons.append("%s: fix_modify %s: wall/rigid's fix_modify "
-                                           "is not fix wall/gran's" % (
-                                               ex.cmd.where(), " ".join(w[2:])))
+                self.fix_modify(ex, alive[w[1]])
+
+    def fix_modify(self, ex, wall):
+        """fix_modify of a wall: FixWallGran takes Fix::modify_params's words and acts on
+        none (it has no energy, virial or respa levels to give); wall/rigid likewise
+        takes them on each of its walls."""
+        w, k, pairs = ex.words, 2, []
+        while k < len(w):
+            if w[k] in ("energy", "virial", "dynamic/dof") and k + 1 < len(w) and \
+                    w[k + 1] in ("yes", "no") and not (w[k] != "dynamic/dof" and
+                                                       w[k + 1] == "yes"):
+                pairs.append(w[k:k + 2])
+                k += 2
+                continue
+            raise DeckError(ex.via or ex.cmd, "fix_modify %s: fix %s takes %s (LAMMPS: "
+                            "Illegal fix_modify command)" % (
+                                wall.id, wall.style, "'energy no', 'virial no' and "
+                                "'dynamic/dof yes|no' only" if k < len(w) else
+                                "a keyword and its value"))
+        if len(w) < 3:
+            raise DeckError(ex.via or ex.cmd, "Illegal fix_modify command")
+        wall.modifies.append((ex, w[2:]))
 
     def box_of(self, rid, ex):
         """The box (lo, hi per axis) of create_box's block region, where the tool knows
@@ -250,6 +277,10 @@ class LammpsMigration:
                           "wall/rigid's store_force f_force_%s[1-3]" % (wall.id, wall.id,
                                                                        wall.id))
             self.commit(wall.ex, wall.lines(ctx.L, self.deck.main.path, self.files))
+        for wall in self.walls:
+            for ex, words in wall.modifies if wall.ok else ():
+                self.commit(ex, ["fix_modify %s %s" % (fid, " ".join(words))
+                                 for fid, _ in wall.pieces])
         alive = {}
         for ex in self.deck.trace:
             w = ex.words

@@ -57,7 +57,7 @@ class Wall:
         self.id_raw, self.group_raw = ex.rawword(1, w[1]), ex.rawword(2, w[2])
         self.style = w[3]
         self.reasons, self.notes, self.pre, self.pieces = [], [], [], []
-        self.ok, self.why, self.prev = False, [], None
+        self.ok, self.why, self.prev, self.modifies = False, [], None, []
         self.kind = self.style      # what the caller counts and lists
         try:
             self.g = grammar.Wall(w[4:], self.style == "wall/gran/region")
@@ -161,6 +161,14 @@ class Wall:
     def region_surfaces(self, ctx, number_of):
         reg, regions, vals = self.observed
         surfs = geo.surfaces(reg, regions, ctx, number_of)
+        if reg.members:
+            self.notes.append(
+                "region %s is %s: LAMMPS gives a particle the faces of the members its "
+                "centre lies in, wall/rigid the faces of the %s's outline; where a sphere "
+                "reaches across the join of two members' faces, wall/rigid gives it both "
+                "(their shares summing to one: docs/conventions.md), LAMMPS one of them" % (
+                    reg.id, "a union" if reg.style == "union" else "an intersection",
+                    "union" if reg.style == "union" else "intersection"))
         if not (reg.move or reg.rotate):
             return surfs
         names = []
@@ -263,18 +271,19 @@ class Wall:
         if self.g.style not in ("hertz/history", "granular"):
             return notes
         for fid, s in self.pieces:
+            who = "%s: " % fid if len(self.pieces) > 1 else ""
             if "cone" in s.curvature:
                 notes.append(
-                    "%s: a cone face (half-angle up to %.4g degrees): LAMMPS's region "
+                    "%sa cone face (half-angle up to %.4g degrees): LAMMPS's region "
                     "takes -2 r as the wall's radius of curvature (r the cone's radius at "
                     "the contact), law lammps reff region -2 r / cos(beta), %.4g times it "
-                    "(docs/lammps.md)" % (fid, s.beta, 1.0 / math.cos(math.radians(s.beta))))
+                    "(docs/lammps.md)" % (who, s.beta, 1.0 / math.cos(math.radians(s.beta))))
             if self.style == "wall/gran/region" and s.two_sided and \
                     s.curvature & {"cyl", "cone"}:
                 notes.append(
-                    "%s: an open region's outer side: LAMMPS takes it flat there "
+                    "%san open region's outer side: LAMMPS takes it flat there "
                     "(RegCylinder::surface_exterior's open branch), law lammps reff "
-                    "region +2 r" % fid)
+                    "region +2 r" % who)
         return notes
 
 
