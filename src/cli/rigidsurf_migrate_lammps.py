@@ -109,6 +109,8 @@ class LammpsMigration:
                     vals[name] = float(self.deck.formula(name, ex.cmd))
                 except expr.Unknown as e:
                     vals[name] = str(e)
+                except DeckError as e:   # LAMMPS needs it only when the run begins
+                    vals[name] = str(e)
             self.observed[ex] = (reg, dict(self.regions), vals)
 
     # -- the deck ------------------------------------------------------------------

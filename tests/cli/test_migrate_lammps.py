@@ -363,6 +363,16 @@ check("a prism: 12 facets on its 8 corners lo + i a + j b + k c, facing inside",
       {tuple(round(c, 12) for c in p) for t in tp for p in t} ==
       {tuple(round(c, 12) for c in p) for p in corners}, str(tp))
 
+# ---- include ---------------------------------------------------------------------------
+write("in.lwalls", "variable zf equal 0.02\nfix w all wall/gran %s zplane ${zf} NULL\n"
+      % HOOKE)
+rc, out, err = migrate(HEAD + "include in.lwalls\nrun 0\n")
+check("a wall in an included file: the file's commands, migrated, in place of its include "
+      "line", rc == 0 and "# rigidsurf-migrate: include in.lwalls, migrated\nvariable zf "
+      "equal 0.02\nfix w all wall/rigid surface inline cylinder a 0 0 ${zf}" in out and
+      "include in.lwalls\n" not in out.replace("# rigidsurf-migrate: include in.lwalls", ""),
+      out + err)
+
 # ---- what names a wall -----------------------------------------------------------------
 deck = HEAD + ("fix w all wall/gran %s zplane 0.0 0.1 contacts\n"
                "fix_modify w energy no\n"
@@ -401,6 +411,10 @@ KEPT = [
      "its member s is a sphere"),
     ("a region whose shape changes", "variable r equal 0.05\nregion c cylinder z 0 0 v_r -1 "
      "1\nfix w all wall/gran/region %s region c" % HOOKE, "its shape changes with v_r"),
+    ("a region moved by a variable defined after the wall", "region c cylinder z 0 0 "
+     "0.05 -1 1 move v_later NULL NULL\nfix w all wall/gran/region %s region c\nvariable "
+     "later equal 0.001*time" % HOOKE, "v_later where the wall is made: v_later: Invalid "
+     "variable name"),
     ("a contacts column wall/rigid does not keep", "fix w all wall/gran %s zplane 0 NULL "
      "contacts\ndump d all custom 1 d.dump id f_w[5] f_w[2]" % HOOKE,
      "reads f_w[5], LAMMPS's contacts column 5 (the contact point's x)"),
@@ -408,8 +422,8 @@ KEPT = [
 for name, lines, why in KEPT:
     deck = HEAD + lines + "\nfix f all wall/gran %s zplane -0.04 NULL\nrun 0\n" % HOOKE
     rc, out, err = migrate(deck)
-    n = len(HEAD.splitlines()) + len([x for x in lines.splitlines()
-                                      if not x.startswith("dump")])
+    n = len(HEAD.splitlines()) + 1 + [k for k, x in enumerate(lines.splitlines())
+                                      if "wall/gran" in x][0]
     check("exit 3, %s: the reason and 'kept as LAMMPS's' on the wall's line, the wall as "
           "written, the other migrated" % name, rc == 3 and why in err and
           "LINE %d: fix w: the wall is kept as LAMMPS's" % n in err and

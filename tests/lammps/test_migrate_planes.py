@@ -26,7 +26,10 @@ wall/rigid with law lammps and the same model words (checked on its output). The
   cylinder (LAMMPS's zcylinder acts on both sides) hitting it while it wiggles along its
   axis; and with shear z (granular);
 - yplane lo hi with limit_damping (hooke), and contacts: the dumped f_w[2-4] (the contact
-  force) against the migrated deck's f_force_w[1-3].
+  force) against the migrated deck's f_force_w[1-3];
+- exit 3: a zcylinder with shear x, which the tool keeps as LAMMPS's (LAMMPS's wall
+  velocity there sums over the particles it touches), beside a floor it migrates: the
+  deck runs in lmp-rigidsurf as in stock lmp.
 
 The planes are exact in both, the models are LAMMPS's own code in both, and the wall's
 velocity is LAMMPS's formula evaluated at the same step: the runs agree to rounding.
@@ -100,7 +103,26 @@ def at_drum(a):
     return abs((a["x"] ** 2 + a["y"] ** 2) ** 0.5 - 0.05) < R
 
 
+def kept(s):
+    """Exit 3: a deck whose zcylinder with shear x stays LAMMPS's (its wall velocity sums
+    over the particles it touches) runs in lmp-rigidsurf as in stock lmp, its migrated
+    floor beside it."""
+    name = "kept_zcylinder_shear_x"
+    wall = ("fix w all wall/gran hooke/history 2e5 NULL 50 NULL 0.5 1 zcylinder 0.05 shear "
+            "x 0.2\nfix f all wall/gran hooke/history 2e5 NULL 50 NULL 0.5 1 zplane 0.0 NULL")
+    stock, rigid, err, text = G.pair(s, name, deck(name, wall, DRUM[:2]), want_rc=3)
+    s.ck.check(name + ": the zcylinder kept as written, the floor migrated",
+               "zcylinder 0.05 shear x 0.2\n" in text and "fix f all wall/rigid" in text and
+               "LINE %d: fix w: the wall is kept as LAMMPS's" % (
+                   text.splitlines().index(wall.splitlines()[0]) + 1) in err,
+               why=text + err)
+    s.ck.check(name + ": stock's walls reached the spheres",
+               any(at_drum(a) or a["z"] < 1.001 * R for _, f in stock for a in f.values()))
+    M.L.check_trajectories(s, name, rigid, stock, M.scales(R), 1e-9, ref="stock lmp's")
+
+
 def body(s):
+    kept(s)
     for name, wall, spheres, gravity, reached in CASES:
         contacts = wall.endswith("contacts")
         cols = COLS + (" f_w[2] f_w[3] f_w[4]" if contacts else "")
