@@ -278,7 +278,12 @@ class LammpsMigration:
                 self.note(wall.cmd, "fix %s: contacts: f_%s[2-4] (the force) read "
                           "wall/rigid's store_force f_force_%s[1-3]" % (wall.id, wall.id,
                                                                        wall.id))
-            self.commit(wall.ex, wall.lines(ctx.L, self.deck.main.path, self.files))
+        replaced = self.replacements()
+        for wall in self.walls:
+            lines = wall.lines(ctx.L, self.deck.main.path, self.files) if wall.ok else \
+                [None]
+            if replaced.get(wall.ex) or wall.ok:
+                self.commit(wall.ex, replaced.get(wall.ex, []) + lines)
         for wall in self.walls:
             for ex, words in wall.modifies if wall.ok else ():
                 self.commit(ex, ["fix_modify %s %s" % (fid, " ".join(words))
@@ -292,6 +297,30 @@ class LammpsMigration:
                 wall = alive.pop(w[1])
                 if wall.ok:
                     self.commit(ex, wall.unfix_lines())
+
+    def replacements(self):
+        """A wall made with the ID of a wall that is still there: LAMMPS replaces a fix by
+        one of its style (Modify::add_fix). What goes first, {Exec: lines}: the old
+        wall's fixes that the new one does not replace, all of them where one of the two
+        stays LAMMPS's and the other is wall/rigid (LAMMPS refuses to replace a fix by
+        one of another style)."""
+        alive, out = {}, {}
+        for ex in self.deck.trace:
+            w = ex.words
+            new = self.wall_execs.get(ex)
+            if new is not None:
+                old = alive.get(new.id)
+                if old is not None and old.ok:
+                    keep = {fid for fid, _ in new.pieces} if new.ok else set()
+                    if new.ok and new.prev:
+                        keep.add(new.prev)
+                    out[ex] = [x for x in old.unfix_lines() if x.split()[1] not in keep]
+                elif old is not None and new.ok:
+                    out[ex] = ["unfix %s" % old.id]
+                alive[new.id] = new
+            elif w[0] == "unfix" and len(w) > 1:
+                alive.pop(w[1], None)
+        return out
 
     def rewrite_refs(self, commands):
         ok = {w.id for w in self.walls if w.ok and w.contacts}

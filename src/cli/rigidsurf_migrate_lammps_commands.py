@@ -152,10 +152,9 @@ NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
 
 # ---- region (Region::options and each style) --------------------------------------
 
-# each style's values before its options; INF/EDGE allowed at the given positions
+# each style's values before its options
 REGION_STYLES = {"block": 6, "cone": 7, "cylinder": 6, "plane": 6, "prism": 9,
                  "sphere": 4}
-INF_EDGE = {"block": range(6), "cone": (5, 6), "cylinder": (4, 5), "prism": range(6)}
 # the styles' values that may be v_name (the region's shape then changes in time)
 VARIABLE_SHAPE = {"cylinder": (1, 2, 3), "sphere": range(4)}
 

@@ -468,8 +468,7 @@ def extrusion(reg, members, union, L):
                                "direction (plane %s): their outline is no extruded profile"
                                % (reg.id, m.id))
     a = normals[0][1]
-    xh = unit(cross(d, normals[0][2])) if dot(cross(d, normals[0][2]),
-                                              cross(d, normals[0][2])) > 0 else None
+    xh = unit(cross(d, normals[0][2]))    # along the first plane's line
     yh = cross(d, xh)
     halfplanes = []
     for m, p, n in normals:

@@ -391,6 +391,18 @@ check("contacts: store_force into the wall's ID on both planes; f_w[2-4] read "
       and "fix_modify w energy no\nfix_modify rs_w_2 energy no\n" in out and
       "unfix rs_w_2\nunfix w\n" in out, out + err)
 
+# a wall made again with its ID (LAMMPS replaces a fix by one of its style)
+deck = HEAD + ("fix w all wall/gran %s zplane 0 0.1\nrun 10\n"
+               "fix w all wall/gran %s zplane 0.01 NULL\nrun 10\n"
+               "fix c all wall/gran %s zcylinder 0.05 shear x 0.1\nrun 10\n"
+               "fix c all wall/gran %s zcylinder 0.05\nrun 10\n") % ((HOOKE,) * 4)
+rc, out, err = migrate(deck)
+check("a wall made again with its ID: the old walls the new one does not replace unfixed "
+      "first (rs_w_2), and a kept wall/gran unfixed before the wall/rigid of its ID",
+      rc == 3 and "run 10\nunfix rs_w_2\nfix w all wall/rigid" in out and
+      "run 10\nunfix c\nfix c all wall/rigid" in out and
+      "fix c all wall/gran %s zcylinder 0.05 shear x 0.1\n" % HOOKE in out, out + err)
+
 # ---- exit 3: walls kept as LAMMPS's, each with its reason on its line -------------------
 KEPT = [
     ("zcylinder shear x", "fix w all wall/gran %s zcylinder 0.05 shear x 0.1" % HOOKE,
