@@ -58,7 +58,6 @@ class Wall:
         self.style = w[3]
         self.reasons, self.notes, self.pre, self.pieces = [], [], [], []
         self.ok, self.why, self.prev, self.modifies = False, [], None, []
-        self.kind = self.style      # what the caller counts and lists
         try:
             self.g = grammar.Wall(w[4:], self.style == "wall/gran/region")
         except Grammar as e:

@@ -24,7 +24,9 @@ velocities against 1 m/s, spins against 1/R, forces against 1 N):
 - a plane region moved by `move NULL NULL v_z` (z = A sin(w t)) under a resting sphere,
   and a block turned by `rotate v_th` about z and moved by `move v_x NULL NULL` under a
   sphere resting on its floor, with friction: LAMMPS's wall velocity is the change of
-  the variables over the step, which the tool's rates are; the block again in two runs
+  the variables over the step, which the tool's rates are; a cylinder turned about a
+  point off its axis and moved, standing away from its definition when the wall is made
+  (the tool writes it there); the block again in two runs
   of 5000 steps, the second to 1e-6: LAMMPS's region has no velocity in the setup of a
   run after the first (Region::init forgets its last step), wall/rigid its last step's
   (measured 6e-8);
@@ -150,6 +152,16 @@ def moving(s):
              M.sphere(1, (0.02, 0.0, R), R, RHO), gravity="0 0 -1", dt=1e-5, steps=10000,
              pre=pre)
     exact(s, "block_turning", d, R)
+    # a cylinder turned about a point off its axis and moved, standing away from its
+    # definition when the wall is made (x = 5 mm, th = 0.3): the wall starts there
+    pre = "variable th equal 0.3+20*time\nvariable x equal 0.005+0.5*time\n"
+    d = deck("cylinder_orbiting", "region c cylinder z 0 0 0.05 -1 1 move v_x NULL NULL "
+             "rotate v_th 0.01 0 0 0 0 1 units box\n",
+             "fix w all wall/gran/region hertz/history 2e8 NULL 5e3 NULL 0.5 1 region c",
+             M.sphere(1, (0.0, 0.0, 0.05), R, RHO, (0.0, 0.4, 0.0)) +
+             M.sphere(2, (0.0, 0.0, 0.0), R, RHO, (-0.3, -0.1, 0.0)), dt=1e-5, steps=10000,
+             pre=pre)
+    exact(s, "cylinder_orbiting", d, R)
     # the same in two runs: in the second run's setup LAMMPS's region has no velocity
     # (Region::init forgets the last step, set_velocity differences the step with itself),
     # wall/rigid the last step's rates
