@@ -152,9 +152,10 @@ NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
 
 # ---- region (Region::options and each style) --------------------------------------
 
-# each style's values before its options
+# each style's values before its options, and those that may be INF or EDGE
 REGION_STYLES = {"block": 6, "cone": 7, "cylinder": 6, "plane": 6, "prism": 9,
                  "sphere": 4}
+INF_EDGE = {"block": range(6), "cone": (5, 6), "cylinder": (4, 5), "prism": range(6)}
 # the styles' values that may be v_name (the region's shape then changes in time)
 VARIABLE_SHAPE = {"cylinder": (1, 2, 3), "sphere": range(4)}
 
@@ -186,6 +187,16 @@ class Region:
             if self.style in ("cone", "cylinder") and a[0] not in ("x", "y", "z"):
                 raise Grammar("region %s: expects its axis x, y or z first, got '%s'" % (
                     self.style, a[0]))
+            for k, w in enumerate(self.values):
+                if self.style in ("cone", "cylinder") and k == 0 or "\x00" in w or \
+                        NUMBER.fullmatch(w) or w in ("INF", "EDGE") and \
+                        k in INF_EDGE.get(self.style, ()) or w.startswith("v_") and \
+                        k in VARIABLE_SHAPE.get(self.style, ()):
+                    continue
+                raise Grammar("region %s: '%s' is not a number%s (LAMMPS: Expected "
+                              "floating point parameter)" % (
+                                  self.style, w, ", INF or EDGE" if k in INF_EDGE.get(
+                                      self.style, ()) else ""))
         else:
             raise Grammar("region: LAMMPS 29Sep2021 has no region style '%s' (it has %s; "
                           "LAMMPS: Unrecognized region style)" % (
