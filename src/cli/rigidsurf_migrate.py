@@ -38,8 +38,9 @@ Reports go to stderr, one per line, each with its line number.
 A LAMMPS deck (lmp-rigidsurf) likewise: each `fix wall/gran` plane or zcylinder and each
 `fix wall/gran/region` becomes `fix wall/rigid` with `law lammps` and the same model
 words on the exact surfaces of its wall or region, moving as LAMMPS moves it. The engine
-is told by the deck's commands (wall/gran/region, LAMMPS's model words, pair styles;
-LIGGGHTS's wall/gran model, mesh/surface, property/global), or by --engine.
+is told by the deck's commands (LAMMPS's wall/gran/region, wall/gran hooke ... or
+granular, pair_style granular; LIGGGHTS's wall/gran model, mesh/surface,
+property/global, atom_style granular), or by --engine.
 
 Exit status:
   0  every wall was migrated: the deck runs with liggghts-rigidsurf (lmp-rigidsurf) and

@@ -287,9 +287,9 @@ def lattice_scale(words, units, dimension):
 LAMMPS_SIGNS = [
     (re.compile(r"^\s*fix\s+\S+\s+\S+\s+wall/gran/region\b"), "fix wall/gran/region"),
     (re.compile(r"^\s*fix\s+\S+\s+\S+\s+wall/gran\s+(hooke|hooke/history|hertz/history|"
-                r"granular)\b"), "fix wall/gran with LAMMPS's model words"),
-    (re.compile(r"^\s*pair_style\s+(granular|gran/hooke|gran/hooke/history|"
-                r"gran/hertz/history)\b"), "LAMMPS's granular pair style"),
+                r"granular)\b"), "fix wall/gran hooke|hooke/history|hertz/history|granular"),
+    # (pair_style gran/hooke... is LIGGGHTS 2's too)
+    (re.compile(r"^\s*pair_style\s+granular\b"), "pair_style granular"),
 ]
 LIGGGHTS_SIGNS = [
     (re.compile(r"^\s*fix\s+\S+\s+\S+\s+wall/gran\s+model\b"), "fix wall/gran model"),
