@@ -154,6 +154,10 @@ class LammpsMigration:
                 self.dimension = int(w[1]) if w[1].isdigit() else 3
             elif c == "boundary" and len(w) > 3:
                 self.periodic = [x == "p" for x in w[1:4]]
+            elif c == "change_box" and "boundary" in w[2:]:
+                k = w.index("boundary", 2)
+                if len(w) > k + 3:
+                    self.periodic = [x == "p" for x in w[k + 1:k + 4]]
             elif c == "lattice" and len(w) > 1:
                 self.lattice = grammar.lattice_scale(w[1:], self.units, self.dimension)
             elif c == "create_box" and len(w) > 2 and self.box is None:

@@ -16,7 +16,9 @@ exterior contacts to the interior ones). Each becomes:
 - union or intersect of coaxial cylinders and cones and planes normal to their axis: the
   REVOLUTION of the solid's outline (its radius the largest, or smallest, of its
   members' at each height); of planes whose normals are normal to one direction: a
-  CYLINDER (an extrusion) of the outline of the half-planes' union or intersection.
+  CYLINDER (an extrusion) of the outline of the half-planes' union or intersection; of
+  members that are all open: each member's surfaces (LAMMPS then keeps every member's
+  contacts, as separate walls do).
 
 A surface faces the region's side (`sides 2` where the region is two-sided). What the
 tool cannot express exactly raises Unmigratable with the reason.
@@ -353,11 +355,33 @@ def combined(reg, members, regions, ctx, number):
 def union_or_intersect(reg, regions, ctx, number):
     if reg.open:
         raise Unmigratable("region %s: a %s with open faces" % (reg.id, reg.style))
-    members = combined(reg, [regions[x] for x in reg.members], regions, ctx, number)
+    subs = [regions[x] for x in reg.members]
+    if all(m.open for m in subs):
+        return open_members(reg, subs, regions, ctx, number)
+    members = combined(reg, subs, regions, ctx, number)
     union = reg.style == "union"
     if all(m.style == "plane" for m, _ in members):
         return extrusion(reg, members, union, ctx.L)
     return coaxial(reg, members, union, ctx.L)
+
+
+def open_members(reg, subs, regions, ctx, number):
+    """A union or intersection whose members are all open: each member's faces, as its own
+    two-sided surfaces. An open member matches every point (Region::match), so the union
+    (intersection) holds every particle and keeps every member's contacts (RegUnion and
+    RegIntersect::surface_interior drop a contact only inside a member that is not open):
+    each member acts as it would alone, as each wall/rigid does."""
+    if reg.side == "out":
+        raise Unmigratable("region %s: a %s of open members with side out, which holds "
+                           "no particle in LAMMPS (its members match every point)" % (
+                               reg.id, reg.style))
+    out = []
+    for m in subs:
+        if m.move or m.rotate:
+            raise Unmigratable("region %s: its member %s moves: the tool migrates unions "
+                               "and intersections that stand still" % (reg.id, m.id))
+        out += surfaces(m, regions, ctx, number)
+    return out
 
 
 def coaxial(reg, members, union, L):

@@ -160,7 +160,7 @@ class Wall:
     def region_surfaces(self, ctx, number_of):
         reg, regions, vals = self.observed
         surfs = geo.surfaces(reg, regions, ctx, number_of)
-        if reg.members:
+        if reg.members and not all(regions[m].open for m in reg.members):
             self.notes.append(
                 "region %s is %s: LAMMPS gives a particle the faces of the members its "
                 "centre lies in, wall/rigid the faces of the %s's outline; where a sphere "
@@ -270,7 +270,7 @@ class Wall:
         if self.g.style not in ("hertz/history", "granular"):
             return notes
         for fid, s in self.pieces:
-            who = "%s: " % fid if len(self.pieces) > 1 else ""
+            who = "its wall %s: " % fid if len(self.pieces) > 1 else ""
             if "cone" in s.curvature:
                 notes.append(
                     "%sa cone face (half-angle up to %.4g degrees): LAMMPS's region "

@@ -373,6 +373,13 @@ check("a wall in an included file: the file's commands, migrated, in place of it
       "include in.lwalls\n" not in out.replace("# rigidsurf-migrate: include in.lwalls", ""),
       out + err)
 
+# the periodicity change_box gives
+rc, out, err = migrate(HEAD.replace("boundary f f f", "boundary p p p") +
+                       "change_box all boundary p p f\nfix w all wall/gran %s zplane 0 NULL\n"
+                       % HOOKE)
+check("change_box ... boundary p p f: a zplane wall where z is not periodic",
+      rc == 0 and "fix w all wall/rigid" in out, err)
+
 # ---- what names a wall -----------------------------------------------------------------
 deck = HEAD + ("fix w all wall/gran %s zplane 0.0 0.1 contacts\n"
                "fix_modify w energy no\n"

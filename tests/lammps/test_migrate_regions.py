@@ -34,6 +34,9 @@ velocities against 1 m/s, spins against 1/R, forces against 1 N):
   face; an intersection of a cylinder and a plane normal to its axis (a drum with a
   floor); a union of a cylinder and a cone (a hopper: one REVOLUTION), a sphere hitting
   the cylinder's face (to 1e-9) and one the cone's (its overlap as on the cone above);
+- a union of members that are all open (LAMMPS's granregion funnel: a cone open at both
+  ends over a pipe open at its top): each member a wall of its own, a sphere dropped onto
+  the pipe's plug and one thrown at its wall, to 1e-9;
 - a cylinder open at both ends (`open 1 open 2`: LAMMPS makes it two-sided): a sphere
   hitting its inside (to 1e-9), and one its outside, where LAMMPS's open branch takes the
   wall flat (rwall 0) and reff region +2 Rc: the deepest overlap against stock's is
@@ -209,6 +212,21 @@ def combined(s):
           want)
 
 
+def funnel(s):
+    """LAMMPS's granregion funnel example's walls: a union of a cone open at both ends and a
+    pipe open at its top below it (each member then acts as it would alone), a sphere
+    dropped onto the pipe's plug and one thrown at the pipe's wall, both from inside."""
+    R = 0.004
+    rg = ("region pipe cylinder z 0 0 0.02 -0.04 0.02 open 2 units box\n"
+          "region cone cone z 0 0 0.02 0.09 0.02 0.12 open 1 open 2 units box\n"
+          "region hop union 2 cone pipe\n")
+    wall = "fix w all wall/gran/region hertz/history 2e8 NULL 5e3 NULL 0.5 1 region hop"
+    atoms = M.sphere(1, (0.0, 0.005, -0.02), R, RHO, (0.0, 0.0, -0.3)) + \
+        M.sphere(2, (-0.005, 0.0, -0.01), R, RHO, (-0.4, 0.1, 0.0))
+    exact(s, "funnel", deck("funnel", rg, wall, atoms, gravity="0 0 -1", dt=1e-5,
+                            steps=8000), R)
+
+
 def open_cylinder(s):
     R, Rc = 0.012, T.RC
     rg = "region c cylinder z 0 0 %r -1 1 open 1 open 2 units box\n" % Rc
@@ -227,6 +245,7 @@ def body(s):
     spheres_blocks(s)
     moving(s)
     combined(s)
+    funnel(s)
     open_cylinder(s)
 
 
