@@ -65,13 +65,23 @@ class LammpsMigration:
         super().__init__(path, cli_vars, "lammps")
         self.deck.observer = self.observe
         self.regions, self.observed, self.files = {}, {}, {}
+        # the region walls that exist (fix ID: its Exec and regions as made), and those
+        # that run with a region defined again since (Exec: the run and the region)
+        self.live, self.redefined = {}, {}
         self.units, self.dimension, self.periodic = "lj", 3, [True, True, True]
         self.lattice, self.box = (1.0, 1.0, 1.0), None
 
     # -- what the deck holds where a wall is made ------------------------------------
     def observe(self, ex):
         w = ex.words
-        if w[0] == "region" and len(w) >= 3:
+        if w[0] == "unfix" and len(w) > 1:
+            self.live.pop(w[1], None)
+        elif w[0] == "run":
+            for fex, made in self.live.values():
+                for rid, reg in made.items():
+                    if self.regions.get(rid) is not reg and fex not in self.redefined:
+                        self.redefined[fex] = (ex.cmd, rid)
+        elif w[0] == "region" and len(w) >= 3:
             if w[2] == "delete":
                 for rid in w[1:2]:
                     if rid not in self.regions:
@@ -112,6 +122,12 @@ class LammpsMigration:
                 except DeckError as e:   # LAMMPS needs it only when the run begins
                     vals[name] = str(e)
             self.observed[ex] = (reg, dict(self.regions), vals)
+            made, todo = {}, [reg]
+            while todo:
+                r = todo.pop()
+                made[r.id] = r
+                todo += [self.regions[m] for m in r.members]
+            self.live[w[1]] = (ex, made)
 
     # -- the deck ------------------------------------------------------------------
     def wall_related(self, words, ids):
@@ -170,6 +186,13 @@ class LammpsMigration:
                     raise DeckError(ex.via or ex.cmd, "fix %s: %s in a periodic dimension "
                                     "(LAMMPS: Cannot use wall in periodic dimension)" % (
                                         wall.id, wall.g.wall))
+                if ex in self.redefined:
+                    cmd, rid = self.redefined[ex]
+                    wall.reasons.append(
+                        "%s runs it with region %s defined again since the wall was made "
+                        "(LAMMPS's wall takes the region of its ID as it stands at each "
+                        "run): the tool migrates a wall whose region stays as it was" % (
+                            cmd.where(), rid))
                 if restart is not None:
                     wall.notes.append(
                         "read_restart (%s): a restart file of stock lmp holds fix %s's "

@@ -19,6 +19,9 @@ docs/migration.md, *LAMMPS walls*).
 - the model: `law lammps` with the model words as written; on curved faces `reff
   region` (cylinders, cones: LAMMPS's region walls take -2 r as the wall's radius of
   curvature) or the exact effective radius (spheres: LAMMPS takes -Rs, which is exact);
+- a region's one-sided surfaces `behind none`: LAMMPS's region wall leaves alone a
+  particle whose centre lies outside its region (FixWallGranRegion::post_force asks
+  Region::match), as wall/rigid's one-sided surface then leaves alone one behind it;
 - `contacts`: `store_force`, whose per-atom force_ID stands for LAMMPS's f_ID[2-4].
 """
 import math
@@ -251,6 +254,9 @@ class Wall:
             words = ["fix", fid, self.group_raw, "wall/rigid", "surface", "inline"]
             words += surface_words(s, L, fid, os.path.dirname(os.path.abspath(deck_path)),
                                    os.path.basename(deck_path), files)
+            if self.style == "wall/gran/region" and not s.two_sided:
+                # LAMMPS's region wall touches the particles on its region's side only
+                words += ["behind", "none"]
             words += self.law_words(s)
             if self.contacts:
                 words += ["store_force", "into", self.id] if many else ["store_force", "yes"]

@@ -173,6 +173,8 @@ struct rs_wall {
     int routine_step_warned;
     long behind;
     int behind_warned;
+    int behind_none; ///< behind none: a one-sided surface leaves alone the particles behind
+                     ///< it
     double restart_version;
     void (*warn)(void *warn_ctx, const rs_law *law, int k, const char *msg);
     void *warn_ctx;
@@ -222,10 +224,11 @@ static inline int wall_in_group(const rs_wall_block *b, int i)
 {
     return !b->mask || (b->mask[i] & b->groupbit);
 }
-/// The rebuilds look behind the surface: it is one-sided and has not warned yet.
+/// The rebuilds look behind the surface: it is one-sided, pushes those behind it through
+/// (behind push) and has not warned yet.
 static inline int wall_looks_behind(const rs_wall *w)
 {
-    return w->surf->sides != 2 && !w->behind_warned;
+    return w->surf->sides != 2 && !w->behind_warned && !w->behind_none;
 }
 
 /* wall_words.c, wall_law_words.c, wall_motion.c, wall_servo.c: the words */

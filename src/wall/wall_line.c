@@ -87,6 +87,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
         for (int j = 0; j < m; j++) {
             const int usual = face[j] && c.dist[j] <= w->tracking + pr[j] &&
                               !(c.dist[j] - pr[j] > w->tracker.tracking) &&
+                              !(w->behind_none && w->surf->sides != 2 && c.dist[j] < 0.0) &&
                               rs_track_dir_usual(pd[j], cap, RS_DIR_LIVE(c.feature[j]));
             if (!usual) {
                 w->rest[w->nrest++] = row[j];

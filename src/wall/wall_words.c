@@ -69,7 +69,8 @@ int wall_is_keyword(const char *s)
         "statev",      "tracking",     "area",   "contacts", "move",
         "rotate",      "temperature",  "predef", "vtk",      "curvature",
         "pnewdt",      "surface_vel",  "wear",   "servo",    "conduction",
-        "store_force", "contact_area", "spin",   "peratom",  "fused"};
+        "store_force", "contact_area", "spin",   "peratom",  "fused",
+        "behind"};
     for (size_t k = 0; k < sizeof kw / sizeof kw[0]; k++)
         if (strcmp(s, kw[k]) == 0)
             return 1;
@@ -315,11 +316,13 @@ static int keyword(rs_wall *w, const char *const *arg, int narg, int *iarg, rs_e
         w->pnewdt_stop = !warn;
     } else if (strcmp(kw, "fused") == 0) {
         rc = either(arg, narg, &i, "yes", "no", &w->fused_given, err);
+    } else if (strcmp(kw, "behind") == 0) {
+        rc = either(arg, narg, &i, "none", "push", &w->behind_none, err);
     } else {
         FAIL("unknown keyword '%s'; expected surface, name, law, props, type, statev, "
              "tracking, area, contacts, move, rotate, spin, servo, surface_vel, "
              "temperature, conduction, contact_area, predef, vtk, curvature, wear, "
-             "store_force, peratom, fused or pnewdt",
+             "store_force, peratom, fused, behind or pnewdt",
              kw);
     }
 #undef NEED
