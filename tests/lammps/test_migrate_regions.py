@@ -37,6 +37,9 @@ velocities against 1 m/s, spins against 1/R, forces against 1 N):
 - a union of members that are all open (LAMMPS's granregion funnel: a cone open at both
   ends over a pipe open at its top): each member a wall of its own, a sphere dropped onto
   the pipe's plug and one thrown at its wall, to 1e-9;
+- a closed drum with spheres dropped onto its lid from above: LAMMPS's region wall leaves a
+  particle outside its region alone, so they fall through the lid and land on the floor
+  (wall/rigid's behind none), to 1e-9;
 - a cylinder open at both ends (`open 1 open 2`: LAMMPS makes it two-sided): a sphere
   hitting its inside (to 1e-9), and one its outside, where LAMMPS's open branch takes the
   wall flat (rwall 0) and reff region +2 Rc: the deepest overlap against stock's is
@@ -75,7 +78,7 @@ def exact(s, name, d, R):
                   for a in f.values())
     s.ck.check(name + ": stock's wall pushed the spheres", touched)
     M.L.check_trajectories(s, name, rigid, stock, SCALES(R), 1e-9, ref="stock lmp's")
-    return stock, rigid, text
+    return stock, rigid, err, text
 
 
 def ratio(s, name, stock, rigid, gap, want):
@@ -227,6 +230,24 @@ def funnel(s):
                             steps=8000), R)
 
 
+def through_lid(s):
+    """A closed drum (a cylinder region side in, its lid at z = 0.1) with spheres dropped
+    onto its lid from above: LAMMPS's region wall leaves a particle outside its region
+    alone, so they fall through the lid into the drum and land on its floor; the tool's
+    wall/rigid leaves them alone by behind none."""
+    R = 0.005
+    rg = "region d cylinder z 0 0 0.05 0 0.1 units box\n"
+    wall = "fix w all wall/gran/region hooke/history 2e5 NULL 50 NULL 0.5 1 region d"
+    atoms = M.sphere(1, (0.0, 0.01, 0.11), R, RHO, (0.0, 0.0, -0.5)) + \
+        M.sphere(2, (0.045, 0.0, 0.12), R, RHO, (0.0, 0.0, -0.3))
+    stock, rigid, _, text = exact(s, "through_lid", deck(
+        "through_lid", rg, wall, atoms, gravity="0 0 -1", dt=1e-5, steps=15000), R)
+    s.ck.check("through_lid: stock's spheres fell through the lid onto the floor, as the "
+               "migrated deck's (behind none)", "behind none" in text and
+               all(a["z"] < 0.02 for a in stock[-1][1].values()),
+               str([a["z"] for a in stock[-1][1].values()]))
+
+
 def open_cylinder(s):
     R, Rc = 0.012, T.RC
     rg = "region c cylinder z 0 0 %r -1 1 open 1 open 2 units box\n" % Rc
@@ -246,6 +267,7 @@ def body(s):
     moving(s)
     combined(s)
     funnel(s)
+    through_lid(s)
     open_cylinder(s)
 
 
