@@ -86,7 +86,7 @@ static void keep_tracked(rs_wall *w, const rs_wall_block *b, const int *idx, int
     double *restrict gmin = w->bgap;
     const double *restrict R = w->brad;
     const double tracking = w->tracking;
-    const int bounds = w->bounds_ok, front = w->behind_none && w->surf->sides != 2;
+    const int bounds = w->bounds_ok, front = wall_front_only(w);
     if (bounds)
         for (int k = 0; k < n; k++)
             gmin[k] = tracking + w->lookahead;

@@ -258,6 +258,12 @@ static inline int wall_looks_behind(const rs_wall *w)
 {
     return w->surf->sides != 2 && !w->behind_warned && !w->behind_none;
 }
+/// behind none on a one-sided surface: a particle touches it only with its centre in
+/// front (dist >= 0); one behind it is left alone until it comes through.
+static inline int wall_front_only(const rs_wall *w)
+{
+    return w->behind_none && w->surf->sides != 2;
+}
 
 /* wall_words.c, wall_law_words.c, wall_motion.c, wall_servo.c: the words */
 int wall_parse(rs_wall *w, const char *const *arg, int narg, rs_error *err);

@@ -98,7 +98,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
             const int still_usual =
                 face[j] && c.dist[j] <= w->tracking + pr[j] &&
                 !(c.dist[j] - pr[j] > w->tracker.tracking) &&
-                !(w->behind_none && w->surf->sides != 2 && c.dist[j] < 0.0) &&
+                !(wall_front_only(w) && c.dist[j] < 0.0) &&
                 usual[row[j]] == c.feature[j] + 1;
             if (!still_usual) {
                 w->rest[w->nrest++] = row[j];
