@@ -104,4 +104,4 @@ def body(s):
 
 
 if __name__ == "__main__":
-    M.L.main_guard(M.L.Session(__doc__), body)
+    M.L.main_guard(M.L.Session(__doc__, extra=[M.STOCK]), body)
