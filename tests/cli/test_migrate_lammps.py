@@ -225,9 +225,10 @@ check("a cone side out: its outline reversed (the normals outward), one-sided",
       "sides 2" not in k and close(profile(k), [(0, 0.1), (0.06, 0.1), (0.02, 0), (0, 0)]),
       k)
 s = wall_line(out, "s")
-check("a sphere side out: two arcs from the top, the exact effective radius (no reff)",
+check("a sphere side out: two arcs from the top, one-sided, leaving alone the particles "
+      "inside it (behind none), the exact effective radius (no reff)",
       "revolution origin 0 0 0.05 axis 0 0 1 profile START 0 0.04 CIRCL 0.04 0 0 0 CIRCL 0 "
-      "-0.04 0 0 end law lammps " + HERTZ in s, s)
+      "-0.04 0 0 end behind none law lammps " + HERTZ in s, s)
 m = wall_line(out, "m")
 D0, th0 = 0.01, 0.0
 check("a moving, turning cylinder in lattice units (lattice none 2): placed where the "
@@ -346,15 +347,18 @@ def inward(tris, centre):
 
 
 tb, to, tp = facets("in.boxes.b.stl"), facets("in.boxes.o.stl"), facets("in.boxes.p.stl")
-check("a block: 12 facets facing its inside in in.boxes.b.stl, one-sided",
+check("a block: 12 facets facing its inside in in.boxes.b.stl, one-sided, leaving alone "
+      "the particles outside it (behind none)",
       rc == 0 and tb is not None and len(tb) == 12 and inward(tb, (0, 0, 0.05)) and
-      "surface inline mesh in.boxes.b.stl sides 1 law lammps" in wall_line(out, "b") and
+      "surface inline mesh in.boxes.b.stl sides 1 behind none law lammps" in
+      wall_line(out, "b") and
       "NOTE: fix b: region b's faces are written to in.boxes.b.stl" in err, out + err)
-check("a block with face 6 open: 10 facets, none at its top, both sides",
+check("a block with face 6 open: 10 facets, none at its top, both sides, no behind",
       to is not None and len(to) == 10 and all(max(p[2] for p in t) < 0.1 or
                                               min(p[2] for p in t) < 0.1 for t in to) and
       not any(all(p[2] == 0.1 for p in t) for t in to) and
-      "mesh in.boxes.o.stl sides 2" in wall_line(out, "o"), str(to))
+      "mesh in.boxes.o.stl sides 2" in wall_line(out, "o") and
+      "behind" not in wall_line(out, "o"), str(to))
 # LAMMPS's corners: lo + i a + j b + k c, a = (0.1, 0, 0), b = (xy, 0.1, 0), c = (xz, yz, 0.1)
 corners = {(-0.05 + 0.1 * i + 0.02 * j + 0.03 * k, -0.05 + 0.1 * j, 0.1 * k)
            for i in (0, 1) for j in (0, 1) for k in (0, 1)}
