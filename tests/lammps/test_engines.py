@@ -19,7 +19,8 @@ VTK files the walls write. The decks cover every surface kind and the fix's keyw
 - a MESH box from an STL file (inline mesh), spun (spin), law hertz, wear finnie with
   k_finnie, vtk with the facets' stress and wear;
 - a plane with a FRIC routine compiled from its Fortran source (law fric ... normal
-  hertz);
+  hertz), and with a UINTER (law uinter ... normal hertz) and a VUINTER (a linear
+  penalty, the plane moving along itself) likewise;
 - a plate driven by the servo to a target force on spheres resting on a floor, law hooke
   from the materials and characteristicVelocity.
 """
@@ -30,7 +31,10 @@ import lmplib as M
 
 DT = 1.0e-5
 HERE = os.path.dirname(os.path.abspath(__file__))
-FRIC = os.path.join(HERE, "..", "liggghts", "routines", "fric_coulomb.f")
+ROUTINES = os.path.join(HERE, "..", "liggghts", "routines")
+FRIC = os.path.join(ROUTINES, "fric_coulomb.f")
+UINTER = os.path.join(ROUTINES, "uinter_coulomb.f")
+VUINTER = os.path.join(ROUTINES, "vuinter_facets.f")
 YOUNG, POISSON, E, MU = (5e7, 2e8), (0.3, 0.25), 0.7, 0.5
 LMP_MAT = ("youngsModulus %r %r poissonsRatio %r %r coefficientRestitution %r %r "
            "coefficientFriction %r %r" % (YOUNG + POISSON + (E, E, MU, MU)))
@@ -113,6 +117,16 @@ CASES = [
      "atoms": lambda e: rain(e, (-0.02, 0.0, 0.02), 0.00201, gravity_y=False), "steps": 2000,
      "walls": {"w": "surface floor.inp law fric %s normal hertz statev 1 %s 0.4 1e5"
                     % (FRIC, HERTZ_PROPS)}, "cols": ""},
+    {"name": "uinter", "box": (-0.05, 0.05, -0.05, 0.05, -0.01, 0.05), "g": "0 0 -1",
+     "files": {"floor.inp": M.L.plane_z(0.0)},
+     "atoms": lambda e: rain(e, (-0.02, 0.0, 0.02), 0.00201, gravity_y=False), "steps": 2000,
+     "walls": {"w": "surface floor.inp law uinter %s normal hertz statev 2 %s 0.4 5e3"
+                    % (UINTER, HERTZ_PROPS)}, "cols": ""},
+    {"name": "vuinter", "box": (-0.05, 0.05, -0.05, 0.05, -0.01, 0.05), "g": "0 0 -1",
+     "files": {"floor.inp": M.L.plane_z(0.0)},
+     "atoms": lambda e: rain(e, (-0.02, 0.0, 0.02), 0.00201, gravity_y=False), "steps": 2000,
+     "walls": {"w": "surface floor.inp law vuinter %s props 1e3 0 move linear 0.01 0 0"
+                    % VUINTER}, "cols": ""},
     {"name": "servo", "box": (-0.05, 0.05, -0.05, 0.05, -0.01, 0.05), "g": "0 0 -1",
      "files": {"floor.inp": M.L.plane_z(0.0), "plate.inp": PLANE_DOWN % (0.0045, 0.0045,
                                                                           0.0045)},
