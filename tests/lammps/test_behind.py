@@ -44,17 +44,16 @@ def stored_energy():
 
 
 def spheres():
-    """(id, kind, start radius, radial speed) of each sphere, at angles 2 pi k / n."""
+    """(kind, start radius, radial speed) of each sphere; sphere i (id i + 1) starts at
+    the angle 2 pi i / n."""
     out = []
     # going out: their centre R + 10 um inside the mantle
-    for k in range(4):
-        out.append(("out", RC - R - 1e-5, V_FAST))
+    out += [("out", RC - R - 1e-5, V_FAST)] * 4
     # coming in: centres 1.5 R and 2.5 mm behind the surface (the latter within the skin,
     # beyond R)
     for k in range(4):
         out.append(("in", RC + (1.5 * R if k % 2 else 0.0025), -V_FAST))
-    for k in range(2):
-        out.append(("bounce", RC - R - 1e-5, V_SLOW))
+    out += [("bounce", RC - R - 1e-5, V_SLOW)] * 2
     return out
 
 
