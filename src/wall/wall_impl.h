@@ -50,6 +50,9 @@ struct rs_wall {
     int moving, belt; ///< belt: surface_vel, the tracker gets the motion even at rest
     char var_vel[3][WALL_NAME], var_omega[WALL_NAME], var_spin[WALL_NAME];
     int ivar_vel[3], ivar_omega, ivar_spin;
+    char var_disp[3][WALL_NAME]; ///< move variable: the translation's variables
+    int ivar_disp[3];
+    double disp_given[3]; ///< move variable: the translation's numbers
     int rot_by_period, spin_by_period;
     double period;
     rs_error rates_err; ///< why a rates callback stopped the motion
@@ -173,6 +176,8 @@ struct rs_wall {
     int routine_step_warned;
     long behind;
     int behind_warned;
+    int behind_none; ///< behind none: a one-sided surface leaves alone the particles behind
+                     ///< it
     double restart_version;
     void (*warn)(void *warn_ctx, const rs_law *law, int k, const char *msg);
     void *warn_ctx;
@@ -254,10 +259,17 @@ static inline int wall_in_group(const rs_wall_block *b, int i)
 {
     return !b->mask || (b->mask[i] & b->groupbit);
 }
-/// The rebuilds look behind the surface: it is one-sided and has not warned yet.
+/// The rebuilds look behind the surface: it is one-sided, pushes those behind it through
+/// (behind push) and has not warned yet.
 static inline int wall_looks_behind(const rs_wall *w)
 {
-    return w->surf->sides != 2 && !w->behind_warned;
+    return w->surf->sides != 2 && !w->behind_warned && !w->behind_none;
+}
+/// behind none on a one-sided surface: a particle touches it only with its centre in
+/// front (dist >= 0); one behind it is left alone until it comes through.
+static inline int wall_front_only(const rs_wall *w)
+{
+    return w->behind_none && w->surf->sides != 2;
 }
 
 /* wall_words.c, wall_law_words.c, wall_motion.c, wall_servo.c: the words */

@@ -115,7 +115,9 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
                                  face);
         rs_frame_orient(w->surf->ops->frame, &c, 0, m);
         /* Usual still: the face contact within the tracking thickness (keep_tracked's
-         * test and the tracker's), the feature the directory holds. */
+         * test and the tracker's), the feature the directory holds. A one-sided LINE's
+         * face takes only centres in front of it (rs_line_face1), so a sphere behind it
+         * goes to the rest, where behind none leaves it alone (keep_tracked). */
         int nu = 0;
         for (int j = 0; j < m; j++) {
             const int still_usual = face[j] && c.dist[j] <= w->tracking + pr[j] &&
