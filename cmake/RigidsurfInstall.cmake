@@ -1,8 +1,9 @@
 # Installation, in one place (included once at the end of the top-level CMakeLists.txt):
-#   bin/                     liggghts-rigidsurf, rigidsurf-frames, rigidsurf-build-law,
-#                            rigidsurf-migrate
+#   bin/                     liggghts-rigidsurf, lmp-rigidsurf, rigidsurf-frames,
+#                            rigidsurf-build-law, rigidsurf-migrate
 #   share/rigidsurf/         rigidsurf_migrate_*.py (rigidsurf-migrate's modules)
-#   lib/                     librigidsurf.a, librigidsurf_abaqus.so,
+#   lib/                     librigidsurf.a, librigidsurf_abaqus.so, wallrigidplugin.so
+#                            (LAMMPS's plugin load),
 #                            cmake/rigidsurf/ (find_package(rigidsurf CONFIG):
 #                            rigidsurf::rigidsurf), pkgconfig/rigidsurf.pc
 #   include/rigidsurf/       the public C headers and the Fortran includes of user
@@ -21,6 +22,12 @@ set(RS_INSTALL_INCDIR ${CMAKE_INSTALL_INCLUDEDIR}/rigidsurf)
 set(RS_INSTALL_PROGRAMS rigidsurf-frames rigidsurf-build-law)
 if(RS_WITH_LIGGGHTS)
   list(APPEND RS_INSTALL_PROGRAMS liggghts-rigidsurf)
+endif()
+if(RS_WITH_LAMMPS)
+  list(APPEND RS_INSTALL_PROGRAMS lmp-rigidsurf)
+  # the plugin finds librigidsurf_abaqus beside itself
+  set_target_properties(wallrigidplugin PROPERTIES INSTALL_RPATH "$ORIGIN")
+  install(TARGETS wallrigidplugin LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 endif()
 set_target_properties(${RS_INSTALL_PROGRAMS} PROPERTIES
   INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}")

@@ -218,9 +218,23 @@ int rs_motion_advance(rs_motion *m, double dt, rs_error *err)
         memcpy(m->disp, d, sizeof d);
         memcpy(m->disp_err, e, sizeof e);
     }
-    for (int i = 0; i < 3; i++) {
-        m->step_disp[i] = m->vel[i] * dt;
-        kahan_add(&m->disp[i], &m->disp_err[i], m->step_disp[i]);
+    if (m->place) { /* the translation as given: D(t), not the sum of V dt */
+        double D[3];
+        const int rc = m->place(tmid, D, m->ctx);
+        const int ok = rates_checked(rc, isfinite(D[0]) && isfinite(D[1]) && isfinite(D[2]),
+                                     "translation", tmid, err);
+        if (ok != RS_OK)
+            return ok;
+        for (int i = 0; i < 3; i++) {
+            m->step_disp[i] = D[i] - m->disp[i];
+            m->disp[i] = D[i];
+            m->disp_err[i] = 0.0;
+        }
+    } else {
+        for (int i = 0; i < 3; i++) {
+            m->step_disp[i] = m->vel[i] * dt;
+            kahan_add(&m->disp[i], &m->disp_err[i], m->step_disp[i]);
+        }
     }
     kahan_add(&m->t, &m->t_err, dt);
     if (m->spin_on) { /* then the spin: dQ = R_s dQ, S = dQ S */

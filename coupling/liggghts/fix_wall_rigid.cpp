@@ -6,6 +6,8 @@
 #include "fix_wall_rigid.h"
 #include "liggghts_law.h"
 
+#include "adapter.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
@@ -38,49 +40,6 @@ using namespace FixConst;
 namespace
 {
 
-FixWallRigid *self(void *ctx)
-{
-    return static_cast<FixWallRigid *>(ctx);
-}
-
-void host_reduce(void *ctx, double *v, int n, int op)
-{
-    self(ctx)->reduce(v, n, op);
-}
-
-int host_variable_find(void *ctx, const char *name)
-{
-    return self(ctx)->variable_find(name);
-}
-
-double host_variable_eval(void *ctx, int index, int why)
-{
-    return self(ctx)->variable_eval(index, why);
-}
-
-int host_material(void *ctx, const char *name, int i, int j, int required, const char *who,
-                  double *value, rs_error *err)
-{
-    return self(ctx)->material(name, i, j, required, who, value, err);
-}
-
-void host_warning(void *ctx, const char *msg)
-{
-    self(ctx)->warning(msg);
-}
-
-void host_info(void *ctx, const char *msg)
-{
-    self(ctx)->info(msg);
-}
-
-int host_engine_law(void *ctx, const char *const *words, int nwords, const rs_law **law,
-                    rs_error *err)
-{
-    (void)err; /* LIGGGHTS's own messages end the run (LiggghtsLaw) */
-    return self(ctx)->engine_law(words, nwords, law);
-}
-
 int liggghts_law_update(const rs_law *law, rs_law_block *b, rs_error *err)
 {
     return static_cast<FixWallRigid *>(law->ctx)->liggghts_update(b, err);
@@ -95,31 +54,17 @@ double liggghts_law_reach(const rs_law *law, const double *, int)
 
 void FixWallRigid::reduce(double *v, int n, int op)
 {
-    const MPI_Op mop = op == RS_REDUCE_MIN   ? MPI_MIN
-                       : op == RS_REDUCE_MAX ? MPI_MAX
-                                             : MPI_SUM;
-    std::vector<double> in(v, v + n);
-    MPI_Allreduce(in.data(), v, n, MPI_DOUBLE, mop, world);
+    rs_adapter_reduce(world, v, n, op);
 }
 
 int FixWallRigid::variable_find(const char *name)
 {
-    const int iv = input->variable->find(const_cast<char *>(name));
-    if (iv < 0)
-        return RS_VAR_MISSING;
-    return input->variable->equalstyle(iv) ? iv : RS_VAR_NOT_EQUAL;
+    return rs_adapter_variable_find(lmp, name);
 }
 
-/* A servo's target is read after the step's forces, as LIGGGHTS's servo reads it: the
- * computes it uses are then current, and asked for again at the next step. */
 double FixWallRigid::variable_eval(int index, int why)
 {
-    if (why != RS_VAR_SERVO)
-        return input->variable->compute_equal(index);
-    modify->clearstep_compute();
-    const double v = input->variable->compute_equal(index);
-    modify->addstep_compute(update->ntimestep + 1);
-    return v;
+    return rs_adapter_variable_eval(lmp, index, why);
 }
 
 void FixWallRigid::warning(const char *msg)
@@ -129,9 +74,7 @@ void FixWallRigid::warning(const char *msg)
 
 void FixWallRigid::info(const char *msg)
 {
-    for (FILE *fp : {screen, logfile})
-        if (fp)
-            std::fprintf(fp, "INFO: %s\n", msg);
+    rs_adapter_info(screen, logfile, msg);
 }
 
 /* LIGGGHTS's material properties (fix property/global), looked up as fix wall/gran looks
@@ -175,8 +118,10 @@ int FixWallRigid::material(const char *name, int i, int j, int required, const c
 
 /* law liggghts: LIGGGHTS's own words, up to the next keyword of wall/rigid; the model
  * reads the overlap, the frame and its own history only, and gives a force and torque. */
-int FixWallRigid::engine_law(const char *const *words, int nwords, const rs_law **law)
+int FixWallRigid::engine_law(const char *const *words, int nwords, const rs_law **law,
+                             rs_error *err)
 {
+    (void)err; /* LIGGGHTS's own messages end the run (LiggghtsLaw) */
     lig_ = new LiggghtsLaw(lmp, id, std::vector<std::string>(words, words + nwords));
     std::memset(&lig_desc_, 0, sizeof lig_desc_);
     lig_desc_.name = "liggghts";
@@ -200,19 +145,8 @@ FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
       fix_heatflux_(NULL), wallforce_clear_(true), wallforce_(NULL), nmax_(0),
       out_step_(-1), out_valid_(false)
 {
-    std::memset(&host_, 0, sizeof host_);
     std::memset(&lig_desc_, 0, sizeof lig_desc_);
-    host_.ctx = this;
-    host_.rank = comm->me;
-    host_.ntypes = atom->ntypes;
-    host_.reduce = host_reduce;
-    host_.variable_find = host_variable_find;
-    host_.variable_eval = host_variable_eval;
-    host_.material = host_material;
-    host_.warning = host_warning;
-    host_.info = host_info;
-    host_.engine_law = host_engine_law;
-    host_.engine_law_name = "liggghts";
+    host_ = rs_adapter_host(this, comm->me, atom->ntypes, "liggghts");
     rs_error err;
     rs_error_clear(&err);
     if (rs_wall_create(id, group->names[igroup], arg + 3, narg - 3, &host_, &wall_, &err) !=
@@ -387,19 +321,12 @@ void FixWallRigid::init()
             shares_wallforce(static_cast<FixWallRigid *>(modify->fix[i])))
             wallforce_clear_ = false;
 
-    rs_wall_run run;
-    std::memset(&run, 0, sizeof run);
-    run.dt = update->dt;
-    run.skin = neighbor->skin;
-    run.half_skin = neighbor->delay == 0 && neighbor->every == 1 && neighbor->dist_check &&
-                    !neighbor->build_once;
-    for (int d = 0; d < 3; d++) {
-        run.box_lo[d] = domain->boxlo[d];
-        run.box_hi[d] = domain->boxhi[d];
-    }
     /* LIGGGHTS 3.8 packs a leaving atom into the slack of its send buffer (comm.cpp and
-     * irregular.cpp: BUFEXTRA, 1000 doubles, shared by the atom style and every fix) */
-    run.exchange_max = 600;
+     * irregular.cpp: BUFEXTRA, 1000 doubles, shared by the atom style and every fix): 600
+     */
+    rs_wall_run run = rs_adapter_run(
+        update->dt, neighbor->skin, neighbor->delay, neighbor->every, neighbor->dist_check,
+        neighbor->build_once, domain->boxlo, domain->boxhi, 600);
     run.has_temp = fix_temp_ != NULL;
     run.has_heatflux = fix_heatflux_ != NULL;
     const rs_wall_block b = block(true);
@@ -431,9 +358,8 @@ rs_wall_block FixWallRigid::block(bool setup) const
     b.pred = pred_.empty() ? NULL : pred_.data();
     b.step = update->ntimestep;
     b.inc = (int)(update->ntimestep - update->firststep);
-    /* the time at the end of the step, less the step but at a setup call */
-    const double end = update->atime + (update->ntimestep - update->atimestep) * update->dt;
-    b.time = setup ? end : end - update->dt;
+    b.time = rs_adapter_time(update->atime, update->atimestep, update->ntimestep,
+                             update->dt, setup);
     return b;
 }
 
@@ -533,13 +459,7 @@ double FixWallRigid::compute_vector(int n)
 
 void FixWallRigid::write_restart(FILE *fp)
 {
-    std::vector<double> list((size_t)rs_wall_restart_size(wall_));
-    rs_wall_write_restart(wall_, list.data());
-    if (comm->me == 0) {
-        const int size = (int)(list.size() * sizeof(double));
-        std::fwrite(&size, sizeof(int), 1, fp);
-        std::fwrite(list.data(), sizeof(double), list.size(), fp);
-    }
+    rs_adapter_write_restart(wall_, fp, comm->me);
 }
 
 void FixWallRigid::restart(char *buf)
@@ -597,24 +517,16 @@ int FixWallRigid::unpack_exchange(int nlocal, double *buf)
     return n;
 }
 
-/* A restart record: its length (LIGGGHTS's), then the wall's record of the atom. */
 int FixWallRigid::pack_restart(int i, double *buf)
 {
-    const int n = rs_wall_pack(wall_, i, buf + 1);
-    buf[0] = n + 1;
-    return n + 1;
+    return rs_adapter_pack_restart(wall_, i, buf);
 }
 
 void FixWallRigid::unpack_restart(int nlocal, int nth)
 {
-    double **extra = atom->extra;
-    int m = 0;
-    for (int k = 0; k < nth; k++)
-        m += static_cast<int>(extra[nlocal][m]);
-    const int n = static_cast<int>(extra[nlocal][m]) - 1;
     rs_error err;
     rs_error_clear(&err);
-    if (rs_wall_unpack_restart(wall_, nlocal, &extra[nlocal][m + 1], n, &err) != RS_OK)
+    if (rs_adapter_unpack_restart(wall_, nlocal, atom->extra[nlocal], nth, &err) != RS_OK)
         fail_one(err.msg);
 }
 

@@ -57,7 +57,7 @@ class FixWallRigid : public Fix
     int maxsize_restart();
     double memory_usage();
 
-    /* The host table's answers (fix_wall_rigid.cpp). */
+    /* The host table's answers (fix_wall_rigid.cpp, rs_adapter_host). */
     void reduce(double *v, int n, int op);
     int variable_find(const char *name);
     double variable_eval(int index, int why);
@@ -65,7 +65,7 @@ class FixWallRigid : public Fix
     void info(const char *msg);
     int material(const char *name, int i, int j, int required, const char *who,
                  double *value, rs_error *err);
-    int engine_law(const char *const *words, int nwords, const rs_law **law);
+    int engine_law(const char *const *words, int nwords, const rs_law **law, rs_error *err);
     /// law liggghts: one block of contacts through LIGGGHTS's contact model.
     int liggghts_update(rs_law_block *b, rs_error *err);
     /// law liggghts: its default tracking thickness.

@@ -52,6 +52,8 @@ void rs_rotation_matrix(const double axis[3], double angle, double R[9]);
 typedef int (*rs_motion_rates_fn)(double t, double vel[3], double *omega, void *ctx);
 /// The spin's angular speed at time t, likewise.
 typedef int (*rs_motion_spin_fn)(double t, double *omega, void *ctx);
+/// A translation given as such: fill disp[3], D at time t, likewise.
+typedef int (*rs_motion_place_fn)(double t, double disp[3], void *ctx);
 
 typedef struct rs_motion {
     double t;                 ///< current time
@@ -78,6 +80,8 @@ typedef struct rs_motion {
     double spin_phi, spin_phi_err; ///< accumulated spin angle and its remainder
     double S[9];                   ///< the wall's orientation with the spin (row-major)
     rs_motion_spin_fn spin_rates;  ///< NULL for a constant spin (ctx as rates)
+    rs_motion_place_fn place; ///< NULL: D is the sum of V dt; else D(t) as it gives it (ctx
+                              ///< as rates), V still the rates' (not with the centre fixed)
 } rs_motion;
 
 /// No motion: identity pose, zero rates, axis = z, centre at the origin.
@@ -109,7 +113,8 @@ int rs_motion_set_spin(rs_motion *m, const double point0[3], const double axis[3
 void rs_motion_field(const rs_motion *m, double V[3], double W[3], double C[3]);
 /// Advances time by dt: rates are taken at mid-step (t + dt/2), then phi and D are
 /// integrated and pose and dQ updated; with the centre fixed, D turns by this step's
-/// rotation before this step's translation is added.
+/// rotation before this step's translation is added. With place, D is place's at
+/// mid-step instead of the sum.
 int rs_motion_advance(rs_motion *m, double dt, rs_error *err);
 /// Current velocity of the master material point at spatial point p:
 /// v = V + omega axis x (p - c), c the centre (rs_motion_center), plus the spin's

@@ -274,6 +274,43 @@ void rs_wall_last(const rs_wall *w, rs_track_out *trk, rs_contact_block *cb);
 /// integrates the wall's heat itself).
 void rs_wall_set_temperature(rs_wall *w, double temperature, double dtemperature);
 
+/* ---- An engine's own contact models as a force law -------------------------------- */
+
+/// One live contact of a force law's block (RS_LAW_SETS_FORCE) as the engines' walls
+/// describe a sphere's contact to their contact models.
+typedef struct rs_force_contact {
+    int row;        ///< the engine's index of the particle
+    double overlap; ///< rdisp(1): > 0 touching, < 0 apart
+    double radius;  ///< the particle's radius R
+    double mass;    ///< its mass
+    double reff;    ///< the effective radius from R and the wall's curvatures
+    double curv[2]; ///< the wall's principal curvatures (> 0 convex toward the particle)
+    double n[3];    ///< unit normal from the wall toward the particle's centre
+    double t1[3];   ///< the contact's t1, and t2 (a SEGMENTS wall: t2 = -z)
+    double t2[3];
+    double xm[3];    ///< the master point (a SEGMENTS wall: at the particle's z)
+    double vwall[3]; ///< the velocity of the wall's material at xm (motion and belt)
+    double *history; ///< the contact's state variables (the model's history), or NULL
+    int type;        ///< the particle's material type
+    int wall_type;   ///< the wall's
+    int setup;       ///< a setup call: the history is not advanced
+} rs_force_contact;
+
+/// The outputs of a force law's block b zeroed (stress, force, torque, heat, energies):
+/// what a contact the law skips, or one leaving, gives. First in the law's call.
+void rs_wall_force_begin(rs_law_block *b);
+
+/// Contact e of a force law's block b: for a live contact, describes it in *c and returns
+/// 1; a contact leaving the tracking thickness returns 0 (it applies nothing). x: the
+/// engine's positions (3, n).
+int rs_wall_force_contact(const rs_wall *w, const rs_law_block *b, int e, const double *x,
+                          rs_force_contact *c);
+
+/// The model's force F on the particle and its torque T about the particle's centre for
+/// contact e of c: the law's force and torque, and its stress F in the contact's frame.
+void rs_wall_force_result(rs_law_block *b, int e, const rs_force_contact *c,
+                          const double F[3], const double T[3]);
+
 /* ---- Per-particle history: migration and restart ---------------------------------- */
 
 /// Storage for particles 0 .. nmax-1 (the engine's nmax); what they hold is kept.

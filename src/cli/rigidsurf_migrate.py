@@ -1,11 +1,13 @@
 #!/usr/bin/python3
-"""rigidsurf-migrate: a LIGGGHTS deck's walls as `fix wall/rigid` (docs/migration.md).
+"""rigidsurf-migrate: a LIGGGHTS or LAMMPS deck's walls as `fix wall/rigid`
+(docs/migration.md).
 
 The deck is read and followed as LIGGGHTS runs it (rigidsurf_migrate_deck.py); each
 `fix wall/gran` becomes wall/rigid (rigidsurf_migrate_walls.py), its mesh's `fix
 move/mesh` lines the wall's rates (rigidsurf_migrate_motion.py), and every command that
 names the wall or its mesh is kept working (rigidsurf_migrate_refs.py). Every other line
-is copied byte for byte.
+is copied byte for byte. A LAMMPS deck (detected, or --engine lammps) goes through
+rigidsurf_migrate_lammps.py.
 """
 import os
 import sys
@@ -16,12 +18,14 @@ _HERE = os.path.dirname(os.path.realpath(__file__))
 sys.path[:0] = [_HERE, os.path.join(_HERE, "..", "share", "rigidsurf")]
 import rigidsurf_migrate_commands as grammar  # noqa: E402
 import rigidsurf_migrate_folds as folds  # noqa: E402
+import rigidsurf_migrate_lammps as lammps  # noqa: E402
 import rigidsurf_migrate_motion as motion  # noqa: E402
 import rigidsurf_migrate_refs as refs  # noqa: E402
 import rigidsurf_migrate_walls as walls  # noqa: E402
 from rigidsurf_migrate_deck import Deck, DeckError, split_words  # noqa: E402
 
-USAGE = """usage: rigidsurf-migrate DECK [-var NAME VALUE ...] > DECK.rigid
+USAGE = """usage: rigidsurf-migrate DECK [--engine liggghts|lammps] [-var NAME VALUE ...]
+           > DECK.rigid
 
 Writes the LIGGGHTS deck DECK with its walls as `fix wall/rigid` (liggghts-rigidsurf):
 each `fix wall/gran` primitive or mesh wall, its meshes, their `fix move/mesh` motion,
@@ -31,13 +35,22 @@ line is copied byte for byte. The deck is read as LIGGGHTS runs it: its variable
 written into the deck in place of its include line), `jump`, `label`, `next` and `if`.
 Reports go to stderr, one per line, each with its line number.
 
+A LAMMPS deck (lmp-rigidsurf) likewise: each `fix wall/gran` plane or zcylinder and each
+`fix wall/gran/region` becomes `fix wall/rigid` with `law lammps` and the same model
+words on the exact surfaces of its wall or region, moving as LAMMPS moves it. The engine
+is told by the deck's commands (LAMMPS's wall/gran/region, wall/gran hooke ... or
+granular, pair_style granular; LIGGGHTS's wall/gran model, mesh/surface,
+property/global, atom_style granular), or by --engine.
+
 Exit status:
-  0  every wall was migrated: the deck runs with liggghts-rigidsurf and reads the same
-     quantities as with LIGGGHTS (NOTE lines name what differs in what it writes and
-     where the walls' physics differs from LIGGGHTS's: docs/migration.md)
-  3  some walls are kept as LIGGGHTS's, each listed with its line and the reason; the
-     deck still runs with liggghts-rigidsurf as it runs with LIGGGHTS
-  1  an error, named with its line (a deck LIGGGHTS would stop at, control flow the
+  0  every wall was migrated: the deck runs with liggghts-rigidsurf (lmp-rigidsurf) and
+     reads the same quantities as with LIGGGHTS (LAMMPS) (NOTE lines name what differs
+     in what it writes and where the walls' physics differs from the engine's:
+     docs/migration.md)
+  3  some walls are kept as the engine's, each listed with its line and the reason; the
+     deck still runs with liggghts-rigidsurf (lmp-rigidsurf) as it runs with LIGGGHTS
+     (LAMMPS)
+  1  an error, named with its line (a deck the engine would stop at, control flow the
      tool cannot follow to a wall, a missing file, a usage error); nothing is written
 """
 NUM = type("Num", (), {"value": staticmethod(walls.number)})()
@@ -62,8 +75,12 @@ def wall_related(words, ids):
 
 
 class Migration:
-    def __init__(self, path, cli_vars=()):
-        self.deck = Deck(path, cli_vars)
+    """A LIGGGHTS deck's migration (rigidsurf_migrate_lammps.py: a LAMMPS deck's)."""
+    ENGINE, FIXES = "LIGGGHTS", "wall/gran fixes"
+    wall_related = staticmethod(wall_related)
+
+    def __init__(self, path, cli_vars=(), engine="liggghts"):
+        self.deck = Deck(path, cli_vars, engine)
         self.reports, self.out, self.after = [], {}, {}
         self.meshes, self.walls, self.dumps = {}, [], []
         self.wall_execs, self.motion_lines, self.motion_state = {}, {}, {}
@@ -109,7 +126,7 @@ class Migration:
         for ex in self.deck.trace:
             w = ex.words
             if len(w) >= 4 and w[0] in ("fix", "dump", "compute") and \
-                    wall_related(w, ()):
+                    self.wall_related(w, ()):
                 out.add(w[1])
         return out
 
@@ -117,12 +134,12 @@ class Migration:
         """Control flow the tool does not follow must not decide a wall's commands."""
         ids = self.ids()
         for ex in self.deck.trace:
-            if ex.via is not None and wall_related(ex.words, ids):
+            if ex.via is not None and self.wall_related(ex.words, ids):
                 self.refuse_if(ex)
         for cmd, reason, branches in self.deck.blind:
             for _, cmds in branches:
                 for c in cmds:
-                    if wall_related(split_words(c, cmd, strict=False), ids):
+                    if self.wall_related(split_words(c, cmd, strict=False), ids):
                         raise DeckError(cmd, "the tool cannot follow this if: its condition "
                                         "depends on the run (%s), and it decides whether "
                                         "'%s' runs" % (reason, c))
@@ -133,7 +150,7 @@ class Migration:
         for t in targets:
             starts += self.target(stack[-1][0], t, cmd)
         for c in self.reachable(starts, cmd):
-            if wall_related(c.raw_words, ids):
+            if self.wall_related(c.raw_words, ids):
                 raise DeckError(cmd, "the tool cannot follow the deck past this line (%s), "
                                 "and %s ('%s') may run after it" % (
                                     reason, c.where(), " ".join(c.raw_words[:4])))
@@ -283,7 +300,8 @@ class Migration:
             if not wall.ok:
                 for r in wall.why:
                     self.report(wall.cmd, "fix %s: %s" % (wall.id, r))
-                self.report(wall.cmd, "fix %s: the wall is kept as LIGGGHTS's" % wall.id)
+                self.report(wall.cmd, "fix %s: the wall is kept as %s's" % (wall.id,
+                                                                          self.ENGINE))
                 continue
             for n in wall.notes:
                 self.note(wall.cmd, "fix %s: %s" % (wall.id, n))
@@ -415,9 +433,16 @@ def main(argv):
     if not args:
         sys.stderr.write(USAGE)
         return 1
-    path, cli_vars, k = args[0], [], 1
+    path, cli_vars, k, engine = args[0], [], 1, None
     while k < len(args):
-        if args[k] in ("-var", "-v") and k + 1 < len(args):
+        if args[k] == "--engine":
+            if k + 1 >= len(args) or args[k + 1] not in ("liggghts", "lammps"):
+                sys.stderr.write("rigidsurf-migrate: --engine expects liggghts or lammps, "
+                                 "got '%s'\n" % (args[k + 1] if k + 1 < len(args) else ""))
+                return 1
+            engine = args[k + 1]
+            k += 2
+        elif args[k] in ("-var", "-v") and k + 1 < len(args):
             j = k + 2
             while j < len(args) and not args[j].startswith("-"):
                 j += 1
@@ -429,14 +454,18 @@ def main(argv):
     if not os.path.isfile(path):
         sys.stderr.write("rigidsurf-migrate: %s: no such file\n" % path)
         return 1
-    mg = Migration(path, cli_vars)
     try:
+        engine = engine or lammps.detect_engine(path)
+        mg = (LammpsMigration if engine == "lammps" else Migration)(path, cli_vars)
         out = mg.run()
     except DeckError as e:
         where = e.where.where() if e.where is not None else os.path.basename(path)
         sys.stderr.write("rigidsurf-migrate: %s: ERROR: %s\nrigidsurf-migrate: nothing "
                          "written\n" % (where, e))
         return 1
+    for name, text in sorted(getattr(mg, "files", {}).items()):
+        with open(name, "w") as f:
+            f.write(text)
     sys.stdout.write(out)
     done = set()
     for _, text in sorted(mg.reports, key=lambda r: r[0]):
@@ -446,9 +475,14 @@ def main(argv):
     lines = {w.cmd for w in mg.walls}
     ok = lines - {w.cmd for w in mg.walls if not w.ok}
     kept = len(lines) - len(ok)
-    sys.stderr.write("rigidsurf-migrate: %d of %d wall/gran fixes translated%s\n" % (
-        len(ok), len(lines), "; %d kept as LIGGGHTS's (above)" % kept if kept else ""))
+    sys.stderr.write("rigidsurf-migrate: %d of %d %s translated%s\n" % (
+        len(ok), len(lines), mg.FIXES, "; %d kept as %s's (above)" % (kept, mg.ENGINE)
+        if kept else ""))
     return 3 if kept else 0
+
+
+class LammpsMigration(lammps.LammpsMigration, Migration):
+    """A LAMMPS deck's migration."""
 
 
 if __name__ == "__main__":

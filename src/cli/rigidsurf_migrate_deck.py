@@ -1,4 +1,5 @@
-"""A LIGGGHTS deck read and followed as LIGGGHTS 3.8 runs it (part of rigidsurf-migrate).
+"""A LIGGGHTS deck read and followed as LIGGGHTS 3.8 runs it, or a LAMMPS deck as LAMMPS
+29Sep2021 runs it (part of rigidsurf-migrate).
 
 Reading (Input::file, Input::parse): a line whose last printable character is & goes on
 with the next line, which takes the place of the & and what follows it; # starts a
@@ -22,8 +23,16 @@ recorded in blind, its commands not run; where such an `if` changes the deck's f
 (jump, label, include, next) the tool stops following (stopped) and the rest is what the
 caller may only read. What LIGGGHTS would stop at stops the tool: DeckError, with the
 file and line.
+
+LAMMPS (Deck(..., engine="lammps")), whose input language LIGGGHTS's is a fork of, reads
+and follows the same way, and also: triple quotes (three double quotes around one word,
+a # or $ inside kept), `$(formula:%.6g)` (the immediate value in that format), the
+variable styles format, internal, vector, timer and python, and its formulas' rules
+(rigidsurf_migrate_expr.py, lmp).
 """
 import os
+
+import re
 
 import rigidsurf_migrate_expr as expr
 
@@ -33,7 +42,7 @@ FLOW = ("jump", "label", "include", "next", "clear")
 # commands that may make, move, write or remove a wall: a loop that runs one is followed
 # pass by pass
 WALLISH = ("fix", "unfix", "dump", "undump", "compute", "uncompute", "fix_modify")
-
+FORMAT = re.compile(r"%[0-9 ]*\.[0-9]+[efgEFG]")   # LAMMPS's numeric formats
 
 class DeckError(Exception):
     """LIGGGHTS (or the tool) stops here: where (a Command or None) and why."""
@@ -44,10 +53,11 @@ class DeckError(Exception):
 
 
 class Source:
-    """One file of the deck: its name as the deck names it, its path, its commands."""
+    """One file of the deck: its name as the deck names it, its path, its commands (lmp:
+    read as LAMMPS reads it)."""
 
-    def __init__(self, name, path, text):
-        self.name, self.path = name, path
+    def __init__(self, name, path, text, lmp=False):
+        self.name, self.path, self.lmp = name, path, lmp
         self.commands = read_commands(self, text)
 
 
@@ -65,26 +75,35 @@ class Command:
                 s = s[:-1]
             text += s
         self.text = text
-        cut = comment_start(text)
+        lmp = getattr(source, "lmp", False)
+        cut = comment_start(text, lmp)
         self.body = text if cut is None else text[:cut]
         self.comment = "" if cut is None else text[cut:].rstrip()
-        self.raw_words = split_words(self.body, self, strict=False)
+        self.raw_words = split_words(self.body, self, strict=False, triple=lmp)
 
     def where(self):
         return "LINE %d%s" % (self.lineno, "" if self.source.name is None
                               else " of %s" % self.source.name)
 
 
-def comment_start(text):
-    quote = None
-    for i, ch in enumerate(text):
+def comment_start(text, triple=False):
+    quote, i = None, 0
+    while i < len(text):
+        ch = text[i]
         if quote:
-            if ch == quote:
+            if quote == '"""' and text.startswith(quote, i):
                 quote = None
+                i += 2
+            elif ch == quote:
+                quote = None
+        elif triple and text.startswith('"""', i):
+            quote = '"""'
+            i += 2
         elif ch in "\"'":
             quote = ch
         elif ch == "#":
             return i
+        i += 1
     return None
 
 
@@ -100,8 +119,9 @@ def read_commands(source, text):
     return out
 
 
-def split_words(text, cmd, strict=True):
-    """Input::nextword: whitespace-separated words, a quoted one without its quotes."""
+def split_words(text, cmd, strict=True, triple=False):
+    """Input::nextword: whitespace-separated words, a quoted one without its quotes
+    (triple: LAMMPS's triple quotes too)."""
     words, i, n = [], 0, len(text)
     while True:
         while i < n and text[i] in " \t\n\v\f\r":
@@ -109,15 +129,17 @@ def split_words(text, cmd, strict=True):
         if i >= n:
             return words
         if text[i] in "\"'":
-            k = text.find(text[i], i + 1)
+            q = '"""' if triple and text.startswith('"""', i) else text[i]
+            k = text.find(q, i + len(q))
             if k < 0:
                 if strict:
                     raise DeckError(cmd, "Unbalanced quotes in input line")
                 k = n
-            if strict and k + 1 < n and not text[k + 1].isspace():
+            end = k + len(q)
+            if strict and end < n and not text[end].isspace():
                 raise DeckError(cmd, "Input line quote not followed by whitespace")
-            words.append(text[i + 1:k])
-            i = k + 1
+            words.append(text[i + len(q):k])
+            i = end
         else:
             k = i
             while k < n and text[k] not in " \t\n\v\f\r":
@@ -158,8 +180,9 @@ class Deck:
     """The deck at path followed (Deck.follow): trace (the Exec of each command run, in
     order), sources (every file read, the deck first), blind and stopped (above)."""
 
-    def __init__(self, path, cli_vars=()):
+    def __init__(self, path, cli_vars=(), engine="liggghts"):
         self.dir = os.path.dirname(os.path.abspath(path))
+        self.lmp = engine == "lammps"
         self.sources = {}
         self.main = self.source(None, path, None)
         self.vars = {}
@@ -170,6 +193,9 @@ class Deck:
         self.step, self.dt, self.time = 0, None, 0.0
         self.unknown = {}       # why a word is unknown: reason by marker
         self.evaluating = set()
+        # observer(exec): called as each command is recorded, the deck's variables, step
+        # and time then as they are where it runs
+        self.observer = None
 
     # -- files --------------------------------------------------------------------
     def resolve(self, name):
@@ -188,7 +214,7 @@ class Deck:
                 text = f.read()
         except (OSError, UnicodeDecodeError) as e:
             raise DeckError(cmd, "Cannot open input script %s (%s)" % (name or path, e))
-        src = Source(name, path, text)
+        src = Source(name, path, text, self.lmp)
         self.sources[path] = src
         return src
 
@@ -215,9 +241,23 @@ class Deck:
             return ("%0*d" % (v.pad, v.which + 1)) if v.pad else "%d" % (v.which + 1)
         if v.style == "equal":
             return expr.g15(self.equal(name, cmd))
+        if v.style == "format":
+            return self.formatted(v, cmd)
+        if v.style == "internal":
+            return expr.g15(v.values[0])
         if v.style == "run":
             raise expr.Unknown(v.text)
         raise DeckError(cmd, "Substitution for illegal variable %s" % name)
+
+    def formatted(self, v, cmd):
+        """A LAMMPS format-style variable: its equal-style variable's value, formatted."""
+        src = self.vars.get(v.values[0])
+        if src is None or src.style not in ("equal", "internal", "format"):
+            raise DeckError(cmd, "Variable %s for format is invalid style" % v.values[0])
+        val = src.values[0] if src.style == "internal" else \
+            expr.atof(self.retrieve(v.values[0], cmd)) if src.style == "format" else \
+            self.equal(v.values[0], cmd)
+        return v.values[1] % val
 
     def equal(self, name, cmd):
         if name in self.evaluating:
@@ -239,6 +279,8 @@ class Deck:
                 if v.style == "atom":
                     raise expr.FormulaError("Atom-style variable in equal-style variable "
                                             "formula")
+                if v.style == "internal":
+                    return v.values[0]
                 return expr.atof(deck.retrieve(name, cmd))
 
             def thermo(self, word):
@@ -250,16 +292,21 @@ class Deck:
                     return deck.time
                 raise expr.Unknown("the thermo keyword %s (the run's)" % word)
         try:
-            return expr.evaluate(text, Env())
+            return expr.evaluate(text, Env(), self.lmp)
         except expr.FormulaError as e:
             raise DeckError(cmd, "%s: %s" % (text, e))
 
     def substitute(self, text, cmd):
         """Input::substitute: $ outside quotes; an unknown value becomes a marker."""
-        out, i, dq, sq = "", 0, False, False
+        out, i, dq, sq, tq = "", 0, False, False, False
         while i < len(text):
             ch = text[i]
-            if ch == "$" and not dq and not sq:
+            if self.lmp and not dq and not sq and text.startswith('"""', i):
+                tq = not tq
+                out += '"""'
+                i += 3
+                continue
+            if ch == "$" and not dq and not sq and not tq:
                 nxt = text[i + 1:i + 2]
                 if nxt == "{":
                     k = text.find("}", i + 2)
@@ -276,14 +323,26 @@ class Deck:
                     name, end = nxt, i + 2
                 try:
                     if name is None:
-                        out += "%.20g" % self.formula(text[i + 2:end - 1], cmd)
+                        inner, fmt = text[i + 2:end - 1], "%.20g"
+                        k = inner.rfind(":")
+                        if self.lmp and k >= 0 and inner[k + 1:k + 2] == "%":
+                            inner, fmt = inner[:k], inner[k + 1:]
+                            if not FORMAT.fullmatch(fmt):
+                                raise DeckError(cmd, "Incorrect conversion in format "
+                                                "string")
+                        out += fmt % self.formula(inner, cmd)
                     else:
                         out += self.retrieve(name, cmd)
                 except expr.Unknown as e:
                     out += self.mark("%s in %s" % (str(e), text[i:end]))
                 i = end
                 continue
-            if ch == '"':
+            if self.lmp:    # LAMMPS: a quote ends at its own kind
+                if ch == '"' and not sq and not tq:
+                    dq = not dq
+                elif ch == "'" and not dq and not tq:
+                    sq = not sq
+            elif ch == '"':
                 dq = not dq
             elif ch == "'":
                 sq = not sq
@@ -315,7 +374,7 @@ class Deck:
                 if w[:1] == ["label"] and w[1:2] == [label]:
                     label = None
                 continue
-            words = split_words(self.substitute(cmd.body, cmd), cmd)
+            words = split_words(self.substitute(cmd.body, cmd), cmd, triple=self.lmp)
             if not words:
                 continue
             self.ran.append((cmd, words))
@@ -358,6 +417,8 @@ class Deck:
             return "quit"
         else:
             self.trace.append(Exec(cmd, words, via, self.step, self.dt))
+            if self.observer is not None:
+                self.observer(self.trace[-1])
             self.track(cmd, words)
         return None
 
@@ -436,7 +497,34 @@ class Deck:
             else:
                 self.vars[name] = Var(style, [None], a[2])
             return
+        if self.lmp and style in ("format", "internal", "vector", "python", "timer"):
+            return self.lammps_variable(cmd, name, style, a, old)
         raise DeckError(cmd, "Illegal variable command")
+
+    def lammps_variable(self, cmd, name, style, a, old):
+        """LAMMPS's variable styles that LIGGGHTS has not (Variable::set)."""
+        if style == "timer":
+            self.vars[name] = Var("run", [None], "the timer variable %s (the run's)" % name)
+            return
+        if len(a) != (4 if style == "format" else 3):
+            raise DeckError(cmd, "Illegal variable command")
+        if style == "format":
+            if old is not None:
+                return           # LAMMPS keeps the first definition
+            if not FORMAT.fullmatch(a[3]):
+                raise DeckError(cmd, "Incorrect conversion in format string")
+            self.vars[name] = Var("format", [a[2], a[3]])
+            return
+        if old is not None and old.style != style and not (
+                old.style == "run" and style in ("vector", "python")):
+            raise DeckError(cmd, "Cannot redefine variable as a different style")
+        if style == "internal":
+            v = expr.atof(a[2]) if known(a[2]) else None
+            self.vars[name] = Var("internal", [v]) if v is not None else \
+                Var("run", [None], "the internal variable %s (the run's)" % name)
+        else:
+            self.vars[name] = Var("run", [None], "the %s variable %s (the run's)" % (
+                style, name))
 
     def next_vars(self, cmd, names):
         if not names:
@@ -539,7 +627,7 @@ class Deck:
                                            % text)
                     if not known(text):
                         raise expr.Unknown(self.why(text))
-                    test = expr.evaluate_boolean(text)
+                    test = expr.evaluate_boolean(text, self.lmp)
                 except expr.FormulaError as e:
                     raise DeckError(cmd, "%s: %s" % (text, e))
                 except expr.Unknown as e:
@@ -547,7 +635,7 @@ class Deck:
                 if test == 0.0:
                     continue
             for c in cmds:
-                words = split_words(self.substitute(c, cmd), cmd)
+                words = split_words(self.substitute(c, cmd), cmd, triple=self.lmp)
                 if not words:
                     continue
                 res = self.execute(cmd, words, cmd, stack)

@@ -1,4 +1,5 @@
-"""LIGGGHTS's formulas as LIGGGHTS 3.8 evaluates them (part of rigidsurf-migrate).
+"""LIGGGHTS's and LAMMPS's formulas as LIGGGHTS 3.8 and LAMMPS 29Sep2021 evaluate them
+(part of rigidsurf-migrate).
 
 An equal-style formula (Variable::evaluate): numbers, PI, thermo keywords, v_name, c_ID
 and f_ID with brackets, the math functions, group and special functions, parentheses
@@ -10,6 +11,10 @@ makes them.
 An `if` condition (Variable::evaluate_boolean): numbers (a leading - belongs to the
 number), parentheses and the comparison and logical operators only.
 
+LAMMPS (lmp = True) is LIGGGHTS's parent with three differences here: x^0 is 1 (0 to a
+negative power an error), `|^` is exclusive or (at the level of ||), and an `if`
+condition may compare words (`yes == yes`) with == and !=.
+
 What the deck cannot know before it runs (a thermo value, a compute, a fix, an atom)
 raises Unknown; what LIGGGHTS would stop at raises FormulaError with its message.
 """
@@ -17,7 +22,7 @@ import math
 import re
 
 # LIGGGHTS's precedence levels (Variable::Variable)
-PREC = {"||": 1, "&&": 2, "==": 3, "!=": 3, "<": 4, "<=": 4, ">": 4, ">=": 4, "+": 5,
+PREC = {"||": 1, "|^": 1, "&&": 2, "==": 3, "!=": 3, "<": 4, "<=": 4, ">": 4, ">=": 4, "+": 5,
         "-": 5, "*": 6, "/": 6, "%": 6, "^": 7, "neg": 8, "!": 8}
 MATH1 = {"sqrt": None, "exp": math.exp, "ln": None, "log": None, "abs": abs,
          "sin": math.sin, "cos": math.cos, "tan": math.tan, "asin": None, "acos": None,
@@ -26,7 +31,9 @@ MATH1 = {"sqrt": None, "exp": math.exp, "ln": None, "log": None, "abs": abs,
 RUN_FUNCTIONS = ("random", "normal", "ramp", "stagger", "logfreq", "stride", "vdisplace",
                  "swiggle", "cwiggle", "count", "mass", "charge", "xcm", "vcm", "fcm",
                  "bound", "gyration", "ke", "angmom", "torque", "inertia", "omega", "sum",
-                 "min", "max", "ave", "trap", "gmask", "rmask", "grmask", "next")
+                 "min", "max", "ave", "trap", "gmask", "rmask", "grmask", "next",
+                 "logfreq2", "logfreq3", "stride2", "slope", "is_active", "is_available",
+                 "is_defined", "is_file")
 NUMBER = re.compile(r"[0-9.]*([eE][+-]?[0-9]*)?")
 ATOF = re.compile(r"\s*[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
 
@@ -79,19 +86,32 @@ def split_args(text):
     return out + [cur]
 
 
-def apply(op, stack):
+def apply(op, stack, lmp=False, boolean=False):
     b = stack.pop()
     if op == "neg":
         stack.append(-b)
         return
     if op == "!":
+        if isinstance(b, str):
+            raise FormulaError("Invalid Boolean syntax in if command")
         stack.append(1.0 if b == 0.0 else 0.0)
         return
     a = stack.pop()
+    if isinstance(a, str) or isinstance(b, str):
+        # LAMMPS's conditions compare words with == and != only
+        if op not in ("==", "!=") or not (isinstance(a, str) and isinstance(b, str)):
+            raise FormulaError("Invalid Boolean syntax in if command")
+        stack.append(float((a == b) == (op == "==")))
+        return
     if op == "/" and b == 0.0:
         raise FormulaError("Divide by 0 in variable formula")
     if op == "%" and b == 0.0:
         raise FormulaError("Modulo 0 in variable formula")
+    if op == "^" and b == 0.0 and lmp:
+        stack.append(1.0)
+        return
+    if op == "^" and a == 0.0 and b < 0.0 and lmp:
+        raise FormulaError("Invalid power expression in variable formula")
     if op == "^" and b == 0.0:
         raise FormulaError("Power by 0 in variable formula")
     if op == "^":
@@ -107,13 +127,14 @@ def apply(op, stack):
                   "<": lambda: float(a < b), "<=": lambda: float(a <= b),
                   ">": lambda: float(a > b), ">=": lambda: float(a >= b),
                   "&&": lambda: float(a != 0.0 and b != 0.0),
-                  "||": lambda: float(a != 0.0 or b != 0.0)}[op]())
+                  "||": lambda: float(a != 0.0 or b != 0.0),
+                  "|^": lambda: float((a != 0.0) != (b != 0.0))}[op]())
 
 
-def operator_at(text, i, boolean):
-    """The operator at text[i] and its length, as LIGGGHTS reads it."""
+def operator_at(text, i, boolean, lmp=False):
+    """The operator at text[i] and its length, as LIGGGHTS (LAMMPS) reads it."""
     two = text[i:i + 2]
-    if two in ("==", "!=", "<=", ">=", "&&", "||"):
+    if two in ("==", "!=", "<=", ">=", "&&", "||") or lmp and two == "|^":
         return two, 2
     ch = text[i]
     if ch in "=&|":
@@ -124,9 +145,9 @@ def operator_at(text, i, boolean):
     return ch, 1
 
 
-def run_stack(text, boolean, operand):
-    """LIGGGHTS's operator-stack evaluation of text; operand(text, i) reads an operand at
-    i and returns (value, next index)."""
+def run_stack(text, boolean, operand, lmp=False):
+    """LIGGGHTS's (LAMMPS's) operator-stack evaluation of text; operand(text, i) reads an
+    operand at i and returns (value, next index)."""
     what = "if command" if boolean else "variable formula"
     bad = "Invalid %ssyntax in %s" % ("Boolean " if boolean else "", what)
     args, ops, i, expect_arg = [], [], 0, True
@@ -144,7 +165,7 @@ def run_stack(text, boolean, operand):
         if i >= len(text):
             op, n = "end", 0
         else:
-            op, n = operator_at(text, i, boolean)
+            op, n = operator_at(text, i, boolean, lmp)
             if op is None:
                 raise FormulaError(bad)
         i += n
@@ -159,7 +180,7 @@ def run_stack(text, boolean, operand):
         expect_arg = True
         prec = 0 if op == "end" else PREC[op]
         while ops and PREC[ops[-1]] >= prec:
-            apply(ops.pop(), args)
+            apply(ops.pop(), args, lmp)
         if op == "end":
             break
         ops.append(op)
@@ -168,12 +189,17 @@ def run_stack(text, boolean, operand):
     return args[0]
 
 
-def evaluate_boolean(text):
+def evaluate_boolean(text, lmp=False):
     """The value of an `if` condition (after substitution)."""
     def operand(t, i):
         if t[i] == "(":
             j = matching_paren(t, i)
-            return evaluate_boolean(t[i + 1:j]), j + 1
+            return evaluate_boolean(t[i + 1:j], lmp), j + 1
+        if lmp and t[i].isalpha():
+            j = i + 1
+            while j < len(t) and (t[j].isalnum() or t[j] in "_/"):
+                j += 1
+            return t[i:j], j
         if not (t[i].isdigit() or t[i] in ".-"):
             raise FormulaError("Invalid Boolean syntax in if command")
         j = i + 1
@@ -186,10 +212,13 @@ def evaluate_boolean(text):
             while j < len(t) and t[j].isdigit():
                 j += 1
         return atof(t[i:j]), j
-    return run_stack(text, True, operand)
+    v = run_stack(text, True, operand, lmp)
+    if isinstance(v, str):
+        raise FormulaError("Invalid Boolean syntax in if command")
+    return v
 
 
-def evaluate(text, env):
+def evaluate(text, env, lmp=False):
     """The value of an equal-style formula. env answers env.variable(name) (the value of
     v_name, as LIGGGHTS retrieves it) and env.thermo(word) (a thermo keyword); both raise
     Unknown where the deck cannot know the value."""
@@ -197,7 +226,7 @@ def evaluate(text, env):
         ch = t[i]
         if ch == "(":
             j = matching_paren(t, i)
-            return evaluate(t[i + 1:j], env), j + 1
+            return evaluate(t[i + 1:j], env, lmp), j + 1
         if ch.isdigit() or ch == ".":
             m = NUMBER.match(t, i)
             return atof(m.group(0)), m.end()
@@ -209,7 +238,7 @@ def evaluate(text, env):
         word = t[i:j]
         if j < len(t) and t[j] == "(":
             k = matching_paren(t, j)
-            return function(word, t[j + 1:k], env), k + 1
+            return function(word, t[j + 1:k], env, lmp), k + 1
         brackets = ""
         while j < len(t) and t[j] == "[":
             k = t.find("]", j)
@@ -218,7 +247,7 @@ def evaluate(text, env):
             brackets += t[j:k + 1]
             j = k + 1
         return reference(word, brackets, env), j
-    return run_stack(text, False, operand)
+    return run_stack(text, False, operand, lmp)
 
 
 def reference(word, brackets, env):
@@ -235,19 +264,19 @@ def reference(word, brackets, env):
     return env.thermo(word)
 
 
-def function(word, inner, env):
+def function(word, inner, env, lmp=False):
     if word in RUN_FUNCTIONS:
         raise Unknown("%s() (the run's)" % word)
     args = split_args(inner)
     if word == "atan2":
         if len(args) != 2:
             raise FormulaError("Invalid math function in variable formula")
-        return math.atan2(evaluate(args[0], env), evaluate(args[1], env))
+        return math.atan2(evaluate(args[0], env, lmp), evaluate(args[1], env, lmp))
     if word not in MATH1:
         raise FormulaError("Invalid math function in variable formula")
     if len(args) != 1:
         raise FormulaError("Invalid math function in variable formula")
-    v = evaluate(args[0], env)
+    v = evaluate(args[0], env, lmp)
     if word == "sqrt":
         if v < 0.0:
             raise FormulaError("Sqrt of negative value in variable formula")

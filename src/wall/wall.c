@@ -31,6 +31,7 @@ static rs_wall *wall_new(const char *id, const char *group, const rs_wall_host *
     w->area_const = 1.0;
     w->fused_given = 1;
     w->ivar_vel[0] = w->ivar_vel[1] = w->ivar_vel[2] = -1;
+    w->ivar_disp[0] = w->ivar_disp[1] = w->ivar_disp[2] = -1;
     w->ivar_omega = w->ivar_spin = -1;
     w->servo.axis[2] = 1.0;
     w->servo.kp = 1e-2;
@@ -160,7 +161,7 @@ static void free_scratch(rs_wall *w)
         free(*d[k]);
         *d[k] = NULL;
     }
-    int **i[] = {&w->bid, &w->btype, &w->bidx, &w->deepest, &w->rest, &w->bncand};
+    int **i[] = {&w->bid, &w->btype, &w->bidx, &w->deepest, &w->bncand};
     for (size_t k = 0; k < sizeof i / sizeof i[0]; k++) {
         free(*i[k]);
         *i[k] = NULL;
@@ -356,7 +357,8 @@ int rs_wall_init(rs_wall *w, const rs_wall_run *run, const rs_wall_block *b, rs_
      * them from its lists instead: the query's look-ahead would widen every list by a
      * skin. */
     const rs_motion *m = w->motion;
-    int translates = w->var_vel[0][0] || w->var_vel[1][0] || w->var_vel[2][0];
+    int translates =
+        w->var_vel[0][0] || w->var_vel[1][0] || w->var_vel[2][0] || m->place != NULL;
     for (int d = 0; d < 3; d++)
         translates = translates || m->vel[d] != 0.0;
     const int still = !w->moving || (w->spin_invariant && !translates && !w->servo.on);
@@ -460,7 +462,6 @@ int wall_scratch(rs_wall *w, int np, rs_error *err)
     ALLOC(w->btype, n);
     ALLOC(w->bidx, n);
     ALLOC(w->deepest, n);
-    ALLOC(w->rest, n);
     ALLOC(w->bncand, n);
     ALLOC(w->bdir, n);
     ALLOC(w->bhist, n);

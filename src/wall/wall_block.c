@@ -74,26 +74,31 @@ static void put_outputs(rs_wall *w, double *out, const int *idx, int n, int nd,
             put_output(out + 6 * (size_t)idx[k], leaving[k] ? -1 : k, nd, stress, rdisp);
 }
 
-/* The query looked ahead beyond the tracking thickness, and behind the surface to the
- * largest candidate's radius plus the look-ahead: each particle's smallest gap over the
- * features it found becomes its distance bound. The contacts beyond the thickness or
- * deeper than dist_min leave the list (kept in order), so the tracker sees what a query to
- * the thickness gives. */
+/* With bounds, the query looked ahead beyond the tracking thickness, and behind the
+ * surface to the largest candidate's radius plus the look-ahead: each particle's smallest
+ * gap over the features it found becomes its distance bound. The contacts beyond the
+ * thickness or deeper than dist_min leave the list (kept in order), so the tracker sees
+ * what a query to the thickness gives; with behind none, so do those whose centre lies
+ * behind a one-sided surface (dist < 0). */
 static void keep_tracked(rs_wall *w, const rs_wall_block *b, const int *idx, int n,
                          double dist_min)
 {
     double *restrict gmin = w->bgap;
     const double *restrict R = w->brad;
     const double tracking = w->tracking;
-    for (int k = 0; k < n; k++)
-        gmin[k] = tracking + w->lookahead;
+    const int bounds = w->bounds_ok, front = wall_front_only(w);
+    if (bounds)
+        for (int k = 0; k < n; k++)
+            gmin[k] = tracking + w->lookahead;
     rs_contacts *c = &w->contacts;
     int m = 0;
     for (int e = 0; e < c->n; e++) {
         const int k = c->point[e];
         const double gap = c->dist[e] - R[k];
-        gmin[k] = gap < gmin[k] ? gap : gmin[k];
-        if (!(c->dist[e] <= tracking + R[k]) || c->dist[e] < dist_min)
+        if (bounds)
+            gmin[k] = gap < gmin[k] ? gap : gmin[k];
+        if (!(c->dist[e] <= tracking + R[k]) || c->dist[e] < dist_min ||
+            (front && c->dist[e] < 0.0))
             continue; /* the query's own test with gap_max = tracking */
         if (m != e) {
             c->point[m] = c->point[e];
@@ -112,7 +117,8 @@ static void keep_tracked(rs_wall *w, const rs_wall_block *b, const int *idx, int
         m++;
     }
     c->n = m;
-    wall_update_bounds(w, b, idx, n, gmin);
+    if (bounds)
+        wall_update_bounds(w, b, idx, n, gmin);
 }
 
 /* The law's per-contact inputs (rs_cblock_inputs) from the block's particles, with their
@@ -299,7 +305,7 @@ static int query(rs_wall *w, const rs_wall_block *b, const int *idx, int n, doub
         snprintf(msg, sizeof msg, "%s", err->msg);
         return rs_error_set(err, rc, "surface query: %s", msg);
     }
-    if (w->bounds_ok)
+    if (w->bounds_ok || w->behind_none)
         keep_tracked(w, b, idx, n, -rmax);
     return RS_OK;
 }

@@ -110,7 +110,9 @@ static int push_cand(rs_wall *w, int i, rs_error *err)
 }
 
 /* A block of particles idx[0 .. n) of the group: those within tracking + skin, and every
- * one that still holds a contact (it must see its contact leave), join the candidates. */
+ * one that still holds a contact (it must see its contact leave), join the candidates;
+ * with behind none, also those within tracking + skin behind a one-sided surface's back
+ * side, which may come through to its front before the next refresh. */
 static int flush(rs_wall *w, const rs_wall_block *b, int n, int look_behind, rs_error *err)
 {
     if (n == 0)
@@ -127,7 +129,7 @@ static int flush(rs_wall *w, const rs_wall_block *b, int n, int look_behind, rs_
     }
     rs_query q = sphere_query(w, b, w->bidx, n);
     q.gap_max = w->tracking + w->run.skin;
-    q.dist_min = look_behind ? -(rmax + q.gap_max) : -rmax;
+    q.dist_min = look_behind || wall_front_only(w) ? -(rmax + q.gap_max) : -rmax;
     w->contacts.n = 0;
     int rc = rs_surface_query(w->surf, &q, &w->contacts, err);
     if (rc) {

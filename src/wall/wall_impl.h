@@ -50,6 +50,9 @@ struct rs_wall {
     int moving, belt; ///< belt: surface_vel, the tracker gets the motion even at rest
     char var_vel[3][WALL_NAME], var_omega[WALL_NAME], var_spin[WALL_NAME];
     int ivar_vel[3], ivar_omega, ivar_spin;
+    char var_disp[3][WALL_NAME]; ///< move variable: the translation's variables
+    int ivar_disp[3];
+    double disp_given[3]; ///< move variable: the translation's numbers
     int rot_by_period, spin_by_period;
     double period;
     rs_error rates_err; ///< why a rates callback stopped the motion
@@ -144,8 +147,7 @@ struct rs_wall {
     rs_track_out tout;
     double *bx, *by, *bz, *bvx, *bvy, *bvz, *bwx, *bwy, *bwz, *brad, *bgap;
     double *bmass, *bheat, *btemp, *bdtemp, *bpred, *bdpred, *barea;
-    int *bid, *btype, *bidx, *deepest, *rest;
-    int nrest;
+    int *bid, *btype, *bidx, *deepest;
     double **bdir, **bhist;
     const int **bcand;
     int *bncand;
@@ -174,6 +176,8 @@ struct rs_wall {
     int routine_step_warned;
     long behind;
     int behind_warned;
+    int behind_none; ///< behind none: a one-sided surface leaves alone the particles behind
+                     ///< it
     double restart_version;
     void (*warn)(void *warn_ctx, const rs_law *law, int k, const char *msg);
     void *warn_ctx;
@@ -217,15 +221,23 @@ static inline double *wall_slot0(const rs_wall *w, int i)
 /// Whether particle i's distance bound keeps it beyond the tracking thickness this step:
 /// it has one (no contact held, set at its last query) and has moved less than the room
 /// the bound leaves, with the radius it had then.
-static inline int wall_kept_away(const rs_wall *w, const double *x, const double *radius,
-                                 int i)
+/// The test on the bounds' arrays themselves (gapref, xref, tracking), for loops that keep
+/// them in registers.
+static inline int wall_kept_away_at(const double *gapref, const double *xref,
+                                    double tracking, const double *x, const double *radius,
+                                    int i)
 {
-    const double room = w->gapref[i] - w->tracking;
-    const double *xr = &w->xref[4 * (size_t)i], *xi = x + 3 * (size_t)i;
+    const double room = gapref[i] - tracking;
+    const double *xr = &xref[4 * (size_t)i], *xi = x + 3 * (size_t)i;
     if (!(room > 0.0) || radius[i] != xr[3])
         return 0;
     const double dx = xi[0] - xr[0], dy = xi[1] - xr[1], dz = xi[2] - xr[2];
     return dx * dx + dy * dy + dz * dz < room * room;
+}
+static inline int wall_kept_away(const rs_wall *w, const double *x, const double *radius,
+                                 int i)
+{
+    return wall_kept_away_at(w->gapref, w->xref, w->tracking, x, radius, i);
 }
 /// What a directory row holds in short (rs_wall.usual): f + 1 when slot 0 holds feature
 /// f's contact alone, else 0.
@@ -247,10 +259,17 @@ static inline int wall_in_group(const rs_wall_block *b, int i)
 {
     return !b->mask || (b->mask[i] & b->groupbit);
 }
-/// The rebuilds look behind the surface: it is one-sided and has not warned yet.
+/// The rebuilds look behind the surface: it is one-sided, pushes those behind it through
+/// (behind push) and has not warned yet.
 static inline int wall_looks_behind(const rs_wall *w)
 {
-    return w->surf->sides != 2 && !w->behind_warned;
+    return w->surf->sides != 2 && !w->behind_warned && !w->behind_none;
+}
+/// behind none on a one-sided surface: a particle touches it only with its centre in
+/// front (dist >= 0); one behind it is left alone until it comes through.
+static inline int wall_front_only(const rs_wall *w)
+{
+    return w->behind_none && w->surf->sides != 2;
 }
 
 /* wall_words.c, wall_law_words.c, wall_motion.c, wall_servo.c: the words */
@@ -285,8 +304,10 @@ int wall_compute(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows, d
                  int setup, rs_error *err);
 int wall_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows, const int *idx,
                int n, double dt, int setup, rs_error *err);
+int wall_blocks(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
+                const int *list, int n, double dt, int setup, rs_error *err);
 int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
-                    const int *idx, int n, double dt, rs_error *err);
+                    const int *list, int n, double dt, rs_error *err);
 int wall_block_props(const rs_wall *w, int t, const double **props, int *nprops);
 void wall_add_load(rs_wall *w, const rs_wall_load *wl, int setup);
 rs_load_rows wall_load_rows(const rs_wall *w, const rs_wall_rows *rows, const int *idx,

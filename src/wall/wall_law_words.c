@@ -479,9 +479,10 @@ int wall_parse_law(rs_wall *w, const char *const *arg, int narg, int *iarg, rs_e
                 if (n > 0)
                     used += (size_t)n;
             }
+            const char *engine = w->host.engine_law ? w->host.engine_law_name : NULL;
             FAIL("keyword 'law': unknown law '%s'; expected one of %s, user, vuinter, "
-                 "uinter or fric",
-                 w->law_name, known);
+                 "uinter, fric%s%s",
+                 w->law_name, known, engine ? " or " : "", engine ? engine : "");
         }
         w->law_kind = WALL_LAW_BUILTIN;
         w->hertz = strcmp(w->law->name, "hertz") == 0;

@@ -1,10 +1,11 @@
-/* The wall's line path: a block on a revolved LINE (a cylinder's mantle, a cone) with a law
- * whose fused kernel takes it, in runs of spheres: the spheres whose directory is usual
- * (rs_wall.usual: one contact, in slot 0) gathered from the engine's arrays, their face
- * contacts computed (rs_line_revolution_faces) and those that still hold just that
- * contact passed to the kernel (rs_track_fused_usual), so that no block-wide column is
- * written and no directory row read; the other spheres go through wall_block afterwards,
- * but those whose distance bound keeps them away. */
+/* The wall's line path: the step's candidates on a revolved LINE (a cylinder's mantle, a
+ * cone) with a law whose fused kernel takes them, in runs of spheres of one type: the
+ * spheres whose directory is usual (rs_wall.usual: one contact, in slot 0) gathered from
+ * the engine's arrays, their face contacts computed (rs_line_revolution_faces) and those
+ * that still hold just that contact passed to the kernel (rs_track_fused_usual), so that
+ * no block-wide column is written and no directory row read; the other spheres go through
+ * wall_blocks afterwards, in their order, but those whose distance bound keeps them away.
+ */
 #include "wall_impl.h"
 
 #include "line_revolution.h"
@@ -13,15 +14,24 @@
 #include <math.h>
 #include <string.h>
 
+/* The law's properties for particles of type t, if the fused kernel takes them. */
+static int line_props(const rs_wall *w, int t, const double **props)
+{
+    int nprops = 0;
+    return wall_block_props(w, t, props, &nprops) && nprops == w->law->nprops &&
+           w->law->fused->takes(&w->tracker, *props, nprops);
+}
+
 int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
                     const int *idx, int n, double dt, rs_error *err)
 {
+    if (b->still || n == 0)
+        return wall_blocks(w, b, rows, idx, n, dt, 0, err);
+    /* a run holds one particle type where the properties are per type */
+    const int *const type = wall_material_props(w) ? b->type : NULL;
+    int run_t = type ? type[idx[0]] : 1;
     const double *props = NULL;
-    int nprops = 0;
-    const int t0 = b->type ? b->type[idx[0]] : 1;
-    if (b->still || !wall_block_props(w, t0, &props, &nprops) || nprops != w->law->nprops ||
-        !w->law->fused->takes(&w->tracker, props, nprops))
-        return wall_block(w, b, rows, idx, n, dt, 0, err);
+    int run_ok = line_props(w, run_t, &props);
     const double *x = b->x, *v = b->v, *om = b->omega;
     const double *radius = b->radius, *rmass = b->mass;
     const int *tag = b->id;
@@ -48,24 +58,38 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     for (int d = 0; d < 3; d++)
         c.nrm[d] = cn[d], c.t1[d] = ct1[d], c.t2[d] = ct2[d];
     c.dist = cd, c.point = cpt, c.feature = cft;
-    w->nrest = 0;
+    /* the rest, in the candidates' order: the active list, which the line path leaves
+     * unused */
+    int *const rest = w->active;
+    int nrest = 0;
     const int *const usual = w->usual;
+    const double *const gapref = w->gapref, *const xref = w->xref;
+    const double tracking = w->tracking;
+    const int bounds = w->bounds_ok;
     double live[M];
     double *pl[M];
-    for (int j = 0; j < M; j++)
-        pl[j] = &live[j];
     int next = 0;
     while (next < n) {
-        /* The next run: particles whose directory is usual (their one contact in slot 0,
-         * which the kernel takes if it is still the face's); the others join the rest,
-         * but those whose distance bound keeps them away. */
+        /* The next run: particles of one type whose directory is usual (their one contact
+         * in slot 0, which the kernel takes if it is still the face's); the others join
+         * the rest, but those whose distance bound keeps them away. */
         int ix[M], m = 0;
         for (; next < n && m < M; next++) {
             const int i = idx[next];
-            if (usual[i])
-                ix[m++] = i;
-            else if (!(w->bounds_ok && wall_kept_away(w, x, radius, i)))
-                w->rest[w->nrest++] = i;
+            if (usual[i]) {
+                if (type && type[i] != run_t) {
+                    if (m > 0)
+                        break;
+                    run_t = type[i];
+                    run_ok = line_props(w, run_t, &props);
+                }
+                if (run_ok)
+                    ix[m++] = i;
+                else
+                    rest[nrest++] = i;
+            } else if (!(bounds && wall_kept_away_at(gapref, xref, tracking, x, radius, i))) {
+                rest[nrest++] = i;
+            }
         }
         if (m == 0)
             continue;
@@ -91,14 +115,16 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
                                  face);
         rs_frame_orient(w->surf->ops->frame, &c, 0, m);
         /* Usual still: the face contact within the tracking thickness (keep_tracked's
-         * test and the tracker's), the feature the directory holds. */
+         * test and the tracker's), the feature the directory holds. A one-sided LINE's
+         * face takes only centres in front of it (rs_line_face1), so a sphere behind it
+         * goes to the rest, where behind none leaves it alone (keep_tracked). */
         int nu = 0;
         for (int j = 0; j < m; j++) {
             const int still_usual = face[j] && c.dist[j] <= w->tracking + pr[j] &&
                                     !(c.dist[j] - pr[j] > w->tracker.tracking) &&
                                     usual[row[j]] == c.feature[j] + 1;
             if (!still_usual) {
-                w->rest[w->nrest++] = row[j];
+                rest[nrest++] = row[j];
                 continue;
             }
             if (nu != j) {
@@ -113,6 +139,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
             }
             /* the directory entry the kernel reads: the one the row holds */
             live[nu] = RS_DIR_LIVE(cft[nu]);
+            pl[nu] = &live[nu];
             cpt[nu] = nu;
             nu++;
         }
@@ -137,13 +164,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
             return rc;
         wall_add_load(w, &wl, 0);
     }
-    /* The rest, in their order, in blocks as wall_compute forms them (one particle type).
-     */
-    for (int b0 = 0; b0 < w->nrest; b0 += w->bcap) {
-        const int nb = w->nrest - b0 < w->bcap ? w->nrest - b0 : w->bcap;
-        const int rc = wall_block(w, b, rows, w->rest + b0, nb, dt, 0, err);
-        if (rc)
-            return rc;
-    }
-    return RS_OK;
+    /* The rest, in their order, in blocks as wall_blocks forms them (one particle type
+     * each). */
+    return wall_blocks(w, b, rows, rest, nrest, dt, 0, err);
 }

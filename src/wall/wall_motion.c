@@ -1,6 +1,7 @@
-/* The wall's motion: its keywords (move linear, rotate, its centre moving or fixed, spin;
- * docs/fix_wall_rigid.md, "Motion"), the rates of their variables evaluated every step
- * through the host, and the motion advanced before each step. */
+/* The wall's motion: its keywords (move linear, move variable, rotate, its centre moving
+ * or fixed, spin; docs/fix_wall_rigid.md, "Motion"), the rates (and a translation given as
+ * such) of their variables evaluated every step through the host, and the motion advanced
+ * before each step. */
 #include "wall_impl.h"
 
 #include "rigidsurf/vec.h"
@@ -38,6 +39,18 @@ static int rates_callback(double t, double vel[3], double *omega, void *ctx)
     if (w->ivar_omega >= 0)
         return rate_of(w, w->ivar_omega, w->var_omega, w->rot_by_period, "rotate period",
                        omega);
+    return 0;
+}
+
+/* move variable: the translation D, its variables' values or its numbers. */
+static int place_callback(double t, double disp[3], void *ctx)
+{
+    (void)t;
+    rs_wall *w = ctx;
+    for (int d = 0; d < 3; d++)
+        disp[d] = w->ivar_disp[d] >= 0
+                      ? w->host.variable_eval(w->host.ctx, w->ivar_disp[d], RS_VAR_MOTION)
+                      : w->disp_given[d];
     return 0;
 }
 
@@ -135,6 +148,9 @@ static int turn(rs_wall *w, const char *const *arg, int narg, int *iarg, int spi
     } else if ((rc = rs_motion_set_rotation(w->motion, origin, axis, omega, err))) {
         return rc;
     }
+    if (!spin && i < narg && strcmp(arg[i], "centre") == 0 && w->motion->place)
+        FAIL("keyword 'rotate ... centre' does not go with 'move variable', whose "
+             "translation is given in space");
     if (!spin && i < narg && strcmp(arg[i], "centre") == 0) {
         i++;
         if (i < narg && strcmp(arg[i], "fixed") == 0)
@@ -150,22 +166,36 @@ static int turn(rs_wall *w, const char *const *arg, int narg, int *iarg, int spi
     return RS_OK;
 }
 
-/* move linear VX VY VZ | rotate ... | spin ...: a value may be v_NAME, an equal-style
- * variable evaluated every step. */
+/* move linear VX VY VZ | move variable DX DY DZ VX VY VZ | rotate ... | spin ...: a value
+ * may be v_NAME, an equal-style variable evaluated every step. */
 int wall_parse_motion(rs_wall *w, const char *const *arg, int narg, int *iarg,
                       rs_error *err)
 {
     int i = *iarg, rc;
     if (strcmp(arg[i], "move") == 0) {
         i++;
-        if (i >= narg || strcmp(arg[i], "linear") != 0)
-            FAIL("keyword 'move' expects 'linear VX VY VZ'");
-        i++;
+        if (i >= narg || (strcmp(arg[i], "linear") != 0 && strcmp(arg[i], "variable") != 0))
+            FAIL(
+                "keyword 'move' expects 'linear VX VY VZ' or 'variable DX DY DZ VX VY VZ'");
+        if (w->motion->place || w->var_vel[0][0] || w->var_vel[1][0] || w->var_vel[2][0])
+            FAIL("keyword 'move' is given once");
+        const int given = strcmp(arg[i++], "variable") == 0;
+        const char *mkw = given ? "move variable" : "move linear";
+        if (given) {
+            if (w->motion->center_fixed)
+                FAIL("keyword 'move variable' gives the translation in space: it does not "
+                     "go with 'rotate ... centre fixed'");
+            for (int d = 0; d < 3; d++)
+                if ((rc = value(arg, narg, &i, "move variable",
+                                "a displacement component (number or v_name)",
+                                w->var_disp[d], &w->disp_given[d], err)))
+                    return rc;
+            w->motion->place = place_callback;
+        }
         double vel[3];
         for (int d = 0; d < 3; d++)
-            if ((rc = value(arg, narg, &i, "move linear",
-                            "a velocity component (number or v_name)", w->var_vel[d],
-                            &vel[d], err)))
+            if ((rc = value(arg, narg, &i, mkw, "a velocity component (number or v_name)",
+                            w->var_vel[d], &vel[d], err)))
                 return rc;
         rs_motion_set_translation(w->motion, vel);
     } else if ((rc = turn(w, arg, narg, &i, strcmp(arg[i], "spin") == 0, err))) {
@@ -185,11 +215,11 @@ int wall_parse_motion(rs_wall *w, const char *const *arg, int narg, int *iarg,
 /* The motion's variables, found once per run. */
 int wall_init_variables(rs_wall *w, rs_error *err)
 {
-    const char *names[5] = {w->var_vel[0], w->var_vel[1], w->var_vel[2], w->var_omega,
-                            w->var_spin};
-    int *index[5] = {&w->ivar_vel[0], &w->ivar_vel[1], &w->ivar_vel[2], &w->ivar_omega,
-                     &w->ivar_spin};
-    for (int k = 0; k < 5; k++) {
+    const char *names[8] = {w->var_vel[0], w->var_vel[1],  w->var_vel[2],  w->var_omega,
+                            w->var_spin,   w->var_disp[0], w->var_disp[1], w->var_disp[2]};
+    int *index[8] = {&w->ivar_vel[0], &w->ivar_vel[1],  &w->ivar_vel[2],  &w->ivar_omega,
+                     &w->ivar_spin,   &w->ivar_disp[0], &w->ivar_disp[1], &w->ivar_disp[2]};
+    for (int k = 0; k < 8; k++) {
         *index[k] = -1;
         if (!names[k][0])
             continue;

@@ -8,6 +8,29 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Blocks of at most bcap particles of a list; with per-type properties a block holds one
+ * particle type (the candidates are sorted by type). */
+int wall_blocks(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
+                const int *list, int n, double dt, int setup, rs_error *err)
+{
+    const int per_type = wall_material_props(w) && b->type;
+    const int *type = b->type;
+    for (int b0 = 0; b0 < n;) {
+        int b1 = n < b0 + w->bcap ? n : b0 + w->bcap;
+        if (per_type)
+            for (int k = b0 + 1; k < b1; k++)
+                if (type[list[k]] != type[list[b0]]) {
+                    b1 = k;
+                    break;
+                }
+        const int rc = wall_block(w, b, rows, &list[b0], b1 - b0, dt, setup, err);
+        if (rc)
+            return rc;
+        b0 = b1;
+    }
+    return RS_OK;
+}
+
 /* The candidates this step: every particle of the group (every_particle), or those of the
  * last refresh less those whose distance bound keeps them beyond the tracking thickness (a
  * test as cheap as a primitive wall's; a particle that holds a contact has no bound); on
@@ -18,11 +41,17 @@ static int step_list(rs_wall *w, const rs_wall_block *b, int setup, const int **
     if (w->run.every_particle) {
         int m = 0;
         if (w->cand_cap < b->n) {
-            int *c = realloc(w->cand, (size_t)(b->n > 0 ? b->n : 1) * sizeof *c);
-            if (!c)
+            /* the active list too: the line path keeps its rest there */
+            const size_t cap = (size_t)(b->n > 0 ? b->n : 1);
+            int *c = realloc(w->cand, cap * sizeof *c);
+            if (c)
+                w->cand = c;
+            int *a = c ? realloc(w->active, cap * sizeof *a) : NULL;
+            if (a)
+                w->active = a;
+            if (!c || !a)
                 return rs_error_set(err, RS_ERR_NOMEM, "out of memory for %d candidates",
                                     b->n);
-            w->cand = c;
             w->cand_cap = b->n;
         }
         for (int i = 0; i < b->n; i++)
@@ -109,26 +138,10 @@ int wall_compute(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows, d
     if ((rc = step_list(w, b, setup, &list, &nc, err)))
         return rc;
 
-    /* Blocks of at most bcap particles; with per-type properties a block holds one
-     * particle type (the candidates are sorted by type). */
-    const int per_type = wall_material_props(w) && b->type;
-    const int *type = b->type;
-    for (int b0 = 0; b0 < nc;) {
-        int b1 = nc < b0 + w->bcap ? nc : b0 + w->bcap;
-        if (per_type)
-            for (int k = b0 + 1; k < b1; k++)
-                if (type[list[k]] != type[list[b0]]) {
-                    b1 = k;
-                    break;
-                }
-        if (w->line_pass && !setup)
-            rc = wall_line_block(w, b, rows, &list[b0], b1 - b0, dt, err);
-        else
-            rc = wall_block(w, b, rows, &list[b0], b1 - b0, dt, setup, err);
-        if (rc)
-            return rc;
-        b0 = b1;
-    }
+    rc = w->line_pass && !setup ? wall_line_block(w, b, rows, list, nc, dt, err)
+                                : wall_blocks(w, b, rows, list, nc, dt, setup, err);
+    if (rc)
+        return rc;
 
     if (!setup) {
         /* Wall heat: a lumped capacity integrates the total flux into it. */

@@ -69,7 +69,8 @@ int wall_is_keyword(const char *s)
         "statev",      "tracking",     "area",   "contacts", "move",
         "rotate",      "temperature",  "predef", "vtk",      "curvature",
         "pnewdt",      "surface_vel",  "wear",   "servo",    "conduction",
-        "store_force", "contact_area", "spin",   "peratom",  "fused"};
+        "store_force", "contact_area", "spin",   "peratom",  "fused",
+        "behind"};
     for (size_t k = 0; k < sizeof kw / sizeof kw[0]; k++)
         if (strcmp(s, kw[k]) == 0)
             return 1;
@@ -315,11 +316,13 @@ static int keyword(rs_wall *w, const char *const *arg, int narg, int *iarg, rs_e
         w->pnewdt_stop = !warn;
     } else if (strcmp(kw, "fused") == 0) {
         rc = either(arg, narg, &i, "yes", "no", &w->fused_given, err);
+    } else if (strcmp(kw, "behind") == 0) {
+        rc = either(arg, narg, &i, "none", "push", &w->behind_none, err);
     } else {
         FAIL("unknown keyword '%s'; expected surface, name, law, props, type, statev, "
              "tracking, area, contacts, move, rotate, spin, servo, surface_vel, "
              "temperature, conduction, contact_area, predef, vtk, curvature, wear, "
-             "store_force, peratom, fused or pnewdt",
+             "store_force, peratom, fused, behind or pnewdt",
              kw);
     }
 #undef NEED
@@ -340,9 +343,8 @@ static int state_variables(rs_wall *w, rs_error *err)
                  "match",
                  w->law_name, w->law_words, law_nsv, user);
         if (w->props_given)
-            FAIL("law %s reads its material properties from fix property/global "
-                 "(youngsModulus, poissonsRatio, ...), as fix wall/gran does; 'props' "
-                 "does not apply",
+            FAIL("law %s takes its coefficients as the engine's walls take them (its "
+                 "words, the engine's material properties); 'props' does not apply",
                  w->law_name);
         if (w->area_mode != WALL_AREA_NODE)
             FAIL("law %s gives a force, not a stress; 'area' does not apply", w->law_name);
@@ -435,9 +437,12 @@ int wall_parse(rs_wall *w, const char *const *arg, int narg, rs_error *err)
             surf_name = arg[i + 1];
             i += 2;
         } else if (strcmp(kw, "law") == 0) {
-            if (i + 1 >= narg)
+            if (i + 1 >= narg) {
+                const char *engine = w->host.engine_law ? w->host.engine_law_name : NULL;
                 FAIL("keyword 'law' expects a law name (hertz, hooke, bonded_interface, "
-                     "linear_softening, coulomb, user, vuinter, uinter, fric)");
+                     "linear_softening, coulomb, user, vuinter, uinter, fric%s%s)",
+                     engine ? ", " : "", engine ? engine : "");
+            }
             if (have_law)
                 FAIL("keyword 'law' given twice");
             have_law = 1;

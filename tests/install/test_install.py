@@ -3,9 +3,10 @@
 outside the tree as a user would.
 
 1. The install holds the public headers, the Fortran includes under their lower- and
-   upper-case names, both libraries, the three programs, the CMake package, rigidsurf.pc,
-   the docs and the examples; the programs find librigidsurf_abaqus in the prefix through
-   their run path (no LD_LIBRARY_PATH anywhere in this test).
+   upper-case names, both libraries, the three programs (and lmp-rigidsurf and the LAMMPS
+   plugin wallrigidplugin.so when built), the CMake package, rigidsurf.pc, the docs and
+   the examples; the programs and the plugin find librigidsurf_abaqus in the prefix
+   through their run path (no LD_LIBRARY_PATH anywhere in this test).
 2. A C program built against the install, once through find_package(rigidsurf VERSION
    EXACT CONFIG) and once through pkg-config (with and without --static), reads a
    surface file and checks the closest point, normal and signed distance of a point on
@@ -341,9 +342,13 @@ def check_layout(ck, a, prefix):
         ck.check("rigidsurf-migrate translates a move/mesh wiggle (its module installed)",
                  p.returncode == 0 and "variable rs_s_t0 equal $(time)" in p.stdout,
                  p.stderr)
-    for prog in ("liggghts-rigidsurf", "rigidsurf-frames", "rigidsurf-build-law"):
+    progs = ["liggghts-rigidsurf", "rigidsurf-frames", "rigidsurf-build-law"]
+    if a.with_lammps == "ON":
+        progs += ["lmp-rigidsurf", os.path.join("..", a.libdir, "wallrigidplugin.so")]
+    for prog in progs:
         path = os.path.join(binp, prog)
-        if not ck.check("installed %s/%s" % (a.bindir, prog), os.access(path, os.X_OK)):
+        usable = os.R_OK if prog.endswith(".so") else os.X_OK
+        if not ck.check("installed %s/%s" % (a.bindir, prog), os.access(path, usable)):
             continue
         # every library resolves without LD_LIBRARY_PATH, the utility library to the
         # prefix's copy through the run path; the LIGGGHTS host always loads it (user
@@ -354,7 +359,7 @@ def check_layout(ck, a, prefix):
                  " ".join(missing))
         where = [l.split("=>")[1].split("(")[0].strip() for l in p.stdout.splitlines()
                  if "librigidsurf_abaqus" in l and "=>" in l]
-        if where or prog == "liggghts-rigidsurf":
+        if where or prog in ("liggghts-rigidsurf", "lmp-rigidsurf") or prog.endswith(".so"):
             ok = len(where) == 1 and os.path.isfile(where[0]) and same_path(
                 os.path.dirname(where[0]), lib)
             ck.check(prog + " loads librigidsurf_abaqus from the prefix", ok,
@@ -634,6 +639,8 @@ def main():
     ap.add_argument("--includedir", default="include")
     ap.add_argument("--docdir", default="share/doc/rigidsurf")
     ap.add_argument("--keep", action="store_true", help="keep the temporary directory")
+    ap.add_argument("--with-lammps", dest="with_lammps", default="OFF",
+                    help="ON: lmp-rigidsurf and wallrigidplugin.so are installed too")
     a = ap.parse_args()
 
     ck = Checker()

@@ -50,13 +50,16 @@ class Checker:
 
 
 class Session:
-    """A scratch directory and the executable under test."""
+    """A scratch directory and the executable under test (extra: more options, (flag, help)
+    pairs, each an executable's path, in self.args)."""
 
-    def __init__(self, description):
+    def __init__(self, description, extra=()):
         ap = argparse.ArgumentParser(description=description)
         ap.add_argument("--exe", required=True, help="liggghts-rigidsurf")
         ap.add_argument("--keep", action="store_true", help="keep the scratch directory")
         ap.add_argument("--mpirun", default="mpirun")
+        for flag, what in extra:
+            ap.add_argument(flag, required=True, help=what)
         self.args = ap.parse_args()
         self.exe = os.path.abspath(self.args.exe)
         self.dir = tempfile.mkdtemp(prefix="rs_lig_")
@@ -70,8 +73,9 @@ class Session:
             f.write(text)
         return self.path(name)
 
-    def run(self, name, deck, np=1, timeout=300, prefix=None, expect_ok=True):
-        """Writes deck to NAME.in and runs it in the scratch directory.
+    def run(self, name, deck, np=1, timeout=300, prefix=None, expect_ok=True, exe=None):
+        """Writes deck to NAME.in and runs it in the scratch directory with exe (default:
+        the executable under test).
 
         Returns (returncode, stdout+stderr). With expect_ok a failed run is reported
         with the tail of its output and raises RunError."""
@@ -80,7 +84,7 @@ class Session:
         # (the ERROR line included).
         # prefix (valgrind, ...) wraps the executable itself.
         cmd = ["stdbuf", "-o0"] + list(prefix or []) + [
-            self.exe, "-in", inp, "-log", name + ".log", "-echo", "none"]
+            exe or self.exe, "-in", inp, "-log", name + ".log", "-echo", "none"]
         if np > 1:
             cmd = [self.args.mpirun, "-np", str(np)] + cmd
         env = dict(os.environ)
@@ -296,16 +300,16 @@ def compare_walls(s, name, ours, ref, atoms, steps, gravity, integrator, box, to
     check_trajectories(s, name, fa, fb, scales, tol)
 
 
-def check_trajectories(s, name, fa, fb, scales, tol):
-    """Checks that frames fa (ours) and fb (LIGGGHTS's) hold the same steps and atoms
-    and that every field agrees to tol relative (scales as compare_frames). Returns the
-    worst relative difference, or None when the frames differ."""
+def check_trajectories(s, name, fa, fb, scales, tol, ref="LIGGGHTS's"):
+    """Checks that frames fa (ours) and fb (the reference's, ref) hold the same steps and
+    atoms and that every field agrees to tol relative (scales as compare_frames). Returns
+    the worst relative difference, or None when the frames differ."""
     worst = compare_frames(fa, fb, scales)
     if not s.ck.check(name + ": same frames and atoms", worst is not None,
                       "%d vs %d frames" % (len(fa), len(fb))):
         return None
     fld, (d, step, i) = max(worst.items(), key=lambda kv: kv[1][0])
-    s.ck.check(name + ": trajectory equals LIGGGHTS's to %g" % tol, d <= tol,
+    s.ck.check(name + ": trajectory equals %s to %g" % (ref, tol), d <= tol,
                "worst %s rel %.3g at step %d atom %d" % (fld, d, step, i))
     return d
 

@@ -11,7 +11,8 @@ every sphere and the wall's per-atom array (peratom yes) at the end are the same
 bit, and so they are when the bouncing bed also rolls around the cylinder with its atoms
 sorted every 20 steps, so that spheres change places in the atom arrays while some hold
 their contact and others fly (LIGGGHTS's atom sort permutes the wall's per-particle
-history through its copy callback); the wall's
+history through its copy callback), and when that bed mixes two sphere materials (per
+type properties: the line path's runs hold one type each); the wall's
 global sums agree to rounding (1e-12 relative: the line path adds them up per run of
 spheres, the staged calls per block).
 """
@@ -43,6 +44,30 @@ def deck(s, kind, fused):
                       "variable hx atom (1.0+0.6*sin(id))*v_kx-%r*y/sqrt(x*x+y*y)\n"
                       "variable hy atom (1.0+0.6*sin(id))*v_ky+%r*x/sqrt(x*x+y*y)\n"
                       "set group all vx v_hx vy v_hy\n" % (B.VFLOW, B.VFLOW))
+    if kind == "bouncing_types":
+        # the sorted bouncing bed of two sphere materials, types 1 and 3 (Young's modulus
+        # 1e7 and 3e7, restitution 0.5 and 0.8 on the wall, friction 0.5 and 0.3), mixed
+        # half and half at random: the line path's runs hold one type each and take that
+        # type's properties
+        d = d.replace("atom_modify map array\n",
+                      "atom_modify map array sort 20 %r\n" % B.R)
+        with open(data) as f:
+            text = f.read()
+        with open(data, "w") as f:
+            f.write(text.replace("2 atom types", "3 atom types"))
+        mats = ("fix m1 all property/global youngsModulus peratomtype 1e7 1e8 3e7\n"
+                "fix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3\n"
+                "fix m3 all property/global coefficientRestitution peratomtypepair 3 "
+                "0.5 0.5 0.6 0.5 0.5 0.8 0.6 0.8 0.7\n"
+                "fix m4 all property/global coefficientFriction peratomtypepair 3 "
+                "0.5 0.5 0.4 0.5 0.5 0.3 0.4 0.3 0.4\n")
+        head, rest = d.split("fix m1 ", 1)
+        rest = rest.split("fix m4 ", 1)[1].split("\n", 1)[1]
+        d = head + mats + rest
+        d = d.replace("set group all vx v_kx vy v_ky\n",
+                      "set group all vx v_kx vy v_ky\nset type 1 type/fraction 3 0.5 4711\n"
+                      "group t3 type 3\nvariable n3 equal count(t3)\n"
+                      "print \"spheres of type 3: ${n3}\"\n")
     fix = "law hertz type 2 peratom yes%s\n" % ("" if fused else " fused no")
     d = d.replace("law hertz type 2\n", fix)
     tag = "%s_%s" % (kind, "fused" if fused else "staged")
@@ -54,11 +79,12 @@ def deck(s, kind, fused):
 
 
 def body(s):
-    for kind in ("static", "flowing", "bouncing", "bouncing_sorted"):
-        texts = []
+    for kind in ("static", "flowing", "bouncing", "bouncing_sorted", "bouncing_types"):
+        texts, outs = [], []
         for fused in (True, False):
             d, tag, steps = deck(s, kind, fused)
             _, out = s.run(tag, d, timeout=600)
+            outs.append(out)
             with open(s.path(tag + ".dump")) as f:
                 dump = f.read()
             # the wall's sums at the last step, from the thermo line
@@ -71,6 +97,11 @@ def body(s):
         touching = sum(1 for l in rows if float(l.split()[10]) > 0.0)
         s.ck.check(kind + ": spheres press the wall at the end (rdisp1 > 0)", touching > 0,
                    "%d of %d" % (touching, len(rows)))
+        if kind == "bouncing_types":
+            n3 = [int(l.split()[-1]) for l in outs[0].splitlines()
+                  if l.startswith("spheres of type 3:")]
+            s.ck.check(kind + ": both sphere types in the bed",
+                       len(n3) == 1 and N // 3 < n3[0] < 2 * N // 3, "type 3: %s" % n3)
         s.ck.check(kind + ": fused and staged give the same spheres, bit for bit", da == db)
         va = [float(v) for v in wa.split()[1:]]
         vb = [float(v) for v in wb.split()[1:]]

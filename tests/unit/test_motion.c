@@ -350,6 +350,78 @@ static void test_motion_rates_callback(void)
     ENSURE(strstr(err.msg, "rates") != NULL);
 }
 
+/* A translation given as such (place): D is the callback's at each step, not the sum of
+ * V dt, while V stays the rates' (a wall at A (1 - cos w t) with velocity A w sin w t, as
+ * LAMMPS's wiggling wall); a rotation about C carried along turns about C + D; a
+ * non-finite translation stops the run. */
+typedef struct {
+    double A, w, t;
+} wiggle;
+
+static int wiggle_place(double t, double disp[3], void *ctx)
+{
+    wiggle *g = ctx;
+    g->t = t;
+    disp[0] = 0.0;
+    disp[1] = 0.0;
+    disp[2] = g->A - g->A * cos(g->w * t);
+    return 0;
+}
+
+static int wiggle_rates(double t, double vel[3], double *omega, void *ctx)
+{
+    const wiggle *g = ctx;
+    vel[0] = vel[1] = 0.0;
+    vel[2] = g->A * g->w * sin(g->w * t);
+    *omega = 0.5;
+    return 0;
+}
+
+static int nan_place(double t, double disp[3], void *ctx)
+{
+    (void)t, (void)ctx;
+    disp[0] = disp[1] = 0.0;
+    disp[2] = NAN;
+    return 0;
+}
+
+static void test_motion_place(void)
+{
+    rs_motion m;
+    rs_error err;
+    wiggle g = {0.003, 2.0 * 3.141592653589793 / 0.01, 0.0};
+    double axis[3] = {0, 0, 1}, C[3] = {0.1, 0.0, 0.0};
+    rs_motion_init(&m);
+    ENSURE(rs_motion_set_rotation(&m, C, axis, 0.0, &err) == RS_OK);
+    m.rates = wiggle_rates;
+    m.place = wiggle_place;
+    m.ctx = &g;
+    const double dt = 1e-4;
+    for (int k = 1; k <= 137; k++) {
+        ENSURE(rs_motion_advance(&m, dt, &err) == RS_OK);
+        const double tm = g.t; /* the callbacks' time: mid-step */
+        ENSURE_NEAR(tm, (k - 0.5) * dt, 1e-15);
+        ENSURE(m.disp[2] == g.A - g.A * cos(g.w * tm));
+        ENSURE(m.vel[2] == g.A * g.w * sin(g.w * tm));
+    }
+    double X[3] = {0.3, 0.2, -0.1}, x[3], xr[3], D[3] = {0.0, 0.0, m.disp[2]};
+    rs_pose_to_global(&m.pose, X, x);
+    closed_form(C, D, axis, 0.5 * 137 * dt, X, xr);
+    for (int i = 0; i < 3; i++)
+        ENSURE_NEAR(x[i], xr[i], 1e-14);
+    double v[3], c[3];
+    rs_motion_velocity_at(&m, X, v);
+    rs_motion_center(&m, c);
+    ENSURE(c[2] == m.disp[2]);
+    ENSURE_NEAR(v[2], g.A * g.w * sin(g.w * 136.5 * dt), 1e-15);
+
+    rs_motion s;
+    rs_motion_init(&s);
+    s.place = nan_place;
+    ENSURE(rs_motion_advance(&s, dt, &err) != RS_OK);
+    ENSURE(strstr(err.msg, "translation") != NULL);
+}
+
 static void test_motion_rejects_zero_axis(void)
 {
     rs_motion m;
@@ -418,6 +490,7 @@ int main(void)
     RS_RUN(test_motion_center_fixed);
     RS_RUN(test_motion_spin);
     RS_RUN(test_motion_rates_callback);
+    RS_RUN(test_motion_place);
     RS_RUN(test_motion_rejects_zero_axis);
     RS_RUN(test_rotation_matrix_matches_quaternion);
     RS_RUN(test_surface_velocity);

@@ -1,0 +1,418 @@
+/* fix wall/rigid in LAMMPS: the adapter over the rigidsurf wall (fix_wall_rigid.h). Its
+ * lifecycle maps onto the wall's calls: the constructor makes the wall from the fix's words
+ * (less the material keywords, wall_materials.h), init its run, setup its setup call,
+ * initial_integrate its motion, post_force its step, final_integrate its servo; the atom
+ * callbacks move its per-atom history. Syntax, keywords and output: docs/fix_wall_rigid.md
+ * and, for what is LAMMPS's own, docs/lammps.md. */
+#include "fix_wall_rigid.h"
+#include "fix_wall_rigid_force.h"
+#include "lammps_law.h"
+
+#include "adapter.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "group.h"
+#include "input.h"
+#include "memory.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "update.h"
+#include "variable.h"
+
+#include <climits>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+/* ---------------------------------------------------------------------------------- */
+/* The host table: what only LAMMPS knows.                                            */
+
+void FixWallRigid::reduce(double *v, int n, int op)
+{
+    rs_adapter_reduce(world, v, n, op);
+}
+
+int FixWallRigid::variable_find(const char *name)
+{
+    return rs_adapter_variable_find(lmp, name);
+}
+
+double FixWallRigid::variable_eval(int index, int why)
+{
+    return rs_adapter_variable_eval(lmp, index, why);
+}
+
+void FixWallRigid::warning(const char *msg)
+{
+    error->warning(FLERR, msg);
+}
+
+void FixWallRigid::info(const char *msg)
+{
+    rs_adapter_info(screen, logfile, msg);
+}
+
+int FixWallRigid::material(const char *name, int i, int j, int required, const char *who,
+                           double *value, rs_error *err)
+{
+    return materials_.lookup(name, i, j, info_->wall_type, required, who, value, err);
+}
+
+/* ---------------------------------------------------------------------------------- */
+
+FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
+    : Fix(lmp, narg, arg), wall_(nullptr), info_(nullptr), model_(nullptr), reff_mode_(0),
+      wallforce_clear_(true), nmax_(0), out_step_(-1), out_valid_(false)
+{
+    std::memset(&model_desc_, 0, sizeof model_desc_);
+    host_ = rs_adapter_host(this, comm->me, atom->ntypes, "lammps");
+    std::vector<std::string> words(arg + 3, arg + narg);
+    const std::string bad = materials_.take(words, atom->ntypes);
+    if (!bad.empty())
+        fail(bad);
+    std::vector<const char *> w;
+    for (const std::string &s : words)
+        w.push_back(s.c_str());
+    const int ncb = atom->nextra_grow;
+    rs_error err;
+    rs_error_clear(&err);
+    if (rs_wall_create(id, group->names[igroup], w.data(), (int)w.size(), &host_, &wall_,
+                       &err) != RS_OK)
+        fail(err.msg);
+    info_ = rs_wall_get_info(wall_);
+    if (info_->conduction)
+        fail("keyword 'conduction liggghts' is LIGGGHTS's wall conduction under fix "
+             "heat/gran; LAMMPS keeps no per-atom temperature");
+    wallforce_id_ = info_->store_force_id;
+
+    restart_global = 1;
+    restart_peratom = 1;
+    create_attribute = 1;
+    time_depend = info_->moving ? 1 : 0;
+    vector_flag = 1;
+    size_vector = RS_WALL_NVEC;
+    global_freq = 1;
+    extvector = -1;
+    extlist = new int[RS_WALL_NVEC];
+    for (int d = 0; d < RS_WALL_NVEC; d++)
+        extlist[d] = 1;
+    for (int d = 12; d < RS_WALL_NVEC; d++)
+        if (d != 13)
+            extlist[d] = 0; // wall temperature, the wall's displacement: intensive
+    peratom_flag = info_->peratom ? 1 : 0;
+    size_peratom_cols = info_->peratom ? 6 : 0;
+    peratom_freq = 1;
+    array_atom = nullptr;
+    maxexchange_dynamic = 1;
+
+    grow_arrays(atom->nmax);
+    /* law lammps's model is a FixWallGran, whose constructor registers the atom callbacks
+     * of the fix being made, this one (LammpsWallModel); otherwise this fix does */
+    if (atom->nextra_grow == ncb) {
+        atom->add_callback(Atom::GROW);
+        atom->add_callback(Atom::RESTART);
+    }
+}
+
+FixWallRigid::~FixWallRigid()
+{
+    if (model_)
+        model_->release_callbacks(id);
+    else {
+        atom->delete_callback(id, Atom::GROW);
+        atom->delete_callback(id, Atom::RESTART);
+    }
+    delete model_;
+    memory->destroy(array_atom);
+    delete[] extlist;
+    extlist = nullptr;
+    rs_wall_free(wall_);
+}
+
+void FixWallRigid::fail(const std::string &msg)
+{
+    error->all(FLERR, std::string("Fix wall/rigid ") + id + ": " + msg);
+}
+
+/* Error::one prints on a rank's screen, which only rank 0 has: the others print the message
+ * on their standard error first. */
+void FixWallRigid::fail_one(const std::string &msg)
+{
+    const std::string m = std::string("Fix wall/rigid ") + id + ": " + msg;
+    if (!screen) {
+        std::fprintf(stderr, "ERROR on proc %d: %s\n", comm->me, m.c_str());
+        std::fflush(stderr);
+    }
+    error->one(FLERR, m);
+}
+
+int FixWallRigid::setmask()
+{
+    int mask = PRE_NEIGHBOR | POST_FORCE;
+    if (info_->moving)
+        mask |= INITIAL_INTEGRATE;
+    if (info_->servo)
+        mask |= FINAL_INTEGRATE;
+    return mask;
+}
+
+/* store_force: the per-atom array fix wall/rigid/force of ID force_ID (force_W for 'into
+ * W'), made with the fix unless it exists. */
+void FixWallRigid::post_constructor()
+{
+    if (info_->store_force && modify->find_fix(wallforce_id_) < 0)
+        modify->add_fix(wallforce_id_ + " all wall/rigid/force");
+}
+
+void FixWallRigid::init()
+{
+    if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+        fail("needs per-atom radius, mass, omega and torque (atom_style sphere)");
+    if (std::strstr(update->integrate_style, "respa"))
+        fail("run_style respa is not supported; use verlet");
+    if (model_)
+        model_->init();
+    pred_index_.clear();
+    for (int a = 0; a < info_->npred; a++) {
+        int flag = -1, cols = -1;
+        const int k = atom->find_custom(info_->pred[a], flag, cols);
+        if (k < 0 || flag != 1 || cols != 0)
+            fail(std::string("keyword 'predef': no per-atom floating-point vector d_") +
+                 info_->pred[a] + " (fix property/atom d_" + info_->pred[a] + ")");
+        pred_index_.push_back(k);
+    }
+    if (info_->store_force && modify->find_fix(wallforce_id_) < 0)
+        fail("store_force: fix " + wallforce_id_ + " (the stored force) was deleted");
+    /* store_force into W: the first wall/rigid in the fix list that stores into W clears it
+     * each step */
+    wallforce_clear_ = true;
+    for (int i = 0; info_->store_force && i < modify->nfix && modify->fix[i] != this; i++)
+        if (std::strcmp(modify->fix[i]->style, "wall/rigid") == 0 &&
+            static_cast<FixWallRigid *>(modify->fix[i])->wallforce_id_ == wallforce_id_)
+            wallforce_clear_ = false;
+
+    const rs_wall_run run = rs_adapter_run(
+        update->dt, neighbor->skin, neighbor->delay, neighbor->every, neighbor->dist_check,
+        neighbor->build_once, domain->boxlo, domain->boxhi, 0);
+    const rs_wall_block b = block(true);
+    rs_error err;
+    rs_error_clear(&err);
+    if (rs_wall_init(wall_, &run, &b, &err) != RS_OK)
+        fail(err.msg);
+    exchange_size();
+}
+
+/* The most doubles an atom's history takes through LAMMPS's exchange: the wall's record,
+ * which grows with its slots (maxexchange_dynamic). */
+void FixWallRigid::exchange_size()
+{
+    maxexchange = rs_wall_pack_size(wall_);
+}
+
+/* The atoms as the wall reads them: LAMMPS's arrays, contiguous rows of 3. */
+rs_wall_block FixWallRigid::block(bool setup)
+{
+    rs_wall_block b;
+    std::memset(&b, 0, sizeof b);
+    b.n = atom->nlocal;
+    b.x = atom->x ? atom->x[0] : nullptr;
+    b.v = atom->v ? atom->v[0] : nullptr;
+    b.omega = atom->omega ? atom->omega[0] : nullptr;
+    b.radius = atom->radius;
+    b.mass = atom->rmass;
+    b.type = atom->type;
+    b.id = atom->tag;
+    b.mask = atom->mask;
+    b.groupbit = groupbit;
+    pred_.resize(pred_index_.size());
+    for (size_t a = 0; a < pred_index_.size(); a++)
+        pred_[a] = atom->dvector[pred_index_[a]];
+    b.pred = pred_.empty() ? nullptr : pred_.data();
+    b.step = update->ntimestep;
+    b.inc = (int)(update->ntimestep - update->firststep);
+    b.time = rs_adapter_time(update->atime, update->atimestep, update->ntimestep,
+                             update->dt, setup);
+    return b;
+}
+
+/* Where the wall's loads go: LAMMPS's force and torque, the stored force, the per-atom
+ * array. */
+rs_wall_rows FixWallRigid::rows()
+{
+    rs_wall_rows r;
+    std::memset(&r, 0, sizeof r);
+    r.f = atom->f ? atom->f[0] : nullptr;
+    r.torque = atom->torque ? atom->torque[0] : nullptr;
+    r.peratom = array_atom ? array_atom[0] : nullptr;
+    if (info_->store_force) {
+        const int ifix = modify->find_fix(wallforce_id_);
+        if (ifix < 0)
+            fail_one("store_force: fix " + wallforce_id_ +
+                     " (the stored force) was deleted");
+        r.fstore =
+            static_cast<FixWallRigidForce *>(modify->fix[ifix])->rows(wallforce_clear_);
+    }
+    return r;
+}
+
+/* The forces before the first step, with the history frozen, as LAMMPS's walls compute
+ * their setup forces. */
+void FixWallRigid::setup(int)
+{
+    const rs_wall_block b = block(true);
+    const rs_wall_rows r = rows();
+    rs_error err;
+    rs_error_clear(&err);
+    if (rs_wall_setup(wall_, &b, &r, nullptr, &err) != RS_OK)
+        fail_one(err.msg);
+    exchange_size();
+}
+
+void FixWallRigid::initial_integrate(int)
+{
+    rs_error err;
+    rs_error_clear(&err);
+    if (rs_wall_advance(wall_, update->dt, &err) != RS_OK)
+        fail(err.msg);
+}
+
+void FixWallRigid::pre_neighbor()
+{
+    rs_wall_reneighbor(wall_);
+}
+
+void FixWallRigid::post_force(int)
+{
+    const rs_wall_block b = block(false);
+    const rs_wall_rows r = rows();
+    rs_error err;
+    rs_error_clear(&err);
+    if (rs_wall_step(wall_, &b, &r, update->dt, nullptr, &err) != RS_OK)
+        fail_one(err.msg);
+    exchange_size();
+}
+
+void FixWallRigid::final_integrate()
+{
+    rs_error err;
+    rs_error_clear(&err);
+    if (rs_wall_servo(wall_, update->dt, &err) != RS_OK)
+        fail(err.msg);
+}
+
+void FixWallRigid::post_run()
+{
+    rs_wall_end_run(wall_);
+}
+
+void FixWallRigid::reset_dt()
+{
+    if (model_)
+        model_->reset_dt();
+}
+
+double FixWallRigid::compute_vector(int n)
+{
+    if (!out_valid_ || out_step_ != update->ntimestep) {
+        rs_wall_vector(wall_, out_);
+        out_valid_ = true;
+        out_step_ = update->ntimestep;
+    }
+    return (n >= 0 && n < RS_WALL_NVEC) ? out_[n] : 0.0;
+}
+
+/* ---------------------------------------------------------------------------------- */
+/* The wall's per-atom history through LAMMPS's atom callbacks and restart files.     */
+
+void FixWallRigid::write_restart(FILE *fp)
+{
+    rs_adapter_write_restart(wall_, fp, comm->me);
+}
+
+void FixWallRigid::restart(char *buf)
+{
+    rs_error err;
+    rs_error_clear(&err);
+    if (rs_wall_read_restart(wall_, reinterpret_cast<const double *>(buf), INT_MAX, &err) !=
+        RS_OK)
+        fail(err.msg);
+}
+
+void FixWallRigid::grow_arrays(int nmax)
+{
+    rs_error err;
+    rs_error_clear(&err);
+    if (rs_wall_grow(wall_, nmax, &err) != RS_OK)
+        fail_one(err.msg);
+    if (!info_->peratom || nmax <= nmax_)
+        return;
+    memory->grow(array_atom, nmax, 6, "wall/rigid:array_atom");
+    for (int i = nmax_; i < nmax; i++)
+        for (int c = 0; c < 6; c++)
+            array_atom[i][c] = 0.0;
+    nmax_ = nmax;
+}
+
+void FixWallRigid::copy_arrays(int i, int j, int)
+{
+    rs_wall_copy(wall_, i, j);
+    for (int c = 0; array_atom && c < 6; c++)
+        array_atom[j][c] = array_atom[i][c];
+}
+
+void FixWallRigid::set_arrays(int i)
+{
+    rs_wall_clear(wall_, i);
+    for (int c = 0; array_atom && c < 6; c++)
+        array_atom[i][c] = 0.0;
+}
+
+int FixWallRigid::pack_exchange(int i, double *buf)
+{
+    return rs_wall_pack(wall_, i, buf);
+}
+
+int FixWallRigid::unpack_exchange(int nlocal, double *buf)
+{
+    rs_error err;
+    rs_error_clear(&err);
+    const int n = rs_wall_unpack(wall_, nlocal, buf, &err);
+    if (n < 0)
+        fail_one(err.msg);
+    for (int c = 0; array_atom && c < 6; c++)
+        array_atom[nlocal][c] = 0.0;
+    exchange_size();
+    return n;
+}
+
+int FixWallRigid::pack_restart(int i, double *buf)
+{
+    return rs_adapter_pack_restart(wall_, i, buf);
+}
+
+void FixWallRigid::unpack_restart(int nlocal, int nth)
+{
+    rs_error err;
+    rs_error_clear(&err);
+    if (rs_adapter_unpack_restart(wall_, nlocal, atom->extra[nlocal], nth, &err) != RS_OK)
+        fail_one(err.msg);
+}
+
+int FixWallRigid::size_restart(int)
+{
+    return rs_wall_pack_size(wall_) + 1;
+}
+
+int FixWallRigid::maxsize_restart()
+{
+    return rs_wall_pack_size(wall_) + 1;
+}
+
+double FixWallRigid::memory_usage()
+{
+    return rs_wall_memory(wall_) + (info_->peratom ? 6.0 * nmax_ * sizeof(double) : 0.0);
+}
