@@ -160,7 +160,8 @@ static void free_scratch(rs_wall *w)
         free(*d[k]);
         *d[k] = NULL;
     }
-    int **i[] = {&w->bid, &w->btype, &w->bidx, &w->deepest, &w->rest, &w->bncand};
+    int **i[] = {&w->bid,  &w->btype,  &w->bidx, &w->deepest,
+                 &w->rest, &w->bncand, &w->bhint};
     for (size_t k = 0; k < sizeof i / sizeof i[0]; k++) {
         free(*i[k]);
         *i[k] = NULL;
@@ -461,6 +462,7 @@ int wall_scratch(rs_wall *w, int np, rs_error *err)
     ALLOC(w->deepest, n);
     ALLOC(w->rest, n);
     ALLOC(w->bncand, n);
+    ALLOC(w->bhint, n);
     ALLOC(w->bdir, n);
     ALLOC(w->bhist, n);
     ALLOC(w->bcand, n);

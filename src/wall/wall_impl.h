@@ -144,7 +144,7 @@ struct rs_wall {
     int nrest;
     double **bdir, **bhist;
     const int **bcand;
-    int *bncand;
+    int *bncand, *bhint;
     double *saved_rows;
     char *leaving, *take;
     double *area_w;
