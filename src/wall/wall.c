@@ -210,6 +210,7 @@ void rs_wall_free(rs_wall *w)
     free(w->vtk_file);
     free(w->rows);
     free(w->hist);
+    free(w->usual);
     free(w->cand);
     free(w->active);
     free(w->cfirst);

@@ -390,8 +390,8 @@ static int tracker(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
                            err);
 }
 
-int wall_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows, const int *idx,
-               int n, double dt, int setup, rs_error *err)
+static int block_pass(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
+                      const int *idx, int n, double dt, int setup, rs_error *err)
 {
     const int nd = w->ndir, ns = w->nstatev, as = wall_atom_size(w);
     const double rmax = gather(w, b, rows, idx, n);
@@ -419,7 +419,7 @@ int wall_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows, con
         if (err->code == RS_ERR_CAPACITY) {
             rs_error e2;
             if (wall_grow_capacity(w, w->capacity + 1, &e2) == RS_OK)
-                return wall_block(w, b, rows, idx, n, dt, setup, err);
+                return block_pass(w, b, rows, idx, n, dt, setup, err);
             if (e2.code != RS_ERR_CAPACITY)
                 return rs_error_set(err, e2.code, "%s", e2.msg);
             char msg[sizeof err->msg];
@@ -506,4 +506,14 @@ int wall_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows, con
                            w->cb.flux_mst);
     rs_track_commit(&w->tracker, &w->tout, w->cb.stress, ns ? w->cb.statev : NULL);
     return RS_OK;
+}
+
+int wall_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows, const int *idx,
+               int n, double dt, int setup, rs_error *err)
+{
+    const int rc = block_pass(w, b, rows, idx, n, dt, setup, err);
+    /* the rows' summaries after what the tracker (or a setup call's restore) left */
+    for (int k = 0; k < n; k++)
+        w->usual[idx[k]] = wall_usual_of(w, wall_row(w, idx[k]));
+    return rc;
 }

@@ -1,5 +1,5 @@
 /* The wall's per-particle history: rows (the tracker's directory, the previous temperature
- * and fields) and slot-major slots (particle i's slot j at hist + (j nmax + i) slot_size,
+ * and fields), each row's summary (rs_wall.usual) and slot-major slots (particle i's slot j at hist + (j nmax + i) slot_size,
  * so a particle with one contact touches its row and the dense slot-0 array only); their
  * growth with the engine's arrays and with the contacts a particle holds, and the records
  * that carry a particle's history between ranks and into restart files. */
@@ -43,6 +43,7 @@ double *wall_alloc_slots(size_t n)
 
 void wall_clear_row(rs_wall *w, int i)
 {
+    w->usual[i] = 0;
     double *r = wall_row(w, i);
     rs_track_clear(&w->tracker, r, wall_slot0(w, i), wall_slot_stride(w));
     r[wall_tprev_at(w)] = NAN;
@@ -61,6 +62,11 @@ int rs_wall_grow(rs_wall *w, int nmax, rs_error *err)
                             "out of memory for the history of %d particles", nmax);
     w->rows = rows;
     wall_advise_huge(rows, (size_t)nmax * rs * sizeof *rows);
+    int *usual = realloc(w->usual, (size_t)nmax * sizeof *usual);
+    if (!usual)
+        return rs_error_set(err, RS_ERR_NOMEM,
+                            "out of memory for the history of %d particles", nmax);
+    w->usual = usual;
     /* The slots move: slot j of the old nmax particles to the start of block j. */
     const size_t hs = (size_t)wall_slot_size(w), oldblk = (size_t)w->nmax * hs,
                  blk = (size_t)nmax * hs;
@@ -184,6 +190,7 @@ void rs_wall_copy(rs_wall *w, int i, int j)
     const int hs = wall_slot_size(w);
     const ptrdiff_t stride = wall_slot_stride(w);
     memcpy(wall_row(w, j), wall_row(w, i), sizeof(double) * wall_row_size(w));
+    w->usual[j] = w->usual[i];
     for (int s = 0; s < w->capacity; s++)
         memcpy(wall_slot0(w, j) + s * stride, wall_slot0(w, i) + s * stride,
                sizeof(double) * hs);

@@ -120,6 +120,10 @@ struct rs_wall {
      * slot_size */
     double *rows;
     double *hist;
+    /* per particle, what its directory holds in short: f + 1 when its one contact is
+     * feature f's in slot 0 and the other slots are free (rs_track_dir_usual), else 0;
+     * the line path reads it instead of the row (wall_line.c, wall_usual_of) */
+    int *usual;
     int nmax;
 
     /* candidates */
@@ -209,6 +213,30 @@ static inline double *wall_row(const rs_wall *w, int i)
 static inline double *wall_slot0(const rs_wall *w, int i)
 {
     return w->hist + (size_t)i * (size_t)wall_slot_size(w);
+}
+/// Whether particle i's distance bound keeps it beyond the tracking thickness this step:
+/// it has one (no contact held, set at its last query) and has moved less than the room
+/// the bound leaves, with the radius it had then.
+static inline int wall_kept_away(const rs_wall *w, const double *x, const double *radius,
+                                 int i)
+{
+    const double room = w->gapref[i] - w->tracking;
+    const double *xr = &w->xref[4 * (size_t)i], *xi = x + 3 * (size_t)i;
+    if (!(room > 0.0) || radius[i] != xr[3])
+        return 0;
+    const double dx = xi[0] - xr[0], dy = xi[1] - xr[1], dz = xi[2] - xr[2];
+    return dx * dx + dy * dy + dz * dz < room * room;
+}
+/// What a directory row holds in short (rs_wall.usual): f + 1 when slot 0 holds feature
+/// f's contact alone, else 0.
+static inline int wall_usual_of(const rs_wall *w, const double *d)
+{
+    if (!RS_DIR_IS_LIVE(d[0]))
+        return 0;
+    for (int j = 1; j < w->capacity; j++)
+        if (d[j] != RS_DIR_EMPTY)
+            return 0;
+    return (int)d[0];
 }
 /// The law's properties come per particle type from the engine's material properties.
 static inline int wall_material_props(const rs_wall *w)

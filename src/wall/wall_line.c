@@ -1,8 +1,10 @@
 /* The wall's line path: a block on a revolved LINE (a cylinder's mantle, a cone) with a law
- * whose fused kernel takes it, in runs of spheres: each run gathered from the engine's
- * arrays, its face contacts computed per sphere (rs_line_revolution_faces) and the
- * spheres that hold just that contact passed to the kernel (rs_track_fused_usual), so that
- * no block-wide column is written; the other spheres go through wall_block afterwards. */
+ * whose fused kernel takes it, in runs of spheres: the spheres whose directory is usual
+ * (rs_wall.usual: one contact, in slot 0) gathered from the engine's arrays, their face
+ * contacts computed (rs_line_revolution_faces) and those that still hold just that
+ * contact passed to the kernel (rs_track_fused_usual), so that no block-wide column is
+ * written and no directory row read; the other spheres go through wall_block afterwards,
+ * but those whose distance bound keeps them away. */
 #include "wall_impl.h"
 
 #include "line_revolution.h"
@@ -22,22 +24,20 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
         return wall_block(w, b, rows, idx, n, dt, 0, err);
     const double *x = b->x, *v = b->v, *om = b->omega;
     const double *radius = b->radius, *rmass = b->mass;
-    const int *tag = b->id, *type = b->type;
+    const int *tag = b->id;
     const double gap_max = w->tracking + w->lookahead;
     double origin[3];
     rs_pose_to_global(&w->motion->pose, w->surf->a, origin);
     const rs_motion *mp = w->moving || w->belt ? w->motion : NULL;
-    double *const rowbase = w->rows;
-    const size_t rs = (size_t)wall_row_size(w), ss = (size_t)wall_slot_size(w);
-    const int cap = w->capacity;
+    const size_t ss = (size_t)wall_slot_size(w);
 
-    /* One run: the query's columns at every sphere, then the usual spheres' compacted in
-     * place to the front (the kernel reads entries 0 .. nu-1). */
+    /* One run: the query's columns at every sphere, then those of the spheres still usual
+     * compacted in place to the front (the kernel reads entries 0 .. nu-1). */
     enum { M = RS_TRACK_LINE_RUN };
     double px[M], py[M], pz[M], pvx[M], pvy[M], pvz[M], pwx[M], pwy[M], pwz[M], pr[M],
         pm[M];
-    double *pd[M], *ph[M];
-    int pid[M], pty[M], row[M], face[M];
+    double *ph[M];
+    int pid[M], row[M], face[M];
     /* the frames, distances and features: what the kernel reads (no master points,
      * curvatures or shares: rs_line_revolution_faces leaves them out) */
     double cn[3][M], ct1[3][M], ct2[3][M], cd[M];
@@ -49,46 +49,55 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
         c.nrm[d] = cn[d], c.t1[d] = ct1[d], c.t2[d] = ct2[d];
     c.dist = cd, c.point = cpt, c.feature = cft;
     w->nrest = 0;
-    for (int b0 = 0; b0 < n; b0 += M) {
-        const int m = n - b0 < (int)M ? n - b0 : (int)M;
-        const int *ix = idx + b0;
-        if (om && tag && type) /* the engines' case: nothing tested per sphere */
+    const int *const usual = w->usual;
+    double live[M];
+    double *pl[M];
+    for (int j = 0; j < M; j++)
+        pl[j] = &live[j];
+    int next = 0;
+    while (next < n) {
+        /* The next run: particles whose directory is usual (their one contact in slot 0,
+         * which the kernel takes if it is still the face's); the others join the rest,
+         * but those whose distance bound keeps them away. */
+        int ix[M], m = 0;
+        for (; next < n && m < M; next++) {
+            const int i = idx[next];
+            if (usual[i])
+                ix[m++] = i;
+            else if (!(w->bounds_ok && wall_kept_away(w, x, radius, i)))
+                w->rest[w->nrest++] = i;
+        }
+        if (m == 0)
+            continue;
+        for (int j = 0; j < m; j++) {
+            const int i = ix[j];
+            const double *xi = x + 3 * (size_t)i, *vi = v + 3 * (size_t)i;
+            px[j] = xi[0], py[j] = xi[1], pz[j] = xi[2];
+            pvx[j] = vi[0], pvy[j] = vi[1], pvz[j] = vi[2];
+            pr[j] = radius[i], pm[j] = rmass[i];
+            pid[j] = tag ? tag[i] : i + 1;
+            ph[j] = w->hist + (size_t)i * ss;
+            row[j] = i;
+        }
+        if (om)
             for (int j = 0; j < m; j++) {
-                const int i = ix[j];
-                const double *xi = x + 3 * (size_t)i, *vi = v + 3 * (size_t)i,
-                             *wi = om + 3 * (size_t)i;
-                px[j] = xi[0], py[j] = xi[1], pz[j] = xi[2];
-                pvx[j] = vi[0], pvy[j] = vi[1], pvz[j] = vi[2];
+                const double *wi = om + 3 * (size_t)ix[j];
                 pwx[j] = wi[0], pwy[j] = wi[1], pwz[j] = wi[2];
-                pr[j] = radius[i], pm[j] = rmass[i], pid[j] = tag[i], pty[j] = type[i];
-                pd[j] = rowbase + (size_t)i * rs, ph[j] = w->hist + (size_t)i * ss;
-                row[j] = i;
             }
         else
-            for (int j = 0; j < m; j++) {
-                const int i = ix[j];
-                const double *xi = x + 3 * (size_t)i, *vi = v + 3 * (size_t)i;
-                px[j] = xi[0], py[j] = xi[1], pz[j] = xi[2];
-                pvx[j] = vi[0], pvy[j] = vi[1], pvz[j] = vi[2];
-                pwx[j] = om ? om[3 * (size_t)i] : 0.0;
-                pwy[j] = om ? om[3 * (size_t)i + 1] : 0.0;
-                pwz[j] = om ? om[3 * (size_t)i + 2] : 0.0;
-                pr[j] = radius[i], pm[j] = rmass[i];
-                pid[j] = tag ? tag[i] : i + 1, pty[j] = type ? type[i] : 1;
-                pd[j] = rowbase + (size_t)i * rs, ph[j] = w->hist + (size_t)i * ss;
-                row[j] = i;
-            }
+            for (int j = 0; j < m; j++)
+                pwx[j] = pwy[j] = pwz[j] = 0.0;
         rs_line_revolution_faces(w->surf, &w->motion->pose, m, px, py, pz, pr, gap_max, &c,
                                  face);
         rs_frame_orient(w->surf->ops->frame, &c, 0, m);
-        /* Usual: the face contact within the tracking thickness (keep_tracked's test and
-         * the tracker's), held in slot 0 and nothing else. */
+        /* Usual still: the face contact within the tracking thickness (keep_tracked's
+         * test and the tracker's), the feature the directory holds. */
         int nu = 0;
         for (int j = 0; j < m; j++) {
-            const int usual = face[j] && c.dist[j] <= w->tracking + pr[j] &&
-                              !(c.dist[j] - pr[j] > w->tracker.tracking) &&
-                              rs_track_dir_usual(pd[j], cap, RS_DIR_LIVE(c.feature[j]));
-            if (!usual) {
+            const int still_usual = face[j] && c.dist[j] <= w->tracking + pr[j] &&
+                                    !(c.dist[j] - pr[j] > w->tracker.tracking) &&
+                                    usual[row[j]] == c.feature[j] + 1;
+            if (!still_usual) {
                 w->rest[w->nrest++] = row[j];
                 continue;
             }
@@ -96,12 +105,14 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
                 px[nu] = px[j], py[nu] = py[j], pz[nu] = pz[j];
                 pvx[nu] = pvx[j], pvy[nu] = pvy[j], pvz[nu] = pvz[j];
                 pwx[nu] = pwx[j], pwy[nu] = pwy[j], pwz[nu] = pwz[j];
-                pr[nu] = pr[j], pm[nu] = pm[j], pid[nu] = pid[j], pty[nu] = pty[j];
-                pd[nu] = pd[j], ph[nu] = ph[j], row[nu] = row[j];
+                pr[nu] = pr[j], pm[nu] = pm[j], pid[nu] = pid[j];
+                ph[nu] = ph[j], row[nu] = row[j];
                 for (int d = 0; d < 3; d++)
                     cn[d][nu] = cn[d][j], ct1[d][nu] = ct1[d][j], ct2[d][nu] = ct2[d][j];
                 cd[nu] = cd[j], cft[nu] = cft[j];
             }
+            /* the directory entry the kernel reads: the one the row holds */
+            live[nu] = RS_DIR_LIVE(cft[nu]);
             cpt[nu] = nu;
             nu++;
         }
@@ -114,8 +125,8 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
         p.x = px, p.y = py, p.z = pz;
         p.vx = pvx, p.vy = pvy, p.vz = pvz;
         p.wx = pwx, p.wy = pwy, p.wz = pwz;
-        p.radius = pr, p.mass = pm, p.id = pid, p.type = pty, p.row = row;
-        p.dir = pd, p.hist = ph;
+        p.radius = pr, p.mass = pm, p.id = pid, p.row = row;
+        p.dir = pl, p.hist = ph;
         p.slot_stride = wall_slot_stride(w);
         rs_load_rows lr = wall_load_rows(w, rows, row, 0);
         lr.out6 = rows->peratom;
@@ -125,13 +136,6 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
         if (rc)
             return rc;
         wall_add_load(w, &wl, 0);
-        if (w->bounds_ok) /* each holds a contact within the tracking thickness */
-            for (int j = 0; j < nu; j++) {
-                /* written only when it changes: a held contact's line then stays clean */
-                double *g = &w->gapref[row[j]];
-                if (*g != -INFINITY)
-                    *g = -INFINITY;
-            }
     }
     /* The rest, in their order, in blocks as wall_compute forms them (one particle type).
      */

@@ -10,7 +10,8 @@
 
 /* The candidates this step: every particle of the group (every_particle), or those of the
  * last refresh less those whose distance bound keeps them beyond the tracking thickness (a
- * test as cheap as a primitive wall's; a particle that holds a contact has no bound). */
+ * test as cheap as a primitive wall's; a particle that holds a contact has no bound); on
+ * the line path all of them, which it tests as it goes (wall_line.c). */
 static int step_list(rs_wall *w, const rs_wall_block *b, int setup, const int **list,
                      int *n, rs_error *err)
 {
@@ -34,25 +35,17 @@ static int step_list(rs_wall *w, const rs_wall_block *b, int setup, const int **
     }
     *list = w->cand;
     *n = w->ncand;
-    if (!(w->bounds_ok || w->list_bounds) || setup)
+    /* the line path tests the bounds of the particles it does not find usual itself */
+    if (!(w->bounds_ok || w->list_bounds) || setup || w->line_pass)
         return RS_OK;
-    const double *restrict x = b->x, *restrict radius = b->radius;
-    const double *restrict gapref = w->gapref, *restrict xref = w->xref;
     const int *restrict cand = w->cand;
     int *restrict active = w->active;
-    const double tracking = w->tracking;
     const int ncand = w->ncand;
     int na = 0;
     for (int c = 0; c < ncand; c++) {
         const int i = cand[c];
-        const double room = gapref[i] - tracking;
-        const double *xr = &xref[4 * (size_t)i], *xi = x + 3 * (size_t)i;
-        if (room > 0.0 && radius[i] == xr[3]) {
-            const double dx = xi[0] - xr[0], dy = xi[1] - xr[1], dz = xi[2] - xr[2];
-            if (dx * dx + dy * dy + dz * dz < room * room)
-                continue;
-        }
-        active[na++] = i;
+        if (!wall_kept_away(w, b->x, b->radius, i))
+            active[na++] = i;
     }
     *list = w->active;
     *n = na;

@@ -8,8 +8,12 @@ push, at rest, rolling around it, or kicked off it and bouncing back), each run 
 law and the loads run in one pass: on the revolved LINE per run of spheres) and with
 `fused no` (every block through the staged calls). The positions, velocities and spins of
 every sphere and the wall's per-atom array (peratom yes) at the end are the same, bit for
-bit; the wall's global sums agree to rounding (1e-12 relative: the line path adds them up
-per run of spheres, the staged calls per block).
+bit, and so they are when the bouncing bed also rolls around the cylinder with its atoms
+sorted every 20 steps, so that spheres change places in the atom arrays while some hold
+their contact and others fly (LIGGGHTS's atom sort permutes the wall's per-particle
+history through its copy callback); the wall's
+global sums agree to rounding (1e-12 relative: the line path adds them up per run of
+spheres, the staged calls per block).
 """
 import os
 import sys
@@ -25,9 +29,20 @@ N = 1500
 
 def deck(s, kind, fused):
     data, height = B.write_bed(s.dir, N, None, "mono_%s.data" % kind)
-    steps = 400 if kind != "bouncing" else 600
+    bouncing = kind.startswith("bouncing")
+    steps = 400 if not bouncing else 600
     d = B.wall_deck("ours", data, steps, height, flow=kind == "flowing",
-                    kick=B.VKICK if kind == "bouncing" else 0.0)
+                    kick=B.VKICK if bouncing else 0.0)
+    if kind == "bouncing_sorted":
+        # the bouncing bed rolling around the cylinder too, kicked at speeds that differ
+        # from sphere to sphere, its atoms sorted by bins of R every 20 steps: spheres
+        # change places in the atom arrays while some hold their contact and others fly
+        d = d.replace("atom_modify map array\n",
+                      "atom_modify map array sort 20 %r\n" % B.R)
+        d = d.replace("set group all vx v_kx vy v_ky\n",
+                      "variable hx atom (1.0+0.6*sin(id))*v_kx-%r*y/sqrt(x*x+y*y)\n"
+                      "variable hy atom (1.0+0.6*sin(id))*v_ky+%r*x/sqrt(x*x+y*y)\n"
+                      "set group all vx v_hx vy v_hy\n" % (B.VFLOW, B.VFLOW))
     fix = "law hertz type 2 peratom yes%s\n" % ("" if fused else " fused no")
     d = d.replace("law hertz type 2\n", fix)
     tag = "%s_%s" % (kind, "fused" if fused else "staged")
@@ -39,7 +54,7 @@ def deck(s, kind, fused):
 
 
 def body(s):
-    for kind in ("static", "flowing", "bouncing"):
+    for kind in ("static", "flowing", "bouncing", "bouncing_sorted"):
         texts = []
         for fused in (True, False):
             d, tag, steps = deck(s, kind, fused)
