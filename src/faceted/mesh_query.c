@@ -167,13 +167,10 @@ static int hit_weights(const rs_mesh *m, const double p[3], double R, const int 
 static inline int face_hit(const rs_mesh *m, int t, int one_sided, const double p[3],
                            double h, double gap_lim, double dist_min, scratch *s)
 {
-    const double *nt = m->rec[t].n;
-    const double sg = (!one_sided && h < 0.0) ? -1.0 : 1.0;
-    const double dist = sg * h;
+    double x[3], n[3];
+    const double dist = face_contact(m, t, one_sided, p, h, x, n);
     if (!(dist <= gap_lim && dist >= dist_min))
         return 0;
-    const double x[3] = {p[0] - h * nt[0], p[1] - h * nt[1], p[2] - h * nt[2]};
-    const double n[3] = {sg * nt[0], sg * nt[1], sg * nt[2]};
     return put_hit(s, RS_FEATURE(RS_FEAT_FACE, m->rec[t].el), t, x, n, dist);
 }
 
@@ -334,27 +331,17 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
 static int hinted_hits(const rs_mesh *m, int sides, const double p[3], int hint,
                        double gap_lim, double dist_min, scratch *s)
 {
-    if (hint < 0 || RS_FEATURE_TYPE(hint) != RS_FEAT_FACE)
+    double h;
+    const int t = rs_mesh_zone_face(m, p, hint, fmax(gap_lim, -dist_min), &h);
+    if (t < 0)
         return 0;
-    const int el = RS_FEATURE_INDEX(hint);
-    if (el >= m->nel)
-        return 0;
-    const double lim = fmax(gap_lim, -dist_min);
-    for (int t = m->el_t0[el]; t < m->el_t0[el + 1]; t++) {
-        double h, sd[3];
-        tri_bound(m, t, p, &h, sd);
-        const rs_mzone *z = rs_mesh_zone(m, t);
-        if (!z || !rs_mzone_holds(z, h, sd, lim))
-            continue;
-        s->nhit = 0;
-        s->shares_due = 0;
-        if (face_hit(m, t, sides != 2, p, h, gap_lim, dist_min, s))
-            return -1;
-        if (s->nhit)
-            s->hits[0].share = 1.0;
-        return 1;
-    }
-    return 0;
+    s->nhit = 0;
+    s->shares_due = 0;
+    if (face_hit(m, t, sides != 2, p, h, gap_lim, dist_min, s))
+        return -1;
+    if (s->nhit)
+        s->hits[0].share = 1.0;
+    return 1;
 }
 
 /* How far ahead of the slave queried its successors' candidates are fetched, into the

@@ -6,6 +6,7 @@
 #define RS_FACETED_MESH_ZONE_H
 
 #include "mesh.h"
+#include "mesh_regions.h"
 
 #include <math.h>
 #include <stdatomic.h>
@@ -57,6 +58,27 @@ static inline int rs_mzone_holds(const rs_mzone *z, double h, const double sd[3]
     const double ah = fabs(h);
     return ah <= z->hmax && ah >= z->eps && lim < z->clear[h < 0.0] && sd[0] >= z->eps + z->kappa[0] * ah &&
            sd[1] >= z->eps + z->kappa[1] * ah && sd[2] >= z->eps + z->kappa[2] * ah;
+}
+
+/// The triangle of face feature hint (an element's face) whose clear zone holds p, where
+/// no other feature gives a contact within lim, with p's height over it in *h; -1 where
+/// hint names no face of m or no zone of its triangles holds p.
+static inline int rs_mesh_zone_face(const rs_mesh *m, const double p[3], int hint,
+                                    double lim, double *h)
+{
+    if (hint < 0 || RS_FEATURE_TYPE(hint) != RS_FEAT_FACE)
+        return -1;
+    const int el = RS_FEATURE_INDEX(hint);
+    if (el >= m->nel)
+        return -1;
+    for (int t = m->el_t0[el]; t < m->el_t0[el + 1]; t++) {
+        double sd[3];
+        tri_bound(m, t, p, h, sd);
+        const rs_mzone *z = rs_mesh_zone(m, t);
+        if (z && rs_mzone_holds(z, *h, sd, lim))
+            return t;
+    }
+    return -1;
 }
 
 #endif

@@ -8,11 +8,16 @@
  * candidate lists, at random points biased to edges and vertices, under right and wrong
  * hints. Where the hint gave the contact, it is the brute-force nearest point of all
  * triangles (closest points written here); the lists' distance bound (rs_query.near)
- * never exceeds the distance to a triangle that can give a contact. */
+ * never exceeds the distance to a triangle that can give a contact. The wall's held faces
+ * (rs_mesh_held_faces, one sphere at a time) are the hinted query's contacts, value for
+ * value, in the reference configuration and under a pose, for every sphere the zone
+ * takes, and flag every other. */
 #include "faceted/cgal_mesh.h"
 #include "faceted/mesh.h"
+#include "faceted/mesh_held.h"
 #include "faceted/mesh_regions.h"
 #include "faceted/mesh_zone.h"
+#include "rigidsurf/motion.h"
 #include "rigidsurf/surface.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
@@ -258,8 +263,49 @@ static int same_contacts(const rs_contacts *a, const rs_contacts *b)
 enum { NB = 64 }; /* points a query */
 
 typedef struct tally {
-    int points, hinted, fast, contacts, bad;
+    int points, hinted, fast, contacts, held, bad;
 } tally;
+
+/* The held faces of the NB spheres x, y, z, r holding hint under pose (NULL: none) against
+ * the hinted query's contacts q of the same spheres, value for value: a sphere whose held
+ * face is flagged has that one contact (frame by the FACETED convention), and a sphere the
+ * zone takes (fast[i]) whose contact lies no deeper than its radius is flagged. Returns
+ * the number of flagged spheres, -1 on a mismatch. */
+static int held_against(const rs_surface *s, const rs_pose *pose, const double *x,
+                        const double *y, const double *z, const double *r, const int *hint,
+                        double gap_max, double rmax, const int *fast, const rs_contacts *q)
+{
+    rs_contacts c;
+    memset(&c, 0, sizeof c);
+    rs_error e;
+    if (rs_contacts_reserve(&c, NB, &e) != RS_OK)
+        return -1;
+    int face[NB], nface = 0, bad = 0;
+    rs_mesh_held_faces(s, pose, NB, x, y, z, r, hint, gap_max, -rmax, &c, face);
+    rs_frame_orient(s->ops->frame, &c, 0, c.n);
+    for (int i = 0; i < NB && !bad; i++) {
+        int k = -1, nk = 0;
+        for (int a = 0; a < q->n; a++)
+            if (q->point[a] == i)
+                k = a, nk++;
+        const int kept = fast[i] && nk == 1 && q->dist[k] >= -r[i];
+        bad |= face[i] != kept;
+        if (!face[i] || bad)
+            continue;
+        nface++;
+        bad |= c.point[i] != i || c.feature[i] != q->feature[k] || c.dist[i] != q->dist[k] ||
+               c.share[i] != 1.0 || q->share[k] != 1.0 || c.curv[0][i] != 0.0 ||
+               c.curv[1][i] != 0.0;
+        for (int d = 0; d < 3; d++)
+            bad |= c.xm[d][i] != q->xm[d][k] || c.nrm[d][i] != q->nrm[d][k] ||
+                   c.t1[d][i] != q->t1[d][k] || c.t2[d][i] != q->t2[d][k];
+        if (bad)
+            fprintf(stderr, "held face of sphere %d: %d at %.17g, the query's %d at %.17g\n",
+                    i, c.feature[i], c.dist[i], q->feature[k], q->dist[k]);
+    }
+    rs_contacts_free(&c);
+    return bad ? -1 : nface;
+}
 
 /* Does the hint of point p send it through its face's zone (mesh_query.c's own test)? */
 static int takes_zone(const rs_mesh *m, const double p[3], int hint, double lim)
@@ -337,7 +383,8 @@ static void run_case(const char *name, const rs_surface *s, double r0, double ga
     double x[NB], y[NB], z[NB], r[NB], x0[NB], y0[NB], z0[NB], near_t[NB], near_h[NB],
         near_l[NB];
     int hint[NB];
-    rs_contacts ct, ch, cl, clh;
+    rs_contacts ct, ch, cl, clh, chp;
+    memset(&chp, 0, sizeof chp);
     memset(&ct, 0, sizeof ct);
     memset(&ch, 0, sizeof ch);
     memset(&cl, 0, sizeof cl);
@@ -421,10 +468,48 @@ static void run_case(const char *name, const rs_surface *s, double r0, double ga
                     b0, b0 + NB - 1);
             ty->bad++;
         }
+        /* the held faces: in place, then under a pose that turns the points with it */
+        int fastv[NB];
         for (int i = 0; i < NB; i++) {
             const double p[3] = {x[i], y[i], z[i]};
-            const double lim = fmax(gap_max + r[i], rmax);
-            const int fast = takes_zone(m, p, hint[i], lim);
+            fastv[i] = takes_zone(m, p, hint[i], fmax(gap_max + r[i], rmax));
+        }
+        const int held = held_against(s, NULL, x, y, z, r, hint, gap_max, rmax, fastv, &ch);
+        const double ang = 0.3 + 0.1 * (b0 / NB), ca = cos(ang), sa = sin(ang);
+        const rs_pose pose = {{ca, sa, 0.0, -sa, ca, 0.0, 0.0, 0.0, 1.0}, {0.25, -0.5, 0.125}};
+        double gx[NB], gy[NB], gz[NB];
+        for (int i = 0; i < NB; i++) {
+            const double X[3] = {x[i], y[i], z[i]};
+            double g[3];
+            rs_pose_to_global(&pose, X, g);
+            gx[i] = g[0], gy[i] = g[1], gz[i] = g[2];
+        }
+        rs_query qp = q;
+        qp.slave.x = gx, qp.slave.y = gy, qp.slave.z = gz;
+        qp.pose = &pose;
+        qp.near = NULL;
+        chp.n = 0;
+        int held_posed = -1;
+        if (rs_surface_query(s, &qp, &chp, &e) == RS_OK) {
+            /* the points the zone takes after the turn, as the query sees them */
+            int fastp[NB];
+            for (int i = 0; i < NB; i++) {
+                double X[3];
+                slave_local(&qp, &pose, i, X);
+                fastp[i] = takes_zone(m, X, hint[i], fmax(gap_max + r[i], rmax));
+            }
+            held_posed =
+                held_against(s, &pose, gx, gy, gz, r, hint, gap_max, rmax, fastp, &chp);
+        }
+        if (held < 0 || held_posed < 0) {
+            fprintf(stderr, "%s: points %d .. %d: the held faces differ from the query\n",
+                    name, b0, b0 + NB - 1);
+            ty->bad++;
+        }
+        ty->held += held > 0 ? held : 0;
+        for (int i = 0; i < NB; i++) {
+            const double p[3] = {x[i], y[i], z[i]};
+            const int fast = fastv[i];
             ty->points++;
             ty->hinted += hint[i] >= 0 && RS_FEATURE_TYPE(hint[i]) == RS_FEAT_FACE;
             ty->fast += fast;
@@ -476,6 +561,7 @@ static void run_case(const char *name, const rs_surface *s, double r0, double ga
     rs_contacts_free(&ch);
     rs_contacts_free(&cl);
     rs_contacts_free(&clh);
+    rs_contacts_free(&chp);
     rs_cands_free(&cd);
 }
 
@@ -489,18 +575,20 @@ static void mesh_case(const char *name, soup *sp, double r0, double gap_max, dou
             rs_test_current_failed = 1;
             return;
         }
-        tally ty = {0, 0, 0, 0, 0};
+        tally ty = {0, 0, 0, 0, 0, 0};
         run_case(name, &s, r0, gap_max, extra, npts, seed + (unsigned)sides, &ty);
         printf("  %s, %d side%s: %d points, %d hinted faces, %d from the zone (%d "
-               "contacts)\n",
+               "contacts, %d held faces)\n",
                name, sides, sides == 1 ? "" : "s", ty.points, ty.hinted, ty.fast,
-               ty.contacts);
+               ty.contacts, ty.held);
         rs_surface_free(&s);
         ENSURE(ty.bad == 0);
         ENSURE(ty.points == npts);
         /* the zones take a good share of the points held on their faces */
         ENSURE(ty.fast >= fast_min * ty.hinted);
         ENSURE(fast_min == 0.0 || ty.contacts > 0);
+        /* the held faces give those contacts */
+        ENSURE(fast_min == 0.0 || ty.held > 0);
     }
 }
 
