@@ -1,12 +1,15 @@
-/* The wall's line path: a block on a revolved LINE (a cylinder's mantle, a cone) with a law
- * whose fused kernel takes it, in runs of spheres: the spheres whose directory is usual
- * (rs_wall.usual: one contact, in slot 0) gathered from the engine's arrays, their face
- * contacts computed (rs_line_revolution_faces) and those that still hold just that
- * contact passed to the kernel (rs_track_fused_usual), so that no block-wide column is
- * written and no directory row read; the other spheres go through wall_block afterwards,
- * but those whose distance bound keeps them away. */
+/* The wall's line path: a block on a revolved LINE (a cylinder's mantle, a cone), or on a
+ * MESH whose faces have clear zones, with a law whose fused kernel takes it, in runs of
+ * spheres: the spheres whose directory is usual (rs_wall.usual: one contact, in slot 0)
+ * gathered from the engine's arrays, their face contacts computed (on the LINE,
+ * rs_line_revolution_faces; on the MESH, rs_mesh_held_faces, from the face each holds,
+ * where it lies in that face's clear zone) and those that still hold just that contact
+ * passed to the kernel (rs_track_fused_usual), so that no block-wide column is written, no
+ * directory row read and no candidate list walked; the other spheres go through
+ * wall_block afterwards, but those whose distance bound keeps them away. */
 #include "wall_impl.h"
 
+#include "faceted/mesh_held.h"
 #include "line_revolution.h"
 #include "track_fused.h"
 
@@ -19,7 +22,8 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     const double *props = NULL;
     int nprops = 0;
     const int t0 = b->type ? b->type[idx[0]] : 1;
-    if (b->still || !wall_block_props(w, t0, &props, &nprops) || nprops != w->law->nprops ||
+    if (b->still || b->body || !wall_block_props(w, t0, &props, &nprops) ||
+        nprops != w->law->nprops ||
         !w->law->fused->takes(&w->tracker, props, nprops))
         return wall_block(w, b, rows, idx, n, dt, 0, err);
     const double *x = b->x, *v = b->v, *om = b->omega;
@@ -37,7 +41,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     double px[M], py[M], pz[M], pvx[M], pvy[M], pvz[M], pwx[M], pwy[M], pwz[M], pr[M],
         pm[M];
     double *ph[M];
-    int pid[M], row[M], face[M];
+    int pid[M], row[M], face[M], held[M];
     /* the frames, distances and features: what the kernel reads (no master points,
      * curvatures or shares: rs_line_revolution_faces leaves them out) */
     double cn[3][M], ct1[3][M], ct2[3][M], cd[M];
@@ -64,7 +68,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
             const int i = idx[next];
             if (usual[i])
                 ix[m++] = i;
-            else if (!(w->bounds_ok && wall_kept_away(w, x, radius, i)))
+            else if (!((w->bounds_ok || w->list_bounds) && wall_kept_away(w, x, radius, i)))
                 w->rest[w->nrest++] = i;
         }
         if (m == 0)
@@ -87,8 +91,19 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
         else
             for (int j = 0; j < m; j++)
                 pwx[j] = pwy[j] = pwz[j] = 0.0;
-        rs_line_revolution_faces(w->surf, &w->motion->pose, m, px, py, pz, pr, gap_max, &c,
-                                 face);
+        if (w->line_mesh) {
+            /* the face each holds; the depth limit of any block's query (wall_block.c) */
+            double rmax = w->rglob;
+            for (int j = 0; j < m; j++) {
+                held[j] = usual[ix[j]] - 1;
+                rmax = rmax > pr[j] ? rmax : pr[j];
+            }
+            rs_mesh_held_faces(w->surf, &w->motion->pose, m, px, py, pz, pr, held, gap_max,
+                               -rmax, &c, face);
+        } else {
+            rs_line_revolution_faces(w->surf, &w->motion->pose, m, px, py, pz, pr, gap_max,
+                                     &c, face);
+        }
         rs_frame_orient(w->surf->ops->frame, &c, 0, m);
         /* Usual still: the face contact within the tracking thickness (keep_tracked's
          * test and the tracker's), the feature the directory holds. */
