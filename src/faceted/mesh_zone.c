@@ -122,8 +122,16 @@ typedef struct region {
     double ray[RS_ZONE_MAX_RAYS][3];
     int nray;
     double g[RS_ZONE_MAX_W + 2][4];
+    double gl[RS_ZONE_MAX_W + 2]; /* |g[k][0 .. 2]| */
     int ng;
 } region;
+
+/* The lengths of R's plane normals, once its planes are set. */
+static void plane_norms(region *R)
+{
+    for (int k = 0; k < R->ng; k++)
+        R->gl[k] = rs_norm3(R->g[k]);
+}
 
 /* Adds the ray of unit direction u (and -u with both) where every plane's normal has
  * g.u <= tol |g| (the cone holds it). */
@@ -133,7 +141,7 @@ static void add_ray(region *R, const double u[3], int both)
         const double sg = s ? -1.0 : 1.0;
         int in = 1;
         for (int k = 0; k < R->ng && in; k++)
-            in = sg * dot3(R->g[k], u) <= 1e-12 * rs_norm3(R->g[k]);
+            in = sg * dot3(R->g[k], u) <= 1e-12 * R->gl[k];
         if (in && R->nray < RS_ZONE_MAX_RAYS) {
             for (int d = 0; d < 3; d++)
                 R->ray[R->nray][d] = sg * u[d];
@@ -160,7 +168,7 @@ static int unit_of(const double a[3], double scale, double u[3])
 static int region_out(const zpiece *P, const zaxes *X, const region *R, double margin)
 {
     for (int k = 0; k < R->ng; k++) { /* P beyond one of R's planes */
-        const double l = rs_norm3(R->g[k]);
+        const double l = R->gl[k];
         if (!(l > 0.0))
             continue;
         double lo, hi;
@@ -274,6 +282,7 @@ static void face_region(const rs_mesh *m, int tp, region *R)
         }
         R->g[j][3] = -r->e[j][3];
     }
+    plane_norms(R);
     add_ray(R, r->n, 1);
 }
 
@@ -307,6 +316,7 @@ static void edge_region(const rs_mesh *m, int e, double scale, region *R)
     R->g[R->ng][3] = -dot3(u, pa);
     R->g[R->ng + 1][3] = dot3(u, pb);
     R->ng += 2;
+    plane_norms(R);
     /* the cone across the edge: the faces' normals, where the others' sides allow, and
      * outward from a lone face */
     for (int f = m->edge_f0[e]; f < m->edge_f0[e + 1]; f++) {
@@ -340,6 +350,7 @@ static int vertex_region(const rs_mesh *m, int v, double scale, region *R)
             R->g[k][d] = pw[d] - pv[d];
         R->g[k][3] = dot3(R->g[k], pv);
     }
+    plane_norms(R);
     /* extreme rays: along the meeting line of two planes; where the planes all hold one
      * line l, that line both ways and, within the plane normal to it, the lines normal
      * to l and to a plane's normal */
@@ -349,10 +360,10 @@ static int vertex_region(const rs_mesh *m, int v, double scale, region *R)
         for (int j = i + 1; j < nw; j++) {
             double c[3], u[3];
             rs_cross3(R->g[i], R->g[j], c);
-            if (!unit_of(c, rs_norm3(R->g[i]) * rs_norm3(R->g[j]), u))
+            if (!unit_of(c, R->gl[i] * R->gl[j], u))
                 continue;
             add_ray(R, u, 1);
-            const double lc = rs_norm3(c) / (rs_norm3(R->g[i]) * rs_norm3(R->g[j]));
+            const double lc = rs_norm3(c) / (R->gl[i] * R->gl[j]);
             if (lc > lbest) {
                 lbest = lc;
                 memcpy(l, u, sizeof l);
@@ -361,34 +372,37 @@ static int vertex_region(const rs_mesh *m, int v, double scale, region *R)
     if (!(lbest > 0.0))
         return 0; /* the neighbours on one line */
     for (int k = 0; k < nw && !rank3; k++)
-        rank3 = fabs(dot3(l, R->g[k])) > 1e-9 * rs_norm3(R->g[k]);
+        rank3 = fabs(dot3(l, R->g[k])) > 1e-9 * R->gl[k];
     if (!rank3)
         for (int k = 0; k < nw; k++) {
             double c[3], u[3];
             rs_cross3(l, R->g[k], c);
-            if (unit_of(c, rs_norm3(R->g[k]), u))
+            if (unit_of(c, R->gl[k], u))
                 add_ray(R, u, 1);
         }
     (void)scale;
     return R->nray < RS_ZONE_MAX_RAYS;
 }
 
-/* How far the features of triangle tp other than those of t keep from piece P: INFINITY
- * when each owns no point of it, else the least of lower bounds of the distances of
- * those that may. Each edge and vertex is taken from its first triangle alone (which
- * touches it, so lies within the search when it does). */
-static double near_features(const rs_mesh *m, int t, int tp, const zpiece *P,
-                            const zaxes *X, double delta, double scale)
+/* How far the features of triangle tp other than those of t keep from each piece P[s]
+ * with live[s], into clear[s]: INFINITY when each owns no point of it, else the least of
+ * lower bounds of the distances of those that may. Each feature's region is made once for
+ * both pieces. Each edge and vertex is taken from its first triangle alone (which touches
+ * it, so lies within the search when it does). */
+static void near_features(const rs_mesh *m, int t, int tp, const zpiece P[2],
+                          const zaxes X[2], const int live[2], double delta, double scale,
+                          double clear[2])
 {
     const rs_mtri *r = m->rec + tp, *rt = m->rec + t;
     const double margin = 2.0 * delta;
-    double clear = INFINITY;
+    clear[0] = clear[1] = INFINITY;
     region R;
     face_region(m, tp, &R);
-    if (!region_out(P, X, &R, margin)) {
-        const double *T[3] = {R.v[0], R.v[1], R.v[2]};
-        clear = fmin(clear, sep_bound(P, X, T, 3));
-    }
+    for (int s = 0; s < 2; s++)
+        if (live[s] && !region_out(&P[s], &X[s], &R, margin)) {
+            const double *T[3] = {R.v[0], R.v[1], R.v[2]};
+            clear[s] = fmin(clear[s], sep_bound(&P[s], &X[s], T, 3));
+        }
     for (int j = 0; j < 3; j++) {
         if (!(r->first >> j & 1u))
             continue;
@@ -396,10 +410,11 @@ static double near_features(const rs_mesh *m, int t, int tp, const zpiece *P,
         if (e == rt->edge[0] || e == rt->edge[1] || e == rt->edge[2])
             continue; /* t's own edge: t's side keeps it out */
         edge_region(m, e, scale, &R);
-        if (!region_out(P, X, &R, margin)) {
-            const double *T[2] = {R.v[0], R.v[1]};
-            clear = fmin(clear, sep_bound(P, X, T, 2));
-        }
+        for (int s = 0; s < 2; s++)
+            if (live[s] && !region_out(&P[s], &X[s], &R, margin)) {
+                const double *T[2] = {R.v[0], R.v[1]};
+                clear[s] = fmin(clear[s], sep_bound(&P[s], &X[s], T, 2));
+            }
     }
     for (int j = 0; j < 3; j++) {
         if (!(r->first >> (3 + j) & 1u))
@@ -407,12 +422,13 @@ static double near_features(const rs_mesh *m, int t, int tp, const zpiece *P,
         const int v = r->v[j];
         if (v == rt->v[0] || v == rt->v[1] || v == rt->v[2])
             continue; /* t's own node: eps keeps it out */
-        if (!vertex_region(m, v, scale, &R) || !region_out(P, X, &R, margin)) {
-            const double *T[1] = {m->xyz + 3 * v};
-            clear = fmin(clear, sep_bound(P, X, T, 1));
-        }
+        const int ok = vertex_region(m, v, scale, &R);
+        for (int s = 0; s < 2; s++)
+            if (live[s] && (!ok || !region_out(&P[s], &X[s], &R, margin))) {
+                const double *T[1] = {m->xyz + 3 * v};
+                clear[s] = fmin(clear[s], sep_bound(&P[s], &X[s], T, 1));
+            }
     }
-    return clear;
 }
 
 /* How far the faces of edge e lean over each other's prisms per unit of height: the
@@ -560,11 +576,14 @@ int rs_mesh_zone_make(const rs_mesh *m, int t, rs_mzone *z)
         const int tp = ids[k];
         if (tp == t)
             continue;
+        const int live[2] = {clear[0] > 0.0, clear[1] > 0.0};
+        if (!live[0] && !live[1])
+            break;
+        double nf[2];
+        near_features(m, t, tp, P, X, live, delta, m->size + coord, nf);
         for (int side = 0; side < 2; side++)
-            if (clear[side] > 0.0)
-                clear[side] = fmin(clear[side], near_features(m, t, tp, &P[side], &X[side],
-                                                              delta, m->size + coord) -
-                                                    2.0 * delta);
+            if (live[side])
+                clear[side] = fmin(clear[side], nf[side] - 2.0 * delta);
     }
     free(ids);
     z->eps = eps;
