@@ -52,7 +52,10 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     for (int d = 0; d < 3; d++)
         c.nrm[d] = cn[d], c.t1[d] = ct1[d], c.t2[d] = ct2[d];
     c.dist = cd, c.point = cpt, c.feature = cft;
+    /* the rest: those that were not usual from the front of w->rest, those that were but
+     * whose face contact the run could not give from the back (n <= bcap, its size) */
     w->nrest = 0;
+    int nheld = 0;
     const int *const usual = w->usual;
     double live[M];
     double *pl[M];
@@ -113,7 +116,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
                                     !(c.dist[j] - pr[j] > w->tracker.tracking) &&
                                     usual[row[j]] == c.feature[j] + 1;
             if (!still_usual) {
-                w->rest[w->nrest++] = row[j];
+                w->rest[n - 1 - nheld++] = row[j];
                 continue;
             }
             if (nu != j) {
@@ -152,13 +155,14 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
             return rc;
         wall_add_load(w, &wl, 0);
     }
-    /* The rest, in their order, in blocks as wall_compute forms them (one particle type).
-     */
-    for (int b0 = 0; b0 < w->nrest; b0 += w->bcap) {
-        const int nb = w->nrest - b0 < w->bcap ? w->nrest - b0 : w->bcap;
-        const int rc = wall_block(w, b, rows, w->rest + b0, nb, dt, 0, err);
-        if (rc)
-            return rc;
-    }
-    return RS_OK;
+    /* The rest through wall_block (one particle type, at most bcap each): first those that
+     * held one contact, in a block of their own, which the law's fused kernel takes whole
+     * where each still holds one (a sphere near a mesh's edge, outside its face's zone),
+     * then the others, in their order. */
+    int rc = RS_OK;
+    if (nheld)
+        rc = wall_block(w, b, rows, w->rest + n - nheld, nheld, dt, 0, err);
+    if (rc == RS_OK && w->nrest)
+        rc = wall_block(w, b, rows, w->rest, w->nrest, dt, 0, err);
+    return rc;
 }
