@@ -50,8 +50,8 @@ static double dot3(const double a[3], const double b[3])
 /* The inset triangle of t at height z (times the normal n) whose side of slot j is s[j]:
  * its corners into c[0 .. 2] (corner k between slots k - 1 and k, near node k). 0 when
  * the inset leaves no triangle. O, e1, e2: t's plane frame. */
-static int inset(const rs_mtri *r, const double O[3], const double e1[3], const double e2[3],
-                 const double s[3], double z, double c[3][3])
+static int inset(const rs_mtri *r, const double O[3], const double e1[3],
+                 const double e2[3], const double s[3], double z, double c[3][3])
 {
     double g[3][2], rhs[3];
     for (int j = 0; j < 3; j++) {
@@ -508,9 +508,10 @@ int rs_mesh_zone_make(const rs_mesh *m, int t, rs_mzone *z)
         const rs_mtri *rp = m->rec + ids[k];
         for (int jj = 0; jj < 3; jj++) {
             const int a = rp->v[jj], b = rp->v[(jj + 1) % 3];
-            const double sl = rp->kind[jj] == RS_EDGE_FLAT || rp->kind[jj] == RS_EDGE_BOUNDARY
-                                  ? 0.0
-                                  : fold_slope(m, rp->edge[jj]);
+            const double sl =
+                rp->kind[jj] == RS_EDGE_FLAT || rp->kind[jj] == RS_EDGE_BOUNDARY
+                    ? 0.0
+                    : fold_slope(m, rp->edge[jj]);
             for (int j = 0; j < 3; j++)
                 if (r->v[j] == a || r->v[j] == b)
                     kv[j] = fmax(kv[j], sl);

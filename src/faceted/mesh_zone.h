@@ -43,21 +43,24 @@ static inline const rs_mzone *rs_mesh_zone(const rs_mesh *m, int t)
         return z;
     if (st != RS_ZONE_UNKNOWN)
         return NULL;
-    if (!atomic_compare_exchange_strong_explicit(&z->state, &st, RS_ZONE_BUSY,
-                                                 memory_order_acq_rel, memory_order_acquire))
+    if (!atomic_compare_exchange_strong_explicit(
+            &z->state, &st, RS_ZONE_BUSY, memory_order_acq_rel, memory_order_acquire))
         return st == RS_ZONE_READY ? z : NULL;
     const int ok = rs_mesh_zone_make(m, t, z);
-    atomic_store_explicit(&z->state, ok ? RS_ZONE_READY : RS_ZONE_NONE, memory_order_release);
+    atomic_store_explicit(&z->state, ok ? RS_ZONE_READY : RS_ZONE_NONE,
+                          memory_order_release);
     return ok ? z : NULL;
 }
 
 /// Does the point of height h and edge sides sd (tri_bound's, of the zone's triangle) lie
 /// in zone z, where no other feature gives a contact within lim?
-static inline int rs_mzone_holds(const rs_mzone *z, double h, const double sd[3], double lim)
+static inline int rs_mzone_holds(const rs_mzone *z, double h, const double sd[3],
+                                 double lim)
 {
     const double ah = fabs(h);
-    return ah <= z->hmax && ah >= z->eps && lim < z->clear[h < 0.0] && sd[0] >= z->eps + z->kappa[0] * ah &&
-           sd[1] >= z->eps + z->kappa[1] * ah && sd[2] >= z->eps + z->kappa[2] * ah;
+    return ah <= z->hmax && ah >= z->eps && lim < z->clear[h < 0.0] &&
+           sd[0] >= z->eps + z->kappa[0] * ah && sd[1] >= z->eps + z->kappa[1] * ah &&
+           sd[2] >= z->eps + z->kappa[2] * ah;
 }
 
 /// The triangle of face feature hint (an element's face) whose clear zone holds p, where

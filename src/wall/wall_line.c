@@ -23,8 +23,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     int nprops = 0;
     const int t0 = b->type ? b->type[idx[0]] : 1;
     if (b->still || b->body || !wall_block_props(w, t0, &props, &nprops) ||
-        nprops != w->law->nprops ||
-        !w->law->fused->takes(&w->tracker, props, nprops))
+        nprops != w->law->nprops || !w->law->fused->takes(&w->tracker, props, nprops))
         return wall_block(w, b, rows, idx, n, dt, 0, err);
     const double *x = b->x, *v = b->v, *om = b->omega;
     const double *radius = b->radius, *rmass = b->mass;

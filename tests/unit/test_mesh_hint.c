@@ -231,8 +231,8 @@ static double nearest_of_all(const rs_mesh *m, const double p[3], double cp[3])
     for (int t = 0; t < m->nt; t++) {
         const int *v = m->rec[t].v;
         double c[3];
-        const double d = on_triangle(m->xyz + 3 * v[0], m->xyz + 3 * v[1],
-                                     m->xyz + 3 * v[2], p, c);
+        const double d =
+            on_triangle(m->xyz + 3 * v[0], m->xyz + 3 * v[1], m->xyz + 3 * v[2], p, c);
         if (d < best) {
             best = d;
             memcpy(cp, c, sizeof c);
@@ -293,15 +293,16 @@ static int held_against(const rs_surface *s, const rs_pose *pose, const double *
         if (!face[i] || bad)
             continue;
         nface++;
-        bad |= c.point[i] != i || c.feature[i] != q->feature[k] || c.dist[i] != q->dist[k] ||
-               c.share[i] != 1.0 || q->share[k] != 1.0 || c.curv[0][i] != 0.0 ||
-               c.curv[1][i] != 0.0;
+        bad |= c.point[i] != i || c.feature[i] != q->feature[k] ||
+               c.dist[i] != q->dist[k] || c.share[i] != 1.0 || q->share[k] != 1.0 ||
+               c.curv[0][i] != 0.0 || c.curv[1][i] != 0.0;
         for (int d = 0; d < 3; d++)
             bad |= c.xm[d][i] != q->xm[d][k] || c.nrm[d][i] != q->nrm[d][k] ||
                    c.t1[d][i] != q->t1[d][k] || c.t2[d][i] != q->t2[d][k];
         if (bad)
-            fprintf(stderr, "held face of sphere %d: %d at %.17g, the query's %d at %.17g\n",
-                    i, c.feature[i], c.dist[i], q->feature[k], q->dist[k]);
+            fprintf(stderr,
+                    "held face of sphere %d: %d at %.17g, the query's %d at %.17g\n", i,
+                    c.feature[i], c.dist[i], q->feature[k], q->dist[k]);
     }
     rs_contacts_free(&c);
     return bad ? -1 : nface;
@@ -349,9 +350,8 @@ static int zone_border(const rs_mesh *m, int t, unsigned long long *seed, double
     const rs_mzone *z = rs_mesh_zone(m, t);
     if (!z)
         return 0;
-    const int side = z->clear[0] > 0.0 && (z->clear[1] <= 0.0 || rs_test_urand(seed) < 0.5)
-                         ? 1
-                         : -1;
+    const int side =
+        z->clear[0] > 0.0 && (z->clear[1] <= 0.0 || rs_test_urand(seed) < 0.5) ? 1 : -1;
     const double ah = z->eps + (z->hmax - z->eps) * rs_test_urand(seed), h = side * ah;
     double c[3][3], mid[3] = {0, 0, 0};
     for (int k = 0; k < 3; k++) {
@@ -363,8 +363,9 @@ static int zone_border(const rs_mesh *m, int t, unsigned long long *seed, double
     const int k = (int)(rs_test_xorshift(seed) % 3);
     const double w = rs_test_urand(seed), f = pow(10.0, -2.0 - 10.0 * rs_test_urand(seed));
     for (int d = 0; d < 3; d++) {
-        const double q = rs_test_urand(seed) < 0.5 ? c[k][d]
-                                                   : (1.0 - w) * c[k][d] + w * c[(k + 1) % 3][d];
+        const double q = rs_test_urand(seed) < 0.5
+                             ? c[k][d]
+                             : (1.0 - w) * c[k][d] + w * c[(k + 1) % 3][d];
         p[d] = q + f * (mid[d] - q);
     }
     return 1;
@@ -476,7 +477,8 @@ static void run_case(const char *name, const rs_surface *s, double r0, double ga
         }
         const int held = held_against(s, NULL, x, y, z, r, hint, gap_max, rmax, fastv, &ch);
         const double ang = 0.3 + 0.1 * (b0 / NB), ca = cos(ang), sa = sin(ang);
-        const rs_pose pose = {{ca, sa, 0.0, -sa, ca, 0.0, 0.0, 0.0, 1.0}, {0.25, -0.5, 0.125}};
+        const rs_pose pose = {{ca, sa, 0.0, -sa, ca, 0.0, 0.0, 0.0, 1.0},
+                              {0.25, -0.5, 0.125}};
         double gx[NB], gy[NB], gz[NB];
         for (int i = 0; i < NB; i++) {
             const double X[3] = {x[i], y[i], z[i]};
@@ -517,7 +519,8 @@ static void run_case(const char *name, const rs_surface *s, double r0, double ga
             const double best = nearest_of_all(m, p, cp);
             /* no triangle nearer than the bounds */
             if (!(near_t[i] <= best + 1e-12)) {
-                fprintf(stderr, "%s: point %d: bound %.17g beyond the nearest triangle %.17g\n",
+                fprintf(stderr,
+                        "%s: point %d: bound %.17g beyond the nearest triangle %.17g\n",
                         name, b0 + i, near_t[i], best);
                 ty->bad++;
             }
@@ -529,8 +532,10 @@ static void run_case(const char *name, const rs_surface *s, double r0, double ga
                                                 m->xyz + 3 * v[2], p, c));
             }
             if (!(near_l[i] <= lbest + 1e-12)) {
-                fprintf(stderr, "%s: point %d: bound %.17g beyond its nearest candidate "
-                        "%.17g\n", name, b0 + i, near_l[i], lbest);
+                fprintf(stderr,
+                        "%s: point %d: bound %.17g beyond its nearest candidate "
+                        "%.17g\n",
+                        name, b0 + i, near_l[i], lbest);
                 ty->bad++;
             }
             if (fast && near_h[i] != 0.0) {
