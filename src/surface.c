@@ -50,6 +50,8 @@ static int query_bodies(const rs_surface *s, const rs_query *q, rs_contacts *out
     int rc = RS_OK;
     for (int i = 0; i < q->n && rc == RS_OK;) {
         if (q->slave.body[i].shape) {
+            if (q->near)
+                q->near[i] = 0.0;
             rc = rs_body_query(s, q->pose, &q->slave.body[i], i,
                                q->slave.radius ? q->slave.radius[i] : 0.0, q->gap_max, out,
                                err);
@@ -66,6 +68,8 @@ static int query_bodies(const rs_surface *s, const rs_query *q, rs_contacts *out
         run.slave.z = q->slave.z + i;
         run.slave.radius = q->slave.radius ? q->slave.radius + i : NULL;
         run.slave.body = NULL;
+        run.hint = q->hint ? q->hint + i : NULL;
+        run.near = q->near ? q->near + i : NULL;
         const int k0 = out->n;
         rc = query_spheres(s, &run, out, err);
         for (int k = k0; rc == RS_OK && k < out->n; k++)
