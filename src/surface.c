@@ -92,6 +92,8 @@ static int query_bodies(const rs_surface *s, const rs_query *q, rs_contacts *out
             static const double zero[RS_BLOCK];
             while (j < q->n && q->slave.body[j].shape && j - i < RS_BLOCK)
                 j++;
+            for (int k = i; q->near && k < j; k++)
+                q->near[k] = 0.0;
             const int k0 = out->n;
             rc = rs_body_manifold(s, q->pose, q->slave.body + i, j - i, i,
                                   q->slave.radius ? q->slave.radius + i : zero, q->gap_max,
@@ -110,6 +112,8 @@ static int query_bodies(const rs_surface *s, const rs_query *q, rs_contacts *out
         run.slave.z = q->slave.z + i;
         run.slave.radius = q->slave.radius ? q->slave.radius + i : NULL;
         run.slave.body = NULL;
+        run.hint = q->hint ? q->hint + i : NULL;
+        run.near = q->near ? q->near + i : NULL;
         const int k0 = out->n;
         rc = query_spheres(s, &run, out, err);
         for (int k = k0; rc == RS_OK && k < out->n; k++)

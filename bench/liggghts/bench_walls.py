@@ -2,7 +2,7 @@
 """LIGGGHTS-side benchmarks of fix wall/rigid, measured side by side in one run.
 
     bench_walls.py --exe liggghts-rigidsurf [--quick] [--max-n N] [--reps K] [--out FILE]
-                   [--sections 1,1b,1c,1d,1e,2,3]
+                   [--sections 1,1b,1c,1d,1e,1f,1g,2,3]
 
 1. Wall cost, cylinder. N spheres (R = 1 mm) form a monolayer on the inside of a
    cylinder of radius 50 mm about z (rings of spheres 2.2 R apart, layers 2.2 R apart,
@@ -61,6 +61,12 @@
    made from the fix's words, and prints its time per particle-step, which section 1's
    wall cost of the fix (loop time minus the baseline, measured in the same repetitions)
    is set against.
+1g. A bouncing bed in a mesh: section 1e's bed (20000 spheres kicked inward at 0.2 m/s,
+   all kept, 1000 steps) in the 4000-triangle STL cylinder of section 1c (200 x 10
+   quads, wound inward: its facets' normals point to the axis), LIGGGHTS's mesh wall
+   (fix mesh/surface + wall/gran ... mesh) against fix wall/rigid on the same STL, both
+   sides acting (ours_mesh, the default of an STL) and the inward side alone
+   (ours_mesh1, `sides 1`); ours, the analytic cylinder of section 1e, for scale.
 2. Scaling: the same for N = 1e3 .. max-n (ours and prim; mesh at 1e4 only).
 3. Strong scaling: a rotating drum (REVOLUTION mantle and end caps, 2 rad/s, gravity)
    with a settling bed of interacting spheres, 1 and 2 MPI ranks, loop time.
@@ -80,7 +86,7 @@ R, RHO, RC, F0, DT = 1.0e-3, 2500.0, 0.05, 1.0e-3, 1.0e-5
 VFLOW = 0.5  # hoop speed of the flowing bed (m/s)
 SKIN = 0.0005  # neighbour skin of the decks (m)
 GAP_NEAR = 3.0e-4  # gap of the spheres of section 1d (m), inside the tracking thickness
-SECTIONS = ["1", "1b", "1c", "1d", "1e", "1f", "2", "3"]
+SECTIONS = ["1", "1b", "1c", "1d", "1e", "1f", "1g", "2", "3"]
 VKICK = 0.2  # inward speed of the bouncing bed at the start (m/s), section 1e
 N_BOUNCE = 20000  # spheres of the bouncing bed
 STEPS_BOUNCE = 1000  # its steps (10 ms: the first flight and the rebounds after it)
@@ -194,6 +200,8 @@ def wall_deck(variant, data, steps, height, flow=False, skin=SKIN, push=True, ki
         d += "fix w all wall/rigid surface cyl.inp law hertz type 2 tracking %r\n" % skin
     elif variant == "ours_mesh":
         d += "fix w all wall/rigid surface inline mesh cyl.stl law hertz type 2\n"
+    elif variant == "ours_mesh1":
+        d += "fix w all wall/rigid surface inline mesh cyl.stl sides 1 law hertz type 2\n"
     elif variant == "mesh":
         d += "fix cad all mesh/surface file cyl.stl type 2\n"
         d += "fix w all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n"
@@ -254,7 +262,7 @@ def wall_costs(exe, workdir, n, variants, reps, log, flow=False, grid=(200, 10),
     """Wall cost per particle-step of each variant. grid: the STL's NTHETA x NZ; gap:
     spheres that far from the wall and no push (None: pressed on the wall)."""
     data, height = write_bed(workdir, n, gap, "mono_%d.data" % n)
-    if "mesh" in variants or "ours_mesh" in variants:
+    if any("mesh" in v for v in variants):
         subprocess.run([sys.executable, os.path.join(HERE, "make_stl.py"),
                         os.path.join(workdir, "cyl.stl"), repr(RC), "-0.002",
                         repr(height + 0.002), str(grid[0]), str(grid[1])], check=True)
@@ -401,6 +409,19 @@ def main():
         log("## 1f. a DEM code of one's own (examples/coupling/walls.c) against the fix, "
             "static deck")
         client(exe, os.path.abspath(args.walls), work, n1, reps, log)
+
+    if "1g" in want:
+        nb = 2000 if args.quick else N_BOUNCE
+        log("## 1g. a bouncing bed in a %d-triangle STL cylinder (kicked inward at %g m/s, "
+            "%d spheres, %d steps)" % (2 * 200 * 10, VKICK, nb, STEPS_BOUNCE))
+        r = wall_costs(exe, work, nb, ["ours", "mesh", "ours_mesh", "ours_mesh1"], reps, log,
+                       kick=VKICK, steps=STEPS_BOUNCE)
+        log("mesh / ours_mesh = %s (target >= 10)" % ratio(r, "mesh", "ours_mesh"))
+        log("mesh / ours_mesh1 = %s (target >= 10)" % ratio(r, "mesh", "ours_mesh1"))
+        log("ours_mesh1 / ours_mesh = %s (one side against two, target <= 1)"
+            % ratio(r, "ours_mesh1", "ours_mesh"))
+        log("ours_mesh / ours = %s (the mesh against the analytic cylinder)"
+            % ratio(r, "ours_mesh", "ours"))
 
     if "2" in want:
         scaling(exe, work, args, reps, log)

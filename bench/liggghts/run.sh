@@ -2,7 +2,7 @@
 # LIGGGHTS-side benchmarks of fix wall/rigid: wall cost against LIGGGHTS's primitive
 # and mesh cylinders, scaling in N, and 1 -> 2 rank strong scaling, all in one run.
 #
-#   bench/liggghts/run.sh [--quick] [--max-n N] [--reps K] [--sections 1,1b,1c,1d,1e,1f,2,3]
+#   bench/liggghts/run.sh [--quick] [--max-n N] [--reps K] [--sections 1,1b,1c,1d,1e,1f,1g,2,3]
 #
 # The executable is $LIGGGHTS_RIGIDSURF, else build/coupling/liggghts-rigidsurf, else
 # build-itest/coupling/liggghts-rigidsurf. The report goes to stdout and to

@@ -250,6 +250,16 @@ typedef struct rs_query {
     double gap_max;      ///< keep contacts with gap = dist - radius <= gap_max
     double dist_min;     ///< drop contacts whose centre lies deeper than this signed
                          ///< distance (use -INFINITY to keep every penetration)
+    const int *hint;     ///< optional (NULL: none): per slave a feature it held, or
+                         ///< RS_FEATURE_NONE. A MESH gives a slave whose hint is a face,
+                         ///< and that lies where that face alone can own it, its contact
+                         ///< from the face's own record without its candidates; the
+                         ///< contacts are the same with or without hints
+    double *near;        ///< optional output (NULL: none), kinds with candidate lists: per
+                         ///< slave a lower bound of its distance to every feature that can
+                         ///< give it a contact while the lists hold (slave i's
+                         ///< candidates'; without lists, those within its reach, or the
+                         ///< reach); 0 where a hint gave its contact
 } rs_query;
 
 /// Contacts found by a query (SoA, global coordinates). Arrays grow as needed.

@@ -77,6 +77,9 @@ typedef struct rs_mesh {
     double lo[3], hi[3];  ///< bounds
     double size;          ///< the bounds' diagonal
     void *tree;           ///< the AABB tree (cgal_mesh.h)
+    struct rs_mzone *zone; ///< nt: each face's clear zone (mesh_zone.h), made when a
+                           ///< hinted query first names the face; 64-byte aligned
+    void *zone_mem;        ///< the zones' allocation
 } rs_mesh;
 
 /// Builds the mesh of a polygon soup: scale and placement (rot row-major columns ex, ey,

@@ -56,6 +56,7 @@ void rs_mesh_free(rs_mesh *m)
     free(m->vopen);
     if (m->tree)
         rs_cgal_tree_free(m->tree);
+    free(m->zone_mem);
     free(m);
 }
 
@@ -718,6 +719,12 @@ int rs_mesh_build(const rs_soup *soup, double scale, const double a[3], const do
     m->tree = rs_cgal_tree_new(m->nt, m->xyz, m->tri);
     if (!m->tree)
         goto nomem;
+    /* the faces' clear zones, zeroed (none made yet); pages untouched until a hinted
+     * query names their faces */
+    m->zone_mem = calloc((size_t)m->nt + 1, 64);
+    if (!m->zone_mem)
+        goto nomem;
+    m->zone = (struct rs_mzone *)(((uintptr_t)m->zone_mem + 63) & ~(uintptr_t)63);
     *out = m;
     return RS_OK;
 nomem:

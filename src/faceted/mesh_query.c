@@ -10,6 +10,7 @@
 
 #include "mesh.h"
 #include "mesh_regions.h"
+#include "mesh_zone.h"
 #include "rigidsurf/vec.h"
 #include "rs_compiler.h"
 #include "shares.h"
@@ -68,6 +69,7 @@ typedef struct scratch {
     hit *hits;
     int nhit, hcap;
     int shares_due; /* the hits' shares hold weights (hit_weights) */
+    double near2;   /* the least tri_bound of the triangles point_hits was given */
 } scratch;
 
 /* Appends a hit to s, its array grown as needed; -1 when out of memory. Hits are written
@@ -183,8 +185,21 @@ static int flat_tie(const rs_mesh *m, int t, const double sd[3])
     return nz == 2 && m->vflat[v] && m->vfirst[v] == t;
 }
 
+/* The contact of p on the face of triangle t, which holds p in its prism at height h,
+ * into s->hits when dist <= gap_lim and dist >= dist_min; -1 when out of memory. */
+static inline int face_hit(const rs_mesh *m, int t, int one_sided, const double p[3],
+                           double h, double gap_lim, double dist_min, scratch *s)
+{
+    double x[3], n[3];
+    const double dist = face_contact(m, t, one_sided, p, h, x, n);
+    if (!(dist <= gap_lim && dist >= dist_min))
+        return 0;
+    return put_hit(s, RS_FEATURE(RS_FEAT_FACE, m->rec[t].el), t, x, n, dist);
+}
+
 /* The contacts of point p (reference configuration) among triangles ids[0 .. n), into
- * s->hits: those with dist <= gap_lim and dist >= dist_min. */
+ * s->hits: those with dist <= gap_lim and dist >= dist_min. s->near2 gets the least
+ * tri_bound of them. */
 static int point_hits(const rs_mesh *m, int sides, const double p[3], double radius,
                       const int *ids, int n, double gap_lim, double dist_min, scratch *s)
 {
@@ -192,13 +207,15 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
     /* no feature of a triangle is nearer than tri_bound */
     const double lim = fmax(gap_lim, -dist_min);
     const int one_sided = sides != 2;
+    double near2 = INFINITY;
     for (int k = 0; k < n; k++) {
         const int t = ids[k];
         const rs_mtri *r = m->rec + t;
         const int *tv = r->v;
-        const double *nt = r->n;
         double h, sd[3];
-        if (!(tri_bound(m, t, p, &h, sd) <= lim * lim))
+        const double b2 = tri_bound(m, t, p, &h, sd);
+        near2 = b2 < near2 ? b2 : near2;
+        if (!(b2 <= lim * lim))
             continue;
         /* An edge can own p only where its triangle leaves p outside across it, and a
          * vertex only where its triangle leaves p outside across one of its two edges
@@ -206,13 +223,7 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
          * vertex itself, with both sides 0): the sides found here decide which edges and
          * vertices are tested. */
         if ((sd[0] > 0.0 && sd[1] > 0.0 && sd[2] > 0.0) || flat_tie(m, t, sd)) {
-            const double sg = (!one_sided && h < 0.0) ? -1.0 : 1.0;
-            const double dist = sg * h;
-            if (!(dist <= gap_lim && dist >= dist_min))
-                continue;
-            const double x[3] = {p[0] - h * nt[0], p[1] - h * nt[1], p[2] - h * nt[2]};
-            const double n[3] = {sg * nt[0], sg * nt[1], sg * nt[2]};
-            if (put_hit(s, RS_FEATURE(RS_FEAT_FACE, r->el), t, x, n, dist))
+            if (face_hit(m, t, one_sided, p, h, gap_lim, dist_min, s))
                 return -1;
             continue;
         }
@@ -333,7 +344,29 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
     for (int k = 0; k < s->nhit; k++)
         s->hits[k].share = 1.0;
     s->shares_due = s->nhit >= 2 && radius > 0.0 && hit_weights(m, p, radius, ids, n, s);
+    s->near2 = near2;
     return 0;
+}
+
+/* The contacts of p from the face its hint names, where p lies in the clear zone of one
+ * of the face's triangles (mesh_zone.h): there no other feature gives a contact within
+ * lim, so the face's own contact, as point_hits computes it, is all of them. Returns 1
+ * with s->hits set (that contact, or none beyond the limits), 0 where the candidates
+ * decide, -1 when out of memory. */
+static int hinted_hits(const rs_mesh *m, int sides, const double p[3], int hint,
+                       double gap_lim, double dist_min, scratch *s)
+{
+    double h;
+    const int t = rs_mesh_zone_face(m, p, hint, fmax(gap_lim, -dist_min), &h);
+    if (t < 0)
+        return 0;
+    s->nhit = 0;
+    s->shares_due = 0;
+    if (face_hit(m, t, sides != 2, p, h, gap_lim, dist_min, s))
+        return -1;
+    if (s->nhit)
+        s->hits[0].share = 1.0;
+    return 1;
 }
 
 /* How far ahead of the slave queried its successors' candidates are fetched, into the
@@ -378,6 +411,7 @@ int rs_mesh_closest_among(const rs_surface *s, const rs_query *q, const int *con
     if (!q->slave.x || !q->slave.y || !q->slave.z)
         return rs_error_set(err, RS_ERR_ARG, "rs_surface_query: missing coordinates");
     const rs_pose *pose = moved_pose(q);
+    const int *hint = m->zone ? q->hint : NULL;
     scratch sc;
     memset(&sc, 0, sizeof sc);
     int rc = RS_OK;
@@ -396,8 +430,11 @@ int rs_mesh_closest_among(const rs_surface *s, const rs_query *q, const int *con
         }
         const double r = q->slave.radius ? q->slave.radius[i] : 0.0;
         const double gap_lim = q->gap_max + r;
-        if (!(gap_lim >= 0.0))
+        if (!(gap_lim >= 0.0)) {
+            if (q->near)
+                q->near[i] = 0.0;
             continue;
+        }
         double p[3];
         slave_local(q, pose, i, p);
         /* The box reaches the gap limit and, behind a one-sided mesh, the penetrations
@@ -409,21 +446,38 @@ int rs_mesh_closest_among(const rs_surface *s, const rs_query *q, const int *con
             else
                 reach = fmax(reach, rs_cgal_tree_nearest(m->tree, p));
         }
-        const int *ids = sc.ids;
-        int nt;
-        if (cand) { /* the slave's candidate triangles (rs_mesh_candidates) */
-            ids = cand[i];
-            nt = ncand[i];
-        } else {
-            nt = box_triangles(m, p, reach, &sc.ids, &sc.cap);
-            ids = sc.ids;
-        }
-        /* without a depth limit, penetrations reach down to the nearest triangle: the
-         * same contacts with and without candidate lists */
-        const double depth = isfinite(q->dist_min) ? q->dist_min : -reach;
-        if (nt < 0 || point_hits(m, s->sides, p, r, ids, nt, gap_lim, depth, &sc)) {
+        /* a slave held on a face, in that face's clear zone: its contact from the face
+         * alone (with a depth limit; without one, the reach is the nearest triangle's) */
+        int fast = 0;
+        if (hint && isfinite(q->dist_min) &&
+            (fast = hinted_hits(m, s->sides, p, hint[i], gap_lim, q->dist_min, &sc)) < 0) {
             rc = rs_error_set(err, RS_ERR_NOMEM, "out of memory in the mesh query");
             break;
+        }
+        if (fast) {
+            if (q->near)
+                q->near[i] = 0.0;
+        } else {
+            const int *ids = sc.ids;
+            int nt;
+            if (cand) { /* the slave's candidate triangles (rs_mesh_candidates) */
+                ids = cand[i];
+                nt = ncand[i];
+            } else {
+                nt = box_triangles(m, p, reach, &sc.ids, &sc.cap);
+                ids = sc.ids;
+            }
+            /* without a depth limit, penetrations reach down to the nearest triangle: the
+             * same contacts with and without candidate lists */
+            const double depth = isfinite(q->dist_min) ? q->dist_min : -reach;
+            if (nt < 0 || point_hits(m, s->sides, p, r, ids, nt, gap_lim, depth, &sc)) {
+                rc = rs_error_set(err, RS_ERR_NOMEM, "out of memory in the mesh query");
+                break;
+            }
+            /* the nearest candidate's distance; without lists, triangles beyond the
+             * box lie farther than the reach */
+            if (q->near)
+                q->near[i] = cand ? sqrt(sc.near2) : fmin(sqrt(sc.near2), reach);
         }
         if (out->n + sc.nhit > out->cap &&
             (rc = rs_contacts_reserve(out, 2 * (out->n + sc.nhit) + 64, err)) != RS_OK)

@@ -71,6 +71,21 @@ static inline double tri_bound(const rs_mesh *m, int t, const double p[3], doubl
     return *h * *h + out * out;
 }
 
+/* The contact of p on the face of triangle t, p at height h over its plane: its foot x,
+ * its unit normal n toward p's side (behind a one-sided mesh, the face's own) and its
+ * signed distance, returned (< 0 behind a one-sided mesh). */
+static inline double face_contact(const rs_mesh *m, int t, int one_sided, const double p[3],
+                                  double h, double x[3], double n[3])
+{
+    const double *nt = m->rec[t].n;
+    const double sg = (!one_sided && h < 0.0) ? -1.0 : 1.0;
+    for (int d = 0; d < 3; d++) {
+        x[d] = p[d] - h * nt[d];
+        n[d] = sg * nt[d];
+    }
+    return sg * h;
+}
+
 /* The squared distance from x to the segment a b, and the distance. */
 static inline double segment_distance2(const double a[3], const double b[3],
                                        const double x[3])

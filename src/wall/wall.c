@@ -3,6 +3,7 @@
  * call's forces, the end of a run, its outputs; freed. The step itself: wall_step.c. */
 #include "wall_impl.h"
 
+#include "faceted/mesh_held.h"
 #include "line_revolution.h"
 #include "rigidsurf/vec.h"
 #include "track_fused.h"
@@ -161,7 +162,7 @@ static void free_scratch(rs_wall *w)
         free(*d[k]);
         *d[k] = NULL;
     }
-    int **i[] = {&w->bid, &w->btype, &w->bidx, &w->deepest, &w->bncand};
+    int **i[] = {&w->bid, &w->btype, &w->bidx, &w->deepest, &w->bncand, &w->bhint};
     for (size_t k = 0; k < sizeof i / sizeof i[0]; k++) {
         free(*i[k]);
         *i[k] = NULL;
@@ -384,9 +385,12 @@ int rs_wall_init(rs_wall *w, const rs_wall_run *run, const rs_wall_block *b, rs_
     w->fused_ok = w->fused_given && w->law->fused && !w->conduction && !w->facets &&
                   (w->area_mode == WALL_AREA_NODE ||
                    (w->area_mode == WALL_AREA_CONSTANT && w->area_const == 1.0));
-    /* ... and on a revolved LINE, per run of spheres without the block's columns. */
+    /* ... and on a revolved LINE, or on a MESH from the faces its spheres hold (with its
+     * candidate lists for the rest), per run of spheres without the block's columns. */
+    w->line_mesh = lists && rs_mesh_held(w->surf);
     w->line_pass = w->fused_ok && w->law->fused->line && !w->belt &&
-                   rs_line_revolution(w->surf) && !lists && !run->every_particle;
+                   ((rs_line_revolution(w->surf) && !lists) || w->line_mesh) &&
+                   !run->every_particle;
     if (run->exchange_max > 0 && 1 + wall_atom_size(w) > run->exchange_max)
         FAIL("each atom would carry %d doubles of contact history (%d contacts x (%d + %d "
              "state variables) and %d more) through the engine's atom exchange, whose "
@@ -463,6 +467,7 @@ int wall_scratch(rs_wall *w, int np, rs_error *err)
     ALLOC(w->bidx, n);
     ALLOC(w->deepest, n);
     ALLOC(w->bncand, n);
+    ALLOC(w->bhint, n);
     ALLOC(w->bdir, n);
     ALLOC(w->bhist, n);
     ALLOC(w->bcand, n);

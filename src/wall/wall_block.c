@@ -292,12 +292,18 @@ static int query(rs_wall *w, const rs_wall_block *b, const int *idx, int n, doub
     const int *const *cand = NULL;
     const int *ncand = NULL;
     if (rs_surface_has_candidates(w->surf) && !w->run.every_particle) {
+        /* each one's lists, and the feature it held last (slot 0's), whose own tests
+         * may give its contact without the lists */
         for (int k = 0; k < n; k++) {
             w->bcand[k] = w->cids + w->cfirst[idx[k]];
             w->bncand[k] = w->cnum[idx[k]];
+            const double d0 = w->bdir[k][0];
+            w->bhint[k] = RS_DIR_IS_LIVE(d0) ? RS_DIR_FEATURE(d0) : RS_FEATURE_NONE;
         }
         cand = w->bcand;
         ncand = w->bncand;
+        q.hint = w->bhint;
+        q.near = w->list_bounds ? w->bgap : NULL;
     }
     const int rc = rs_surface_query_among(w->surf, &q, cand, ncand, &w->contacts, err);
     if (rc) {
@@ -307,6 +313,11 @@ static int query(rs_wall *w, const rs_wall_block *b, const int *idx, int n, doub
     }
     if (w->bounds_ok || w->behind_none)
         keep_tracked(w, b, idx, n, -rmax);
+    if (!w->bounds_ok && q.near) { /* the lists' bounds, as at their refresh */
+        for (int k = 0; k < n; k++)
+            w->bgap[k] -= w->brad[k];
+        wall_update_bounds(w, b, idx, n, w->bgap);
+    }
     return RS_OK;
 }
 

@@ -70,7 +70,9 @@ struct rs_wall {
     int nprops, props_given;
     int hertz, hooke;
     int fused_ok;       ///< the law's fused kernel may take this wall's usual blocks
-    int line_pass;      ///< ... and on a revolved LINE, per run of spheres (wall_line.c)
+    int line_pass;      ///< ... and on a revolved LINE or a MESH, per run of spheres
+                        ///< (wall_line.c)
+    int line_mesh;      ///< the line path on a MESH: the held faces' clear zones
     double *type_props; ///< per type (ntypes + 1 rows of tp_n): hertz's or hooke's props
     char *type_has;     ///< per type: its row is set
     int tp_n, ntype_props;
@@ -150,7 +152,7 @@ struct rs_wall {
     int *bid, *btype, *bidx, *deepest;
     double **bdir, **bhist;
     const int **bcand;
-    int *bncand;
+    int *bncand, *bhint;
     double *saved_rows;
     char *leaving, *take;
     double *area_w;

@@ -1,13 +1,16 @@
 /* The wall's line path: the step's candidates on a revolved LINE (a cylinder's mantle, a
- * cone) with a law whose fused kernel takes them, in runs of spheres of one type: the
- * spheres whose directory is usual (rs_wall.usual: one contact, in slot 0) gathered from
- * the engine's arrays, their face contacts computed (rs_line_revolution_faces) and those
- * that still hold just that contact passed to the kernel (rs_track_fused_usual), so that
- * no block-wide column is written and no directory row read; the other spheres go through
- * wall_blocks afterwards, in their order, but those whose distance bound keeps them away.
- */
+ * cone), or on a MESH whose faces have clear zones, with a law whose fused kernel takes
+ * them, in runs of spheres of one type: the spheres whose directory is usual
+ * (rs_wall.usual: one contact, in slot 0) gathered from the engine's arrays, their face
+ * contacts computed (on the LINE, rs_line_revolution_faces; on the MESH,
+ * rs_mesh_held_faces, from the face each holds, where it lies in that face's clear zone)
+ * and those that still hold just that contact passed to the kernel (rs_track_fused_usual),
+ * so that no block-wide column is written, no directory row read and no candidate list
+ * walked; the other spheres go through wall_blocks afterwards, but those whose distance
+ * bound keeps them away. */
 #include "wall_impl.h"
 
+#include "faceted/mesh_held.h"
 #include "line_revolution.h"
 #include "track_fused.h"
 
@@ -25,7 +28,7 @@ static int line_props(const rs_wall *w, int t, const double **props)
 int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
                     const int *idx, int n, double dt, rs_error *err)
 {
-    if (b->still || n == 0)
+    if (b->still || b->body || n == 0)
         return wall_blocks(w, b, rows, idx, n, dt, 0, err);
     /* a run holds one particle type where the properties are per type */
     const int *const type = wall_material_props(w) ? b->type : NULL;
@@ -47,7 +50,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     double px[M], py[M], pz[M], pvx[M], pvy[M], pvz[M], pwx[M], pwy[M], pwz[M], pr[M],
         pm[M];
     double *ph[M];
-    int pid[M], row[M], face[M];
+    int pid[M], row[M], face[M], held[M];
     /* the frames, distances and features: what the kernel reads (no master points,
      * curvatures or shares: rs_line_revolution_faces leaves them out) */
     double cn[3][M], ct1[3][M], ct2[3][M], cd[M];
@@ -58,14 +61,17 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     for (int d = 0; d < 3; d++)
         c.nrm[d] = cn[d], c.t1[d] = ct1[d], c.t2[d] = ct2[d];
     c.dist = cd, c.point = cpt, c.feature = cft;
-    /* the rest, in the candidates' order: the active list, which the line path leaves
-     * unused */
+    /* the rest, in the active list, which the line path leaves unused (its capacity is
+     * the candidates'): from the front those that were not usual, in the candidates'
+     * order; from the back those that were but whose face contact the run could not give
+     * (a mesh's sphere outside its face's zone), which go first, in blocks of their own
+     * that the law's fused kernel can take whole */
     int *const rest = w->active;
-    int nrest = 0;
+    int nrest = 0, nheld = 0;
     const int *const usual = w->usual;
     const double *const gapref = w->gapref, *const xref = w->xref;
     const double tracking = w->tracking;
-    const int bounds = w->bounds_ok;
+    const int bounds = w->bounds_ok || w->list_bounds;
     double live[M];
     double *pl[M];
     int next = 0;
@@ -111,8 +117,19 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
         else
             for (int j = 0; j < m; j++)
                 pwx[j] = pwy[j] = pwz[j] = 0.0;
-        rs_line_revolution_faces(w->surf, &w->motion->pose, m, px, py, pz, pr, gap_max, &c,
-                                 face);
+        if (w->line_mesh) {
+            /* the face each holds; the depth limit of any block's query (wall_block.c) */
+            double rmax = w->rglob;
+            for (int j = 0; j < m; j++) {
+                held[j] = usual[ix[j]] - 1;
+                rmax = rmax > pr[j] ? rmax : pr[j];
+            }
+            rs_mesh_held_faces(w->surf, &w->motion->pose, m, px, py, pz, pr, held, gap_max,
+                               -rmax, &c, face);
+        } else {
+            rs_line_revolution_faces(w->surf, &w->motion->pose, m, px, py, pz, pr, gap_max,
+                                     &c, face);
+        }
         rs_frame_orient(w->surf->ops->frame, &c, 0, m);
         /* Usual still: the face contact within the tracking thickness (keep_tracked's
          * test and the tracker's), the feature the directory holds. A one-sided LINE's
@@ -124,7 +141,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
                                     !(c.dist[j] - pr[j] > w->tracker.tracking) &&
                                     usual[row[j]] == c.feature[j] + 1;
             if (!still_usual) {
-                rest[nrest++] = row[j];
+                rest[n - 1 - nheld++] = row[j];
                 continue;
             }
             if (nu != j) {
@@ -164,7 +181,8 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
             return rc;
         wall_add_load(w, &wl, 0);
     }
-    /* The rest, in their order, in blocks as wall_blocks forms them (one particle type
-     * each). */
-    return wall_blocks(w, b, rows, rest, nrest, dt, 0, err);
+    /* The rest through wall_blocks (one particle type, at most bcap each): first those
+     * that held one contact, then the others, in their order. */
+    const int rc = wall_blocks(w, b, rows, rest + n - nheld, nheld, dt, 0, err);
+    return rc ? rc : wall_blocks(w, b, rows, rest, nrest, dt, 0, err);
 }

@@ -14,8 +14,12 @@ their contact and others fly (LIGGGHTS's atom sort permutes the wall's per-parti
 history through its copy callback), and when that bed mixes two sphere materials (per
 type properties: the line path's runs hold one type each); the wall's
 global sums agree to rounding (1e-12 relative: the line path adds them up per run of
-spheres, the staged calls per block).
+spheres, the staged calls per block). So they are for the bouncing bed in the
+4000-triangle STL cylinder of section 1g, both sides acting and the inward side alone,
+where the fused law takes the spheres held on a face's clear zone per run of spheres
+(rs_mesh_held_faces) and the rest through the candidate lists.
 """
+import subprocess
 import os
 import sys
 
@@ -32,7 +36,12 @@ def deck(s, kind, fused):
     data, height = B.write_bed(s.dir, N, None, "mono_%s.data" % kind)
     bouncing = kind.startswith("bouncing")
     steps = 400 if not bouncing else 600
-    d = B.wall_deck("ours", data, steps, height, flow=kind == "flowing",
+    variant = {"bouncing_mesh": "ours_mesh", "bouncing_mesh1": "ours_mesh1"}.get(kind, "ours")
+    if variant != "ours" and not os.path.exists(s.path("cyl.stl")):
+        subprocess.run([sys.executable, os.path.join(os.path.dirname(B.__file__), "make_stl.py"),
+                        s.path("cyl.stl"), repr(B.RC), "-0.002", repr(height + 0.002),
+                        "200", "10"], check=True)
+    d = B.wall_deck(variant, data, steps, height, flow=kind == "flowing",
                     kick=B.VKICK if bouncing else 0.0)
     if kind == "bouncing_sorted":
         # the bouncing bed rolling around the cylinder too, kicked at speeds that differ
@@ -79,7 +88,8 @@ def deck(s, kind, fused):
 
 
 def body(s):
-    for kind in ("static", "flowing", "bouncing", "bouncing_sorted", "bouncing_types"):
+    for kind in ("static", "flowing", "bouncing", "bouncing_sorted", "bouncing_types",
+                 "bouncing_mesh", "bouncing_mesh1"):
         texts, outs = [], []
         for fused in (True, False):
             d, tag, steps = deck(s, kind, fused)
