@@ -34,7 +34,7 @@ void rs_mesh_held_faces(const rs_surface *s, const rs_pose *pose, int m, const d
     for (int j = 0; j < m; j++) {
         const double r = radius[j];
         const double gap_lim = gap_max + r;
-        double p[3], h, xl[3], nl[3];
+        double p[3], h = 0.0, xl[3] = {0.0, 0.0, 0.0}, nl[3] = {0.0, 0.0, 1.0};
         slave_local(&q, moved, j, p);
         const int t = rs_mesh_zone_face(msh, p, held[j], fmax(gap_lim, -dist_min), &h);
         double dist = INFINITY;

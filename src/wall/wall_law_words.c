@@ -67,7 +67,7 @@ static int point(const char *const *arg, int narg, int *i, const char *kind,
                  const char *what, double p[3], text *t, rs_error *err)
 {
     for (int d = 0; d < 3; d++) {
-        const char *s;
+        const char *s = NULL;
         const int rc = num(arg, narg, i, kind, what, &s, err);
         if (rc)
             return rc;
@@ -186,7 +186,7 @@ static int analytic_params(rs_wall *w, const char *kind, const char *const *arg,
                        "c x y z (off the local x axis, on the generator's side)", pc, &c,
                        err);
         } else if (cyl && strcmp(k, "extent") == 0) {
-            const char *lo, *hi;
+            const char *lo = NULL, *hi = NULL;
             if (!(rc = num(arg, narg, &i, kind, "extent zmin zmax", &lo, err)) &&
                 !(rc = num(arg, narg, &i, kind, "extent zmin zmax", &hi, err))) {
                 extent->n = 0;
@@ -279,7 +279,7 @@ static int profile_items(const char *kind, const char *const *arg, int narg, int
                  k);
         put(prof, K);
         for (int v = 0; v < nv; v++) {
-            const char *s;
+            const char *s = NULL;
             const int rc = num(arg, narg, &i, kind, "profile coordinates", &s, err);
             if (rc)
                 return rc;

@@ -515,7 +515,7 @@ static void run_case(const char *name, const rs_surface *s, double r0, double ga
             ty->points++;
             ty->hinted += hint[i] >= 0 && RS_FEATURE_TYPE(hint[i]) == RS_FEAT_FACE;
             ty->fast += fast;
-            double cp[3];
+            double cp[3] = {0.0, 0.0, 0.0};
             const double best = nearest_of_all(m, p, cp);
             /* no triangle nearer than the bounds */
             if (!(near_t[i] <= best + 1e-12)) {
