@@ -16,6 +16,7 @@
 #include "rigidsurf/convex.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
+#include "rs_test_geom.h"
 
 #include <stdlib.h>
 
@@ -312,36 +313,6 @@ static void test_witness_points_follow_the_list(void)
     for (int d = 0; d < 3; d++)
         c.xs[d][c.cap - 1] = 1.0;
     rs_contacts_free(&c);
-}
-
-/* A UV sphere of radius rad as a MESH (nlat bands, nlon sectors; planar quads). */
-static int uv_cavity(double rad, int nlat, int nlon, rs_surface *s)
-{
-    double *xyz = malloc(12 * (size_t)nlat * nlon * sizeof *xyz);
-    int *tri = malloc(6 * (size_t)nlat * nlon * sizeof *tri);
-    int nv = 0, nt = 0;
-    if (!xyz || !tri)
-        return 0;
-    for (int i = 0; i < nlat; i++)
-        for (int j = 0; j < nlon; j++) {
-            int id[4];
-            for (int k = 0; k < 4; k++) {
-                const double th = RS_PI * (i + (k >= 2)) / nlat;
-                const double ph = 2.0 * RS_PI * (j + (k == 1 || k == 2)) / nlon;
-                xyz[3 * nv] = rad * sin(th) * cos(ph);
-                xyz[3 * nv + 1] = rad * sin(th) * sin(ph);
-                xyz[3 * nv + 2] = rad * cos(th);
-                id[k] = nv++;
-            }
-            const int q[6] = {id[0], id[2], id[1], id[0], id[3], id[2]};
-            for (int l = i > 0 ? 0 : 3; l < (i < nlat - 1 ? 6 : 3); l++)
-                tri[3 * nt + l % 3] = q[l], nt += l % 3 == 2;
-        }
-    const rs_mesh_def def = RS_MESH_DEF_INIT;
-    const int rc = rs_surface_make_mesh(xyz, nv, tri, nt, &def, s, NULL);
-    free(xyz);
-    free(tri);
-    return rc == RS_OK;
 }
 
 /* A ball of radius 0.018 inside a cavity of radius 0.02 (32 x 64 facets), against its

@@ -8,36 +8,7 @@
 #include "rigidsurf/driver.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
-
-/* A UV sphere of radius rad as a MESH (nlat bands, nlon sectors; planar quads). */
-static int uv_cavity(double rad, int nlat, int nlon, rs_surface *s)
-{
-    double *xyz = malloc(12 * (size_t)nlat * nlon * sizeof *xyz);
-    int *tri = malloc(6 * (size_t)nlat * nlon * sizeof *tri);
-    int nv = 0, nt = 0;
-    if (!xyz || !tri)
-        return 0;
-    for (int i = 0; i < nlat; i++)
-        for (int j = 0; j < nlon; j++) {
-            int id[4];
-            for (int k = 0; k < 4; k++) {
-                const double th = RS_PI * (i + (k >= 2)) / nlat;
-                const double ph = 2.0 * RS_PI * (j + (k == 1 || k == 2)) / nlon;
-                xyz[3 * nv] = rad * sin(th) * cos(ph);
-                xyz[3 * nv + 1] = rad * sin(th) * sin(ph);
-                xyz[3 * nv + 2] = rad * cos(th);
-                id[k] = nv++;
-            }
-            const int q[6] = {id[0], id[2], id[1], id[0], id[3], id[2]};
-            for (int l = i > 0 ? 0 : 3; l < (i < nlat - 1 ? 6 : 3); l++)
-                tri[3 * nt + l % 3] = q[l], nt += l % 3 == 2;
-        }
-    const rs_mesh_def def = RS_MESH_DEF_INIT;
-    const int rc = rs_surface_make_mesh(xyz, nv, tri, nt, &def, s, NULL);
-    free(xyz);
-    free(tri);
-    return rc == RS_OK;
-}
+#include "rs_test_geom.h"
 
 /* A ball (radius 0.018) as a body in a cavity of radius 0.02, pressed against its side
  * by gravity along +x while it slides along z with friction; capacity slots to begin
@@ -87,7 +58,7 @@ static void test_slots_grow_and_keep_their_history(void)
     ENSURE(ball_run(&s, 64, 400, b, &most_b, &cap_b));
     /* 26 entries at the start (16 slots grow to 32), 36 after about 300 steps (to 64) */
     ENSURE(most_a > 32 && most_a == most_b);
-    ENSURE(cap_a == cap_b); /* grown to the 64 slots b began with */
+    ENSURE(cap_a == cap_b);     /* grown to the 64 slots b began with */
     ENSURE(a[1] > 3e-4 + 1e-5); /* it slid, under friction */
     for (int k = 0; k < 5; k++)
         ENSURE(a[k] == b[k]);
