@@ -26,6 +26,14 @@ int wall_block_props(const rs_wall *w, int t, const double **props, int *nprops)
     return 1;
 }
 
+/* The law's properties for particle type t, where the law's fused kernel takes them. */
+int wall_fused_props(const rs_wall *w, int t, const double **props)
+{
+    int nprops = 0;
+    return wall_block_props(w, t, props, &nprops) && nprops == w->law->nprops &&
+           w->law->fused->takes(&w->tracker, *props, nprops);
+}
+
 /* The engine's rows the loads add onto: force, torque, the stored force and the heat
  * flow. */
 rs_load_rows wall_load_rows(const rs_wall *w, const rs_wall_rows *rows, const int *idx,
@@ -376,10 +384,8 @@ static int tracker(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
 {
     *done = 0;
     const double tdt = setup || b->still ? 0.0 : dt;
-    int nprops = 0;
     const double *props = NULL;
-    if (w->fused_ok && !setup && wall_block_props(w, w->btype[0], &props, &nprops) &&
-        nprops == w->law->nprops && w->law->fused->takes(&w->tracker, props, nprops)) {
+    if (w->fused_ok && !setup && wall_fused_props(w, w->btype[0], &props)) {
         double origin[3];
         rs_pose_to_global(&w->motion->pose, w->surf->a, origin);
         rs_load_rows lr = wall_load_rows(w, rows, idx, setup);

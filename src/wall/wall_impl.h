@@ -311,6 +311,7 @@ int wall_blocks(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
 int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
                     const int *list, int n, double dt, rs_error *err);
 int wall_block_props(const rs_wall *w, int t, const double **props, int *nprops);
+int wall_fused_props(const rs_wall *w, int t, const double **props);
 void wall_add_load(rs_wall *w, const rs_wall_load *wl, int setup);
 rs_load_rows wall_load_rows(const rs_wall *w, const rs_wall_rows *rows, const int *idx,
                             int setup);

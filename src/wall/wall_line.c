@@ -17,14 +17,6 @@
 #include <math.h>
 #include <string.h>
 
-/* The law's properties for particles of type t, if the fused kernel takes them. */
-static int line_props(const rs_wall *w, int t, const double **props)
-{
-    int nprops = 0;
-    return wall_block_props(w, t, props, &nprops) && nprops == w->law->nprops &&
-           w->law->fused->takes(&w->tracker, *props, nprops);
-}
-
 int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
                     const int *idx, int n, double dt, rs_error *err)
 {
@@ -34,7 +26,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     const int *const type = wall_material_props(w) ? b->type : NULL;
     int run_t = type ? type[idx[0]] : 1;
     const double *props = NULL;
-    int run_ok = line_props(w, run_t, &props);
+    int run_ok = wall_fused_props(w, run_t, &props);
     const double *x = b->x, *v = b->v, *om = b->omega;
     const double *radius = b->radius, *rmass = b->mass;
     const int *tag = b->id;
@@ -87,7 +79,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
                     if (m > 0)
                         break;
                     run_t = type[i];
-                    run_ok = line_props(w, run_t, &props);
+                    run_ok = wall_fused_props(w, run_t, &props);
                 }
                 if (run_ok)
                     ix[m++] = i;
