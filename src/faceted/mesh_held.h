@@ -20,7 +20,9 @@ int rs_mesh_held(const rs_surface *s);
 /// a face and the sphere lies in the clear zone of one of its triangles for the limit
 /// max(gap_max + radius[j], -dist_min), its one contact as rs_surface_query gives it with
 /// gap_max, hint held[j] and any depth limit from dist_min to -radius[j], value for value,
-/// at index j of c: point j, the face's feature, its master point, normal (rs_frame_orient
+/// at index j of c: point j, the feature of the face the zone gives (the held face, or the
+/// coplanar one across the diagonal of the planar quad its zone covers, where the sphere's
+/// foot lies there), its master point, normal (rs_frame_orient
 /// then gives t1 and t2 by the FACETED convention, as in rs_surface_query), distance,
 /// curvatures 0 and share 1; face[j] = 1. face[j] = 0 for every other sphere: a hint that
 /// is no face, a point outside the zones (the query's candidates decide), a contact beyond

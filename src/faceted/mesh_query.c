@@ -349,8 +349,9 @@ static int point_hits(const rs_mesh *m, int sides, const double p[3], double rad
 }
 
 /* The contacts of p from the face its hint names, where p lies in the clear zone of one
- * of the face's triangles (mesh_zone.h): there no other feature gives a contact within
- * lim, so the face's own contact, as point_hits computes it, is all of them. Returns 1
+ * of the face's triangles (mesh_zone.h; a quad's zone gives the face of the triangle of
+ * the quad that holds p's foot): there no other feature gives a contact within lim, so
+ * that face's own contact, as point_hits computes it, is all of them. Returns 1
  * with s->hits set (that contact, or none beyond the limits), 0 where the candidates
  * decide, -1 when out of memory. */
 static int hinted_hits(const rs_mesh *m, int sides, const double p[3], int hint,

@@ -54,14 +54,21 @@ static inline int vertex_owns(const rs_mesh *m, int v, const double p[3], double
     return 1;
 }
 
+/* p's height over the plane of triangle t, (p - a0).n: the one expression of it. */
+static inline double plane_height(const rs_mesh *m, int t, const double p[3])
+{
+    const rs_mtri *r = m->rec + t;
+    return (p[0] - r->a0[0]) * r->n[0] + (p[1] - r->a0[1]) * r->n[1] +
+           (p[2] - r->a0[2]) * r->n[2];
+}
+
 /* A lower bound of the squared distance from p to triangle t, from its plane's distance
  * h and its edges' sides sd (side_of, unit normals: outside an edge by -sd at least). */
 static inline double tri_bound(const rs_mesh *m, int t, const double p[3], double *h,
                                double sd[3])
 {
     const rs_mtri *r = m->rec + t;
-    *h = (p[0] - r->a0[0]) * r->n[0] + (p[1] - r->a0[1]) * r->n[1] +
-         (p[2] - r->a0[2]) * r->n[2];
+    *h = plane_height(m, t, p);
     double out = 0.0;
     for (int j = 0; j < 3; j++) {
         const double *rj = r->e[j];

@@ -1,32 +1,39 @@
 /* The clear zone of a triangle's face (mesh_zone.h): the points near face t that no other
  * feature of the mesh owns within a distance, by the query's own tests (point_hits in
  * mesh_query.c), so that the query can give a point held on t its contact from t's
- * record alone.
+ * record alone, or from the record of the coplanar triangle t2 across t's longest FLAT
+ * edge (the diagonal of the planar quad the two make) where the point's foot lies there.
  *
  * The zone is two convex pieces, in front of t's plane (eps <= h <= hmax) and behind it:
- * at height h, the inset triangle whose side of each edge slot j is at least
+ * at height h, the inset triangle (or quad) whose side of each of its edges j is at least
  * eps + kappa_j |h| (kappa_j > 0 across a fold, so that the neighbour's face, whose
  * prism leans over t there, stays out; the base off the plane keeps out the face beyond
- * a right-angled convex edge). It is made once per face, and checked against
- * every feature within hmax of it:
- *  - t's own edges own no point of it: each needs the point outside t across it (a side
- *    <= 0), where the zone keeps every side >= eps > 0, the very numbers the query
- *    computes (side_of and tri_bound evaluate one expression of one record);
- *  - t's own vertices own none: a point whose foot q lies in t, at least eps from its
- *    edges, has (q - v).(w - v) >= |q - v|^2 >= eps^2 for one of the two other nodes w of
- *    t (q - v = s1 (w1 - v) + s2 (w2 - v) with s1, s2 >= 0 and s1 + s2 <= 1), far above
- *    the product's rounding (eps >= 1e-6 of the triangle's size and height);
+ * a right-angled convex edge). A quad's diagonal needs no inset: the query gives a point
+ * on either side of it the face of the triangle that holds its foot, as the zone's test
+ * does (rs_mzone_quad_face). It is made once per face (a quad's for both triangles), and
+ * checked against every feature within hmax of it:
+ *  - the edges of t (and t2) own no point of it: each needs the point outside each of
+ *    its faces (a side <= 0); the zone keeps the outer edges' sides >= eps > 0, the very
+ *    numbers the query computes (side_of and tri_bound evaluate one expression of one
+ *    record), and a FLAT diagonal owns nothing;
+ *  - t's own vertices (a quad's diagonal's two ends) own none: a point whose foot q lies
+ *    in a triangle t' of the zone, at least eps from t''s outer edges, on one of which
+ *    each node v of t' lies, has (q - v).(w - v) >= |q - v|^2 >= eps^2 for one of the two
+ *    other nodes w of t' (q - v = s1 (w1 - v) + s2 (w2 - v) with s1, s2 >= 0 and
+ *    s1 + s2 <= 1), far above the product's rounding (eps >= 1e-6 of the zone's size and
+ *    height); a quad's two other corners are checked as any other vertex;
  *  - any other face, edge or vertex is out of a piece when one of the linear tests of
  *    its region (a side, a position along an edge, a product at a vertex) fails at each
- *    of the piece's six corners by more than the rounding, for the test is linear in the
+ *    of the piece's corners by more than the rounding, for the test is linear in the
  *    point and fails over the whole piece; else the piece's clear distance is at most a
  *    lower bound of the distance between the piece and the feature's triangle (the
- *    largest gap between their projections on separating axes).
+ *    largest gap between their projections on separating axes, mesh_zone_sat.c).
  * The pieces are checked grown by 4 delta on each side (delta = 1e-9 of the mesh's size
  * and coordinates), so that the query's rounding of h and of the sides stays inside
  * them. */
 #include "mesh_zone.h"
 #include "mesh_regions.h"
+#include "mesh_zone_sat.h"
 #include "rigidsurf/vec.h"
 
 #include <math.h>
@@ -36,397 +43,118 @@
 /* Most triangles a zone is checked against: a face crowded by more has none. */
 #define RS_ZONE_MAX_NEAR 1024
 
-/* One piece: corners 0 .. 2 at its base (the plane's side), 3 .. 5 at its top, corner k
- * and 3 + k near node k of the triangle. */
-typedef struct zpiece {
-    double c[6][3];
-} zpiece;
+/* The lines a zone is inset from, in turn around its polygon: triangle tri[k]'s edge slot
+ * slot[k] (rs_mtri.e). */
+typedef struct zlines {
+    int tri[4], slot[4], n;
+} zlines;
 
 static double dot3(const double a[3], const double b[3])
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-/* The inset triangle of t at height z (times the normal n) whose side of slot j is s[j]:
- * its corners into c[0 .. 2] (corner k between slots k - 1 and k, near node k). 0 when
- * the inset leaves no triangle. O, e1, e2: t's plane frame. */
-static int inset(const rs_mtri *r, const double O[3], const double e1[3],
-                 const double e2[3], const double s[3], double z, double c[3][3])
+/* The inset polygon of lines L at height z over the plane of frame O, e1, e2 and normal n
+ * whose side of line k is s[k]: its corners into c[0 .. L->n) (corner k between lines
+ * k - 1 and k). 0 when the inset leaves no convex polygon. */
+static int inset(const rs_mesh *m, const zlines *L, const double O[3], const double e1[3],
+                 const double e2[3], const double n[3], const double s[4], double z,
+                 double c[][3])
 {
-    double g[3][2], rhs[3];
-    for (int j = 0; j < 3; j++) {
-        g[j][0] = dot3(r->e[j], e1);
-        g[j][1] = dot3(r->e[j], e2);
-        rhs[j] = s[j] - (dot3(r->e[j], O) - r->e[j][3]);
+    const int nl = L->n;
+    double g[4][2], rhs[4];
+    for (int j = 0; j < nl; j++) {
+        const double *e = m->rec[L->tri[j]].e[L->slot[j]];
+        g[j][0] = dot3(e, e1);
+        g[j][1] = dot3(e, e2);
+        rhs[j] = s[j] - (dot3(e, O) - e[3]);
     }
-    double q[3][2];
-    for (int k = 0; k < 3; k++) {
-        const int a = (k + 2) % 3, b = k, l = (k + 1) % 3;
+    double q[4][2];
+    for (int k = 0; k < nl; k++) {
+        const int a = (k + nl - 1) % nl, b = k;
         const double det = g[a][0] * g[b][1] - g[a][1] * g[b][0];
         if (!(fabs(det) > 1e-12))
             return 0;
         q[k][0] = (rhs[a] * g[b][1] - rhs[b] * g[a][1]) / det;
         q[k][1] = (g[a][0] * rhs[b] - g[b][0] * rhs[a]) / det;
-        /* inside the third slot's inset line: else the inset triangle is inverted */
-        if (!(g[l][0] * q[k][0] + g[l][1] * q[k][1] > rhs[l]))
-            return 0;
+        /* strictly inside the other lines: else the polygon is inverted or not convex */
+        for (int l = 0; l < nl; l++)
+            if (l != a && l != b && !(g[l][0] * q[k][0] + g[l][1] * q[k][1] > rhs[l]))
+                return 0;
     }
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < nl; k++)
         for (int d = 0; d < 3; d++)
-            c[k][d] = O[d] + q[k][0] * e1[d] + q[k][1] * e2[d] + z * r->n[d];
+            c[k][d] = O[d] + q[k][0] * e1[d] + q[k][1] * e2[d] + z * n[d];
     return 1;
 }
 
-/* The largest and smallest of u.c over the corners of piece P. */
-static void span(const zpiece *P, const double u[3], double *lo, double *hi)
+/* What a zone leaves to its own tests: the faces of its triangles (the query gives a point
+ * of the zone the face of the one that holds its foot), their edges (each a side the zone
+ * keeps >= eps) and the nodes whose ownership the zone's eps excludes. */
+typedef struct zown {
+    int tri[2], nt;
+    int edge[6], ne;
+    int node[3], nn;
+} zown;
+
+static int owns_edge(const zown *o, int e)
 {
-    *lo = INFINITY;
-    *hi = -INFINITY;
-    for (int k = 0; k < 6; k++) {
-        const double v = dot3(u, P->c[k]);
-        *lo = fmin(*lo, v);
-        *hi = fmax(*hi, v);
-    }
-}
-
-/* A piece's face normals (its base and top, its three sides) and edge directions (three
- * along its base, three from base to top), the axes the separating-axis tests take. */
-typedef struct zaxes {
-    double fn[4][3], ed[6][3];
-} zaxes;
-
-static void piece_axes(const zpiece *P, const double n[3], zaxes *x)
-{
-    for (int k = 0; k < 3; k++)
-        for (int d = 0; d < 3; d++) {
-            x->ed[k][d] = P->c[(k + 1) % 3][d] - P->c[k][d];
-            x->ed[3 + k][d] = P->c[3 + k][d] - P->c[k][d];
-        }
-    for (int d = 0; d < 3; d++)
-        x->fn[0][d] = n[d];
-    for (int k = 0; k < 3; k++)
-        rs_cross3(x->ed[k], x->ed[3 + k], x->fn[1 + k]);
-}
-
-/* The most rays and planes a region keeps: a node of more neighbours is not tested (its
- * distance bounds the zone instead). */
-#define RS_ZONE_MAX_W 24
-#define RS_ZONE_MAX_RAYS 64
-
-/* A convex region where a feature owns points, by the query's tests, closed: the hull of
- * its points (a node, an edge's two nodes, a triangle's three) plus the cone of its rays,
- * bounded by the half-spaces g.x <= c (g[k][0 .. 2], c = g[k][3]). */
-typedef struct region {
-    double v[3][3];
-    int nv;
-    double ray[RS_ZONE_MAX_RAYS][3];
-    int nray;
-    double g[RS_ZONE_MAX_W + 2][4];
-    double gl[RS_ZONE_MAX_W + 2]; /* |g[k][0 .. 2]| */
-    int ng;
-} region;
-
-/* The lengths of R's plane normals, once its planes are set. */
-static void plane_norms(region *R)
-{
-    for (int k = 0; k < R->ng; k++)
-        R->gl[k] = rs_norm3(R->g[k]);
-}
-
-/* Adds the ray of unit direction u (and -u with both) where every plane's normal has
- * g.u <= tol |g| (the cone holds it). */
-static void add_ray(region *R, const double u[3], int both)
-{
-    for (int s = 0; s < (both ? 2 : 1); s++) {
-        const double sg = s ? -1.0 : 1.0;
-        int in = 1;
-        for (int k = 0; k < R->ng && in; k++)
-            in = sg * dot3(R->g[k], u) <= 1e-12 * R->gl[k];
-        if (in && R->nray < RS_ZONE_MAX_RAYS) {
-            for (int d = 0; d < 3; d++)
-                R->ray[R->nray][d] = sg * u[d];
-            R->nray++;
-        }
-    }
-}
-
-/* Unit u along a, 0 when a is too short against scale. */
-static int unit_of(const double a[3], double scale, double u[3])
-{
-    const double l = rs_norm3(a);
-    if (!(l > 1e-9 * scale))
-        return 0;
-    for (int d = 0; d < 3; d++)
-        u[d] = a[d] / l;
-    return 1;
-}
-
-/* Is region R apart from piece P by more than margin? Some plane separates them: a plane
- * of R, a face of P, or one along an edge of each (the separating-axis test of two convex
- * polyhedra, R's edges its rays and its points' edges). Along an axis a, R reaches
- * max a.v over its points, or without bound where a ray has a.r > 0. */
-static int region_out(const zpiece *P, const zaxes *X, const region *R, double margin)
-{
-    for (int k = 0; k < R->ng; k++) { /* P beyond one of R's planes */
-        const double l = R->gl[k];
-        if (!(l > 0.0))
-            continue;
-        double lo, hi;
-        span(P, R->g[k], &lo, &hi);
-        if ((lo - R->g[k][3]) / l > margin)
+    for (int k = 0; k < o->ne; k++)
+        if (o->edge[k] == e)
             return 1;
-    }
-    double dirs[RS_ZONE_MAX_RAYS + 3][3];
-    int nd = 0;
-    for (int k = 0; k < R->nray; k++, nd++)
-        for (int d = 0; d < 3; d++)
-            dirs[nd][d] = R->ray[k][d];
-    for (int i = 0; i < R->nv; i++)
-        for (int j = i + 1; j < R->nv; j++, nd++)
-            for (int d = 0; d < 3; d++)
-                dirs[nd][d] = R->v[j][d] - R->v[i][d];
-    const int nax = 4 + 6 * nd;
-    for (int a = 0; a < nax; a++) {
-        double ax[3];
-        if (a < 4) {
-            for (int d = 0; d < 3; d++)
-                ax[d] = X->fn[a][d];
-        } else {
-            rs_cross3(X->ed[(a - 4) % 6], dirs[(a - 4) / 6], ax);
-        }
-        const double l = rs_norm3(ax);
-        if (!(l > 0.0))
-            continue;
-        for (int d = 0; d < 3; d++)
-            ax[d] /= l;
-        double plo, phi;
-        span(P, ax, &plo, &phi);
-        for (int s = 0; s < 2; s++) {
-            const double sg = s ? -1.0 : 1.0;
-            int bounded = 1;
-            for (int k = 0; k < R->nray && bounded; k++)
-                bounded = sg * dot3(ax, R->ray[k]) <= 1e-12;
-            if (!bounded)
-                continue;
-            double rmax = -INFINITY;
-            for (int i = 0; i < R->nv; i++)
-                rmax = fmax(rmax, sg * dot3(ax, R->v[i]));
-            if ((s ? -phi : plo) - rmax > margin)
-                return 1;
-        }
-    }
     return 0;
 }
 
-/* A lower bound of the distance between piece P and the hull of points T[0 .. nt): the
- * largest gap between their projections on the axes of the separating-axis test (the
- * piece's faces, the points' plane, the line of their centres and the cross products of
- * their edges). */
-static double sep_bound(const zpiece *P, const zaxes *X, const double *const *T, int nt)
-{
-    double ax[4 + 1 + 1 + 18][3];
-    int na = 0;
-    for (int k = 0; k < 4; k++, na++)
-        for (int d = 0; d < 3; d++)
-            ax[na][d] = X->fn[k][d];
-    double te[3][3];
-    int ne = 0;
-    for (int i = 0; i < nt; i++)
-        for (int j = i + 1; j < nt; j++, ne++)
-            for (int d = 0; d < 3; d++)
-                te[ne][d] = T[j][d] - T[i][d];
-    if (nt == 3)
-        rs_cross3(te[0], te[1], ax[na++]);
-    double cp[3] = {0, 0, 0}, ct[3] = {0, 0, 0};
-    for (int k = 0; k < 6; k++)
-        for (int d = 0; d < 3; d++)
-            cp[d] += P->c[k][d] / 6.0;
-    for (int k = 0; k < nt; k++)
-        for (int d = 0; d < 3; d++)
-            ct[d] += T[k][d] / nt;
-    for (int d = 0; d < 3; d++)
-        ax[na][d] = ct[d] - cp[d];
-    na++;
-    for (int k = 0; k < 6; k++)
-        for (int l = 0; l < ne; l++, na++)
-            rs_cross3(X->ed[k], te[l], ax[na]);
-    double best = 0.0;
-    for (int a = 0; a < na; a++) {
-        const double len = rs_norm3(ax[a]);
-        if (!(len > 0.0))
-            continue;
-        const double u[3] = {ax[a][0] / len, ax[a][1] / len, ax[a][2] / len};
-        double plo, phi, tlo = INFINITY, thi = -INFINITY;
-        span(P, u, &plo, &phi);
-        for (int k = 0; k < nt; k++) {
-            const double v = dot3(u, T[k]);
-            tlo = fmin(tlo, v);
-            thi = fmax(thi, v);
-        }
-        best = fmax(best, fmax(plo - thi, tlo - phi));
-    }
-    return best;
-}
-
-/* The region of the face of triangle tp: its prism, sides >= 0. */
-static void face_region(const rs_mesh *m, int tp, region *R)
-{
-    const rs_mtri *r = m->rec + tp;
-    R->nv = 3;
-    R->nray = 0;
-    R->ng = 3;
-    for (int j = 0; j < 3; j++) {
-        for (int d = 0; d < 3; d++) {
-            R->v[j][d] = m->xyz[3 * r->v[j] + d];
-            R->g[j][d] = -r->e[j][d];
-        }
-        R->g[j][3] = -r->e[j][3];
-    }
-    plane_norms(R);
-    add_ray(R, r->n, 1);
-}
-
-/* The region of edge e: outside each of its faces (sides <= 0), between its ends. */
-static void edge_region(const rs_mesh *m, int e, double scale, region *R)
-{
-    const int a = m->edge_v[2 * e], b = m->edge_v[2 * e + 1];
-    const double *pa = m->xyz + 3 * a, *pb = m->xyz + 3 * b;
-    const double u[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
-    R->nv = 2;
-    R->nray = 0;
-    R->ng = 0;
-    for (int d = 0; d < 3; d++) {
-        R->v[0][d] = pa[d];
-        R->v[1][d] = pb[d];
-    }
-    for (int f = m->edge_f0[e]; f < m->edge_f0[e + 1] && R->ng < RS_ZONE_MAX_W; f++) {
-        const int t = m->edge_f[f];
-        int j = 0;
-        while (m->tedge[3 * t + j] != e)
-            j++;
-        for (int d = 0; d < 4; d++)
-            R->g[R->ng][d] = m->rec[t].e[j][d];
-        R->ng++;
-    }
-    const int nf = R->ng;
-    for (int d = 0; d < 3; d++) {
-        R->g[R->ng][d] = -u[d];
-        R->g[R->ng + 1][d] = u[d];
-    }
-    R->g[R->ng][3] = -dot3(u, pa);
-    R->g[R->ng + 1][3] = dot3(u, pb);
-    R->ng += 2;
-    plane_norms(R);
-    /* the cone across the edge: the faces' normals, where the others' sides allow, and
-     * outward from a lone face */
-    for (int f = m->edge_f0[e]; f < m->edge_f0[e + 1]; f++) {
-        const double *nn = m->rec[m->edge_f[f]].n;
-        add_ray(R, nn, 1);
-        if (nf == 1) {
-            double o[3] = {-R->g[0][0], -R->g[0][1], -R->g[0][2]};
-            if (unit_of(o, 1.0, o))
-                add_ray(R, o, 0);
-        }
-    }
-    (void)scale;
-}
-
-/* The region of node v: (p - v).(w - v) <= 0 for each neighbour w. 0 when it has more
- * neighbours than a region keeps, or they lie on one line. */
-static int vertex_region(const rs_mesh *m, int v, double scale, region *R)
-{
-    const double *pv = m->xyz + 3 * v;
-    const int nw = m->vert_e0[v + 1] - m->vert_e0[v];
-    if (nw > RS_ZONE_MAX_W)
-        return 0;
-    R->nv = 1;
-    R->nray = 0;
-    R->ng = nw;
-    for (int d = 0; d < 3; d++)
-        R->v[0][d] = pv[d];
-    for (int k = 0; k < nw; k++) {
-        const double *pw = m->xyz + 3 * m->vert_w[m->vert_e0[v] + k];
-        for (int d = 0; d < 3; d++)
-            R->g[k][d] = pw[d] - pv[d];
-        R->g[k][3] = dot3(R->g[k], pv);
-    }
-    plane_norms(R);
-    /* extreme rays: along the meeting line of two planes; where the planes all hold one
-     * line l, that line both ways and, within the plane normal to it, the lines normal
-     * to l and to a plane's normal */
-    double l[3] = {0, 0, 0}, lbest = 0.0;
-    int rank3 = 0;
-    for (int i = 0; i < nw; i++)
-        for (int j = i + 1; j < nw; j++) {
-            double c[3], u[3];
-            rs_cross3(R->g[i], R->g[j], c);
-            if (!unit_of(c, R->gl[i] * R->gl[j], u))
-                continue;
-            add_ray(R, u, 1);
-            const double lc = rs_norm3(c) / (R->gl[i] * R->gl[j]);
-            if (lc > lbest) {
-                lbest = lc;
-                memcpy(l, u, sizeof l);
-            }
-        }
-    if (!(lbest > 0.0))
-        return 0; /* the neighbours on one line */
-    for (int k = 0; k < nw && !rank3; k++)
-        rank3 = fabs(dot3(l, R->g[k])) > 1e-9 * R->gl[k];
-    if (!rank3)
-        for (int k = 0; k < nw; k++) {
-            double c[3], u[3];
-            rs_cross3(l, R->g[k], c);
-            if (unit_of(c, R->gl[k], u))
-                add_ray(R, u, 1);
-        }
-    (void)scale;
-    return R->nray < RS_ZONE_MAX_RAYS;
-}
-
-/* How far the features of triangle tp other than those of t keep from each piece P[s]
- * with live[s], into clear[s]: INFINITY when each owns no point of it, else the least of
- * lower bounds of the distances of those that may. Each feature's region is made once for
- * both pieces. Each edge and vertex is taken from its first triangle alone (which touches
- * it, so lies within the search when it does). */
-static void near_features(const rs_mesh *m, int t, int tp, const zpiece P[2],
+/* How far the features of triangle tp other than the zone's own (o) keep from each piece
+ * P[s] with live[s], into clear[s]: INFINITY when each owns no point of it, else the least
+ * of lower bounds of the distances of those that may. Each feature's region is made once
+ * for both pieces. Each edge and vertex is taken from its first triangle alone (which
+ * touches it, so lies within the search when it does). */
+static void near_features(const rs_mesh *m, const zown *o, int tp, const zpiece P[2],
                           const zaxes X[2], const int live[2], double delta, double scale,
                           double clear[2])
 {
-    const rs_mtri *r = m->rec + tp, *rt = m->rec + t;
+    const rs_mtri *r = m->rec + tp;
     const double margin = 2.0 * delta;
     clear[0] = clear[1] = INFINITY;
     region R;
-    face_region(m, tp, &R);
-    for (int s = 0; s < 2; s++)
-        if (live[s] && !region_out(&P[s], &X[s], &R, margin)) {
-            const double *T[3] = {R.v[0], R.v[1], R.v[2]};
-            clear[s] = fmin(clear[s], sep_bound(&P[s], &X[s], T, 3));
-        }
+    if (tp != o->tri[0] && (o->nt < 2 || tp != o->tri[1])) {
+        rs_zone_face_region(m, tp, &R);
+        for (int s = 0; s < 2; s++)
+            if (live[s] && !rs_zone_region_out(&P[s], &X[s], &R, margin)) {
+                const double *T[3] = {R.v[0], R.v[1], R.v[2]};
+                clear[s] = fmin(clear[s], rs_zone_sep_bound(&P[s], &X[s], T, 3));
+            }
+    }
     for (int j = 0; j < 3; j++) {
         if (!(r->first >> j & 1u))
             continue;
         const int e = r->edge[j];
-        if (e == rt->edge[0] || e == rt->edge[1] || e == rt->edge[2])
-            continue; /* t's own edge: t's side keeps it out */
-        edge_region(m, e, scale, &R);
+        if (owns_edge(o, e))
+            continue; /* the zone's own edge: its side keeps it out */
+        rs_zone_edge_region(m, e, scale, &R);
         for (int s = 0; s < 2; s++)
-            if (live[s] && !region_out(&P[s], &X[s], &R, margin)) {
+            if (live[s] && !rs_zone_region_out(&P[s], &X[s], &R, margin)) {
                 const double *T[2] = {R.v[0], R.v[1]};
-                clear[s] = fmin(clear[s], sep_bound(&P[s], &X[s], T, 2));
+                clear[s] = fmin(clear[s], rs_zone_sep_bound(&P[s], &X[s], T, 2));
             }
     }
     for (int j = 0; j < 3; j++) {
         if (!(r->first >> (3 + j) & 1u))
             continue;
         const int v = r->v[j];
-        if (v == rt->v[0] || v == rt->v[1] || v == rt->v[2])
-            continue; /* t's own node: eps keeps it out */
-        const int ok = vertex_region(m, v, scale, &R);
+        int own = 0;
+        for (int k = 0; k < o->nn; k++)
+            own |= o->node[k] == v;
+        if (own)
+            continue; /* the zone's own node: eps keeps it out */
+        const int ok = rs_zone_vertex_region(m, v, P, live, margin, &R);
+        if (ok == 2)
+            continue;
         for (int s = 0; s < 2; s++)
-            if (live[s] && (!ok || !region_out(&P[s], &X[s], &R, margin))) {
+            if (live[s] && (!ok || !rs_zone_region_out(&P[s], &X[s], &R, margin))) {
                 const double *T[1] = {m->xyz + 3 * v};
-                clear[s] = fmin(clear[s], sep_bound(&P[s], &X[s], T, 1));
+                clear[s] = fmin(clear[s], rs_zone_sep_bound(&P[s], &X[s], T, 1));
             }
     }
 }
@@ -471,39 +199,145 @@ static int near_triangles(const rs_mesh *m, const double lo[3], const double hi[
     return n >= 0 && n <= *cap ? n : -1;
 }
 
-int rs_mesh_zone_make(const rs_mesh *m, int t, rs_mzone *z)
+/* The lines of the zone of triangle t: its three slots; or, with pair, the four outer
+ * edges of the planar quad of t and the triangle across its FLAT slot jd, in turn. The
+ * zone's own features into *o. 0 where the pair forms no quad. */
+static int zone_lines(const rs_mesh *m, int t, int pair, int jd, zlines *L, zown *o)
 {
     const rs_mtri *r = m->rec + t;
-    const double *A = m->xyz + 3 * r->v[0], *B = m->xyz + 3 * r->v[1],
-                 *C = m->xyz + 3 * r->v[2];
+    o->tri[0] = t;
+    o->nt = 1;
+    o->ne = 3;
+    for (int j = 0; j < 3; j++)
+        o->edge[j] = r->edge[j];
+    if (!pair) {
+        L->n = 3;
+        o->nn = 3;
+        for (int j = 0; j < 3; j++) {
+            L->tri[j] = t;
+            L->slot[j] = j;
+            o->node[j] = r->v[j];
+        }
+        return 1;
+    }
+    const int t2 = r->nbr[jd] / 3, j2 = r->nbr[jd] % 3;
+    const rs_mtri *r2 = m->rec + t2;
+    /* t's outer slots from the diagonal's second node round to its first, then t2's from
+     * that node (v[jd]) round to the diagonal's second */
+    L->n = 4;
+    L->tri[0] = L->tri[1] = t;
+    L->slot[0] = (jd + 1) % 3;
+    L->slot[1] = (jd + 2) % 3;
+    const int a = (j2 + 1) % 3, b = (j2 + 2) % 3;
+    const int va = r->v[jd]; /* t2's slot k joins its nodes k and k + 1 */
+    const int a_has = r2->v[a] == va || r2->v[(a + 1) % 3] == va;
+    L->tri[2] = L->tri[3] = t2;
+    L->slot[2] = a_has ? a : b;
+    L->slot[3] = a_has ? b : a;
+    o->tri[1] = t2;
+    o->nt = 2;
+    for (int j = 0; j < 3; j++)
+        o->edge[3 + j] = r2->edge[j];
+    o->ne = 6;
+    o->nn = 2; /* each node of the diagonal lies on an outer edge of either triangle */
+    o->node[0] = r->v[jd];
+    o->node[1] = r->v[(jd + 1) % 3];
+    return 1;
+}
+
+/* The pair slot of t: its longest FLAT edge of two faces, -1 where it has none. */
+static int pair_slot(const rs_mesh *m, int t)
+{
+    const rs_mtri *r = m->rec + t;
+    int best = -1;
+    double lbest = 0.0;
+    for (int j = 0; j < 3; j++) {
+        if (r->kind[j] != RS_EDGE_FLAT || r->nbr[j] < 0)
+            continue;
+        const double *a = m->xyz + 3 * r->v[j], *b = m->xyz + 3 * r->v[(j + 1) % 3];
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const double l = rs_norm3(u);
+        if (l > lbest) {
+            lbest = l;
+            best = j;
+        }
+    }
+    return best;
+}
+
+/* Makes the zone of lines L (own features o) on t's plane into *z, its nodes' folds
+ * weighed by kfac (1 or 2); returns 1 when the zone has a side, 0 otherwise. */
+static int zone_build(const rs_mesh *m, int t, const zlines *L, const zown *o, double kfac,
+                      rs_mzone *z)
+{
+    const rs_mtri *r = m->rec + t;
+    const int nl = L->n;
+    /* the polygon's corners: corner k the node that lines k - 1 and k share */
+    double V[4][3];
+    int vid[4];
+    for (int k = 0; k < nl; k++) {
+        const rs_mtri *rk = m->rec + L->tri[k];
+        const int a = rk->v[L->slot[k]], b = rk->v[(L->slot[k] + 1) % 3];
+        const rs_mtri *rn = m->rec + L->tri[(k + 1) % nl];
+        const int c = rn->v[L->slot[(k + 1) % nl]],
+                  d = rn->v[(L->slot[(k + 1) % nl] + 1) % 3];
+        vid[(k + 1) % nl] = (a == c || a == d) ? a : b;
+    }
+    for (int k = 0; k < nl; k++)
+        for (int d = 0; d < 3; d++)
+            V[k][d] = m->xyz[3 * vid[k] + d];
     double coord = 0.0;
     for (int d = 0; d < 3; d++)
         coord = fmax(coord, fmax(fabs(m->lo[d]), fabs(m->hi[d])));
     const double delta = 1e-9 * (m->size + coord);
-    /* the triangle's size and inradius */
-    const double ab[3] = {B[0] - A[0], B[1] - A[1], B[2] - A[2]};
-    const double ac[3] = {C[0] - A[0], C[1] - A[1], C[2] - A[2]};
-    const double bc[3] = {C[0] - B[0], C[1] - B[1], C[2] - B[2]};
-    double cr[3];
-    rs_cross3(ab, ac, cr);
-    const double lab = rs_norm3(ab), lac = rs_norm3(ac), lbc = rs_norm3(bc);
-    const double lmax = fmax(lab, fmax(lac, lbc)), rin = rs_norm3(cr) / (lab + lac + lbc);
-    /* The triangles that touch t, for the folds at its nodes. */
-    int cap = 64, *ids = malloc((size_t)cap * sizeof *ids);
-    if (!ids)
-        return 0;
+    /* the polygon's size, and its inradius (a triangle's) or the least distance of its
+     * centroid from its edges (a quad's) */
+    double lmax = 0.0, per = 0.0, cen[3] = {0.0, 0.0, 0.0};
+    for (int k = 0; k < nl; k++) {
+        for (int l = k + 1; l < nl; l++) {
+            const double u[3] = {V[l][0] - V[k][0], V[l][1] - V[k][1], V[l][2] - V[k][2]};
+            lmax = fmax(lmax, rs_norm3(u));
+        }
+        const double *w = V[(k + 1) % nl];
+        const double u[3] = {w[0] - V[k][0], w[1] - V[k][1], w[2] - V[k][2]};
+        per += rs_norm3(u);
+        for (int d = 0; d < 3; d++)
+            cen[d] += V[k][d] / nl;
+    }
+    double rin;
+    if (nl == 3) {
+        const double ab[3] = {V[1][0] - V[0][0], V[1][1] - V[0][1], V[1][2] - V[0][2]};
+        const double ac[3] = {V[2][0] - V[0][0], V[2][1] - V[0][1], V[2][2] - V[0][2]};
+        double cr[3];
+        rs_cross3(ab, ac, cr);
+        rin = rs_norm3(cr) / per;
+    } else {
+        rin = INFINITY;
+        for (int k = 0; k < nl; k++) {
+            const double *e = m->rec[L->tri[k]].e[L->slot[k]];
+            rin = fmin(rin, dot3(e, cen) - e[3]);
+        }
+    }
     const double g = 4.0 * delta;
     double lo[3], hi[3];
     for (int d = 0; d < 3; d++) {
-        lo[d] = fmin(A[d], fmin(B[d], C[d])) - g;
-        hi[d] = fmax(A[d], fmax(B[d], C[d])) + g;
+        lo[d] = INFINITY;
+        hi[d] = -INFINITY;
+        for (int k = 0; k < nl; k++) {
+            lo[d] = fmin(lo[d], V[k][d] - g);
+            hi[d] = fmax(hi[d], V[k][d] + g);
+        }
     }
+    /* The triangles that touch the polygon, for the folds at its nodes. */
+    int cap = 64, *ids = malloc((size_t)cap * sizeof *ids);
+    if (!ids)
+        return 0;
     int n = near_triangles(m, lo, hi, &ids, &cap);
-    /* kappa: how each slot's inset grows with |h|, so that the faces beyond the folds of
-     * t's edges and nodes, whose prisms lean over t by their slope times h, stay out: a
-     * slot's own fold's slope, and twice the steepest fold at either of its nodes (which
-     * keeps t's corners that far from the node) */
-    double kappa[3] = {0.0, 0.0, 0.0}, kv[3] = {0.0, 0.0, 0.0};
+    /* kappa: how each line's inset grows with |h|, so that the faces beyond the folds of
+     * its edges and nodes, whose prisms lean over the zone by their slope times h, stay
+     * out: a line's own fold's slope, and kfac times the steepest fold at either of its
+     * nodes (twice keeps a triangle's corners that far from the node) */
+    double kappa[4] = {0.0, 0.0, 0.0, 0.0}, kv[4] = {0.0, 0.0, 0.0, 0.0};
     for (int k = 0; k < n; k++) {
         const rs_mtri *rp = m->rec + ids[k];
         for (int jj = 0; jj < 3; jj++) {
@@ -512,17 +346,25 @@ int rs_mesh_zone_make(const rs_mesh *m, int t, rs_mzone *z)
                 rp->kind[jj] == RS_EDGE_FLAT || rp->kind[jj] == RS_EDGE_BOUNDARY
                     ? 0.0
                     : fold_slope(m, rp->edge[jj]);
-            for (int j = 0; j < 3; j++)
-                if (r->v[j] == a || r->v[j] == b)
+            for (int j = 0; j < nl; j++)
+                if (vid[j] == a || vid[j] == b)
                     kv[j] = fmax(kv[j], sl);
         }
     }
-    for (int j = 0; j < 3; j++) {
-        if (r->kind[j] != RS_EDGE_FLAT && r->kind[j] != RS_EDGE_BOUNDARY)
-            kappa[j] = fold_slope(m, r->edge[j]);
-        kappa[j] = fmax(kappa[j], 2.0 * fmax(kv[j], kv[(j + 1) % 3]));
+    for (int j = 0; j < nl; j++) {
+        const rs_mtri *rj = m->rec + L->tri[j];
+        const int sj = L->slot[j];
+        if (rj->kind[sj] != RS_EDGE_FLAT && rj->kind[sj] != RS_EDGE_BOUNDARY)
+            kappa[j] = fold_slope(m, rj->edge[sj]);
+        /* line j joins corners j and j + 1 */
+        kappa[j] = fmax(kappa[j], kfac * fmax(kv[j], kv[(j + 1) % nl]));
+        /* stored as a float, rounded up: the pieces are made of what the test reads */
+        float kf = (float)kappa[j];
+        if ((double)kf < kappa[j])
+            kf = nextafterf(kf, INFINITY);
+        kappa[j] = kf;
     }
-    const double kmax = fmax(kappa[0], fmax(kappa[1], kappa[2]));
+    const double kmax = fmax(fmax(kappa[0], kappa[1]), fmax(kappa[2], kappa[3]));
     double hmax = fmin(4.0 * rin, lmax);
     if (kmax > 0.0)
         hmax = fmin(hmax, 0.5 * rin / kmax);
@@ -533,11 +375,15 @@ int rs_mesh_zone_make(const rs_mesh *m, int t, rs_mzone *z)
     }
     /* the plane's frame and the two pieces, grown by g = 4 delta */
     const double O[3] = {r->a0[0], r->a0[1], r->a0[2]};
-    double e1[3] = {ab[0] / lab, ab[1] / lab, ab[2] / lab}, e2[3];
+    const double *B = m->xyz + 3 * r->v[1];
+    double e1[3] = {B[0] - O[0], B[1] - O[1], B[2] - O[2]}, e2[3];
+    const double l1 = rs_norm3(e1);
+    for (int d = 0; d < 3; d++)
+        e1[d] /= l1;
     rs_cross3(r->n, e1, e2);
     const double hb = eps - g, ht = hmax + g;
-    double sb[3], st[3];
-    for (int j = 0; j < 3; j++) {
+    double sb[4], st[4];
+    for (int j = 0; j < nl; j++) {
         sb[j] = eps - g + kappa[j] * hb;
         st[j] = eps - g + kappa[j] * ht;
     }
@@ -548,20 +394,21 @@ int rs_mesh_zone_make(const rs_mesh *m, int t, rs_mzone *z)
     }
     for (int side = 0; side < 2; side++) {
         const double sg = side ? -1.0 : 1.0;
-        if (!inset(r, O, e1, e2, sb, sg * hb, P[side].c) ||
-            !inset(r, O, e1, e2, st, sg * ht, P[side].c + 3)) {
+        P[side].nc = nl;
+        if (!inset(m, L, O, e1, e2, r->n, sb, sg * hb, P[side].c) ||
+            !inset(m, L, O, e1, e2, r->n, st, sg * ht, P[side].c + nl)) {
             free(ids);
             return 0;
         }
-        for (int k = 0; k < 6; k++)
+        for (int k = 0; k < 2 * nl; k++)
             for (int d = 0; d < 3; d++) {
                 lo[d] = fmin(lo[d], P[side].c[k][d]);
                 hi[d] = fmax(hi[d], P[side].c[k][d]);
             }
     }
     zaxes X[2];
-    piece_axes(&P[0], r->n, &X[0]);
-    piece_axes(&P[1], r->n, &X[1]);
+    rs_zone_piece_axes(&P[0], r->n, &X[0]);
+    rs_zone_piece_axes(&P[1], r->n, &X[1]);
     /* every triangle within hmax of the pieces: beyond, each feature lies farther */
     for (int d = 0; d < 3; d++) {
         lo[d] -= hmax + g;
@@ -575,23 +422,75 @@ int rs_mesh_zone_make(const rs_mesh *m, int t, rs_mzone *z)
     double clear[2] = {hmax, hmax};
     for (int k = 0; k < n; k++) {
         const int tp = ids[k];
-        if (tp == t)
-            continue;
+        /* t's face and edges are the zone's own, and a triangle's nodes; a quad's corners
+         * off its diagonal are checked, from t too */
         const int live[2] = {clear[0] > 0.0, clear[1] > 0.0};
         if (!live[0] && !live[1])
             break;
         double nf[2];
-        near_features(m, t, tp, P, X, live, delta, m->size + coord, nf);
+        near_features(m, o, tp, P, X, live, delta, m->size + coord, nf);
         for (int side = 0; side < 2; side++)
             if (live[side])
                 clear[side] = fmin(clear[side], nf[side] - 2.0 * delta);
     }
     free(ids);
     z->eps = eps;
-    for (int j = 0; j < 3; j++)
-        z->kappa[j] = kappa[j];
+    for (int j = 0; j < 4; j++)
+        z->kappa[j] = (float)(j < nl ? kappa[j] : 0.0);
     z->hmax = hmax;
     z->clear[0] = fmax(clear[0], 0.0);
     z->clear[1] = fmax(clear[1], 0.0);
     return clear[0] > 0.0 || clear[1] > 0.0;
+}
+
+/* Gives the triangle across zone z's diagonal (z made on t) the same zone, seen from its
+ * side, unless its zone is made or being made: the quad, its pieces and the features they
+ * keep clear of are the same. */
+static void mirror_zone(const rs_mesh *m, int t, const rs_mzone *z)
+{
+    const int nb = m->rec[t].nbr[z->jd], t2 = nb / 3, j2 = nb % 3;
+    rs_mzone *z2 = m->zone + t2;
+    int st = RS_ZONE_UNKNOWN;
+    if (!atomic_compare_exchange_strong_explicit(
+            &z2->state, &st, RS_ZONE_BUSY, memory_order_acq_rel, memory_order_acquire))
+        return;
+    z2->eps = z->eps;
+    z2->hmax = z->hmax;
+    z2->clear[0] = z->clear[0];
+    z2->clear[1] = z->clear[1];
+    for (int k = 0; k < 4; k++) {
+        z2->kappa[k] = z->kappa[(k + 2) % 4];
+        z2->slot[k] = z->slot[(k + 2) % 4];
+    }
+    z2->quad = 1;
+    z2->jd = (unsigned char)j2;
+    z2->first = (unsigned char)(m->rec[t2].first >> j2 & 1u);
+    atomic_store_explicit(&z2->state, RS_ZONE_READY, memory_order_release);
+}
+
+int rs_mesh_zone_make(const rs_mesh *m, int t, rs_mzone *z)
+{
+    zlines L;
+    zown o;
+    z->quad = 0;
+    /* the zone of the quad across t's longest FLAT edge where no feature comes within its
+     * height on either side, its nodes' folds weighed once, then twice; else the
+     * triangle's, its nodes' folds weighed twice */
+    const int jd = pair_slot(m, t);
+    if (jd >= 0 && zone_lines(m, t, 1, jd, &L, &o)) {
+        for (int f = 1; f <= 2; f++)
+            if (zone_build(m, t, &L, &o, (double)f, z) && z->clear[0] >= z->hmax &&
+                z->clear[1] >= z->hmax) {
+                const rs_mtri *r = m->rec + t;
+                z->quad = 1;
+                z->jd = (unsigned char)jd;
+                z->first = (unsigned char)(r->first >> jd & 1u);
+                for (int k = 0; k < 4; k++)
+                    z->slot[k] = (unsigned char)L.slot[k];
+                mirror_zone(m, t, z);
+                return 1;
+            }
+    }
+    zone_lines(m, t, 0, 0, &L, &o);
+    return zone_build(m, t, &L, &o, 2.0, z);
 }

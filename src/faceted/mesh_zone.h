@@ -19,13 +19,22 @@ enum { RS_ZONE_UNKNOWN = 0, RS_ZONE_BUSY = 1, RS_ZONE_READY = 2, RS_ZONE_NONE = 
 /// |h| <= hmax whose side of each edge slot j (rs_mtri.e, the query's side_of) is at least
 /// eps + kappa[j] |h|. Any feature other than t's face that owns such a point, by the
 /// query's own tests, lies at least clear[0] from it when h >= 0 and clear[1] when h < 0
-/// (0 where a side has no zone). One cache line.
+/// (0 where a side has no zone). With quad set, the zone of the planar quad of t and the
+/// triangle t2 across its FLAT slot jd (the quad's diagonal): the points whose sides of
+/// its four outer edges (slot[0], slot[1] of t, slot[2], slot[3] of t2) are at least
+/// eps + kappa[k] |h|, h taken over the triangle whose face the query gives them
+/// (rs_mzone_quad_face); the features other than the two faces, their edges and the
+/// diagonal's nodes keep clear of them so. One cache line.
 typedef struct rs_mzone {
     _Alignas(64) double eps;
-    double kappa[3];
     double hmax;
     double clear[2];
+    float kappa[4];
     _Atomic int state;
+    unsigned char quad;    ///< 1: the zone of the quad of t and the triangle across jd
+    unsigned char jd;      ///< the diagonal's slot in t
+    unsigned char first;   ///< t is the diagonal's first face (it takes points on it)
+    unsigned char slot[4]; ///< the quad's outer edges, in turn around it
 } rs_mzone;
 _Static_assert(sizeof(rs_mzone) == 64, "a zone is one cache line");
 
@@ -59,8 +68,34 @@ static inline int rs_mzone_holds(const rs_mzone *z, double h, const double sd[3]
 {
     const double ah = fabs(h);
     return ah <= z->hmax && ah >= z->eps && lim < z->clear[h < 0.0] &&
-           sd[0] >= z->eps + z->kappa[0] * ah && sd[1] >= z->eps + z->kappa[1] * ah &&
-           sd[2] >= z->eps + z->kappa[2] * ah;
+           sd[0] >= z->eps + (double)z->kappa[0] * ah &&
+           sd[1] >= z->eps + (double)z->kappa[1] * ah &&
+           sd[2] >= z->eps + (double)z->kappa[2] * ah;
+}
+
+/// The triangle of the quad of zone z (quad set, made on triangle t and its coplanar
+/// neighbour across slot jd) whose face the query gives p, where z holds p and no other
+/// feature gives a contact within lim, with p's height over it in *h; -1 where z does not
+/// hold p. The diagonal's side decides the triangle as the query does: t strictly inside
+/// it, or on it where t is its first face (across a FLAT edge the second face's side is
+/// exactly the first's negated).
+static inline int rs_mzone_quad_face(const rs_mesh *m, const rs_mzone *z, int t,
+                                     const double p[3], double lim, double *h)
+{
+    double sd[3], h0;
+    tri_bound(m, t, p, &h0, sd);
+    const int t2 = m->rec[t].nbr[z->jd] / 3;
+    const double sdd = sd[z->jd];
+    const int in0 = sdd > 0.0 || (sdd == 0.0 && z->first);
+    *h = in0 ? h0 : plane_height(m, t2, p);
+    const double ah = fabs(*h);
+    const double s2 = side_of(m, t2, z->slot[2], p), s3 = side_of(m, t2, z->slot[3], p);
+    const int ok = ah <= z->hmax && ah >= z->eps && lim < z->clear[*h < 0.0] &&
+                   sd[z->slot[0]] >= z->eps + (double)z->kappa[0] * ah &&
+                   sd[z->slot[1]] >= z->eps + (double)z->kappa[1] * ah &&
+                   s2 >= z->eps + (double)z->kappa[2] * ah &&
+                   s3 >= z->eps + (double)z->kappa[3] * ah;
+    return ok ? (in0 ? t : t2) : -1;
 }
 
 /// The triangle of face feature hint (an element's face) whose clear zone holds p, where
@@ -74,10 +109,16 @@ static inline int rs_mesh_zone_face(const rs_mesh *m, const double p[3], int hin
     const int el = RS_FEATURE_INDEX(hint);
     if (el >= m->nel)
         return -1;
-    for (int t = m->el_t0[el]; t < m->el_t0[el + 1]; t++) {
+    const int t0 = m->el_t0[el];
+    const rs_mzone *z = rs_mesh_zone(m, t0);
+    /* an element's first triangle may hold the zone of its quad */
+    if (z && z->quad)
+        return rs_mzone_quad_face(m, z, t0, p, lim, h);
+    for (int t = t0; t < m->el_t0[el + 1]; t++) {
         double sd[3];
         tri_bound(m, t, p, h, sd);
-        const rs_mzone *z = rs_mesh_zone(m, t);
+        if (t > t0)
+            z = rs_mesh_zone(m, t);
         if (z && rs_mzone_holds(z, *h, sd, lim))
             return t;
     }

@@ -1,7 +1,10 @@
 /* The MESH query with hints (rs_query.hint): a sphere held on a face and inside that
- * face's clear zone (src/faceted/mesh_zone.c) gets its contact from the face alone. The
+ * face's clear zone (src/faceted/mesh_zone.c) gets its contact from the face alone, or
+ * from the coplanar face across the diagonal of the planar quad the zone covers. The
  * contacts must be those of the query without hints, value for value: on a tessellated
- * cylinder seen from inside (concave folds, the benchmark's), a UV sphere from both sides
+ * cylinder seen from inside (concave folds, the benchmark's; its quads split in triangles
+ * as in an STL, and kept as planar quads), where the quads' zones take nearly half the
+ * points held on a face, a UV sphere from both sides
  * (convex and concave folds, vertices of many faces), a bumpy height field (valleys,
  * ridges, saddles), a box of quads (right-angled convex edges, two-triangle elements) and
  * a thin slab (the other sheet within reach), one- and two-sided, with the tree and with
@@ -84,8 +87,9 @@ static int make(const soup *sp, int sides, rs_surface *s)
 }
 
 /* The benchmark's cylinder (bench/liggghts/make_stl.py): nth x nz quads split in two
- * triangles, nodes on the circle of radius R / cos(pi / nth), wound toward the axis. */
-static void cylinder(soup *s, int nth, int nz, double R, double zlo, double zhi)
+ * triangles (or kept as planar quads, quads set), nodes on the circle of radius
+ * R / cos(pi / nth), wound toward the axis. */
+static void cylinder(soup *s, int nth, int nz, double R, double zlo, double zhi, int quads)
 {
     const double rv = R / cos(RS_PI / nth);
     for (int k = 0; k <= nz; k++)
@@ -97,6 +101,10 @@ static void cylinder(soup *s, int nth, int nz, double R, double zlo, double zhi)
         for (int k = 0; k < nz; k++) {
             const int a = k * nth + i, b = k * nth + (i + 1) % nth;
             const int c = (k + 1) * nth + (i + 1) % nth, d = (k + 1) * nth + i;
+            if (quads) {
+                sp_poly(s, 4, a, d, c, b);
+                continue;
+            }
             sp_poly(s, 3, a, d, c, 0);
             sp_poly(s, 3, a, c, b, 0);
         }
@@ -311,28 +319,32 @@ static int held_against(const rs_surface *s, const rs_pose *pose, const double *
 /* Does the hint of point p send it through its face's zone (mesh_query.c's own test)? */
 static int takes_zone(const rs_mesh *m, const double p[3], int hint, double lim)
 {
-    if (hint < 0 || RS_FEATURE_TYPE(hint) != RS_FEAT_FACE ||
-        RS_FEATURE_INDEX(hint) >= m->nel)
-        return 0;
-    const int el = RS_FEATURE_INDEX(hint);
-    for (int t = m->el_t0[el]; t < m->el_t0[el + 1]; t++) {
-        double h, sd[3];
-        tri_bound(m, t, p, &h, sd);
-        const rs_mzone *z = rs_mesh_zone(m, t);
-        if (z && rs_mzone_holds(z, h, sd, lim))
-            return 1;
-    }
+    double h;
+    return rs_mesh_zone_face(m, p, hint, lim, &h) >= 0;
+}
+
+/* Is face feature f the face of element el or of a triangle across a FLAT edge of one of
+ * el's triangles (the other half of a planar quad whose zone el's triangle holds)? */
+static int face_or_flat_neighbour(const rs_mesh *m, int el, int f)
+{
+    if (f == RS_FEATURE(RS_FEAT_FACE, el))
+        return 1;
+    for (int t = m->el_t0[el]; t < m->el_t0[el + 1]; t++)
+        for (int j = 0; j < 3; j++)
+            if (m->rec[t].kind[j] == RS_EDGE_FLAT && m->rec[t].nbr[j] >= 0 &&
+                f == RS_FEATURE(RS_FEAT_FACE, m->rec[m->rec[t].nbr[j] / 3].el))
+                return 1;
     return 0;
 }
 
-/* The point of triangle t's plane at height h whose sides of slots a and b are sa and
- * sb (three planes met: Cramer's rule). */
-static void meet(const rs_mesh *m, int t, double h, int a, double sa, int b, double sb,
-                 double x[3])
+/* The point of triangle t's plane at height h whose sides of the edges of records ra
+ * (slot a) and rb (slot b) are sa and sb (three planes met: Cramer's rule). */
+static void meet(const rs_mesh *m, int t, double h, const rs_mtri *ra, int a, double sa,
+                 const rs_mtri *rb, int b, double sb, double x[3])
 {
     const rs_mtri *r = m->rec + t;
-    const double *g[3] = {r->n, r->e[a], r->e[b]};
-    const double rhs[3] = {rs_dot3(r->n, r->a0) + h, r->e[a][3] + sa, r->e[b][3] + sb};
+    const double *g[3] = {r->n, ra->e[a], rb->e[b]};
+    const double rhs[3] = {rs_dot3(r->n, r->a0) + h, ra->e[a][3] + sa, rb->e[b][3] + sb};
     double c12[3], c20[3], c01[3];
     rs_cross3(g[1], g[2], c12);
     rs_cross3(g[2], g[0], c20);
@@ -343,8 +355,8 @@ static void meet(const rs_mesh *m, int t, double h, int a, double sa, int b, dou
 }
 
 /* A point at the border of triangle t's clear zone, seen from inside: at a random height
- * within it, near a corner or on an edge of the inset triangle there, moved toward its
- * middle by a fraction 10^-12 .. 10^-2 of its size. 0 when t has no zone. */
+ * within it, near a corner or on an edge of the inset triangle (or quad) there, moved
+ * toward its middle by a fraction 10^-12 .. 10^-2 of its size. 0 when t has no zone. */
 static int zone_border(const rs_mesh *m, int t, unsigned long long *seed, double p[3])
 {
     const rs_mzone *z = rs_mesh_zone(m, t);
@@ -353,19 +365,29 @@ static int zone_border(const rs_mesh *m, int t, unsigned long long *seed, double
     const int side =
         z->clear[0] > 0.0 && (z->clear[1] <= 0.0 || rs_test_urand(seed) < 0.5) ? 1 : -1;
     const double ah = z->eps + (z->hmax - z->eps) * rs_test_urand(seed), h = side * ah;
-    double c[3][3], mid[3] = {0, 0, 0};
-    for (int k = 0; k < 3; k++) {
-        const int a = (k + 2) % 3, b = k;
-        meet(m, t, h, a, z->eps + z->kappa[a] * ah, b, z->eps + z->kappa[b] * ah, c[k]);
-        for (int d = 0; d < 3; d++)
-            mid[d] += c[k][d] / 3.0;
+    /* the zone's lines: its triangle's slots, or the quad's outer edges in turn */
+    const int nl = z->quad ? 4 : 3;
+    const rs_mtri *lr[4];
+    int ls[4];
+    for (int k = 0; k < nl; k++) {
+        const int t2 = z->quad ? m->rec[t].nbr[z->jd] / 3 : t;
+        lr[k] = m->rec + (k < 2 ? t : t2);
+        ls[k] = z->quad ? z->slot[k] : k;
     }
-    const int k = (int)(rs_test_xorshift(seed) % 3);
+    double c[4][3], mid[3] = {0, 0, 0};
+    for (int k = 0; k < nl; k++) {
+        const int a = (k + nl - 1) % nl, b = k;
+        meet(m, t, h, lr[a], ls[a], z->eps + z->kappa[a] * ah, lr[b], ls[b],
+             z->eps + z->kappa[b] * ah, c[k]);
+        for (int d = 0; d < 3; d++)
+            mid[d] += c[k][d] / nl;
+    }
+    const int k = (int)(rs_test_xorshift(seed) % (unsigned long long)nl);
     const double w = rs_test_urand(seed), f = pow(10.0, -2.0 - 10.0 * rs_test_urand(seed));
     for (int d = 0; d < 3; d++) {
         const double q = rs_test_urand(seed) < 0.5
                              ? c[k][d]
-                             : (1.0 - w) * c[k][d] + w * c[(k + 1) % 3][d];
+                             : (1.0 - w) * c[k][d] + w * c[(k + 1) % nl][d];
         p[d] = q + f * (mid[d] - q);
     }
     return 1;
@@ -551,8 +573,8 @@ static void run_case(const char *name, const rs_surface *s, double r0, double ga
                     continue;
                 ty->contacts++;
                 const double xm[3] = {ch.xm[0][k], ch.xm[1][k], ch.xm[2][k]};
-                if (ch.feature[k] != hint[i] || !(fabs(fabs(ch.dist[k]) - best) <= 1e-12) ||
-                    !(dist3(xm, cp) <= 1e-9)) {
+                if (!face_or_flat_neighbour(m, RS_FEATURE_INDEX(hint[i]), ch.feature[k]) ||
+                    !(fabs(fabs(ch.dist[k]) - best) <= 1e-12) || !(dist3(xm, cp) <= 1e-9)) {
                     fprintf(stderr,
                             "%s: point %d: hinted contact %d at %.17g, brute force "
                             "%.17g\n",
@@ -601,8 +623,11 @@ static void cylinder_from_inside(void)
 {
     soup sp;
     memset(&sp, 0, sizeof sp);
-    cylinder(&sp, 200, 10, 0.05, -0.002, 0.317);
-    mesh_case("cylinder", &sp, 0.001, 0.0, 0.00025, 4096, 101, 0.25);
+    cylinder(&sp, 200, 10, 0.05, -0.002, 0.317, 0);
+    mesh_case("cylinder", &sp, 0.001, 0.0, 0.00025, 4096, 101, 0.45);
+    sp_free(&sp);
+    cylinder(&sp, 200, 10, 0.05, -0.002, 0.317, 1);
+    mesh_case("cylinder of quads", &sp, 0.001, 0.0, 0.00025, 4096, 102, 0.45);
     sp_free(&sp);
 }
 
