@@ -61,6 +61,8 @@ class FixWallRigid : public Fix
     int engine_law(const char *const *words, int nwords, const rs_law **law, rs_error *err);
     /// law lammps: one block of contacts through LAMMPS's contact model (lammps_law.cpp).
     int lammps_update(rs_law_block *b, rs_error *err);
+    /// law lammps: one contact through LAMMPS's contact model (rs_law.force_one).
+    int lammps_one(rs_force_contact &c, double F[3], double T[3]);
     /// law lammps: its default tracking thickness.
     double lammps_reach();
 
