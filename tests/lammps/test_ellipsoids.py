@@ -17,7 +17,10 @@ ellipsoid of half-axes (a, b, c) = (4, 6, 10) mm, density 2500, under gravity -z
   The damped oscillation about the rest height decays as exp(-zeta w t) (w = sqrt(k/m),
   zeta >= 0.2 for both laws, t = 50 ms: below 1e-8 of delta), and the height is rounded
   at 1e-18 m: |z - (h - delta)| <= 1e-6 delta, with the speed below 1e-6 m/s and the
-  orientation kept (the law is frictionless and the contact below the centre).
+  orientation kept (the law is frictionless and the contact below the centre). The same
+  plate made as the other kinds of wall gives the same rest height with law hooke: the
+  end disc of a REVOLUTION (off its axis), and a MESH of two triangles (off their
+  diagonal).
 - Spheres and ellipsoids together (atom_style hybrid sphere ellipsoid: fix nve/sphere on
   the sphere, nve/asphere on the ellipsoid, one wall on both): a sphere of radius 5 mm
   rests at R - m_s g / kn and the ellipsoid at c - m g / kn, each to 1e-6 of its overlap.
@@ -58,11 +61,12 @@ ORIENT = (("long axis vertical", (0, 0, 1), 0.0, HALF[2]),
 BOX = (-0.05, 0.05, -0.05, 0.05, -0.02, 0.06)
 
 
-def deck(law, x, axis, angle, steps, tag, dt=DT, v=(0, 0, 0), energy=False, lost=False):
+def deck(law, x, axis, angle, steps, tag, dt=DT, v=(0, 0, 0), energy=False, lost=False,
+         surface="plate.inp"):
     d = M.ellipsoid_header(BOX, dt)
     d += M.ellipsoid(1, x, HALF, RHO, axis, angle, v)
     d += "fix grav all gravity %r vector 0 0 -1\n" % G
-    d += "fix w all wall/rigid surface plate.inp %s\n" % law
+    d += "fix w all wall/rigid surface %s %s\n" % (surface, law)
     d += "fix integr all nve/asphere\n"
     if energy:
         d += ("compute rot all erotate/asphere\ncompute ke all ke\n"
@@ -77,10 +81,10 @@ def deck(law, x, axis, angle, steps, tag, dt=DT, v=(0, 0, 0), energy=False, lost
     return d
 
 
-def rest(s, name, law, delta, tag):
-    for k, (oname, axis, angle, h) in enumerate(ORIENT):
+def rest(s, name, law, delta, tag, orient=ORIENT, surface="plate.inp", xy=(0.0, 0.0)):
+    for k, (oname, axis, angle, h) in enumerate(orient):
         t = "%s%d" % (tag, k)
-        s.run(t, deck(law, (0.0, 0.0, h), axis, angle, 5000, t))
+        s.run(t, deck(law, (xy[0], xy[1], h), axis, angle, 5000, t, surface=surface))
         last = M.read_dump(s.path(t + ".dump"))[-1][1][1]
         first = M.read_dump(s.path(t + ".dump"))[0][1][1]
         err = abs(last["z"] - (h - delta))
@@ -128,6 +132,14 @@ def bounce(s, dt, tag, law=ELASTIC):
 def body(s):
     s.write("plate.inp", M.L.plane_z(0.0))
     rest(s, "law hooke", HOOKE, MASS * G / KN, "hooke")
+    s.write("disc.inp", M.L.disc_z(0.05))
+    rest(s, "REVOLUTION disc, law hooke", HOOKE, MASS * G / KN, "disc", ORIENT[1:2],
+         "disc.inp", (0.01, 0.004))
+    h = 0.05
+    s.write("plate.stl", M.L.stl_text([((-h, -h, 0), (h, -h, 0), (h, h, 0)),
+                                       ((-h, -h, 0), (h, h, 0), (-h, h, 0))]))
+    rest(s, "MESH plate, law hooke", HOOKE, MASS * G / KN, "mesh", ORIENT[1:2],
+         "inline mesh plate.stl", (0.01, 0.004))
     ystar = 1.0 / (2.0 * (1.0 - NU * NU) / YOUNG)
     R = (HALF[0] * HALF[1] * HALF[2]) ** (1.0 / 3.0)
     rest(s, "law hertz", HERTZ, (3.0 * MASS * G / (4.0 * ystar * math.sqrt(R))) ** (2.0 / 3.0),
