@@ -35,7 +35,8 @@ int RsEllipsoids::ellipsoid(int i, const double half[3], const double x[3],
     auto it = shapes_.find(key);
     if (it == shapes_.end()) {
         std::unique_ptr<rs_shape> s(new rs_shape);
-        const int rc = rs_shape_make_ellipsoid(s.get(), half[0], half[1], half[2], 0.0, err);
+        const int rc =
+            rs_shape_make_ellipsoid(s.get(), half[0], half[1], half[2], 0.0, err);
         if (rc != RS_OK)
             return rc;
         it = shapes_.emplace(key, std::move(s)).first;
@@ -54,7 +55,7 @@ int RsEllipsoids::ellipsoid(int i, const double half[3], const double x[3],
     std::memset(b.axes, 0, sizeof b.axes);
     b.axes[0] = b.axes[4] = b.axes[8] = 1.0;
     radius_[i] = std::cbrt(half[0] * half[1] * half[2]);
-    /* w = R I^-1 R^T L: the momentum in the body axes, over the moments, back to the world */
+    /* w = R I^-1 R^T L: the momentum in body axes, over the moments, back to the world */
     double R[9], wb[3];
     rs_body_rotation(&b, R);
     for (int k = 0; k < 3; k++) {
@@ -62,6 +63,7 @@ int RsEllipsoids::ellipsoid(int i, const double half[3], const double x[3],
         wb[k] = b.inertia[k] != 0.0 ? Lk / b.inertia[k] : 0.0;
     }
     for (int d = 0; d < 3; d++)
-        omega_[3 * (size_t)i + d] = R[3 * d] * wb[0] + R[3 * d + 1] * wb[1] + R[3 * d + 2] * wb[2];
+        omega_[3 * (size_t)i + d] =
+            R[3 * d] * wb[0] + R[3 * d + 1] * wb[1] + R[3 * d + 2] * wb[2];
     return RS_OK;
 }

@@ -2,9 +2,9 @@
  * lifecycle maps onto the wall's calls: the constructor makes the wall from the fix's words
  * (less the material keywords, wall_materials.h), init its run, setup its setup call,
  * initial_integrate its motion, post_force its step, final_integrate its servo; the atom
- * callbacks move its per-atom history. The group's ellipsoids go to the wall as convex bodies
- * (ellipsoids.h), in a run that asks every particle at every step. Syntax, keywords and
- * output: docs/fix_wall_rigid.md and, for what is LAMMPS's own, docs/lammps.md. */
+ * callbacks move its per-atom history. The group's ellipsoids go to the wall as convex
+ * bodies (ellipsoids.h), in a run that asks every particle at every step. Syntax, keywords
+ * and output: docs/fix_wall_rigid.md and, for what is LAMMPS's own, docs/lammps.md. */
 #include "fix_wall_rigid.h"
 #include "fix_wall_rigid_force.h"
 #include "lammps_law.h"
@@ -68,8 +68,9 @@ int FixWallRigid::material(const char *name, int i, int j, int required, const c
 /* ---------------------------------------------------------------------------------- */
 
 FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg), wall_(nullptr), info_(nullptr), avec_(nullptr), bodies_on_(false),
-      model_(nullptr), reff_mode_(0), wallforce_clear_(true), nmax_(0), out_step_(-1), out_valid_(false)
+    : Fix(lmp, narg, arg), wall_(nullptr), info_(nullptr), avec_(nullptr),
+      bodies_on_(false), model_(nullptr), reff_mode_(0), wallforce_clear_(true), nmax_(0),
+      out_step_(-1), out_valid_(false)
 {
     std::memset(&model_desc_, 0, sizeof model_desc_);
     host_ = rs_adapter_host(this, comm->me, atom->ntypes, "lammps");
@@ -184,8 +185,8 @@ void FixWallRigid::init()
         (!avec_ || !atom->rmass_flag || !atom->angmom_flag || !atom->torque_flag))
         fail("ellipsoids need per-atom mass, angmom and torque (atom_style ellipsoid), as "
              "fix nve/asphere reads them");
-    if (!avec_ &&
-        (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag))
+    if (!avec_ && (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag ||
+                   !atom->torque_flag))
         fail("needs per-atom radius, mass, omega and torque (atom_style sphere), or "
              "ellipsoids (atom_style ellipsoid)");
     check_particles();
@@ -255,9 +256,10 @@ void FixWallRigid::check_particles()
              "use atom_style hybrid sphere ellipsoid for spheres");
     bodies_on_ = v[0] > 0.0;
     if (bodies_on_ && model_)
-        fail("law lammps runs LAMMPS's sphere-wall models, which take a sphere's centre and "
-             "radius; ellipsoids take rigidsurf's laws (hertz, hooke, coulomb, ...) or a "
-             "user's law");
+        fail(
+            "law lammps runs LAMMPS's sphere-wall models, which take a sphere's centre and "
+            "radius; ellipsoids take rigidsurf's laws (hertz, hooke, coulomb, ...) or a "
+            "user's law");
 }
 
 /* atom_style ellipsoid: each ellipsoid of the group as the wall's body (its half-axes and
