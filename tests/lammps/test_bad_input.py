@@ -8,8 +8,8 @@ Errors that LAMMPS's own fix wall/gran parser finds in the model words of law la
 LAMMPS's message; LAMMPS then names the command on its `Last command:` line. Two of the
 lines also run on 2 ranks (error->all on every rank: still one message). Particles the fix
 does not take: atom_style body (rounded polyhedra are not supported), an ellipsoid style
-whose particle was given no shape, and law lammps (LAMMPS's sphere-wall models) on
-ellipsoids.
+whose particle was given no shape, law lammps (LAMMPS's sphere-wall models) on
+ellipsoids, and an ellipsoid that appears during a run that began without one.
 """
 import lmplib as M
 
@@ -108,6 +108,18 @@ def particles(s):
                             expect_ok=False)
             M.L.check_rejected(s.ck, "%s (%d rank%s)" % (name, np, "s" if np > 1 else ""),
                                line, want, rc, out)
+    # a sphere given a shape between the parts of a run (pre no: no init between them) is
+    # an ellipsoid the run did not begin with; found on its rank (error->one, MPI_Abort)
+    atoms = "create_atoms 1 single 0 0 0.02 units box\nset atom 1 diameter 0.01 density 2500\n"
+    deck = particle_deck("hybrid sphere ellipsoid", atoms, hertz, "nve/sphere").replace(
+        "run 10", 'run 20 pre no every 10 "set atom 1 shape 0.01 0.01 0.01"')
+    rc, out = s.run("particles_midrun", deck, expect_ok=False)
+    errs = M.L.error_lines(out)
+    s.ck.check("an ellipsoid appearing during a run: one error naming the fix and the particle",
+               rc == 1 and len(set(errs)) == 1 and "Segmentation" not in out
+               and all(w in errs[0] for w in ("Fix wall/rigid w", "particle 1 of group all",
+                                              "became an ellipsoid during a run")),
+               errs[0] if errs else "exit %s, no error" % rc)
 
 
 if __name__ == "__main__":
