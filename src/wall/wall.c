@@ -402,7 +402,10 @@ int rs_wall_init(rs_wall *w, const rs_wall_run *run, const rs_wall_block *b, rs_
              "buffer leaves room for %d; lower 'contacts' or the state variables",
              1 + wall_atom_size(w), w->capacity, wall_slot_size(w) - w->nstatev, w->nstatev,
              1 + wall_row_size(w), run->exchange_max);
-    if ((rc = wall_scratch(w, run->every_particle ? b->n : RS_BLOCK, err)))
+    /* A run that asks every particle takes them in one block, at least RS_BLOCK wide: an
+     * engine's rank that starts with few or none may receive many later. */
+    const int bcap = run->every_particle && b->n > RS_BLOCK ? b->n : RS_BLOCK;
+    if ((rc = wall_scratch(w, bcap, err)))
         return rc;
     w->rebuild = 1;
     w->run_ok = 1;
