@@ -272,8 +272,6 @@ static void near_tree(const rs_pcache *pc, double px, double py, double reach,
  * it too, the face with the larger penetration goes (ties: the higher index). */
 static int face_dropped(const rs_pcache *pc, int k, double dk, int j, double px, double py)
 {
-    if (pc->vk[j] != RS_VTX_CONVEX)
-        return 0;
     rs_pvert tmp;
     const rs_pvert *v = vert_rec(pc, j, &tmp);
     if (v->kind != RS_VTX_CONVEX || v->sa < 0 || v->sb < 0 || v->sa == v->sb)
@@ -305,9 +303,10 @@ int rs_pcache_face(const rs_pcache *pc, int k, double px, double py, double dlo,
     const double dist = flip ? -sd : sd;
     if (!(dist >= dlo && dist <= dhi))
         return 0;
+    const int j1 = k + 1 == pc->nvert ? 0 : k + 1;
     if (pc->sides == 1 && dist < 0.0 &&
-        (face_dropped(pc, k, dist, k, px, py) ||
-         face_dropped(pc, k, dist, k + 1 == pc->nvert ? 0 : k + 1, px, py)))
+        ((pc->vk[k] == RS_VTX_CONVEX && face_dropped(pc, k, dist, k, px, py)) ||
+         (pc->vk[j1] == RS_VTX_CONVEX && face_dropped(pc, k, dist, j1, px, py))))
         return 0;
     double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
     tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;

@@ -72,25 +72,21 @@ int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body 
                                     err);
 }
 
-int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_body *body,
+int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_body *b,
                              int n, double gap_max, int lenient, rs_body_face_fn face,
                              const void *ctx, rs_body_contacts *out, rs_error *err)
 {
-    rs_body *b = malloc((size_t)(n > 0 ? n : 1) * sizeof *b);
     double *rot = malloc((size_t)(n > 0 ? n : 1) * 9 * sizeof *rot); /* each body's R */
     double *reach = malloc((size_t)(n > 0 ? n : 1) * 4 * sizeof *reach);
     int *off = NULL, *live = NULL;
-    int rc = b && rot && reach ? RS_OK
-                        : rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
+    int rc = rot && reach ? RS_OK
+                          : rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
     fixed *fx = NULL;
     rs_contacts pc; /* the reach spheres' contacts, then each step's */
     memset(&pc, 0, sizeof pc);
     for (int i = 0; rc == RS_OK && i < n; i++) {
-        rc = rs_body_check(s, body + i, gap_max, b + i, err);
-        if (rc == RS_OK) {
-            reach[i] = rs_body_reach(b + i);
-            rs_body_rotation(b + i, rot + 9 * i);
-        }
+        reach[i] = rs_body_reach(b + i);
+        rs_body_rotation(b + i, rot + 9 * i);
     }
     /* The features near each body: a sphere of its reach about its centre (its centre
      * sought as deep as twice its reach: a body deeper lies behind the wall). */
@@ -207,7 +203,6 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
         else if (l->c[slot].depth < got->depth)
             l->c[slot] = *got;
     }
-    free(b);
     free(rot);
     free(reach);
     free(fx);

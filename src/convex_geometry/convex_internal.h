@@ -37,12 +37,6 @@ double rs_shape_core_radius(const rs_shape *s);
 
 /// A body's reach about its centre: the farthest corner of its bounding box.
 double rs_body_reach(const rs_body *b);
-/// The checks of a body's query (RS_ERR_ARG): a surface with a kind, a body with a shape,
-/// a finite position and a finite quaternion of norm 1 to 1e-6, gap_max finite and >= 0;
-/// *checked gets the body, its quaternion normalised where its norm is off 1 by more
-/// than 1e-12 (rs_body_init's tolerance).
-int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_body *checked,
-                  rs_error *err);
 /// Appends o to l; RS_ERR_NOMEM when it cannot grow.
 int rs_body_contacts_push(rs_body_contacts *l, const rs_body_contact *o, rs_error *err);
 /// The contacts of n slaves with surface s, into c (emptied first): points (radius NULL)
