@@ -245,19 +245,20 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
         rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
     double gap = 0.0;
     for (int i = 0; i < n && rc == RS_OK; i++) {
-        double R[9];
-        rs_body_rotation(b + i, R);
         const double rr = rs_shape_core_radius(b[i].shape), reach = rs_body_reach(b + i);
         gap = fmax(gap, 2.0 * reach + gap_max);
-        for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
-            const rs_body_contact *o = &fl[i].c[f];
-            if (o->feature >= RS_MANIFOLD_STRIDE) {
+        for (int f = 0; f < fl[i].n && rc == RS_OK; f++)
+            if (fl[i].c[f].feature >= RS_MANIFOLD_STRIDE)
                 rc = rs_error_set(err, RS_ERR_CAPACITY,
                                   "body query: feature %d of '%s' is beyond the manifold's "
                                   "ids (%d)",
-                                  o->feature, s->name, RS_MANIFOLD_STRIDE);
-                break;
-            }
+                                  fl[i].c[f].feature, s->name, RS_MANIFOLD_STRIDE);
+        if (rc != RS_OK || !core_points_of(b[i].shape))
+            continue; /* a smooth body: its deepest point only */
+        double R[9];
+        rs_body_rotation(b + i, R);
+        for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
+            const rs_body_contact *o = &fl[i].c[f];
             double d[3];
             for (int k = 0; k < 3; k++)
                 d[k] = -(R[k] * o->normal[0] + R[3 + k] * o->normal[1] +
