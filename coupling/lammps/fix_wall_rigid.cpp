@@ -2,8 +2,9 @@
  * lifecycle maps onto the wall's calls: the constructor makes the wall from the fix's words
  * (less the material keywords, wall_materials.h), init its run, setup its setup call,
  * initial_integrate its motion, post_force its step, final_integrate its servo; the atom
- * callbacks move its per-atom history. Syntax, keywords and output: docs/fix_wall_rigid.md
- * and, for what is LAMMPS's own, docs/lammps.md. */
+ * callbacks move its per-atom history. The group's ellipsoids go to the wall as convex
+ * bodies (ellipsoids.h), in a run that asks every particle at every step. Syntax, keywords
+ * and output: docs/fix_wall_rigid.md and, for what is LAMMPS's own, docs/lammps.md. */
 #include "fix_wall_rigid.h"
 #include "fix_wall_rigid_force.h"
 #include "lammps_law.h"
@@ -11,6 +12,7 @@
 #include "adapter.h"
 
 #include "atom.h"
+#include "atom_vec_ellipsoid.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -22,6 +24,7 @@
 #include "update.h"
 #include "variable.h"
 
+#include <algorithm>
 #include <climits>
 #include <cstring>
 
@@ -65,8 +68,9 @@ int FixWallRigid::material(const char *name, int i, int j, int required, const c
 /* ---------------------------------------------------------------------------------- */
 
 FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg), wall_(nullptr), info_(nullptr), model_(nullptr), reff_mode_(0),
-      wallforce_clear_(true), nmax_(0), out_step_(-1), out_valid_(false)
+    : Fix(lmp, narg, arg), wall_(nullptr), info_(nullptr), avec_(nullptr),
+      bodies_on_(false), model_(nullptr), reff_mode_(0), wallforce_clear_(true), nmax_(0),
+      out_step_(-1), out_valid_(false)
 {
     std::memset(&model_desc_, 0, sizeof model_desc_);
     host_ = rs_adapter_host(this, comm->me, atom->ntypes, "lammps");
@@ -170,8 +174,22 @@ void FixWallRigid::post_constructor()
 
 void FixWallRigid::init()
 {
-    if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
-        fail("needs per-atom radius, mass, omega and torque (atom_style sphere)");
+    if (atom->body_flag || atom->line_flag || atom->tri_flag)
+        fail(std::string("atom_style ") + atom->atom_style +
+             " is not supported: the fix takes spheres (atom_style sphere) and ellipsoids "
+             "(atom_style ellipsoid, or hybrid sphere ellipsoid)");
+    avec_ = atom->ellipsoid_flag
+                ? dynamic_cast<AtomVecEllipsoid *>(atom->style_match("ellipsoid"))
+                : nullptr;
+    if (atom->ellipsoid_flag &&
+        (!avec_ || !atom->rmass_flag || !atom->angmom_flag || !atom->torque_flag))
+        fail("ellipsoids need per-atom mass, angmom and torque (atom_style ellipsoid), as "
+             "fix nve/asphere reads them");
+    if (!avec_ && (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag ||
+                   !atom->torque_flag))
+        fail("needs per-atom radius, mass, omega and torque (atom_style sphere), or "
+             "ellipsoids (atom_style ellipsoid)");
+    check_particles();
     if (std::strstr(update->integrate_style, "respa"))
         fail("run_style respa is not supported; use verlet");
     if (model_)
@@ -198,10 +216,12 @@ void FixWallRigid::init()
     const rs_wall_run run = rs_adapter_run(
         update->dt, neighbor->skin, neighbor->delay, neighbor->every, neighbor->dist_check,
         neighbor->build_once, domain->boxlo, domain->boxhi, 0);
+    rs_wall_run r = run;
+    r.every_particle = bodies_on_ ? 1 : 0;
     const rs_wall_block b = block(true);
     rs_error err;
     rs_error_clear(&err);
-    if (rs_wall_init(wall_, &run, &b, &err) != RS_OK)
+    if (rs_wall_init(wall_, &r, &b, &err) != RS_OK)
         fail(err.msg);
     exchange_size();
 }
@@ -213,7 +233,67 @@ void FixWallRigid::exchange_size()
     maxexchange = rs_wall_pack_size(wall_);
 }
 
-/* The atoms as the wall reads them: LAMMPS's arrays, contiguous rows of 3. */
+/* The group's particles at a run's start: each an ellipsoid or a sphere (a particle of
+ * atom_style ellipsoid without a shape is neither); bodies_on_ when an ellipsoid is among
+ * them on any rank. */
+void FixWallRigid::check_particles()
+{
+    double v[2] = {0.0, 1e300}; // the ellipsoids, the smallest id of a particle of neither
+    for (int i = 0; i < atom->nlocal; i++) {
+        if (!(atom->mask[i] & groupbit))
+            continue;
+        if (avec_ && atom->ellipsoid[i] >= 0)
+            v[0] += 1.0;
+        else if (!atom->radius_flag || !atom->omega_flag)
+            v[1] = std::min(v[1], (double)atom->tag[i]);
+    }
+    reduce(&v[0], 1, RS_REDUCE_SUM);
+    reduce(&v[1], 1, RS_REDUCE_MIN);
+    if (v[1] < 1e300)
+        fail("particle " + std::to_string((long long)v[1]) + " of group " +
+             group->names[igroup] +
+             " is neither an ellipsoid nor a sphere: give it a shape (set ... shape) or "
+             "use atom_style hybrid sphere ellipsoid for spheres");
+    bodies_on_ = v[0] > 0.0;
+    if (bodies_on_ && model_)
+        fail(
+            "law lammps runs LAMMPS's sphere-wall models, which take a sphere's centre and "
+            "radius; ellipsoids take rigidsurf's laws (hertz, hooke, coulomb, ...) or a "
+            "user's law");
+}
+
+/* atom_style ellipsoid: each ellipsoid of the group as the wall's body (its half-axes and
+ * quaternion from LAMMPS's bonus data, its angular velocity from angmom), each sphere with
+ * its radius and omega. */
+void FixWallRigid::fill_bodies()
+{
+    const int n = atom->nlocal;
+    bodies_.resize(n);
+    rs_error err;
+    rs_error_clear(&err);
+    for (int i = 0; i < n; i++) {
+        const int e = atom->ellipsoid[i];
+        if (e < 0) {
+            bodies_.sphere(i, atom->radius ? atom->radius[i] : 0.0,
+                           atom->omega ? atom->omega[i] : nullptr);
+            continue;
+        }
+        if (!(atom->mask[i] & groupbit))
+            continue;
+        const std::string who = "particle " + std::to_string((long long)atom->tag[i]);
+        if (!bodies_on_)
+            fail_one(who + " of group " + group->names[igroup] +
+                     " became an ellipsoid during a run that began without ellipsoids in "
+                     "it; the wall takes it from the next run on");
+        const AtomVecEllipsoid::Bonus &bo = avec_->bonus[e];
+        if (bodies_.ellipsoid(i, bo.shape, atom->x[i], bo.quat, atom->rmass[i],
+                              atom->angmom[i], &err) != RS_OK)
+            fail_one(who + ": " + err.msg);
+    }
+}
+
+/* The atoms as the wall reads them: LAMMPS's arrays, contiguous rows of 3; with
+ * atom_style ellipsoid, the radii, angular velocities and bodies of fill_bodies. */
 rs_wall_block FixWallRigid::block(bool setup)
 {
     rs_wall_block b;
@@ -223,6 +303,12 @@ rs_wall_block FixWallRigid::block(bool setup)
     b.v = atom->v ? atom->v[0] : nullptr;
     b.omega = atom->omega ? atom->omega[0] : nullptr;
     b.radius = atom->radius;
+    if (avec_) {
+        fill_bodies();
+        b.omega = bodies_.omega();
+        b.radius = bodies_.radius();
+        b.body = bodies_on_ ? bodies_.bodies() : nullptr;
+    }
     b.mass = atom->rmass;
     b.type = atom->type;
     b.id = atom->tag;

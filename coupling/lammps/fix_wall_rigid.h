@@ -3,12 +3,15 @@
  * it LAMMPS's atom arrays each step (rs_wall_step), answers what only LAMMPS knows
  * (variables, sums over ranks, warnings, the material properties given on the fix line,
  * its own contact models as `law lammps`), keeps the per-atom outputs LAMMPS dumps, and
- * moves the wall's per-atom history through LAMMPS's exchange and restart callbacks. */
+ * moves the wall's per-atom history through LAMMPS's exchange and restart callbacks. Its
+ * particles are spheres (atom_style sphere) and ellipsoids (atom_style ellipsoid, as
+ * convex bodies, ellipsoids.h). */
 #ifndef RIGIDSURF_LAMMPS_FIX_WALL_RIGID_H
 #define RIGIDSURF_LAMMPS_FIX_WALL_RIGID_H
 
 #include "fix.h"
 
+#include "ellipsoids.h"
 #include "rigidsurf/wall.h"
 #include "wall_materials.h"
 
@@ -61,6 +64,8 @@ class FixWallRigid : public Fix
     int engine_law(const char *const *words, int nwords, const rs_law **law, rs_error *err);
     /// law lammps: one block of contacts through LAMMPS's contact model (lammps_law.cpp).
     int lammps_update(rs_law_block *b, rs_error *err);
+    /// law lammps: one contact through LAMMPS's contact model (rs_law.force_one).
+    int lammps_one(rs_force_contact &c, double F[3], double T[3]);
     /// law lammps: its default tracking thickness.
     double lammps_reach();
 
@@ -70,11 +75,20 @@ class FixWallRigid : public Fix
     rs_wall_block block(bool setup);
     rs_wall_rows rows();
     void exchange_size();
+    void check_particles();
+    void fill_bodies();
 
     rs_wall *wall_;
     rs_wall_host host_;
     const rs_wall_info *info_;
     WallMaterials materials_;
+
+    /* atom_style ellipsoid: its shapes and orientations, the group's ellipsoids as the
+     * wall's bodies; bodies_on_: the group holds ellipsoids in this run (the wall asks
+     * every particle at every step) */
+    class AtomVecEllipsoid *avec_;
+    RsEllipsoids bodies_;
+    bool bodies_on_;
 
     /* law lammps: LAMMPS's wall contact model, and the descriptor the wall calls */
     class LammpsWallModel *model_;

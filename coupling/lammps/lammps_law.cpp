@@ -68,6 +68,12 @@ int lammps_law_update(const rs_law *law, rs_law_block *b, rs_error *err)
     return static_cast<FixWallRigid *>(law->ctx)->lammps_update(b, err);
 }
 
+int lammps_law_one(const rs_law *law, rs_force_contact *c, double F[3], double T[3],
+                   rs_error *)
+{
+    return static_cast<FixWallRigid *>(law->ctx)->lammps_one(*c, F, T);
+}
+
 double lammps_law_reach(const rs_law *law, const double *, int)
 {
     return static_cast<FixWallRigid *>(law->ctx)->lammps_reach();
@@ -159,6 +165,7 @@ int FixWallRigid::engine_law(const char *const *words, int nwords, const rs_law 
         model_->nhistory() + (model_->curved() && reff_mode_ != REFF_FLAT);
     model_desc_.update = lammps_law_update;
     model_desc_.reach = lammps_law_reach;
+    model_desc_.force_one = lammps_law_one;
     model_desc_.ctx = this;
     model_desc_.skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_SLIP |
                         RS_LAW_SKIPS_DRDISP1;
@@ -170,59 +177,63 @@ int FixWallRigid::engine_law(const char *const *words, int nwords, const rs_law 
 
 int FixWallRigid::lammps_update(rs_law_block *b, rs_error *)
 {
-    LammpsWallModel &m = *model_;
-    m.set_history_update(!b->setup);
-    const int nh = m.nhistory(), ns = b->nStateVar;
-    const bool jkr = m.jkr(), keep = ns > nh;
-    double **x = atom->x, **v = atom->v, **omega = atom->omega;
     rs_wall_force_begin(b);
     for (int e = 0; e < b->nSlvNod; e++) {
         rs_force_contact c;
-        if (!rs_wall_force_contact(wall_, b, e, x[0], &c))
+        if (!rs_wall_force_contact(wall_, b, e, atom->x[0], &c))
             continue;
-        /* r: the distance of the centre from the wall's point along n, as LAMMPS's walls
-         * measure it (R - overlap rounds otherwise) */
-        const double *xi = x[c.row];
-        const double R = c.radius;
-        const double r = (xi[0] - c.xm[0]) * c.n[0] + (xi[1] - c.xm[1]) * c.n[1] +
-                         (xi[2] - c.xm[2]) * c.n[2];
-        const double rsq = r * r;
-        const double rad = jkr ? R + m.pulloff_distance(R) : R;
-        if (rsq > rad * rad || (jkr && c.history[0] == 0.0 && rsq > R * R)) {
-            for (int h = 0; h < ns; h++)
-                c.history[h] = 0.0;
-            continue;
-        }
-        /* The wall's radius of curvature as LAMMPS's models take it, rwall (0: a plane),
-         * whose effective radius is R rwall / (R + rwall): the effective radius where the
-         * contact began, which it keeps (its last state variable; 0 for a new contact).
-         * LAMMPS's models take rwall as a constant of a contact: one that changed while
-         * the contact lasts, as a sphere slides from a mantle onto a fillet, would make
-         * the normal force do net work. */
-        double rwall = 0.0;
-        if (keep) {
-            double &reff = c.history[ns - 1];
-            if (reff == 0.0) {
-                reff = R;
-                if (reff_mode_ == REFF_EXACT) {
-                    reff = c.reff;
-                } else {
-                    const double k = std::fabs(c.curv[0]) >= std::fabs(c.curv[1])
-                                         ? c.curv[0]
-                                         : c.curv[1];
-                    if (k != 0.0)
-                        reff = R * (2.0 / k) / (R + 2.0 / k);
-                }
-            }
-            if (reff != R)
-                rwall = R * reff / (R - reff);
-        }
         double F[3] = {0.0, 0.0, 0.0}, T[3] = {0.0, 0.0, 0.0};
-        m.contact(rsq, r * c.n[0], r * c.n[1], r * c.n[2], c.vwall, rwall, v[c.row], F,
-                  omega[c.row], T, R, c.mass, c.history);
-        rs_wall_force_result(b, e, &c, F, T);
+        if (lammps_one(c, F, T))
+            rs_wall_force_result(b, e, &c, F, T);
     }
     return RS_OK;
+}
+
+int FixWallRigid::lammps_one(rs_force_contact &c, double F[3], double T[3])
+{
+    LammpsWallModel &m = *model_;
+    m.set_history_update(!c.setup);
+    const int nh = m.nhistory(), ns = model_desc_.nstatev;
+    const bool jkr = m.jkr(), keep = ns > nh;
+    /* r: the distance of the centre from the wall's point along n, as LAMMPS's walls
+     * measure it (R - overlap rounds otherwise) */
+    const double *xi = atom->x[c.row];
+    const double R = c.radius;
+    const double r = (xi[0] - c.xm[0]) * c.n[0] + (xi[1] - c.xm[1]) * c.n[1] +
+                     (xi[2] - c.xm[2]) * c.n[2];
+    const double rsq = r * r;
+    const double rad = jkr ? R + m.pulloff_distance(R) : R;
+    if (rsq > rad * rad || (jkr && c.history[0] == 0.0 && rsq > R * R)) {
+        for (int h = 0; h < ns; h++)
+            c.history[h] = 0.0;
+        return 0;
+    }
+    /* The wall's radius of curvature as LAMMPS's models take it, rwall (0: a plane),
+     * whose effective radius is R rwall / (R + rwall): the effective radius where the
+     * contact began, which it keeps (its last state variable; 0 for a new contact).
+     * LAMMPS's models take rwall as a constant of a contact: one that changed while
+     * the contact lasts, as a sphere slides from a mantle onto a fillet, would make
+     * the normal force do net work. */
+    double rwall = 0.0;
+    if (keep) {
+        double &reff = c.history[ns - 1];
+        if (reff == 0.0) {
+            reff = R;
+            if (reff_mode_ == REFF_EXACT) {
+                reff = c.reff;
+            } else {
+                const double k =
+                    std::fabs(c.curv[0]) >= std::fabs(c.curv[1]) ? c.curv[0] : c.curv[1];
+                if (k != 0.0)
+                    reff = R * (2.0 / k) / (R + 2.0 / k);
+            }
+        }
+        if (reff != R)
+            rwall = R * reff / (R - reff);
+    }
+    m.contact(rsq, r * c.n[0], r * c.n[1], r * c.n[2], c.vwall, rwall, atom->v[c.row], F,
+              atom->omega[c.row], T, R, c.mass, c.history);
+    return 1;
 }
 
 /* The default tracking thickness of law lammps: JKR acts within its pull-off distance of

@@ -45,6 +45,12 @@ int liggghts_law_update(const rs_law *law, rs_law_block *b, rs_error *err)
     return static_cast<FixWallRigid *>(law->ctx)->liggghts_update(b, err);
 }
 
+int liggghts_law_one(const rs_law *law, rs_force_contact *c, double F[3], double T[3],
+                     rs_error *err)
+{
+    return static_cast<FixWallRigid *>(law->ctx)->liggghts_one(*c, F, T, err);
+}
+
 double liggghts_law_reach(const rs_law *law, const double *, int)
 {
     return static_cast<FixWallRigid *>(law->ctx)->liggghts_reach();
@@ -129,6 +135,7 @@ int FixWallRigid::engine_law(const char *const *words, int nwords, const rs_law 
     lig_desc_.nstatev = lig_->nhistory();
     lig_desc_.update = liggghts_law_update;
     lig_desc_.reach = liggghts_law_reach;
+    lig_desc_.force_one = liggghts_law_one;
     lig_desc_.ctx = this;
     lig_desc_.skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_SLIP |
                       RS_LAW_SKIPS_DRDISP1;

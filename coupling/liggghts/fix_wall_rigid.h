@@ -68,6 +68,9 @@ class FixWallRigid : public Fix
     int engine_law(const char *const *words, int nwords, const rs_law **law, rs_error *err);
     /// law liggghts: one block of contacts through LIGGGHTS's contact model.
     int liggghts_update(rs_law_block *b, rs_error *err);
+    /// law liggghts: one contact through LIGGGHTS's model (rs_law.force_one): 1 where it
+    /// gives a force, 0 where it gives none, -RS_ERR_NONFINITE where it cannot go on.
+    int liggghts_one(rs_force_contact &c, double F[3], double T[3], rs_error *err);
     /// law liggghts: its default tracking thickness.
     double liggghts_reach() const;
 

@@ -24,28 +24,36 @@ int FixWallRigid::liggghts_update(rs_law_block *b, rs_error *err)
         rs_force_contact c;
         if (!rs_wall_force_contact(wall_, b, e, atom->x[0], &c))
             continue;
-        LiggghtsContact lc;
-        lc.i = c.row;
-        lc.radius = c.radius;
-        lc.overlap = c.overlap;
-        lc.normal = c.n;
-        lc.v = atom->v[c.row];
-        lc.omega = atom->omega[c.row];
-        for (int d = 0; d < 3; d++)
-            lc.vwall[d] = c.vwall[d];
-        lc.history = c.history;
-        lc.itype = c.type;
-        lc.jtype = c.wall_type;
-        lc.mass = c.mass;
-        lc.update_history = !c.setup;
         double F[3], T[3];
-        const LiggghtsLaw::Result got = lig_->contact(lc, F, T);
-        if (got == LiggghtsLaw::kNotFinite)
-            return rs_error_set(err, RS_ERR_NONFINITE, "%s", lig_->failure().c_str());
-        if (got == LiggghtsLaw::kForce)
+        const int got = liggghts_one(c, F, T, err);
+        if (got < 0)
+            return -got;
+        if (got)
             rs_wall_force_result(b, e, &c, F, T);
     }
     return RS_OK;
+}
+
+int FixWallRigid::liggghts_one(rs_force_contact &c, double F[3], double T[3], rs_error *err)
+{
+    LiggghtsContact lc;
+    lc.i = c.row;
+    lc.radius = c.radius;
+    lc.overlap = c.overlap;
+    lc.normal = c.n;
+    lc.v = atom->v[c.row];
+    lc.omega = atom->omega[c.row];
+    for (int d = 0; d < 3; d++)
+        lc.vwall[d] = c.vwall[d];
+    lc.history = c.history;
+    lc.itype = c.type;
+    lc.jtype = c.wall_type;
+    lc.mass = c.mass;
+    lc.update_history = !c.setup;
+    const LiggghtsLaw::Result got = lig_->contact(lc, F, T);
+    if (got == LiggghtsLaw::kNotFinite)
+        return -rs_error_set(err, RS_ERR_NONFINITE, "%s", lig_->failure().c_str());
+    return got == LiggghtsLaw::kForce;
 }
 
 /* The default tracking thickness of law liggghts: LIGGGHTS calls its model for contacts

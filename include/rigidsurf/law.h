@@ -169,6 +169,8 @@ typedef struct rs_law_block {
 } rs_law_block;
 
 typedef struct rs_law rs_law;
+/// A contact as a force law's model sees it (wall.h).
+struct rs_force_contact;
 
 /// The reach of a law that acts only on touching contacts: 0.
 double rs_law_reach_touching(const rs_law *law, const double *props, int nprops);
@@ -226,6 +228,17 @@ struct rs_law {
     /// particles that each hold one contact, in one pass, with the numbers of the staged
     /// calls (internal to the library; NULL for every other law).
     const struct rs_law_fused *fused;
+    /// A force law's (RS_LAW_SETS_FORCE) model on one contact, optional: c describes the
+    /// contact as rs_wall_force_contact does (wall.h; its history is the contact's state
+    /// variables, which the model updates); where the model acts it writes its force F on
+    /// the particle and torque T about the particle's centre and returns 1, elsewhere it
+    /// returns 0 (the contact gives zeros, as a contact the block call skips); a model
+    /// that cannot go on fills err and returns its negated code (-RS_ERR_...). With it the
+    /// wall takes runs of particles that each hold one contact on its line path, without
+    /// the block call (src/wall/wall_force_line.c): the update function must then give,
+    /// contact by contact, what this gives.
+    int (*force_one)(const rs_law *law, struct rs_force_contact *c, double F[3],
+                     double T[3], rs_error *err);
 };
 
 /* What a law declares it does not read on entry, so that the contact's history need not

@@ -382,13 +382,18 @@ int rs_wall_init(rs_wall *w, const rs_wall_run *run, const rs_wall_block *b, rs_
     /* The law's fused kernel on the usual blocks: a law that has one, on unit areas, with
      * nothing that reads the staged arrays afterwards (conduction, a mesh's facets), and
      * not switched off (keyword fused). */
-    w->fused_ok = w->fused_given && w->law->fused && !w->conduction && !w->facets &&
-                  (w->area_mode == WALL_AREA_NODE ||
-                   (w->area_mode == WALL_AREA_CONSTANT && w->area_const == 1.0));
+    const int fusable = w->fused_given && !w->conduction && !w->facets &&
+                        (w->area_mode == WALL_AREA_NODE ||
+                         (w->area_mode == WALL_AREA_CONSTANT && w->area_const == 1.0));
+    w->fused_ok = fusable && w->law->fused;
+    /* ... or a force law's model per contact (rs_law.force_one), whose contacts' slots
+     * keep the frame and the state variables alone (wall_force_line.c) ... */
+    w->line_force = fusable && !w->law->fused && w->law->force_one &&
+                    wall_force_line_takes(w);
     /* ... and on a revolved LINE, or on a MESH from the faces its spheres hold (with its
      * candidate lists for the rest), per run of spheres without the block's columns. */
     w->line_mesh = lists && rs_mesh_held(w->surf);
-    w->line_pass = w->fused_ok && w->law->fused->line && !w->belt &&
+    w->line_pass = ((w->fused_ok && w->law->fused->line) || w->line_force) && !w->belt &&
                    ((rs_line_revolution(w->surf) && !lists) || w->line_mesh) &&
                    !run->every_particle;
     if (run->exchange_max > 0 && 1 + wall_atom_size(w) > run->exchange_max)
@@ -397,7 +402,10 @@ int rs_wall_init(rs_wall *w, const rs_wall_run *run, const rs_wall_block *b, rs_
              "buffer leaves room for %d; lower 'contacts' or the state variables",
              1 + wall_atom_size(w), w->capacity, wall_slot_size(w) - w->nstatev, w->nstatev,
              1 + wall_row_size(w), run->exchange_max);
-    if ((rc = wall_scratch(w, run->every_particle ? b->n : RS_BLOCK, err)))
+    /* A run that asks every particle takes them in one block, at least RS_BLOCK wide: an
+     * engine's rank that starts with few or none may receive many later. */
+    const int bcap = run->every_particle && b->n > RS_BLOCK ? b->n : RS_BLOCK;
+    if ((rc = wall_scratch(w, bcap, err)))
         return rc;
     w->rebuild = 1;
     w->run_ok = 1;

@@ -73,6 +73,8 @@ struct rs_wall {
     int line_pass;      ///< ... and on a revolved LINE or a MESH, per run of spheres
                         ///< (wall_line.c)
     int line_mesh;      ///< the line path on a MESH: the held faces' clear zones
+    int line_force;     ///< the line path calls the force law's model per contact
+                        ///< (rs_law.force_one; wall_force_line.c)
     double *type_props; ///< per type (ntypes + 1 rows of tp_n): hertz's or hooke's props
     char *type_has;     ///< per type: its row is set
     int tp_n, ntype_props;
@@ -310,6 +312,15 @@ int wall_blocks(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
                 const int *list, int n, double dt, int setup, rs_error *err);
 int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
                     const int *list, int n, double dt, rs_error *err);
+
+/* wall_force_line.c: the line path's pass for a force law's model per contact */
+/// The most state variables a contact of the force pass keeps (in the run's copy).
+#define RS_FORCE_LINE_STATEV 16
+int wall_force_line_takes(const rs_wall *w);
+int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp, double dt,
+                        const rs_particle_block *p, const rs_contacts *c,
+                        const double origin[3], const rs_load_rows *rows, rs_wall_load *wl,
+                        rs_error *err);
 int wall_block_props(const rs_wall *w, int t, const double **props, int *nprops);
 int wall_fused_props(const rs_wall *w, int t, const double **props);
 void wall_add_load(rs_wall *w, const rs_wall_load *wl, int setup);

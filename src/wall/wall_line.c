@@ -1,13 +1,14 @@
 /* The wall's line path: the step's candidates on a revolved LINE (a cylinder's mantle, a
  * cone), or on a MESH whose faces have clear zones, with a law whose fused kernel takes
- * them, in runs of spheres of one type: the spheres whose directory is usual
- * (rs_wall.usual: one contact, in slot 0) gathered from the engine's arrays, their face
- * contacts computed (on the LINE, rs_line_revolution_faces; on the MESH,
- * rs_mesh_held_faces, from the face each holds, where it lies in that face's clear zone)
- * and those that still hold just that contact passed to the kernel (rs_track_fused_usual),
- * so that no block-wide column is written, no directory row read and no candidate list
- * walked; the other spheres go through wall_blocks afterwards, but those whose distance
- * bound keeps them away. */
+ * them or a force law with a model per contact, in runs of spheres of one type: the
+ * spheres whose directory is usual (rs_wall.usual: one contact, in slot 0) gathered from
+ * the engine's arrays, their face contacts computed (on the LINE,
+ * rs_line_revolution_faces; on the MESH, rs_mesh_held_faces, from the face each holds,
+ * where it lies in that face's clear zone) and those that still hold just that contact
+ * passed to the kernel (rs_track_fused_usual) or to the force law's model contact by
+ * contact (wall_force_line.c), so that no block-wide column is written, no directory row
+ * read and no candidate list walked; the other spheres go through wall_blocks afterwards,
+ * but those whose distance bound keeps them away. */
 #include "wall_impl.h"
 
 #include "faceted/mesh_held.h"
@@ -26,7 +27,13 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     const int *const type = wall_material_props(w) ? b->type : NULL;
     int run_t = type ? type[idx[0]] : 1;
     const double *props = NULL;
-    int run_ok = wall_fused_props(w, run_t, &props);
+    /* a force law's model takes any run (wall_force_line.c); a fused kernel the runs
+     * whose type's properties it takes */
+    const int force = w->line_force;
+    /* the particles' velocities and ids: what a fused kernel's tracker reads, and the
+     * force pass's for the per-particle rows' slip (wall_force_line.c) */
+    const int kin = !force || rows->peratom;
+    int run_ok = force || wall_fused_props(w, run_t, &props);
     const double *x = b->x, *v = b->v, *om = b->omega;
     const double *radius = b->radius, *rmass = b->mass;
     const int *tag = b->id;
@@ -44,8 +51,9 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     double *ph[M];
     int pid[M], row[M], face[M], held[M];
     /* the frames, distances and features: what the kernel reads (no master points,
-     * curvatures or shares: rs_line_revolution_faces leaves them out) */
-    double cn[3][M], ct1[3][M], ct2[3][M], cd[M];
+     * curvatures or shares: rs_line_revolution_faces leaves them out); for a force law's
+     * model also the master points and curvatures (and shares, which the faces give) */
+    double cn[3][M], ct1[3][M], ct2[3][M], cd[M], cxm[3][M], ck[2][M], csh[M];
     int cpt[M], cft[M];
     rs_contacts c;
     memset(&c, 0, sizeof c);
@@ -53,6 +61,11 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     for (int d = 0; d < 3; d++)
         c.nrm[d] = cn[d], c.t1[d] = ct1[d], c.t2[d] = ct2[d];
     c.dist = cd, c.point = cpt, c.feature = cft;
+    if (force) {
+        for (int d = 0; d < 3; d++)
+            c.xm[d] = cxm[d];
+        c.curv[0] = ck[0], c.curv[1] = ck[1], c.share = csh;
+    }
     /* the rest, in the active list, which the line path leaves unused (its capacity is
      * the candidates'): from the front those that were not usual, in the candidates'
      * order; from the back those that were but whose face contact the run could not give
@@ -79,7 +92,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
                     if (m > 0)
                         break;
                     run_t = type[i];
-                    run_ok = wall_fused_props(w, run_t, &props);
+                    run_ok = force || wall_fused_props(w, run_t, &props);
                 }
                 if (run_ok)
                     ix[m++] = i;
@@ -93,22 +106,28 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
             continue;
         for (int j = 0; j < m; j++) {
             const int i = ix[j];
-            const double *xi = x + 3 * (size_t)i, *vi = v + 3 * (size_t)i;
+            const double *xi = x + 3 * (size_t)i;
             px[j] = xi[0], py[j] = xi[1], pz[j] = xi[2];
-            pvx[j] = vi[0], pvy[j] = vi[1], pvz[j] = vi[2];
             pr[j] = radius[i], pm[j] = rmass[i];
-            pid[j] = tag ? tag[i] : i + 1;
             ph[j] = w->hist + (size_t)i * ss;
             row[j] = i;
         }
-        if (om)
+        if (kin) {
             for (int j = 0; j < m; j++) {
-                const double *wi = om + 3 * (size_t)ix[j];
-                pwx[j] = wi[0], pwy[j] = wi[1], pwz[j] = wi[2];
+                const int i = ix[j];
+                const double *vi = v + 3 * (size_t)i;
+                pvx[j] = vi[0], pvy[j] = vi[1], pvz[j] = vi[2];
+                pid[j] = tag ? tag[i] : i + 1;
             }
-        else
-            for (int j = 0; j < m; j++)
-                pwx[j] = pwy[j] = pwz[j] = 0.0;
+            if (om)
+                for (int j = 0; j < m; j++) {
+                    const double *wi = om + 3 * (size_t)ix[j];
+                    pwx[j] = wi[0], pwy[j] = wi[1], pwz[j] = wi[2];
+                }
+            else
+                for (int j = 0; j < m; j++)
+                    pwx[j] = pwy[j] = pwz[j] = 0.0;
+        }
         if (w->line_mesh) {
             /* the face each holds; the depth limit of any block's query (wall_block.c) */
             double rmax = w->rglob;
@@ -138,13 +157,21 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
             }
             if (nu != j) {
                 px[nu] = px[j], py[nu] = py[j], pz[nu] = pz[j];
-                pvx[nu] = pvx[j], pvy[nu] = pvy[j], pvz[nu] = pvz[j];
-                pwx[nu] = pwx[j], pwy[nu] = pwy[j], pwz[nu] = pwz[j];
-                pr[nu] = pr[j], pm[nu] = pm[j], pid[nu] = pid[j];
+                if (kin) {
+                    pvx[nu] = pvx[j], pvy[nu] = pvy[j], pvz[nu] = pvz[j];
+                    pwx[nu] = pwx[j], pwy[nu] = pwy[j], pwz[nu] = pwz[j];
+                    pid[nu] = pid[j];
+                }
+                pr[nu] = pr[j], pm[nu] = pm[j];
                 ph[nu] = ph[j], row[nu] = row[j];
                 for (int d = 0; d < 3; d++)
                     cn[d][nu] = cn[d][j], ct1[d][nu] = ct1[d][j], ct2[d][nu] = ct2[d][j];
                 cd[nu] = cd[j], cft[nu] = cft[j];
+                if (force) {
+                    for (int d = 0; d < 3; d++)
+                        cxm[d][nu] = cxm[d][j];
+                    ck[0][nu] = ck[0][j], ck[1][nu] = ck[1][j], csh[nu] = csh[j];
+                }
             }
             /* the directory entry the kernel reads: the one the row holds */
             live[nu] = RS_DIR_LIVE(cft[nu]);
@@ -167,8 +194,10 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
         rs_load_rows lr = wall_load_rows(w, rows, row, 0);
         lr.out6 = rows->peratom;
         rs_wall_load wl;
-        const int rc = rs_track_fused_usual(&w->tracker, w->law, mp, dt, &p, &c, &w->tout,
-                                            props, origin, &lr, &wl, err);
+        const int rc =
+            force ? wall_force_line_run(w, b, mp, dt, &p, &c, origin, &lr, &wl, err)
+                  : rs_track_fused_usual(&w->tracker, w->law, mp, dt, &p, &c, &w->tout,
+                                         props, origin, &lr, &wl, err);
         if (rc)
             return rc;
         wall_add_load(w, &wl, 0);

@@ -74,3 +74,44 @@ def exact_frames(fa, fb):
                 if aa[i][c] != ab[i][c]:
                     return (sa, i, c, aa[i][c], ab[i][c])
     return None
+
+
+ECOLS = ("id x y z vx vy vz angmomx angmomy angmomz fx fy fz tqx tqy tqz "
+         "c_quat[1] c_quat[2] c_quat[3] c_quat[4]")
+
+
+def ellipsoid_header(box, dt, ntypes=2, boundary="f f f", pre=""):
+    """A deck head for LAMMPS's ellipsoids (atom_style ellipsoid: half-axes, quaternion,
+    angular momentum, torque), SI units, no pair forces; compute quat gives the
+    quaternions to dumps (ECOLS)."""
+    return header(box, dt, ntypes, boundary, pre=pre).replace(
+        "atom_style sphere", "atom_style ellipsoid") + \
+        "compute quat all property/atom quatw quati quatj quatk\n"
+
+
+def ellipsoid(atom_id, x, half, rho, axis=(0, 0, 1), angle=0.0, v=(0, 0, 0),
+              angmom=(0, 0, 0), atype=1, hybrid=False):
+    """create_atoms + set lines for one ellipsoid of half-axes half (LAMMPS's set shape
+    takes diameters), turned by angle degrees about axis. hybrid: atom_style hybrid
+    sphere ellipsoid, where the ellipsoid's sphere diameter is set to 0 first (set density
+    takes a radius > 0 before a shape)."""
+    return ("create_atoms %d single %.17g %.17g %.17g units box\n"
+            "set atom %d shape %.17g %.17g %.17g\n%s"
+            "set atom %d density %.17g\n"
+            "set atom %d quat %.17g %.17g %.17g %.17g\n"
+            "set atom %d vx %.17g vy %.17g vz %.17g angmom %.17g %.17g %.17g\n"
+            % (atype, x[0], x[1], x[2], atom_id, 2 * half[0], 2 * half[1], 2 * half[2],
+               "set atom %d diameter 0\n" % atom_id if hybrid else "",
+               atom_id, rho, atom_id, axis[0], axis[1], axis[2], angle,
+               atom_id, v[0], v[1], v[2], angmom[0], angmom[1], angmom[2]))
+
+
+def check_ranks_sums(s, t1, t2, cols):
+    """The wall's sums of a 2-rank run (table rows t2) against the 1-rank run's (t1) to
+    1e-12 relative, each column (index, name) of cols, below 1e-3 of its largest value
+    counting as zero."""
+    for col, what in cols:
+        floor = 1e-3 * max(abs(r[col]) for r in t1)
+        d = max(rel_diff(a[col], b[col], floor) for a, b in zip(t1, t2))
+        s.ck.check("the wall's %s, 2 ranks = 1 rank to 1e-12" % what, d <= 1e-12,
+                   "worst rel %.3g" % d)

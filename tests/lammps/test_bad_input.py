@@ -6,7 +6,10 @@ Each line runs in a one-sphere deck of lmp-rigidsurf; the run must end with exit
 (`Fix wall/rigid w`) and what was wrong: the keyword and what it expects, or the file.
 Errors that LAMMPS's own fix wall/gran parser finds in the model words of law lammps keep
 LAMMPS's message; LAMMPS then names the command on its `Last command:` line. Two of the
-lines also run on 2 ranks (error->all on every rank: still one message).
+lines also run on 2 ranks (error->all on every rank: still one message). Particles the fix
+does not take: atom_style body (rounded polyhedra are not supported), an ellipsoid style
+whose particle was given no shape, law lammps (LAMMPS's sphere-wall models) on
+ellipsoids, and an ellipsoid that appears during a run that began without one.
 """
 import lmplib as M
 
@@ -74,6 +77,49 @@ def body(s):
         rc, out = s.run("atomic_" + name.split()[1], deck(line, "atomic"), expect_ok=False)
         M.L.check_rejected(s.ck, name + " in atom_style atomic", line,
                            ["Fix wall/rigid w", "atom_style sphere"], rc, out)
+    particles(s)
+
+
+def particle_deck(style, atoms, line, integrator):
+    d = M.header((-0.1, 0.1, -0.1, 0.1, -0.05, 0.2), 1e-5).replace(
+        "atom_style sphere", "atom_style " + style)
+    return d + atoms + line + "\nfix integr all %s\nrun 10\n" % integrator
+
+
+def particles(s):
+    hertz = BASE + " law hertz" + MATS
+    one = "create_atoms 1 single 0 0 0.02 units box\n"
+    cases = [
+        ("atom_style body", "body nparticle 1 4", one + "set atom 1 mass 1.0\n", hertz,
+         "nve", ["Fix wall/rigid w", "atom_style body", "not supported",
+                 "atom_style ellipsoid"]),
+        ("an ellipsoid style without a shape", "ellipsoid", one + "set atom 1 mass 1.0\n",
+         hertz, "nve", ["Fix wall/rigid w", "particle 1 of group all",
+                        "neither an ellipsoid nor a sphere", "set ... shape"]),
+        ("law lammps on ellipsoids", "hybrid sphere ellipsoid",
+         M.ellipsoid(1, (0, 0, 0.02), (0.004, 0.005, 0.006), 2500.0, hybrid=True),
+         BASE + HOOKE,
+         "nve/asphere", ["Fix wall/rigid w", "law lammps", "ellipsoids take rigidsurf's laws"]),
+    ]
+    for name, style, atoms, line, integrator, want in cases:
+        for np in (1, 2):
+            rc, out = s.run("particles_%s_%d" % (name.split()[-1], np),
+                            particle_deck(style, atoms, line, integrator), np=np,
+                            expect_ok=False)
+            M.L.check_rejected(s.ck, "%s (%d rank%s)" % (name, np, "s" if np > 1 else ""),
+                               line, want, rc, out)
+    # a sphere given a shape between the parts of a run (pre no: no init between them) is
+    # an ellipsoid the run did not begin with; found on its rank (error->one, MPI_Abort)
+    atoms = "create_atoms 1 single 0 0 0.02 units box\nset atom 1 diameter 0.01 density 2500\n"
+    deck = particle_deck("hybrid sphere ellipsoid", atoms, hertz, "nve/sphere").replace(
+        "run 10", 'run 20 pre no every 10 "set atom 1 shape 0.01 0.01 0.01"')
+    rc, out = s.run("particles_midrun", deck, expect_ok=False)
+    errs = M.L.error_lines(out)
+    s.ck.check("an ellipsoid appearing during a run: one error naming the fix and the particle",
+               rc == 1 and len(set(errs)) == 1 and "Segmentation" not in out
+               and all(w in errs[0] for w in ("Fix wall/rigid w", "particle 1 of group all",
+                                              "became an ellipsoid during a run")),
+               errs[0] if errs else "exit %s, no error" % rc)
 
 
 if __name__ == "__main__":

@@ -11,6 +11,9 @@ rs_law_find("hertz"), so the plugin must export rigidsurf's functions) onto an S
 inside it (law lammps hertz/history), with store_force and peratom. Every dumped value
 (positions, velocities, spins, forces, torques, the stored force, the per-atom array) at
 every 50 steps equals lmp-rigidsurf's bit for bit, and so does the wall's global vector.
+A second deck drops ellipsoids (atom_style ellipsoid, fix nve/asphere) of two shapes into
+the turning drum (law hooke with friction): the plugin takes LAMMPS's ellipsoids as
+lmp-rigidsurf does, every dumped value bit for bit.
 """
 import math
 import os
@@ -18,7 +21,7 @@ import subprocess
 
 import lmplib as M
 
-R, RHO, DT, STEPS = 0.002, 2500.0, 1.0e-5, 8000
+R, RHO, DT, STEPS, ESTEPS = 0.002, 2500.0, 1.0e-5, 8000, 8000
 HERTZ = "props 5e7 0.3 5e7 0.3 0.3 0.5 0"
 
 
@@ -48,6 +51,31 @@ def deck(tag):
 HERTZ_LIB = "HERTZ_LIB"
 
 
+def ellipsoids(tag):
+    d = M.ellipsoid_header((-0.055, 0.055, -0.055, 0.055, -0.012, 0.012), DT)
+    for k in range(6):
+        half = (0.002, 0.003, 0.005) if k % 2 else (0.003, 0.003, 0.004)
+        d += M.ellipsoid(k + 1, (-0.02 + 0.008 * k, -0.035, 0.0), half, RHO,
+                         (math.cos(k), math.sin(k), 0.5), 15.0 * k, (0.1 * math.sin(k), 0, 0))
+    d += "fix grav all gravity 9.81 vector 0 -1 0\n"
+    d += ("fix drum all wall/rigid surface drum.inp law hooke props 1e4 1e4 0.3 0.3 0.5 "
+          "rotate origin 0 0 0 axis 0 0 1 omega 3\n")
+    d += "fix integr all nve/asphere\n"
+    d += M.dump_lines("d", 50, tag + ".dump", cols=M.ECOLS)
+    d += "run %d\n" % ESTEPS
+    return d
+
+
+def host_run(s, tag, deck_text):
+    """The deck run by plugin_host with the plugin loaded: (exit status, output)."""
+    inp = s.write(tag + ".in", deck_text)
+    env = dict(os.environ)
+    env.update(M.L.MPI_ENV)
+    p = subprocess.run([s.args.host, s.args.plugin, "-in", inp, "-log", tag + ".log",
+                        "-echo", "none"], cwd=s.dir, capture_output=True, text=True, env=env)
+    return p.returncode, p.stdout + p.stderr
+
+
 def body(s):
     global HERTZ_LIB
     HERTZ_LIB = s.args.hertz_all
@@ -56,13 +84,8 @@ def body(s):
     s.write("baffle.stl", M.L.stl_text([((-h, -0.02, -h), (h, -0.02, -h), (h, -0.02, h)),
                                         ((-h, -0.02, -h), (h, -0.02, h), (-h, -0.02, h))]))
     s.run("rigid", deck("rigid"))
-    inp = s.write("host.in", deck("host"))
-    env = dict(os.environ)
-    env.update(M.L.MPI_ENV)
-    p = subprocess.run([s.args.host, s.args.plugin, "-in", inp, "-log", "host.log", "-echo",
-                        "none"], cwd=s.dir, capture_output=True, text=True, env=env)
-    out = p.stdout + p.stderr
-    s.ck.check("the plugin's run ends without error", p.returncode == 0,
+    rc, out = host_run(s, "host", deck("host"))
+    s.ck.check("the plugin's run ends without error", rc == 0,
                why="\n".join(out.splitlines()[-8:]))
     s.ck.check("lammpsplugin_init registers wall/rigid and wall/rigid/force for 29 Sep 2021",
                "fix style wall/rigid from a plugin for LAMMPS 29 Sep 2021" in out
@@ -76,6 +99,17 @@ def body(s):
                diff is None and len(fa) == STEPS // 50 + 1, "first difference: %s" % (diff,))
     ta, tb = M.read_table(s.path("rigid.tot")), M.read_table(s.path("host.tot"))
     s.ck.check("the walls' global vectors, bit for bit", ta == tb and len(ta) > STEPS // 50)
+
+    s.run("ell_rigid", ellipsoids("ell_rigid"))
+    rc, out = host_run(s, "ell_host", ellipsoids("ell_host"))
+    s.ck.check("the plugin's run of ellipsoids ends without error", rc == 0,
+               why="\n".join(out.splitlines()[-8:]))
+    fa, fb = M.read_dump(s.path("ell_rigid.dump")), M.read_dump(s.path("ell_host.dump"))
+    hit = sum(1 for i in fa[-1][1] if fa[-1][1][i]["y"] < -0.04)
+    diff = M.exact_frames(fa, fb)
+    s.ck.check("ellipsoids: the plugin's run = lmp-rigidsurf's, bit for bit",
+               diff is None and len(fa) == ESTEPS // 50 + 1 and hit >= 3,
+               "%d on the drum's floor; first difference: %s" % (hit, diff))
 
 
 if __name__ == "__main__":

@@ -17,7 +17,10 @@ global sums agree to rounding (1e-12 relative: the line path adds them up per ru
 spheres, the staged calls per block). So they are for the bouncing bed in the
 4000-triangle STL cylinder of section 1g, both sides acting and the inward side alone,
 where the fused law takes the spheres held on a face's clear zone per run of spheres
-(rs_mesh_held_faces) and the rest through the candidate lists.
+(rs_mesh_held_faces) and the rest through the candidate lists. And so they are for the
+bouncing bed on the cylinder and in the STL cylinder with LIGGGHTS's own Hertz model
+(`law liggghts model hertz tangential history`), which the wall calls per contact on the
+line path (rs_law.force_one) and per block in the staged calls.
 """
 import subprocess
 import os
@@ -36,7 +39,8 @@ def deck(s, kind, fused):
     data, height = B.write_bed(s.dir, N, None, "mono_%s.data" % kind)
     bouncing = kind.startswith("bouncing")
     steps = 400 if not bouncing else 600
-    variant = {"bouncing_mesh": "ours_mesh", "bouncing_mesh1": "ours_mesh1"}.get(kind, "ours")
+    variant = {"bouncing_mesh": "ours_mesh", "bouncing_mesh1": "ours_mesh1",
+               "bouncing_mesh_liggghts": "ours_mesh"}.get(kind, "ours")
     if variant != "ours" and not os.path.exists(s.path("cyl.stl")):
         subprocess.run([sys.executable, os.path.join(os.path.dirname(B.__file__), "make_stl.py"),
                         s.path("cyl.stl"), repr(B.RC), "-0.002", repr(height + 0.002),
@@ -77,7 +81,12 @@ def deck(s, kind, fused):
                       "set group all vx v_kx vy v_ky\nset type 1 type/fraction 3 0.5 4711\n"
                       "group t3 type 3\nvariable n3 equal count(t3)\n"
                       "print \"spheres of type 3: ${n3}\"\n")
-    fix = "law hertz type 2 peratom yes%s\n" % ("" if fused else " fused no")
+    law = "hertz"
+    if kind.endswith("_liggghts"):
+        # LIGGGHTS's own model through law liggghts: the wall hands it each contact of a
+        # sphere that holds one on the line path
+        law = "liggghts model hertz tangential history"
+    fix = "law %s type 2 peratom yes%s\n" % (law, "" if fused else " fused no")
     d = d.replace("law hertz type 2\n", fix)
     tag = "%s_%s" % (kind, "fused" if fused else "staged")
     out = ("thermo_style custom step f_w[1] f_w[2] f_w[7] f_w[8] f_w[11]\n"
@@ -89,7 +98,8 @@ def deck(s, kind, fused):
 
 def body(s):
     for kind in ("static", "flowing", "bouncing", "bouncing_sorted", "bouncing_types",
-                 "bouncing_mesh", "bouncing_mesh1"):
+                 "bouncing_mesh", "bouncing_mesh1", "bouncing_liggghts",
+                 "bouncing_mesh_liggghts"):
         texts, outs = [], []
         for fused in (True, False):
             d, tag, steps = deck(s, kind, fused)
