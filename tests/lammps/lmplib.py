@@ -113,11 +113,13 @@ BCOLS = ("id x y z vx vy vz angmomx angmomy angmomz fx fy fz tqx tqy tqz "
          "c_quat[1] c_quat[2] c_quat[3] c_quat[4]")
 
 
-def body_header(data, dt, nmax=8, boundary="f f f", pre=""):
+def body_header(data, dt, nmax=8, boundary="f f f", pre="", pair=True):
     """A deck head for LAMMPS's rounded polyhedra read from the data file data (SI units,
-    at most nmax vertices a body), with pair body/rounded/polyhedron at zero stiffness (fix
-    wall/body/polyhedron needs it; the bodies do not touch each other) and compute quat
-    for the dumps (BCOLS)."""
+    nmax: body_nmax), with pair body/rounded/polyhedron at zero stiffness (fix
+    wall/body/polyhedron needs it; one body alone), else pair none (bodies that do not
+    touch each other), and compute quat for the dumps (BCOLS)."""
+    pair = ("pair_style body/rounded/polyhedron 0 0 0 0 0.001\npair_coeff * * 0 0" if pair
+            else "pair_style none")
     return f"""atom_style body rounded/polyhedron 1 {nmax}
 atom_modify map array
 boundary {boundary}
@@ -125,12 +127,19 @@ units si
 {pre}read_data {data}
 neighbor 0.002 bin
 neigh_modify delay 0
-pair_style body/rounded/polyhedron 0 0 0 0 0.001
-pair_coeff * * 0 0
+{pair}
 comm_modify vel yes
 timestep {dt!r}
 compute quat all property/atom quatw quati quatj quatk
 """
+
+
+def body_nmax(bodies):
+    """The nmax of atom_style body rounded/polyhedron 1 nmax that holds bodies: LAMMPS sizes
+    a body's storage as 9 nmax + 2 doubles (3 a vertex, 2 an edge, 4 a face, each up to
+    nmax), so a body of more edges or faces than vertices needs a larger nmax."""
+    return max(max(len(b["V"]), -(-(3 * len(b["V"]) + 2 * len(b["E"]) + 4 * len(b["F"])) // 9))
+               for b in bodies)
 
 
 def rotate(v, axis, angle):
