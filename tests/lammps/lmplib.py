@@ -206,3 +206,14 @@ def body_data(bodies, box, ntypes=2):
             line += (" " if line else "") + w
         s += line + "\n"
     return s
+
+
+def check_ranks_sums(s, t1, t2, cols):
+    """The wall's sums of a 2-rank run (table rows t2) against the 1-rank run's (t1) to
+    1e-12 relative, each column (index, name) of cols, below 1e-3 of its largest value
+    counting as zero."""
+    for col, what in cols:
+        floor = 1e-3 * max(abs(r[col]) for r in t1)
+        d = max(rel_diff(a[col], b[col], floor) for a, b in zip(t1, t2))
+        s.ck.check("the wall's %s, 2 ranks = 1 rank to 1e-12" % what, d <= 1e-12,
+                   "worst rel %.3g" % d)

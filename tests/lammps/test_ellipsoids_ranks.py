@@ -92,11 +92,7 @@ def body(s):
     diff = M.exact_frames(f1, f2)
     s.ck.check("2 ranks = 1 rank, every dumped value bit for bit", diff is None,
                "first difference: %s" % (diff,))
-    for col, what in ((0, "Fx"), (1, "Fz")):
-        floor = 1e-3 * max(abs(r[col]) for r in t1)
-        d = max(M.rel_diff(a[col], b[col], floor) for a, b in zip(t1, t2))
-        s.ck.check("the wall's %s, 2 ranks = 1 rank to 1e-12" % what, d <= 1e-12,
-                   "worst rel %.3g" % d)
+    M.check_ranks_sums(s, t1, t2, ((0, "Fx"), (1, "Fz")))
 
     fr = M.read_dump(s.path("second.dump"))
     cont = [(st, f) for st, f in f1 if st >= STEPS // 2]

@@ -21,26 +21,13 @@
 #include "rigidsurf/driver.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
+#include "rs_test_driver.h"
 #include "rs_test_geom.h"
-
-/* the plane z = 0, normal +z (a CYLINDER whose profile is one LINE) */
-static const char *PLANE = "*SURFACE, TYPE=CYLINDER, NAME=floor\n"
-                           "0, 0, 0, 1, 0, 0\n0, -1, 0\nSTART, -100, 0\nLINE, 100, 0\n";
 
 /* One driver on the plane with n nodes and hooke (kn, kt, zeta_n, zeta_t, mu). */
 static int setup(rs_driver *d, rs_surface *s, int n, const double hooke[5], double dt)
 {
-    rs_error e;
-    rs_error_clear(&e);
-    if (rs_surface_parse(PLANE, "plane", NULL, s, &e) != RS_OK ||
-        rs_driver_init(d, s, n, &e) != RS_OK ||
-        rs_driver_set_law(d, rs_law_find("hooke"), hooke, 5, 2, &e) != RS_OK) {
-        fprintf(stderr, "setup: %s\n", e.msg);
-        return 0;
-    }
-    d->dt = dt;
-    d->tracking = 1e-3;
-    return 1;
+    return rs_test_driver_on_plane(d, s, n, hooke, dt);
 }
 
 static int step(rs_driver *d)

@@ -18,25 +18,14 @@
 #include "rigidsurf/driver.h"
 #include "rigidsurf/vec.h"
 #include "rs_test.h"
+#include "rs_test_driver.h"
 
-static const char *PLANE = "*SURFACE, TYPE=CYLINDER, NAME=floor\n"
-                           "0, 0, 0, 1, 0, 0\n0, -1, 0\nSTART, -100, 0\nLINE, 100, 0\n";
 static const double G = 9.81, KN = 1e5;
 
 static int setup(rs_driver *d, rs_surface *s, double dt)
 {
     const double law[5] = {KN, KN, 0.7, 0.7, 0.5};
-    rs_error e;
-    rs_error_clear(&e);
-    if (rs_surface_parse(PLANE, "plane", NULL, s, &e) != RS_OK ||
-        rs_driver_init(d, s, 1, &e) != RS_OK ||
-        rs_driver_set_law(d, rs_law_find("hooke"), law, 5, 2, &e) != RS_OK) {
-        fprintf(stderr, "setup: %s\n", e.msg);
-        return 0;
-    }
-    d->dt = dt;
-    d->tracking = 1e-3;
-    return 1;
+    return rs_test_driver_on_plane(d, s, 1, law, dt);
 }
 
 /* Node 0's kinetic and potential energy and the contacts' elastic energy. */

@@ -241,6 +241,24 @@ static void lockstep(sim *a, sim *b, long nsteps, long *contacts)
     ENSURE(same_bits(a->v, b->v, sizeof a->v));
 }
 
+/* Runs a and b (made: a on the line path, b staged) in lockstep for nsteps, frees their
+ * walls, and checks that they touched more than min_contacts times over the run and that
+ * the line path took most of a's contacts and none of b's. */
+static void check_pair(sim *a, sim *b, const char *name, long nsteps, long min_contacts)
+{
+    long contacts = 0;
+    lockstep(a, b, nsteps, &contacts);
+    const int ok = !rs_test_current_failed;
+    printf("%s: %ld contacts over the run; the model called %ld times on the line path of "
+           "%ld (staged run: %ld of %ld)\n",
+           name, contacts, a->direct, a->calls, b->direct, b->calls);
+    rs_wall_free(a->w);
+    rs_wall_free(b->w);
+    ENSURE(ok);
+    ENSURE(contacts > min_contacts);
+    ENSURE(a->direct > a->calls / 2 && b->direct == 0 && b->calls == a->calls);
+}
+
 /* A sphere per place of a grid over the drum's lower half, alternating radii 2 and 1.5
  * mm and types 1 and 2, each at rest 0.1 mm into the mantle or above it. */
 static void drum_particles(sim *s)
@@ -278,17 +296,7 @@ static void test_drum_line_path_and_staged_bit_for_bit(void)
     const int n = (int)(sizeof DRUM / sizeof DRUM[0]);
     ENSURE(make(&a, DRUM, n, 0, &e) == RS_OK);
     ENSURE(make(&b, DRUM, n, 1, &e) == RS_OK);
-    long contacts = 0;
-    lockstep(&a, &b, 3000, &contacts);
-    const int ok = !rs_test_current_failed;
-    printf("drum: %ld contacts over the run; the model called %ld times on the line path "
-           "of %ld (staged run: %ld of %ld)\n",
-           contacts, a.direct, a.calls, b.direct, b.calls);
-    rs_wall_free(a.w);
-    rs_wall_free(b.w);
-    ENSURE(ok);
-    ENSURE(contacts > 3000 * 40);
-    ENSURE(a.direct > a.calls / 2 && b.direct == 0 && b.calls == a.calls);
+    check_pair(&a, &b, "drum", 3000, 3000 * 40);
 }
 
 /* A square plate z = 0 of side 0.1 m, two triangles along its diagonal, into path. */
@@ -344,17 +352,7 @@ static void test_mesh_line_path_and_staged_bit_for_bit(void)
     const int ma = make(&a, words, 9, 0, &e), mb = make(&b, words, 9, 1, &e);
     unlink(path);
     ENSURE(ma == RS_OK && mb == RS_OK);
-    long contacts = 0;
-    lockstep(&a, &b, 1500, &contacts);
-    const int ok = !rs_test_current_failed;
-    printf("plate: %ld contacts over the run; the model called %ld times on the line path "
-           "of %ld (staged run: %ld of %ld)\n",
-           contacts, a.direct, a.calls, b.direct, b.calls);
-    rs_wall_free(a.w);
-    rs_wall_free(b.w);
-    ENSURE(ok);
-    ENSURE(contacts > 1500 * NP / 2);
-    ENSURE(a.direct > a.calls / 2 && b.direct == 0 && b.calls == a.calls);
+    check_pair(&a, &b, "plate", 1500, 1500 * NP / 2);
 }
 
 /* A model that returns NaN for one particle: the step fails with the law's name, the
