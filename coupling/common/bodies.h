@@ -54,7 +54,8 @@ class RsBodies
     /// displacements from its centre of mass x), nf faces of face_size vertex indices each
     /// (a negative index ends a shorter face), rounding radius rounding >= 0, turned by the
     /// unit quaternion q, of mass m, principal moments I and world-frame angular momentum
-    /// L. The body must be convex: every vertex on the boundary of the vertices' hull, every
+    /// L. The body must be convex: every vertex on the boundary of the vertices' hull (one
+    /// the hull's making leaves outside it is refused as well), every
     /// face's vertices in one plane with the whole body on one side of it, its centre of
     /// mass inside the hull (RS_ERR_GEOMETRY naming what fails, to 1e-9 of its size);
     /// RS_ERR_ARG for fewer than 4 vertices, a bad index or rounding.

@@ -43,7 +43,8 @@ double beyond_hull(const rs_shape &s, const double p[3])
 
 } // namespace
 
-/* Convex: every vertex on the hull's boundary (none inside it), each face's vertices in one
+/* Convex: every vertex on the hull's boundary (none inside it, none left outside it by the
+ * hull's making), each face's vertices in one
  * plane (Newell's normal of the face) with every vertex on one side of it, the centre of
  * mass (the origin of verts) inside the hull. s is the hull in its own frame (verts less
  * s.shift). */
@@ -58,6 +59,12 @@ int RsBodies::check_convex(const rs_shape &s, const double *verts, int nv,
         const double p[3] = {verts[3 * i] - s.shift[0], verts[3 * i + 1] - s.shift[1],
                              verts[3 * i + 2] - s.shift[2]};
         const double out = beyond_hull(s, p);
+        if (out > tol)
+            return rs_error_set(err, RS_ERR_GEOMETRY,
+                                "vertex %d lies %g outside the convex hull made of the "
+                                "vertices (%d of %d kept as its corners): the body cannot "
+                                "be made exactly (expected every vertex on the hull)",
+                                i, out, s.nv, nv);
         if (out < -tol)
             return rs_error_set(err, RS_ERR_GEOMETRY,
                                 "vertex %d lies inside the convex hull of the others, %g "
