@@ -188,8 +188,8 @@ void FixWallRigid::init()
                             : nullptr;
     if (atom->body_flag &&
         (!bvec_ || std::strcmp(bvec_->bptr->style, "rounded/polyhedron") != 0))
-        fail("atom_style body takes rounded/polyhedron bodies only (LAMMPS's " +
-             std::string(bvec_ ? bvec_->bptr->style : "hybrid") + " bodies are not convex)");
+        fail("atom_style body: the fix takes rounded/polyhedron bodies only, not " +
+             std::string(bvec_ ? bvec_->bptr->style : "those of this hybrid style"));
     if ((avec_ || bvec_) && (!atom->rmass_flag || !atom->angmom_flag || !atom->torque_flag))
         fail("ellipsoids and bodies need per-atom mass, angmom and torque (atom_style "
              "ellipsoid, body), as fix nve/asphere and nve/body read them");

@@ -93,7 +93,7 @@ def particles(s):
     cases = [
         ("atom_style body", "body nparticle 1 4", one + "set atom 1 mass 1.0\n", hertz,
          "nve", ["Fix wall/rigid w", "atom_style body", "rounded/polyhedron bodies only",
-                 "nparticle"]),
+                 "not nparticle"]),
         ("an ellipsoid style without a shape", "ellipsoid", one + "set atom 1 mass 1.0\n",
          hertz, "nve", ["Fix wall/rigid w", "particle 1 of group all",
                         "neither a body, an ellipsoid nor a sphere", "set ... shape"]),
