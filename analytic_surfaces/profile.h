@@ -32,6 +32,11 @@
 const rs_surface_ops *rs_analytic_ops(rs_surface_kind kind);
 int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out,
                         rs_error *err);
+/// The body operation (analytic_body.c): rs_body_fixed_point, its iterates on the flat
+/// faces of CYLINDER and SEGMENTS in closed form.
+int rs_analytic_body(const rs_surface *s, const rs_pose *pose, const struct rs_body *b,
+                     int n, double gap_max, int lenient, struct rs_body_contacts *out,
+                     rs_error *err);
 int rs_analytic_triangulate(const rs_surface *s, double span, int nhoop, rs_trimesh *m,
                             rs_error *err);
 void rs_analytic_free(rs_surface *s);
@@ -234,6 +239,13 @@ size_t rs_pscratch_bytes(const rs_pcache *pc);
 /// distance filters: 1 when the segment owns the point (curves.c).
 int rs_pseg_curve(const rs_pcache *pc, const rs_pseg *q, double px, double py, rs_hit2 *h);
 
+/// Whether LINE segment k's face is among the contacts rs_pcache_hits gives point
+/// (px, py) for [dlo, dhi] (owned, within reach and range, not dropped by the Voronoi
+/// pass behind a one-sided face), without the walk over the other segments: 1 with its
+/// contact in *h, as rs_pcache_hits writes it; 0 when it is not; -1 when this does not
+/// tell (a curve, the compact form).
+int rs_pcache_face(const rs_pcache *pc, int k, double px, double py, double dlo, double dhi,
+                   rs_hit2 *h);
 /// Contacts of point (px, py) whose distance lies in [dlo, dhi] (dhi = gap_max + radius,
 /// dlo = dist_min), in profile order (vertex k before segment k). Returns the count;
 /// the hits are in sc->hits. -1: out of memory for a larger scratch.

@@ -51,8 +51,12 @@ int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_
     if (!s || !s->ops || !s->ops->body)
         return rs_error_set(err, RS_ERR_ARG,
                             "body contacts: no surface, or one whose kind takes no bodies");
+    rs_body checked;
+    int rc = rs_body_check(s, b, gap_max, &checked, err);
+    if (rc != RS_OK)
+        return rc;
     rs_body_contacts l = {0, cap, out, 1}; /* the caller's array while it has room */
-    int rc = s->ops->body(s, pose, b, 1, gap_max, 0, &l, err);
+    rc = s->ops->body(s, pose, &checked, 1, gap_max, 0, &l, err);
     if (rc == RS_OK && l.n > cap)
         rc = rs_error_set(err, RS_ERR_CAPACITY,
                           "body contacts: %d contacts with '%s', room for %d", l.n, s->name,

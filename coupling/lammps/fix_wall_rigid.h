@@ -12,6 +12,7 @@
 #include "fix.h"
 
 #include "bodies.h"
+#include "wall_atoms.h"
 #include "rigidsurf/wall.h"
 #include "wall_materials.h"
 
@@ -21,7 +22,7 @@
 namespace LAMMPS_NS
 {
 
-class FixWallRigid : public Fix
+class FixWallRigid : public RsWallAtoms<Fix>
 {
   public:
     FixWallRigid(class LAMMPS *, int, char **);
@@ -37,21 +38,6 @@ class FixWallRigid : public Fix
     void final_integrate() override;
     void post_run() override;
     void reset_dt() override;
-
-    double compute_vector(int) override;
-
-    void write_restart(FILE *) override;
-    void restart(char *) override;
-    void grow_arrays(int) override;
-    void copy_arrays(int, int, int) override;
-    void set_arrays(int) override;
-    int pack_exchange(int, double *) override;
-    int unpack_exchange(int, double *) override;
-    int pack_restart(int, double *) override;
-    void unpack_restart(int, int) override;
-    int size_restart(int) override;
-    int maxsize_restart() override;
-    double memory_usage() override;
 
     /* The host table's answers (rs_adapter_host). */
     void reduce(double *v, int n, int op);
@@ -70,17 +56,20 @@ class FixWallRigid : public Fix
     double lammps_reach();
 
   private:
-    [[noreturn]] void fail(const std::string &msg);
-    [[noreturn]] void fail_one(const std::string &msg);
+    [[noreturn]] void fail(const std::string &msg) override;
+    [[noreturn]] void fail_one(const std::string &msg) override;
+    /// maxexchange follows the slots an atom carries
+    void exchanged() override
+    {
+        exchange_size();
+    }
     rs_wall_block block(bool setup);
     rs_wall_rows rows();
     void exchange_size();
     void check_particles();
     void fill_bodies();
 
-    rs_wall *wall_;
     rs_wall_host host_;
-    const rs_wall_info *info_;
     WallMaterials materials_;
 
     /* atom_style ellipsoid and body rounded/polyhedron: their shapes and orientations, the
@@ -105,14 +94,6 @@ class FixWallRigid : public Fix
      * fixes that name it; the first of them in the fix list clears it each step) */
     std::string wallforce_id_;
     bool wallforce_clear_;
-
-    /* peratom yes: the per-atom array of 6 columns */
-    int nmax_;
-
-    /* the global vector, summed over the ranks once a step */
-    double out_[RS_WALL_NVEC];
-    bigint out_step_;
-    bool out_valid_;
 };
 
 } // namespace LAMMPS_NS

@@ -148,9 +148,8 @@ int FixWallRigid::engine_law(const char *const *words, int nwords, const rs_law 
 /* ---------------------------------------------------------------------------------- */
 
 FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg), wall_(NULL), info_(NULL), lig_(NULL), fix_temp_(NULL),
-      fix_heatflux_(NULL), wallforce_clear_(true), wallforce_(NULL), nmax_(0),
-      out_step_(-1), out_valid_(false)
+    : RsWallAtoms<Fix>(lmp, narg, arg), lig_(NULL), fix_temp_(NULL), fix_heatflux_(NULL),
+      wallforce_clear_(true), wallforce_(NULL)
 {
     std::memset(&lig_desc_, 0, sizeof lig_desc_);
     host_ = rs_adapter_host(this, comm->me, atom->ntypes, "liggghts");
@@ -234,6 +233,7 @@ void FixWallRigid::step_failed(const rs_error &err)
     if (lig_ && err.code == RS_ERR_NONFINITE && !lig_->failure().empty())
         fail_one(lig_->failure());
     fail_one(err.msg);
+    std::abort(); // not reached: fail_one ends the run
 }
 
 int FixWallRigid::setmask()
@@ -449,105 +449,4 @@ void FixWallRigid::final_integrate()
 void FixWallRigid::post_run()
 {
     rs_wall_end_run(wall_);
-}
-
-double FixWallRigid::compute_vector(int n)
-{
-    if (!out_valid_ || out_step_ != update->ntimestep) {
-        rs_wall_vector(wall_, out_);
-        out_valid_ = true;
-        out_step_ = update->ntimestep;
-    }
-    return (n >= 0 && n < RS_WALL_NVEC) ? out_[n] : 0.0;
-}
-
-/* ---------------------------------------------------------------------------------- */
-/* The wall's per-atom history through LIGGGHTS's atom callbacks and restart files.   */
-
-void FixWallRigid::write_restart(FILE *fp)
-{
-    rs_adapter_write_restart(wall_, fp, comm->me);
-}
-
-void FixWallRigid::restart(char *buf)
-{
-    rs_error err;
-    rs_error_clear(&err);
-    if (rs_wall_read_restart(wall_, reinterpret_cast<const double *>(buf), INT_MAX, &err) !=
-        RS_OK)
-        fail(err.msg);
-}
-
-void FixWallRigid::grow_arrays(int nmax)
-{
-    rs_error err;
-    rs_error_clear(&err);
-    if (rs_wall_grow(wall_, nmax, &err) != RS_OK)
-        fail_one(err.msg);
-    if (!info_->peratom || nmax <= nmax_)
-        return;
-    memory->grow(array_atom, nmax, 6, "wall/rigid:array_atom");
-    for (int i = nmax_; i < nmax; i++)
-        for (int c = 0; c < 6; c++)
-            array_atom[i][c] = 0.0;
-    nmax_ = nmax;
-}
-
-void FixWallRigid::copy_arrays(int i, int j, int)
-{
-    rs_wall_copy(wall_, i, j);
-    for (int c = 0; array_atom && c < 6; c++)
-        array_atom[j][c] = array_atom[i][c];
-}
-
-void FixWallRigid::set_arrays(int i)
-{
-    rs_wall_clear(wall_, i);
-    for (int c = 0; array_atom && c < 6; c++)
-        array_atom[i][c] = 0.0;
-}
-
-int FixWallRigid::pack_exchange(int i, double *buf)
-{
-    return rs_wall_pack(wall_, i, buf);
-}
-
-int FixWallRigid::unpack_exchange(int nlocal, double *buf)
-{
-    rs_error err;
-    rs_error_clear(&err);
-    const int n = rs_wall_unpack(wall_, nlocal, buf, &err);
-    if (n < 0)
-        fail_one(err.msg);
-    for (int c = 0; array_atom && c < 6; c++)
-        array_atom[nlocal][c] = 0.0;
-    return n;
-}
-
-int FixWallRigid::pack_restart(int i, double *buf)
-{
-    return rs_adapter_pack_restart(wall_, i, buf);
-}
-
-void FixWallRigid::unpack_restart(int nlocal, int nth)
-{
-    rs_error err;
-    rs_error_clear(&err);
-    if (rs_adapter_unpack_restart(wall_, nlocal, atom->extra[nlocal], nth, &err) != RS_OK)
-        fail_one(err.msg);
-}
-
-int FixWallRigid::size_restart(int)
-{
-    return rs_wall_pack_size(wall_) + 1;
-}
-
-int FixWallRigid::maxsize_restart()
-{
-    return rs_wall_pack_size(wall_) + 1;
-}
-
-double FixWallRigid::memory_usage()
-{
-    return rs_wall_memory(wall_) + (info_->peratom ? 6.0 * nmax_ * sizeof(double) : 0.0);
 }

@@ -16,6 +16,7 @@ FixStyle(wall / rigid, FixWallRigid)
 #include "fix.h"
 
 #include "rigidsurf/wall.h"
+#include "wall_atoms.h"
 
 #include <string>
 #include <vector>
@@ -23,7 +24,7 @@ FixStyle(wall / rigid, FixWallRigid)
 namespace LAMMPS_NS
 {
 
-class FixWallRigid : public Fix
+class FixWallRigid : public RsWallAtoms<Fix>
 {
   public:
     FixWallRigid(class LAMMPS *, int, char **);
@@ -40,22 +41,8 @@ class FixWallRigid : public Fix
     void final_integrate();
     void post_run();
 
-    double compute_vector(int);
     int min_type();
     int max_type();
-
-    void write_restart(FILE *);
-    void restart(char *);
-    void grow_arrays(int);
-    void copy_arrays(int, int, int);
-    void set_arrays(int);
-    int pack_exchange(int, double *);
-    int unpack_exchange(int, double *);
-    int pack_restart(int, double *);
-    void unpack_restart(int, int);
-    int size_restart(int);
-    int maxsize_restart();
-    double memory_usage();
 
     /* The host table's answers (fix_wall_rigid.cpp, rs_adapter_host). */
     void reduce(double *v, int n, int op);
@@ -75,17 +62,15 @@ class FixWallRigid : public Fix
     double liggghts_reach() const;
 
   private:
-    [[noreturn]] void fail(const std::string &msg);
-    [[noreturn]] void fail_one(const std::string &msg);
+    [[noreturn]] void fail(const std::string &msg) override;
+    [[noreturn]] void fail_one(const std::string &msg) override;
     [[noreturn]] void step_failed(const rs_error &err);
     rs_wall_block block(bool setup) const;
     rs_wall_rows rows();
     void begin_wallforce();
     bool shares_wallforce(const FixWallRigid *other) const;
 
-    rs_wall *wall_;
     rs_wall_host host_;
-    const rs_wall_info *info_;
 
     /* law liggghts: LIGGGHTS's contact model, and the descriptor the wall calls */
     class LiggghtsLaw *lig_;
@@ -103,13 +88,6 @@ class FixWallRigid : public Fix
     std::string wallforce_id_;
     bool wallforce_clear_;
     double **wallforce_; // its array this step, or NULL
-
-    int nmax_; // atoms the per-atom array (peratom yes) holds
-
-    /* the global vector, summed over the ranks once a step */
-    double out_[RS_WALL_NVEC];
-    bigint out_step_;
-    bool out_valid_;
 };
 
 } // namespace LAMMPS_NS

@@ -4,6 +4,8 @@
  * a wall/rigid contact and a wall/gran contact of the same geometry get the same force. */
 #include "liggghts_law.h"
 
+#include <algorithm>
+
 #include "atom.h"
 #include "contact_models.h"
 #include "error.h"
@@ -280,6 +282,13 @@ LiggghtsLaw::Result LiggghtsLaw::contact(const LiggghtsContact &c, double F[3], 
     }
     hist_in_.assign(c.history, c.history + nhist_);
     LCM::SurfacesIntersectData sd;
+    /* What a model reads that another sets, zero until set: a rolling model reads kn,
+     * which thornton_ning leaves unset (LIGGGHTS's constructor leaves these values
+     * undefined). */
+    sd.kt = sd.kn = sd.gammat = sd.gamman = sd.vn = 0.0;
+    sd.cri = sd.crj = sd.wr1 = sd.wr2 = sd.wr3 = sd.vtr1 = sd.vtr2 = sd.vtr3 = 0.0;
+    sd.mj = sd.P_diss = 0.0;
+    sd.omega_j = NULL;
     sd.is_wall = true;
     sd.radi = c.radius;
     sd.deltan = c.overlap;
@@ -303,7 +312,13 @@ LiggghtsLaw::Result LiggghtsLaw::contact(const LiggghtsContact &c, double F[3], 
     sd.itype = c.itype;
     sd.jtype = c.jtype;
     sd.contact_flags = NULL;
-    sd.contact_history = nhist_ ? c.history : NULL;
+    /* The model works on a copy of the history that one value 0 precedes: LIGGGHTS's
+     * rolling model luding reads its cohesion model's kc and fo at offset -1 of the
+     * history when that model keeps neither (get_history_offset's answer for a name it
+     * lacks), which would read whatever lies before the history in memory. */
+    hist_work_.assign(1, 0.0);
+    hist_work_.insert(hist_work_.end(), c.history, c.history + nhist_);
+    sd.contact_history = nhist_ ? hist_work_.data() + 1 : NULL;
     sd.v_i = c.v;
     sd.v_j = const_cast<double *>(c.vwall);
     sd.omega_i = c.omega;
@@ -326,6 +341,7 @@ LiggghtsLaw::Result LiggghtsLaw::contact(const LiggghtsContact &c, double F[3], 
     }
     atom->v = vsrc_;
     atom->omega = wsrc_;
+    std::copy(hist_work_.begin() + 1, hist_work_.end(), c.history);
     bool finite = true;
     for (int h = 0; h < nhist_; h++)
         finite = finite && std::isfinite(c.history[h]);

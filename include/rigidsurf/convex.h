@@ -253,6 +253,13 @@ void rs_body_contacts_free(rs_body_contacts *l);
 int rs_body_surface_contacts(const rs_surface *s, const rs_pose *pose, const rs_body *b,
                              double gap_max, rs_body_contact *out, int cap, int *n,
                              rs_error *err);
+/// The checks of every body query (RS_ERR_ARG with what was expected): a surface with a
+/// kind, a body with a shape an rs_shape_make_* call made, a finite position within
+/// RS_CONVEX_COORD_MAX, a finite quaternion of norm 1 to 1e-6, gap_max finite and >= 0.
+/// *checked gets the body, its quaternion normalised where its norm is off 1 by more than
+/// 1e-12 (rs_body_init's tolerance). A kind's body operation takes checked bodies.
+int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_body *checked,
+                  rs_error *err);
 
 /// Most points of one body's manifold on one feature.
 #define RS_MANIFOLD_MAX 4

@@ -165,8 +165,9 @@ typedef struct rs_surface_ops {
     /// appended to out[i] for body i in the principal frame, as closest writes a sphere's
     /// (docs/conventions.md, "Convex bodies"). With lenient != 0, a deepest point that does
     /// not settle (a wall curved more sharply than the body) gives the deepest of its
-    /// iterates, with iterations -1, instead of RS_ERR_GEOMETRY. NULL: the kind takes no
-    /// bodies.
+    /// iterates, with iterations -1, instead of RS_ERR_GEOMETRY. The bodies come checked
+    /// (rs_body_check: rs_body_surface_contacts and rs_body_manifold check them first).
+    /// NULL: the kind takes no bodies.
     int (*body)(const struct rs_surface *s, const rs_pose *pose, const struct rs_body *b,
                 int n, double gap_max, int lenient, struct rs_body_contacts *out,
                 rs_error *err);

@@ -39,23 +39,54 @@ typedef struct fixed {
     rs_body_contact best, got; /* the deepest iterate; the settled one */
 } fixed;
 
+/* One step of fixed point f with the contact c its iterate f->p has on the feature it
+ * follows, else its deepest one (c->feature < 0: none, the body's deepest point meets no
+ * feature here); 1 when f goes on. */
+static int step(fixed *f, const rs_body_contact *c)
+{
+    f->found = c->feature;
+    if (c->feature < 0)
+        return 0;
+    if (c->depth > f->best.depth) {
+        f->best = *c;
+        f->best.iterations = -1;
+    }
+    const double turn = fabs(c->normal[0] - f->nrm[0]) + fabs(c->normal[1] - f->nrm[1]) +
+                        fabs(c->normal[2] - f->nrm[2]);
+    f->conv = turn <= 1e-13 && RS_FEATURE_BASE(c->feature) == f->want;
+    f->want = RS_FEATURE_BASE(c->feature);
+    memcpy(f->nrm, c->normal, sizeof f->nrm);
+    f->it++;
+    if (f->conv) {
+        f->got = *c;
+        f->got.iterations = f->it;
+    }
+    return !f->conv && f->it < BODY_ITER_MAX;
+}
+
 int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body *body,
                         int n, double gap_max, int lenient, rs_body_contacts *out,
                         rs_error *err)
 {
-    rs_body *b = malloc((size_t)(n > 0 ? n : 1) * sizeof *b);
+    return rs_body_fixed_point_with(s, pose, body, n, gap_max, lenient, NULL, NULL, out,
+                                    err);
+}
+
+int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                             int n, double gap_max, int lenient, rs_body_face_fn face,
+                             const void *ctx, rs_body_contacts *out, rs_error *err)
+{
+    double *rot = malloc((size_t)(n > 0 ? n : 1) * 9 * sizeof *rot); /* each body's R */
     double *reach = malloc((size_t)(n > 0 ? n : 1) * 4 * sizeof *reach);
     int *off = NULL, *live = NULL;
-    int rc = b && reach ? RS_OK
-                        : rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
+    int rc = rot && reach ? RS_OK
+                          : rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
     fixed *fx = NULL;
-    rs_contacts cand, pc;
-    memset(&cand, 0, sizeof cand);
+    rs_contacts pc; /* the reach spheres' contacts, then each step's */
     memset(&pc, 0, sizeof pc);
     for (int i = 0; rc == RS_OK && i < n; i++) {
-        rc = rs_body_check(s, body + i, gap_max, b + i, err);
-        if (rc == RS_OK)
-            reach[i] = rs_body_reach(b + i);
+        reach[i] = rs_body_reach(b + i);
+        rs_body_rotation(b + i, rot + 9 * i);
     }
     /* The features near each body: a sphere of its reach about its centre (its centre
      * sought as deep as twice its reach: a body deeper lies behind the wall). */
@@ -64,68 +95,82 @@ int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body 
         x[i] = b[i].x[0], y[i] = b[i].x[1], z[i] = b[i].x[2];
         far = fmax(far, 2.0 * reach[i] + gap_max);
     }
+    /* room for a few features a body at once: the query then grows no list */
     if (rc == RS_OK)
-        rc = rs_body_closest(s, pose, n, x, y, z, reach, gap_max, far, &cand, err);
-    const int nf = cand.n;
+        rc = rs_contacts_reserve(&pc, 2 * n + 64, err);
+    if (rc == RS_OK)
+        rc = rs_body_closest(s, pose, n, x, y, z, reach, gap_max, far, &pc, err);
+    const int nf = pc.n;
     if (rc == RS_OK && nf > 0) {
         fx = malloc((size_t)nf * sizeof *fx);
         off = malloc((size_t)(nf + 1) * sizeof *off);
-        live = malloc((size_t)nf * sizeof *live);
+        live = malloc(2 * (size_t)nf * sizeof *live);
         double *xyz = realloc(reach, (size_t)(n + 3 * nf) * sizeof *xyz);
         if (!fx || !off || !live || !xyz)
             rc = rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
         if (xyz)
             reach = xyz;
+        if (rc == RS_OK)
+            rc = rs_contacts_reserve(&pc, 2 * nf + 64, err);
     }
     for (int k = 0; rc == RS_OK && k < nf; k++) {
         fixed *f = fx + k;
-        f->body = cand.point[k];
-        f->want = RS_FEATURE_BASE(cand.feature[k]);
+        f->body = pc.point[k];
+        f->want = RS_FEATURE_BASE(pc.feature[k]);
         f->it = f->conv = 0;
         f->found = -1;
         f->best.depth = -INFINITY;
         for (int d = 0; d < 3; d++)
-            f->nrm[d] = cand.nrm[d][k];
+            f->nrm[d] = pc.nrm[d][k];
         live[k] = k;
     }
     /* Each step: every unsettled iterate's point, the body's support along -n, asked in
-     * one query; n the normal of its feature's contact there (the feature it follows,
-     * else the deepest). */
+     * one query, or of the kind's own answer where it has one; n the normal of its
+     * feature's contact there (the feature it follows, else the deepest). */
     int nact = rc == RS_OK ? nf : 0;
     while (rc == RS_OK && nact > 0) {
-        x = reach + n, y = x + nact, z = y + nact;
         double gap = 0.0;
         for (int a = 0; a < nact; a++) {
             fixed *f = fx + live[a];
             const double down[3] = {-f->nrm[0], -f->nrm[1], -f->nrm[2]};
-            rs_body_support(b + f->body, down, f->p);
-            x[a] = f->p[0], y[a] = f->p[1], z[a] = f->p[2];
+            rs_body_support_at(b + f->body, rot + 9 * f->body, down, f->p);
             gap = fmax(gap, 2.0 * reach[f->body] + gap_max);
         }
-        rc = rs_body_closest(s, pose, nact, x, y, z, NULL, gap, gap, &pc, err);
-        if (rc != RS_OK)
-            break;
-        rs_contacts_offsets(&pc, nact, off);
-        int still = 0;
+        /* the kind's answers first; the rest (ask) keep their order for the query */
+        int still = 0, nask = 0;
         for (int a = 0; a < nact; a++) {
             fixed *f = fx + live[a];
+            rs_body_contact c;
+            if (face && face(ctx, f->want, f->p, gap, &c)) {
+                memcpy(c.xs, f->p, sizeof c.xs);
+                if (step(f, &c))
+                    live[still++] = live[a];
+            } else
+                live[nact + nask++] = live[a]; /* live has room for 2 nf */
+        }
+        if (nask == 0) {
+            nact = still;
+            continue;
+        }
+        x = reach + n, y = x + nask, z = y + nask;
+        const int *ask = live + nact;
+        for (int a = 0; a < nask; a++) {
+            const fixed *f = fx + ask[a];
+            x[a] = f->p[0], y[a] = f->p[1], z[a] = f->p[2];
+        }
+        rc = rs_body_closest(s, pose, nask, x, y, z, NULL, gap, gap, &pc, err);
+        if (rc != RS_OK)
+            break;
+        rs_contacts_offsets(&pc, nask, off);
+        for (int a = 0; a < nask; a++) {
+            fixed *f = fx + ask[a];
             const int j = rs_contacts_pick(&pc, off[a], off[a + 1], f->want);
-            f->found = j;
-            if (j < 0)
-                continue; /* the body's deepest point has no contact: none here */
-            if (-pc.dist[j] > f->best.depth)
-                take(&f->best, &pc, j, f->p, -1);
-            const double nn[3] = {pc.nrm[0][j], pc.nrm[1][j], pc.nrm[2][j]};
-            const double turn =
-                fabs(nn[0] - f->nrm[0]) + fabs(nn[1] - f->nrm[1]) + fabs(nn[2] - f->nrm[2]);
-            f->conv = turn <= 1e-13 && RS_FEATURE_BASE(pc.feature[j]) == f->want;
-            f->want = RS_FEATURE_BASE(pc.feature[j]);
-            memcpy(f->nrm, nn, sizeof f->nrm);
-            f->it++;
-            if (f->conv)
-                take(&f->got, &pc, j, f->p, f->it);
-            else if (f->it < BODY_ITER_MAX)
-                live[still++] = live[a];
+            rs_body_contact c;
+            c.feature = -1;
+            if (j >= 0)
+                take(&c, &pc, j, f->p, 0);
+            if (step(f, &c))
+                live[still++] = ask[a];
         }
         nact = still;
     }
@@ -158,12 +203,11 @@ int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body 
         else if (l->c[slot].depth < got->depth)
             l->c[slot] = *got;
     }
-    free(b);
+    free(rot);
     free(reach);
     free(fx);
     free(off);
     free(live);
-    rs_contacts_free(&cand);
     rs_contacts_free(&pc);
     return rc;
 }

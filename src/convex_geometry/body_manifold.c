@@ -103,9 +103,11 @@ typedef struct mpoint {
 static int append(rs_contacts *c, int point, double radius, int feature, const mpoint *m,
                   rs_error *err)
 {
-    int rc = rs_contacts_reserve(c, c->n < c->cap ? c->n + 1 : 2 * c->n + 64, err);
-    if (rc)
-        return rc;
+    if (c->n >= c->cap || !c->xs[0]) { /* room, and witness points (c->witness) */
+        const int rc = rs_contacts_reserve(c, c->n < c->cap ? c->n + 1 : 2 * c->n + 64, err);
+        if (rc)
+            return rc;
+    }
     const int k = c->n++;
     c->point[k] = point;
     c->feature[k] = RS_FEATURE_MANIFOLD(feature, m->id);
@@ -160,10 +162,11 @@ typedef struct corners {
     int n, cap;
 } corners;
 
-static int corners_add(corners *a, const corner *q, const double cl[3], double r)
+/* Room for cap queries in a; 0, -1 when out of memory (a unchanged but a->q, which may
+ * have moved). */
+static int corners_room(corners *a, int cap)
 {
-    if (a->n == a->cap) {
-        const int cap = a->cap ? 2 * a->cap : 64;
+    if (cap > a->cap) {
         corner *nq = realloc(a->q, (size_t)cap * sizeof *nq);
         double *nx = nq ? malloc(4 * (size_t)cap * sizeof *nx) : NULL;
         if (!nx) {
@@ -178,6 +181,13 @@ static int corners_add(corners *a, const corner *q, const double cl[3], double r
         free(a->x);
         a->q = nq, a->x = nx, a->cap = cap;
     }
+    return 0;
+}
+
+static int corners_add(corners *a, const corner *q, const double cl[3], double r)
+{
+    if (a->n == a->cap && corners_room(a, 2 * a->cap))
+        return -1;
     a->q[a->n] = *q;
     a->x[a->n] = cl[0], a->x[a->cap + a->n] = cl[1], a->x[2 * a->cap + a->n] = cl[2];
     a->x[3 * a->cap + a->n] = r;
@@ -231,21 +241,24 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
      * normal has the same depth on their planes. */
     const int mesh = s->ops->frame == RS_FRAME_GLOBAL_X;
     corners cq = {NULL, NULL, 0, 0};
+    if (rc == RS_OK && corners_room(&cq, n + 64))
+        rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
     double gap = 0.0;
     for (int i = 0; i < n && rc == RS_OK; i++) {
-        double R[9];
-        rs_body_rotation(b + i, R);
         const double rr = rs_shape_core_radius(b[i].shape), reach = rs_body_reach(b + i);
         gap = fmax(gap, 2.0 * reach + gap_max);
-        for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
-            const rs_body_contact *o = &fl[i].c[f];
-            if (o->feature >= RS_MANIFOLD_STRIDE) {
+        for (int f = 0; f < fl[i].n && rc == RS_OK; f++)
+            if (fl[i].c[f].feature >= RS_MANIFOLD_STRIDE)
                 rc = rs_error_set(err, RS_ERR_CAPACITY,
                                   "body query: feature %d of '%s' is beyond the manifold's "
                                   "ids (%d)",
-                                  o->feature, s->name, RS_MANIFOLD_STRIDE);
-                break;
-            }
+                                  fl[i].c[f].feature, s->name, RS_MANIFOLD_STRIDE);
+        if (rc != RS_OK || !core_points_of(b[i].shape))
+            continue; /* a smooth body: its deepest point only */
+        double R[9];
+        rs_body_rotation(b + i, R);
+        for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
+            const rs_body_contact *o = &fl[i].c[f];
             double d[3];
             for (int k = 0; k < 3; k++)
                 d[k] = -(R[k] * o->normal[0] + R[3 + k] * o->normal[1] +
@@ -263,7 +276,14 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
                 (o->curv[0] >= 0.0 && o->curv[1] >= 0.0 ? 1e-9 : 1.0) * reach;
             const int flat = mesh || (o->curv[0] == 0.0 && o->curv[1] == 0.0);
             const double lift = flat ? fmax(o->depth, 0.0) + 1e-9 * reach : 0.0;
+            /* a core point's height in the body frame, n.(R p) = -dn d.p, passes over the
+             * points clearly too high at three products each (its rounding is far below
+             * the margin); the rest are measured in the world as below */
+            const double nx = rs_dot3(o->normal, b[i].x), nxs = rs_dot3(o->normal, o->xs);
+            const double clear = above + 1e-12 * (reach + fabs(nx) + fabs(nxs));
             for (int k = 0; k < ncp; k++) {
+                if (-dn * rs_dot3(d, cp[k].p) + nx - rr - nxs > clear)
+                    continue;
                 corner q = {i, f, cp[k].id, {0.0, 0.0, 0.0}, lift};
                 rs_matvec3(R, cp[k].p, q.cw);
                 for (int j = 0; j < 3; j++)
@@ -289,9 +309,11 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
     int *off = NULL;
     if (rc == RS_OK && cq.n > 0) {
         off = malloc(((size_t)cq.n + 1) * sizeof *off);
-        rc = off ? rs_body_closest(s, pose, cq.n, cq.x, cq.x + cq.cap, cq.x + 2 * cq.cap,
-                                   cq.x + 3 * cq.cap, gap, gap, &pc, err)
+        rc = off ? rs_contacts_reserve(&pc, 2 * cq.n + 64, err)
                  : rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
+        if (rc == RS_OK)
+            rc = rs_body_closest(s, pose, cq.n, cq.x, cq.x + cq.cap, cq.x + 2 * cq.cap,
+                                 cq.x + 3 * cq.cap, gap, gap, &pc, err);
         if (rc == RS_OK)
             rs_contacts_offsets(&pc, cq.n, off);
     }

@@ -28,18 +28,15 @@ int rs_hull_support(const rs_shape *s, const double d[3]);
 /// The cap (<= RS_HULL_FARTHEST_MAX) vertices of s farthest along d, farthest first (ties:
 /// the lower index), into out; returns how many.
 int rs_hull_farthest(const rs_shape *s, const double d[3], int cap, int *out);
+/// rs_body_support with the body's rotation R (rs_body_rotation) given.
+void rs_body_support_at(const rs_body *b, const double R[9], const double dir[3],
+                        double out[3]);
 /// The rounding around the core: the shape's rounding, plus the radius of a sphere or
 /// a capsule (whose cores are a point and a segment).
 double rs_shape_core_radius(const rs_shape *s);
 
 /// A body's reach about its centre: the farthest corner of its bounding box.
 double rs_body_reach(const rs_body *b);
-/// The checks of a body's query (RS_ERR_ARG): a surface with a kind, a body with a shape,
-/// a finite position and a finite quaternion of norm 1 to 1e-6, gap_max finite and >= 0;
-/// *checked gets the body, its quaternion normalised where its norm is off 1 by more
-/// than 1e-12 (rs_body_init's tolerance).
-int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_body *checked,
-                  rs_error *err);
 /// Appends o to l; RS_ERR_NOMEM when it cannot grow.
 int rs_body_contacts_push(rs_body_contacts *l, const rs_body_contact *o, rs_error *err);
 /// The contacts of n slaves with surface s, into c (emptied first): points (radius NULL)
@@ -60,7 +57,18 @@ int rs_contacts_pick(const rs_contacts *c, int k0, int k1, int want);
 /// Does body b hold the world point p, to tol (length): is p within the rounding plus tol
 /// of its core (GJK)? 0 for a body rs_convex_pair refuses.
 int rs_body_holds(const rs_body *b, const double p[3], double tol);
-/// The analytic kinds' body operation (rs_surface_ops.body, body_fixed_point.c): for
+/// A kind's own answer for one iterate of the fixed point: when feature want is among
+/// the contacts its closest operation gives the world point p (a point, gap_max = gap,
+/// dist_min = -gap), that contact (feature, depth = -dist, normal, xm, t1, t2, curv, all
+/// as closest writes them) into *o and 1; else 0 (then closest is asked).
+typedef int (*rs_body_face_fn)(const void *ctx, int want, const double p[3], double gap,
+                               rs_body_contact *o);
+/// rs_body_fixed_point with a kind's answer for the iterates (face(ctx, ...); NULL: every
+/// iterate by the closest operation); the same contacts either way.
+int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                             int n, double gap_max, int lenient, rs_body_face_fn face,
+                             const void *ctx, rs_body_contacts *out, rs_error *err);
+/// The fixed point of rs_body_fixed_point_with over the kind's point query only: for
 /// each feature near each of the n bodies (a sphere query of its reach about its centre)
 /// the normal iterated to a fixed point through the kind's point query, the bodies in one
 /// block; one contact per owning feature, the deepest, into out[i] for body i.

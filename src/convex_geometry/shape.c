@@ -226,7 +226,7 @@ int rs_shape_check(const rs_shape *s, rs_error *err)
 {
     if (!s)
         return rs_error_set(err, RS_ERR_ARG, "shape: NULL argument");
-    const int nd[8] = {1, 3, 3, 2, 2, 2, 0, 0}; /* dimensions of each kind */
+    static const int nd[8] = {1, 3, 3, 2, 2, 2, 0, 0}; /* dimensions of each kind */
     int ok = s->kind >= RS_SHAPE_SPHERE && s->kind <= RS_SHAPE_USER && s->rounding >= 0.0 &&
              s->rounding <= RS_CONVEX_COORD_MAX;
     for (int k = 0; ok && k < nd[s->kind]; k++)
@@ -420,8 +420,15 @@ void rs_body_rotation(const rs_body *b, double R[9])
 
 void rs_body_support(const rs_body *b, const double dir[3], double out[3])
 {
-    double R[9], d[3], p[3];
+    double R[9];
     rs_body_rotation(b, R);
+    rs_body_support_at(b, R, dir, out);
+}
+
+void rs_body_support_at(const rs_body *b, const double R[9], const double dir[3],
+                        double out[3])
+{
+    double d[3], p[3];
     for (int i = 0; i < 3; i++)
         d[i] = R[i] * dir[0] + R[3 + i] * dir[1] + R[6 + i] * dir[2];
     rs_shape_support(b->shape, d, p);
