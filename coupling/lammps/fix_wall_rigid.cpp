@@ -2,8 +2,8 @@
  * lifecycle maps onto the wall's calls: the constructor makes the wall from the fix's words
  * (less the material keywords, wall_materials.h), init its run, setup its setup call,
  * initial_integrate its motion, post_force its step, final_integrate its servo; the atom
- * callbacks move its per-atom history. The group's ellipsoids go to the wall as convex
- * bodies (ellipsoids.h), in a run that asks every particle at every step. Syntax, keywords
+ * callbacks move its per-atom history. The group's ellipsoids and rounded polyhedra go to
+ * the wall as convex bodies (bodies.h), in a run that asks every particle at every step. Syntax, keywords
  * and output: docs/fix_wall_rigid.md and, for what is LAMMPS's own, docs/lammps.md. */
 #include "fix_wall_rigid.h"
 #include "fix_wall_rigid_force.h"
@@ -12,7 +12,9 @@
 #include "adapter.h"
 
 #include "atom.h"
+#include "atom_vec_body.h"
 #include "atom_vec_ellipsoid.h"
+#include "body.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -68,8 +70,8 @@ int FixWallRigid::material(const char *name, int i, int j, int required, const c
 /* ---------------------------------------------------------------------------------- */
 
 FixWallRigid::FixWallRigid(LAMMPS *lmp, int narg, char **arg)
-    : RsWallAtoms<Fix>(lmp, narg, arg), avec_(nullptr), bodies_on_(false), model_(nullptr),
-      reff_mode_(0), wallforce_clear_(true)
+    : RsWallAtoms<Fix>(lmp, narg, arg), avec_(nullptr), bvec_(nullptr), bodies_on_(false),
+      model_(nullptr), reff_mode_(0), wallforce_clear_(true)
 {
     std::memset(&model_desc_, 0, sizeof model_desc_);
     host_ = rs_adapter_host(this, comm->me, atom->ntypes, "lammps");
@@ -173,21 +175,28 @@ void FixWallRigid::post_constructor()
 
 void FixWallRigid::init()
 {
-    if (atom->body_flag || atom->line_flag || atom->tri_flag)
+    if (atom->line_flag || atom->tri_flag)
         fail(std::string("atom_style ") + atom->atom_style +
-             " is not supported: the fix takes spheres (atom_style sphere) and ellipsoids "
-             "(atom_style ellipsoid, or hybrid sphere ellipsoid)");
+             " is not supported: the fix takes spheres (atom_style sphere), ellipsoids "
+             "(atom_style ellipsoid) and rounded polyhedra (atom_style body "
+             "rounded/polyhedron)");
     avec_ = atom->ellipsoid_flag
                 ? dynamic_cast<AtomVecEllipsoid *>(atom->style_match("ellipsoid"))
                 : nullptr;
-    if (atom->ellipsoid_flag &&
-        (!avec_ || !atom->rmass_flag || !atom->angmom_flag || !atom->torque_flag))
-        fail("ellipsoids need per-atom mass, angmom and torque (atom_style ellipsoid), as "
-             "fix nve/asphere reads them");
-    if (!avec_ && (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag ||
-                   !atom->torque_flag))
+    bvec_ = atom->body_flag ? dynamic_cast<AtomVecBody *>(atom->style_match("body"))
+                            : nullptr;
+    if (atom->body_flag &&
+        (!bvec_ || std::strcmp(bvec_->bptr->style, "rounded/polyhedron") != 0))
+        fail("atom_style body: the fix takes rounded/polyhedron bodies only, not " +
+             std::string(bvec_ ? bvec_->bptr->style : "those of this hybrid style"));
+    if ((avec_ || bvec_) && (!atom->rmass_flag || !atom->angmom_flag || !atom->torque_flag))
+        fail("ellipsoids and bodies need per-atom mass, angmom and torque (atom_style "
+             "ellipsoid, body), as fix nve/asphere and nve/body read them");
+    if (!avec_ && !bvec_ &&
+        (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag ||
+         !atom->torque_flag))
         fail("needs per-atom radius, mass, omega and torque (atom_style sphere), or "
-             "ellipsoids (atom_style ellipsoid)");
+             "ellipsoids (atom_style ellipsoid) or bodies (atom_style body)");
     check_particles();
     if (std::strstr(update->integrate_style, "respa"))
         fail("run_style respa is not supported; use verlet");
@@ -241,7 +250,7 @@ void FixWallRigid::check_particles()
     for (int i = 0; i < atom->nlocal; i++) {
         if (!(atom->mask[i] & groupbit))
             continue;
-        if (avec_ && atom->ellipsoid[i] >= 0)
+        if ((avec_ && atom->ellipsoid[i] >= 0) || (bvec_ && atom->body[i] >= 0))
             v[0] += 1.0;
         else if (!atom->radius_flag || !atom->omega_flag)
             v[1] = std::min(v[1], (double)atom->tag[i]);
@@ -251,28 +260,31 @@ void FixWallRigid::check_particles()
     if (v[1] < 1e300)
         fail("particle " + std::to_string((long long)v[1]) + " of group " +
              group->names[igroup] +
-             " is neither an ellipsoid nor a sphere: give it a shape (set ... shape) or "
-             "use atom_style hybrid sphere ellipsoid for spheres");
+             " is neither a body, an ellipsoid nor a sphere: give it a shape (set ... "
+             "shape, or a body in the data file) or use atom_style hybrid for spheres");
     bodies_on_ = v[0] > 0.0;
     if (bodies_on_ && model_)
         fail(
             "law lammps runs LAMMPS's sphere-wall models, which take a sphere's centre and "
-            "radius; ellipsoids take rigidsurf's laws (hertz, hooke, coulomb, ...) or a "
+            "radius; ellipsoids and bodies take rigidsurf's laws (hertz, hooke, coulomb, ...) or a "
             "user's law");
 }
 
-/* atom_style ellipsoid: each ellipsoid of the group as the wall's body (its half-axes and
- * quaternion from LAMMPS's bonus data, its angular velocity from angmom), each sphere with
- * its radius and omega. */
+/* atom_style ellipsoid and body: each ellipsoid of the group as the wall's body (its
+ * half-axes and quaternion from LAMMPS's bonus data, its angular velocity from angmom), each
+ * rounded polyhedron from its bonus data as body_rounded_polyhedron.cpp keeps it (ivalue:
+ * vertices, edges, faces; dvalue: the vertices in its principal axes, the edges' ends, 4
+ * vertex indices a face, the enclosing and the rounded radius; the bonus's principal
+ * moments), each sphere with its radius and omega. */
 void FixWallRigid::fill_bodies()
 {
-    const int n = atom->nlocal;
+    const int n = atom->nlocal, FACE = 4;
     bodies_.resize(n);
     rs_error err;
     rs_error_clear(&err);
     for (int i = 0; i < n; i++) {
-        const int e = atom->ellipsoid[i];
-        if (e < 0) {
+        const int e = avec_ ? atom->ellipsoid[i] : -1, k = bvec_ ? atom->body[i] : -1;
+        if (e < 0 && k < 0) {
             bodies_.sphere(i, atom->radius ? atom->radius[i] : 0.0,
                            atom->omega ? atom->omega[i] : nullptr);
             continue;
@@ -282,11 +294,23 @@ void FixWallRigid::fill_bodies()
         const std::string who = "particle " + std::to_string((long long)atom->tag[i]);
         if (!bodies_on_)
             fail_one(who + " of group " + group->names[igroup] +
-                     " became an ellipsoid during a run that began without ellipsoids in "
-                     "it; the wall takes it from the next run on");
-        const AtomVecEllipsoid::Bonus &bo = avec_->bonus[e];
-        if (bodies_.ellipsoid(i, bo.shape, atom->x[i], bo.quat, atom->rmass[i],
-                              atom->angmom[i], &err) != RS_OK)
+                     " became a body during a run that began without bodies in it; the "
+                     "wall takes it from the next run on");
+        int rc;
+        if (e >= 0) {
+            const AtomVecEllipsoid::Bonus &bo = avec_->bonus[e];
+            rc = bodies_.ellipsoid(i, bo.shape, atom->x[i], bo.quat, atom->rmass[i],
+                                   atom->angmom[i], &err);
+        } else {
+            const AtomVecBody::Bonus &bo = bvec_->bonus[k];
+            const int nv = bo.ivalue[0], ne = nv < 3 ? 0 : bo.ivalue[1],
+                      nf = nv < 3 ? 0 : bo.ivalue[2];
+            const double *d = bo.dvalue;
+            rc = bodies_.polyhedron(i, d, nv, d + 3 * nv + 2 * ne, nf, FACE,
+                                    d[bo.ndouble - 1], atom->x[i], bo.quat, atom->rmass[i],
+                                    bo.inertia, atom->angmom[i], &err);
+        }
+        if (rc != RS_OK)
             fail_one(who + ": " + err.msg);
     }
 }
@@ -302,7 +326,7 @@ rs_wall_block FixWallRigid::block(bool setup)
     b.v = atom->v ? atom->v[0] : nullptr;
     b.omega = atom->omega ? atom->omega[0] : nullptr;
     b.radius = atom->radius;
-    if (avec_) {
+    if (avec_ || bvec_) {
         fill_bodies();
         b.omega = bodies_.omega();
         b.radius = bodies_.radius();

@@ -4,14 +4,14 @@
  * (variables, sums over ranks, warnings, the material properties given on the fix line,
  * its own contact models as `law lammps`), keeps the per-atom outputs LAMMPS dumps, and
  * moves the wall's per-atom history through LAMMPS's exchange and restart callbacks. Its
- * particles are spheres (atom_style sphere) and ellipsoids (atom_style ellipsoid, as
- * convex bodies, ellipsoids.h). */
+ * particles are spheres (atom_style sphere), ellipsoids (atom_style ellipsoid) and rounded
+ * polyhedra (atom_style body rounded/polyhedron), the last two as convex bodies (bodies.h). */
 #ifndef RIGIDSURF_LAMMPS_FIX_WALL_RIGID_H
 #define RIGIDSURF_LAMMPS_FIX_WALL_RIGID_H
 
 #include "fix.h"
 
-#include "ellipsoids.h"
+#include "bodies.h"
 #include "wall_atoms.h"
 #include "rigidsurf/wall.h"
 #include "wall_materials.h"
@@ -72,11 +72,12 @@ class FixWallRigid : public RsWallAtoms<Fix>
     rs_wall_host host_;
     WallMaterials materials_;
 
-    /* atom_style ellipsoid: its shapes and orientations, the group's ellipsoids as the
-     * wall's bodies; bodies_on_: the group holds ellipsoids in this run (the wall asks
-     * every particle at every step) */
+    /* atom_style ellipsoid and body rounded/polyhedron: their shapes and orientations, the
+     * group's ellipsoids and polyhedra as the wall's bodies; bodies_on_: the group holds
+     * bodies in this run (the wall asks every particle at every step) */
     class AtomVecEllipsoid *avec_;
-    RsEllipsoids bodies_;
+    class AtomVecBody *bvec_;
+    RsBodies bodies_;
     bool bodies_on_;
 
     /* law lammps: LAMMPS's wall contact model, and the descriptor the wall calls */

@@ -7,6 +7,7 @@
 #include "cgal_hull.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
 
 #include <algorithm>
@@ -198,6 +199,25 @@ void canonical(const std::vector<Point> &p, const std::vector<Tri> &tin,
             tris[3 * k + c] = out[k][c];
 }
 
+/* The points and triangles of the hull's mesh (each face a fan from its first corner). */
+void mesh_triangles(const CGAL::Surface_mesh<Point> &sm, std::vector<Point> &hp,
+                    std::vector<Tri> &ht)
+{
+    typedef CGAL::Surface_mesh<Point> Mesh;
+    std::vector<std::size_t> index(sm.number_of_vertices() + sm.number_of_removed_vertices());
+    for (Mesh::Vertex_index v : sm.vertices()) {
+        index[(std::size_t)v] = hp.size();
+        hp.push_back(sm.point(v));
+    }
+    for (Mesh::Face_index f : sm.faces()) {
+        std::vector<std::size_t> c;
+        for (Mesh::Vertex_index v : CGAL::vertices_around_face(sm.halfedge(f), sm))
+            c.push_back(index[(std::size_t)v]);
+        for (std::size_t k = 1; k + 1 < c.size(); k++)
+            ht.push_back(Tri{c[0], c[k], c[k + 1]});
+    }
+}
+
 } // namespace
 
 extern "C" int rs_cgal_convex_hull(const double *xyz, int n, double **verts, int *nv,
@@ -235,10 +255,24 @@ extern "C" int rs_cgal_convex_hull(const double *xyz, int n, double **verts, int
          * points (CGAL 5.5) */
         std::sort(pts.begin(), pts.end());
         pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+        /* the hull as a Surface_mesh: CGAL 5.5's overload that writes points and a
+         * triangle set leaves out extreme points of a slender hull (a 24-sided prism of
+         * radius 0.5 and length 10 keeps 40 of its 48 corners), its halfedge structure
+         * keeps every one */
+        CGAL::Surface_mesh<Point> sm;
+        bool built = true;
+        try {
+            CGAL::convex_hull_3(pts.begin(), pts.end(), sm);
+        } catch (const std::bad_alloc &) {
+            throw;
+        } catch (const std::exception &) {
+            built = false; // a construction of its planes not finite in doubles
+        }
         std::vector<Point> hp;
         std::vector<Tri> ht;
-        CGAL::convex_hull_3(pts.begin(), pts.end(), hp, ht);
-        if (!closed(hp, ht)) {
+        if (built)
+            mesh_triangles(sm, hp, ht);
+        if (!built || !closed(hp, ht)) {
             std::snprintf(msg, cap,
                           "the %d points lie too close to one plane for the hull's "
                           "constructions in double precision (expected points that span "

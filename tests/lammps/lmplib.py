@@ -6,6 +6,7 @@ fix wall/gran and wall/gran/region) where it compares with it. lmp-rigidsurf lin
 same liblammps.so.0 as lmp and runs every stock deck as it does, so a difference between
 the two runs of a pair comes from the wall alone.
 """
+import math
 import os
 import sys
 
@@ -104,6 +105,107 @@ def ellipsoid(atom_id, x, half, rho, axis=(0, 0, 1), angle=0.0, v=(0, 0, 0),
                "set atom %d diameter 0\n" % atom_id if hybrid else "",
                atom_id, rho, atom_id, axis[0], axis[1], axis[2], angle,
                atom_id, v[0], v[1], v[2], angmom[0], angmom[1], angmom[2]))
+
+
+# ---- LAMMPS's rounded polyhedra (atom_style body rounded/polyhedron) -----------------
+
+BCOLS = ("id x y z vx vy vz angmomx angmomy angmomz fx fy fz tqx tqy tqz "
+         "c_quat[1] c_quat[2] c_quat[3] c_quat[4]")
+
+
+def body_header(data, dt, nmax=8, boundary="f f f", pre="", pair=True):
+    """A deck head for LAMMPS's rounded polyhedra read from the data file data (SI units,
+    nmax: body_nmax), with pair body/rounded/polyhedron at zero stiffness (fix
+    wall/body/polyhedron needs it; one body alone), else pair none (bodies that do not
+    touch each other), and compute quat for the dumps (BCOLS)."""
+    pair = ("pair_style body/rounded/polyhedron 0 0 0 0 0.001\npair_coeff * * 0 0" if pair
+            else "pair_style none")
+    return f"""atom_style body rounded/polyhedron 1 {nmax}
+atom_modify map array
+boundary {boundary}
+units si
+{pre}read_data {data}
+neighbor 0.002 bin
+neigh_modify delay 0
+{pair}
+comm_modify vel yes
+timestep {dt!r}
+compute quat all property/atom quatw quati quatj quatk
+"""
+
+
+def body_nmax(bodies):
+    """The nmax of atom_style body rounded/polyhedron 1 nmax that holds bodies: LAMMPS sizes
+    a body's storage as 9 nmax + 2 doubles (3 a vertex, 2 an edge, 4 a face, each up to
+    nmax), so a body of more edges or faces than vertices needs a larger nmax."""
+    return max(max(len(b["V"]), -(-(3 * len(b["V"]) + 2 * len(b["E"]) + 4 * len(b["F"])) // 9))
+               for b in bodies)
+
+
+def rotate(v, axis, angle):
+    """v turned by angle degrees about axis (Rodrigues)."""
+    a = math.radians(angle)
+    n = math.sqrt(sum(c * c for c in axis))
+    k = [c / n for c in axis]
+    c, s = math.cos(a), math.sin(a)
+    d = sum(k[i] * v[i] for i in range(3))
+    cr = (k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2], k[0] * v[1] - k[1] * v[0])
+    return tuple(v[i] * c + cr[i] * s + k[i] * d * (1 - c) for i in range(3))
+
+
+def box_body(h):
+    """A box of half-extents h: its 8 vertices, 12 edges and 6 quadrilateral faces
+    (right-handed, outward)."""
+    V = [(sx * h[0], sy * h[1], sz * h[2]) for sz in (-1, 1) for sy in (-1, 1)
+         for sx in (-1, 1)]
+    E = [(0, 1), (2, 3), (4, 5), (6, 7), (0, 2), (1, 3), (4, 6), (5, 7), (0, 4), (1, 5),
+         (2, 6), (3, 7)]
+    F = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+    return V, E, F
+
+
+def prism_body(n, radius, half_len):
+    """A right prism of n sides inscribed in a circle of radius, its axis along y from
+    -half_len to half_len: 2 n vertices, 3 n edges, n quadrilateral sides and its two
+    n-gon ends as fans of triangles."""
+    V = [(radius * math.cos(2 * math.pi * k / n), s * half_len,
+          radius * math.sin(2 * math.pi * k / n)) for s in (-1, 1) for k in range(n)]
+    E = [(k, (k + 1) % n) for k in range(n)] + [(n + k, n + (k + 1) % n) for k in range(n)] + \
+        [(k, n + k) for k in range(n)]
+    F = [(k, (k + 1) % n, n + (k + 1) % n, n + k) for k in range(n)]
+    F += [(0, k + 1, k) for k in range(1, n - 1)] + [(n, n + k, n + k + 1) for k in range(1, n - 1)]
+    return V, E, F
+
+
+def body_data(bodies, box, ntypes=2):
+    """A LAMMPS data file of rounded polyhedra: bodies is a list of dicts with V, E, F
+    (vertices as displacements from the centre of mass, in the world frame), r (rounding
+    radius), m (mass), I (6 moments of inertia ixx iyy izz ixy ixz iyz about the centre,
+    world frame), x (centre) and optionally v and L (angular momentum)."""
+    s = "LAMMPS data file: rounded polyhedra\n\n%d atoms\n%d bodies\n%d atom types\n" % (
+        len(bodies), len(bodies), ntypes)
+    s += "%r %r xlo xhi\n%r %r ylo yhi\n%r %r zlo zhi\n\nAtoms\n\n" % tuple(box)
+    for k, b in enumerate(bodies):
+        s += "%d 1 1 %.17g %.17g %.17g %.17g\n" % ((k + 1, b["m"]) + tuple(b["x"]))
+    s += "\nVelocities\n\n"
+    for k, b in enumerate(bodies):
+        s += "%d %s\n" % (k + 1, " ".join("%.17g" % c for c in
+                                          tuple(b.get("v", (0, 0, 0))) + tuple(b.get("L", (0, 0, 0)))))
+    s += "\nBodies\n\n"
+    for k, b in enumerate(bodies):
+        vals = list(b["I"]) + [c for v in b["V"] for c in v] + \
+            [c for e in b["E"] for c in e] + \
+            [c for f in b["F"] for c in (list(f) + [-1] * (4 - len(f)))] + [2 * b["r"]]
+        s += "%d 3 %d\n%d %d %d\n" % (k + 1, len(vals), len(b["V"]), len(b["E"]), len(b["F"]))
+        line = ""
+        for v in vals:  # LAMMPS reads at most 32 lines of 255 characters a body
+            w = "%d" % v if v == int(v) and abs(v) < 1000 else "%.17g" % v
+            if len(line) + len(w) + 1 > 250:
+                s += line + "\n"
+                line = ""
+            line += (" " if line else "") + w
+        s += line + "\n"
+    return s
 
 
 def check_ranks_sums(s, t1, t2, cols):

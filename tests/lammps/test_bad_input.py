@@ -7,9 +7,10 @@ Each line runs in a one-sphere deck of lmp-rigidsurf; the run must end with exit
 Errors that LAMMPS's own fix wall/gran parser finds in the model words of law lammps keep
 LAMMPS's message; LAMMPS then names the command on its `Last command:` line. Two of the
 lines also run on 2 ranks (error->all on every rank: still one message). Particles the fix
-does not take: atom_style body (rounded polyhedra are not supported), an ellipsoid style
-whose particle was given no shape, law lammps (LAMMPS's sphere-wall models) on
-ellipsoids, and an ellipsoid that appears during a run that began without one.
+does not take: atom_style body of a style other than rounded/polyhedron (nparticle), an
+ellipsoid style whose particle was given no shape, law lammps (LAMMPS's sphere-wall
+models) on ellipsoids, and an ellipsoid that appears during a run that began without one.
+Bad rounded polyhedra (non-convex, law lammps): tests/lammps/test_bodies.py.
 """
 import lmplib as M
 
@@ -91,15 +92,15 @@ def particles(s):
     one = "create_atoms 1 single 0 0 0.02 units box\n"
     cases = [
         ("atom_style body", "body nparticle 1 4", one + "set atom 1 mass 1.0\n", hertz,
-         "nve", ["Fix wall/rigid w", "atom_style body", "not supported",
-                 "atom_style ellipsoid"]),
+         "nve", ["Fix wall/rigid w", "atom_style body", "rounded/polyhedron bodies only",
+                 "not nparticle"]),
         ("an ellipsoid style without a shape", "ellipsoid", one + "set atom 1 mass 1.0\n",
          hertz, "nve", ["Fix wall/rigid w", "particle 1 of group all",
-                        "neither an ellipsoid nor a sphere", "set ... shape"]),
+                        "neither a body, an ellipsoid nor a sphere", "set ... shape"]),
         ("law lammps on ellipsoids", "hybrid sphere ellipsoid",
          M.ellipsoid(1, (0, 0, 0.02), (0.004, 0.005, 0.006), 2500.0, hybrid=True),
          BASE + HOOKE,
-         "nve/asphere", ["Fix wall/rigid w", "law lammps", "ellipsoids take rigidsurf's laws"]),
+         "nve/asphere", ["Fix wall/rigid w", "law lammps", "ellipsoids and bodies take rigidsurf's laws"]),
     ]
     for name, style, atoms, line, integrator, want in cases:
         for np in (1, 2):
@@ -118,7 +119,7 @@ def particles(s):
     s.ck.check("an ellipsoid appearing during a run: one error naming the fix and the particle",
                rc == 1 and len(set(errs)) == 1 and "Segmentation" not in out
                and all(w in errs[0] for w in ("Fix wall/rigid w", "particle 1 of group all",
-                                              "became an ellipsoid during a run")),
+                                              "became a body during a run")),
                errs[0] if errs else "exit %s, no error" % rc)
 
 

@@ -581,6 +581,38 @@ static void test_a_failed_make_leaves_no_shape(void)
     ENSURE(s.verts == NULL);
 }
 
+/* A slender hull keeps every extreme point: a right prism of 24 sides, radius 0.5 and
+ * length 10 (a rod-like rounded body's core), has its 48 corners as vertices and
+ * 2 * 48 - 4 triangles (CGAL's triangle-set output of the hull kept 40 of them), each
+ * corner within rounding of the hull (its support along the corner's own direction is
+ * the corner), and its centre of mass on the axis. */
+static void test_slender_hull_keeps_every_corner(void)
+{
+    enum { NSIDE = 24 };
+    double xyz[3 * 2 * NSIDE];
+    for (int e = 0; e < 2; e++)
+        for (int k = 0; k < NSIDE; k++) {
+            double *p = xyz + 3 * (e * NSIDE + k);
+            const double a = 2.0 * acos(-1.0) * k / NSIDE;
+            p[0] = 0.5 * cos(a);
+            p[1] = e ? 5.0 : -5.0;
+            p[2] = 0.5 * sin(a);
+        }
+    rs_shape s;
+    ENSURE(rs_shape_make_polyhedron(&s, xyz, 2 * NSIDE, 0.0, NULL) == RS_OK);
+    ENSURE(s.nv == 2 * NSIDE);
+    ENSURE(s.nt == 4 * NSIDE - 4);
+    for (int d = 0; d < 3; d++)
+        ENSURE(fabs(s.shift[d]) < 1e-14);
+    for (int i = 0; i < 2 * NSIDE; i++) {
+        const double *p = xyz + 3 * i;
+        double out[3];
+        rs_shape_support(&s, p, out);
+        ENSURE(fabs(out[0] - p[0]) + fabs(out[1] - p[1]) + fabs(out[2] - p[2]) < 1e-14);
+    }
+    rs_shape_free(&s);
+}
+
 int main(void)
 {
     RS_RUN(test_support_brute_force);
@@ -595,5 +627,6 @@ int main(void)
     RS_RUN(test_hulls_are_canonical);
     RS_RUN(test_large_hull_support_climbs_to_the_top);
     RS_RUN(test_a_failed_make_leaves_no_shape);
+    RS_RUN(test_slender_hull_keeps_every_corner);
     return rs_test_summary();
 }

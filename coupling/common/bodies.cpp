@@ -1,16 +1,19 @@
-/* An engine's ellipsoids as the wall's convex bodies (ellipsoids.h). */
-#include "ellipsoids.h"
+/* An engine's ellipsoids as the wall's convex bodies (bodies.h); its rounded polyhedra:
+ * body_polyhedron.cpp. */
+#include "bodies.h"
 
 #include <cmath>
 #include <cstring>
 
-RsEllipsoids::~RsEllipsoids()
+RsBodies::~RsBodies()
 {
     for (auto &s : shapes_)
         rs_shape_free(s.second.get());
+    for (auto &p : polyhedra_)
+        rs_shape_free(&p.second->shape);
 }
 
-void RsEllipsoids::resize(int n)
+void RsBodies::resize(int n)
 {
     const size_t un = n > 0 ? (size_t)n : 0;
     rs_body none;
@@ -20,7 +23,7 @@ void RsEllipsoids::resize(int n)
     omega_.assign(3 * un, 0.0);
 }
 
-void RsEllipsoids::sphere(int i, double r, const double *w)
+void RsBodies::sphere(int i, double r, const double *w)
 {
     body_[i].shape = nullptr;
     radius_[i] = r;
@@ -28,7 +31,7 @@ void RsEllipsoids::sphere(int i, double r, const double *w)
         omega_[3 * (size_t)i + d] = w ? w[d] : 0.0;
 }
 
-int RsEllipsoids::ellipsoid(int i, const double half[3], const double x[3],
+int RsBodies::ellipsoid(int i, const double half[3], const double x[3],
                             const double q[4], double m, const double L[3], rs_error *err)
 {
     const std::array<double, 3> key = {half[0], half[1], half[2]};
@@ -55,7 +58,14 @@ int RsEllipsoids::ellipsoid(int i, const double half[3], const double x[3],
     std::memset(b.axes, 0, sizeof b.axes);
     b.axes[0] = b.axes[4] = b.axes[8] = 1.0;
     radius_[i] = std::cbrt(half[0] * half[1] * half[2]);
-    /* w = R I^-1 R^T L: the momentum in body axes, over the moments, back to the world */
+    spin(i, L);
+    return RS_OK;
+}
+
+/* w = R I^-1 R^T L: the momentum in body axes, over the moments, back to the world */
+void RsBodies::spin(int i, const double L[3])
+{
+    const rs_body &b = body_[i];
     double R[9], wb[3];
     rs_body_rotation(&b, R);
     for (int k = 0; k < 3; k++) {
@@ -65,5 +75,4 @@ int RsEllipsoids::ellipsoid(int i, const double half[3], const double x[3],
     for (int d = 0; d < 3; d++)
         omega_[3 * (size_t)i + d] =
             R[3 * d] * wb[0] + R[3 * d + 1] * wb[1] + R[3 * d + 2] * wb[2];
-    return RS_OK;
 }
