@@ -217,3 +217,32 @@ def check_ranks_sums(s, t1, t2, cols):
         d = max(rel_diff(a[col], b[col], floor) for a, b in zip(t1, t2))
         s.ck.check("the wall's %s, 2 ranks = 1 rank to 1e-12" % what, d <= 1e-12,
                    "worst rel %.3g" % d)
+
+
+def check_restart(s, f1, fr, first):
+    """A restarted run's frames (fr) against the uninterrupted run's (f1) from step first
+    on: the same steps, and every dumped value to 1e-12 of its column's largest."""
+    cont = [(st, f) for st, f in f1 if st >= first]
+    if not s.ck.check("the restarted run's frames line up with the uninterrupted run's",
+                      [st for st, _ in cont] == [st for st, _ in fr],
+                      "%d vs %d" % (len(cont), len(fr))):
+        return
+    worst = (0.0, None)
+    for (st, a), (_, b) in zip(cont, fr):
+        for i in a:
+            for c in a[i]:
+                scale = max(abs(f[j][c]) for _, f in cont for j in f) or 1.0
+                d = abs(a[i][c] - b[i][c]) / scale
+                if d > worst[0]:
+                    worst = (d, (st, i, c))
+    s.ck.check("restart (1 rank, then 2 ranks) = the uninterrupted run to 1e-12",
+               worst[0] <= 1e-12, "worst %.3g (of the column's largest) at %s" % worst)
+
+
+def x_crossings(frames):
+    """How many times particles cross the plane x = 0 between consecutive frames (the
+    boundary between the ranks of a 2-rank run)."""
+    n = 0
+    for (_, a), (_, b) in zip(frames, frames[1:]):
+        n += sum(1 for i in a if a[i]["x"] * b[i]["x"] < 0)
+    return n

@@ -79,9 +79,7 @@ def body(s):
 
     f1, f2 = M.read_dump(s.path("np1.dump")), M.read_dump(s.path("np2.dump"))
     s.ck.check("all 12 ellipsoids kept", all(len(f) == 12 for _, f in f1 + f2))
-    crossings = 0
-    for (_, a), (_, b) in zip(f1, f1[1:]):
-        crossings += sum(1 for i in a if a[i]["x"] * b[i]["x"] < 0)
+    crossings = M.x_crossings(f1)
     s.ck.check("ellipsoids migrated between the ranks (crossed x = 0)", crossings >= 5,
                "%d crossings between dumps" % crossings)
     t1, t2 = M.read_table(s.path("np1.tot")), M.read_table(s.path("np2.tot"))
@@ -94,22 +92,7 @@ def body(s):
                "first difference: %s" % (diff,))
     M.check_ranks_sums(s, t1, t2, ((0, "Fx"), (1, "Fz")))
 
-    fr = M.read_dump(s.path("second.dump"))
-    cont = [(st, f) for st, f in f1 if st >= STEPS // 2]
-    if not s.ck.check("the restarted run's frames line up with the uninterrupted run's",
-                      [st for st, _ in cont] == [st for st, _ in fr],
-                      "%d vs %d" % (len(cont), len(fr))):
-        return
-    worst = (0.0, None)
-    for (st, a), (_, b) in zip(cont, fr):
-        for i in a:
-            for c in a[i]:
-                scale = max(abs(f[j][c]) for _, f in cont for j in f) or 1.0
-                d = abs(a[i][c] - b[i][c]) / scale
-                if d > worst[0]:
-                    worst = (d, (st, i, c))
-    s.ck.check("restart (1 rank, then 2 ranks) = the uninterrupted run to 1e-12",
-               worst[0] <= 1e-12, "worst %.3g (of the column's largest) at %s" % worst)
+    M.check_restart(s, f1, M.read_dump(s.path("second.dump")), STEPS // 2)
 
 
 if __name__ == "__main__":
