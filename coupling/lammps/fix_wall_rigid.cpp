@@ -241,9 +241,9 @@ void FixWallRigid::exchange_size()
     maxexchange = rs_wall_pack_size(wall_);
 }
 
-/* The group's particles at a run's start: each an ellipsoid or a sphere (a particle of
- * atom_style ellipsoid without a shape is neither); bodies_on_ when an ellipsoid is among
- * them on any rank. */
+/* The group's particles at a run's start: each a body (an ellipsoid or a rounded
+ * polyhedron) or a sphere (a particle of atom_style ellipsoid or body without a shape or
+ * body is neither); bodies_on_ when a body is among them on any rank. */
 void FixWallRigid::check_particles()
 {
     double v[2] = {0.0, 1e300}; // the ellipsoids, the smallest id of a particle of neither

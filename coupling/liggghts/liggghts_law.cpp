@@ -280,7 +280,6 @@ LiggghtsLaw::Result LiggghtsLaw::contact(const LiggghtsContact &c, double F[3], 
             c.history[h] = 0.0;
         return kNone;
     }
-    hist_in_.assign(c.history, c.history + nhist_);
     LCM::SurfacesIntersectData sd;
     /* What a model reads that another sets, zero until set: a rolling model reads kn,
      * which thornton_ning leaves unset (LIGGGHTS's constructor leaves these values
@@ -341,17 +340,18 @@ LiggghtsLaw::Result LiggghtsLaw::contact(const LiggghtsContact &c, double F[3], 
     }
     atom->v = vsrc_;
     atom->omega = wsrc_;
-    std::copy(hist_work_.begin() + 1, hist_work_.end(), c.history);
+    /* c.history holds the history the call started from until the model's is finite */
     bool finite = true;
-    for (int h = 0; h < nhist_; h++)
-        finite = finite && std::isfinite(c.history[h]);
+    for (int h = 1; h <= nhist_; h++)
+        finite = finite && std::isfinite(hist_work_[h]);
     for (int d = 0; d < 3; d++)
         finite =
             finite && std::isfinite(fi.delta_F[d]) && std::isfinite(fi.delta_torque[d]);
     if (!finite) {
-        nonfinite(c, hist_in_.data(), fi.delta_F, fi.delta_torque);
+        nonfinite(c, c.history, fi.delta_F, fi.delta_torque);
         return kNotFinite;
     }
+    std::copy(hist_work_.begin() + 1, hist_work_.end(), c.history);
     if (!sd.has_force_update)
         return kNone;
     for (int d = 0; d < 3; d++) {

@@ -99,7 +99,6 @@ class LiggghtsLaw final : public LIGGGHTS::IContactHistorySetup
     LAMMPS *lmp_;
     std::string desc_, failure_;
     std::vector<std::string> hist_names_; ///< the model's history values, by offset
-    std::vector<double> hist_in_;         ///< the history a call starts from
     std::vector<double> hist_work_;       ///< 0, then the history the model works on
     struct Model;
     Model *model_;

@@ -69,9 +69,9 @@ void rs_wall_force_result(rs_law_block *b, int e, const rs_force_contact *c,
     double *f = b->force + 3 * (size_t)e, *t = b->torque + 3 * (size_t)e;
     for (int d = 0; d < 3; d++)
         f[d] = F[d], t[d] = T[d];
+    double st[3];
+    wall_force_stress(F, c->n, c->t1, c->t2, st);
     double *s = b->stress + (size_t)e * b->nDir;
-    s[0] = F[0] * c->n[0] + F[1] * c->n[1] + F[2] * c->n[2];
-    s[1] = -(F[0] * c->t1[0] + F[1] * c->t1[1] + F[2] * c->t1[2]);
-    if (b->nDir == 3)
-        s[2] = -(F[0] * c->t2[0] + F[1] * c->t2[1] + F[2] * c->t2[2]);
+    for (int d = 0; d < b->nDir; d++)
+        s[d] = st[d];
 }

@@ -38,9 +38,9 @@ typedef struct force_run {
     double hist[RS_TRACK_LINE_RUN * RS_FORCE_LINE_STATEV];
 } force_run;
 
-/* The first NaN or Inf of contact j's stress (F in the contact's frame, computed here as
- * rs_wall_force_result does where the model acted), force and torque, in the order
- * rs_law_call looks for them, or RS_OK. */
+/* The first NaN or Inf of contact j's stress (wall_force_stress where the model acted, as
+ * rs_wall_force_result gives it), force and torque, in the order rs_law_call looks for
+ * them, or RS_OK. */
 static int check_contact(const rs_wall *w, const force_run *fr, int j, const int *row,
                          const int *tag, const rs_contacts *c, int m, rs_error *err)
 {
@@ -49,13 +49,12 @@ static int check_contact(const rs_wall *w, const force_run *fr, int j, const int
                                          "torque(1)", "torque(2)", "torque(3)"};
     const int id = tag ? tag[row[j]] : row[j] + 1;
     const double F[3] = {fr->F[0][j], fr->F[1][j], fr->F[2][j]};
-    const double *n[3] = {c->nrm[0], c->nrm[1], c->nrm[2]};
-    const double *a[3] = {c->t1[0], c->t1[1], c->t1[2]};
-    const double *b[3] = {c->t2[0], c->t2[1], c->t2[2]};
-    const double S[3] = {
-        fr->acts[j] ? F[0] * n[0][j] + F[1] * n[1][j] + F[2] * n[2][j] : 0.0,
-        fr->acts[j] ? -(F[0] * a[0][j] + F[1] * a[1][j] + F[2] * a[2][j]) : 0.0,
-        fr->acts[j] ? -(F[0] * b[0][j] + F[1] * b[1][j] + F[2] * b[2][j]) : 0.0};
+    const double n[3] = {c->nrm[0][j], c->nrm[1][j], c->nrm[2][j]};
+    const double a[3] = {c->t1[0][j], c->t1[1][j], c->t1[2][j]};
+    const double b[3] = {c->t2[0][j], c->t2[1][j], c->t2[2][j]};
+    double S[3] = {0.0, 0.0, 0.0};
+    if (fr->acts[j])
+        wall_force_stress(F, n, a, b, S);
     for (int i = 0; i < 3; i++)
         if (!isfinite(S[i]))
             return rs_law_nonfinite_error(w->law, id, c->feature[j], j, m, sname[i], S[i],
@@ -165,13 +164,16 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
         fr.T[0][j] = T[0], fr.T[1][j] = T[1], fr.T[2][j] = T[2];
         acc |= rs_nonfinite_bit(F[0]) | rs_nonfinite_bit(F[1]) | rs_nonfinite_bit(F[2]) |
                rs_nonfinite_bit(T[0]) | rs_nonfinite_bit(T[1]) | rs_nonfinite_bit(T[2]);
-        /* the stress as rs_wall_force_result gives it; zeros where the model acts not */
+        /* the stress as rs_wall_force_result gives it (wall_force_stress); zeros where the
+         * model acts not */
         if (out6) {
-            fr.S[0][j] = acts ? F[0] * fc.n[0] + F[1] * fc.n[1] + F[2] * fc.n[2] : 0.0;
-            fr.S[1][j] = acts ? -(F[0] * fc.t1[0] + F[1] * fc.t1[1] + F[2] * fc.t1[2]) : 0.0;
-            fr.S[2][j] = acts ? -(F[0] * fc.t2[0] + F[1] * fc.t2[1] + F[2] * fc.t2[2]) : 0.0;
-            acc |= rs_nonfinite_bit(fr.S[0][j]) | rs_nonfinite_bit(fr.S[1][j]) |
-                   rs_nonfinite_bit(fr.S[2][j]);
+            double S[3] = {0.0, 0.0, 0.0};
+            if (acts)
+                wall_force_stress(F, fc.n, fc.t1, fc.t2, S);
+            for (int d = 0; d < 3; d++) {
+                fr.S[d][j] = S[d];
+                acc |= rs_nonfinite_bit(S[d]);
+            }
         }
     }
     for (int j = 0; (acc >> 63) && j < m; j++)

@@ -317,6 +317,15 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
 /// The most state variables a contact of the force pass keeps (in the run's copy).
 #define RS_FORCE_LINE_STATEV 16
 int wall_force_line_takes(const rs_wall *w);
+/// A force law's stress: its force F on the particle in the contact's frame, s = (F.n,
+/// -F.t1, -F.t2), so that F = s1 n - s2 t1 - s3 t2 (docs/conventions.md).
+static inline void wall_force_stress(const double F[3], const double n[3],
+                                     const double t1[3], const double t2[3], double s[3])
+{
+    s[0] = F[0] * n[0] + F[1] * n[1] + F[2] * n[2];
+    s[1] = -(F[0] * t1[0] + F[1] * t1[1] + F[2] * t1[2]);
+    s[2] = -(F[0] * t2[0] + F[1] * t2[1] + F[2] * t2[2]);
+}
 int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp, double dt,
                         const rs_particle_block *p, const rs_contacts *c,
                         const double origin[3], const rs_load_rows *rows, rs_wall_load *wl,
