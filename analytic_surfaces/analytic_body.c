@@ -71,6 +71,6 @@ int rs_analytic_body(const rs_surface *s, const rs_pose *pose, const rs_body *b,
     c.s = s;
     c.pc = s->impl;
     rs_analytic_frame(s, pose, c.F);
-    return rs_body_fixed_point_with(s, pose, b, n, gap_max, lenient, extruded_face, &c,
-                                    out, err);
+    return rs_body_fixed_point_with(s, pose, b, n, gap_max, lenient, extruded_face, &c, out,
+                                    err);
 }

@@ -31,8 +31,8 @@ void RsBodies::sphere(int i, double r, const double *w)
         omega_[3 * (size_t)i + d] = w ? w[d] : 0.0;
 }
 
-int RsBodies::ellipsoid(int i, const double half[3], const double x[3],
-                            const double q[4], double m, const double L[3], rs_error *err)
+int RsBodies::ellipsoid(int i, const double half[3], const double x[3], const double q[4],
+                        double m, const double L[3], rs_error *err)
 {
     const std::array<double, 3> key = {half[0], half[1], half[2]};
     auto it = shapes_.find(key);

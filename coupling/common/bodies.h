@@ -7,8 +7,8 @@
  *
  * An ellipsoid becomes an rs_body whose shape is made once per distinct half-axis triple (a
  * triple first met in a later call is made then) and kept for the adapter's life; its
- * principal moments are those of a uniform solid ellipsoid, m/5 (b^2 + c^2), m/5 (a^2 + c^2),
- * m/5 (a^2 + b^2) about its body axes.
+ * principal moments are those of a uniform solid ellipsoid, m/5 (b^2 + c^2), m/5 (a^2 +
+ * c^2), m/5 (a^2 + b^2) about its body axes.
  *
  * A rounded polyhedron (body_polyhedron.cpp) is the convex hull of its vertices (given in
  * its principal axes, as displacements from its centre of mass) rounded by its rounding
@@ -16,9 +16,9 @@
  * frame as given (its origin the engine's centre of mass, not the uniform hull's), made
  * once it is checked to be convex; its principal moments are the engine's.
  *
- * Either body's angular velocity is w = R I^-1 R^T L (a zero moment gives a zero component),
- * and its characteristic length (the radius a law sees) that of the sphere of equal volume,
- * as the standalone driver takes it: (a b c)^(1/3) for an ellipsoid. */
+ * Either body's angular velocity is w = R I^-1 R^T L (a zero moment gives a zero
+ * component), and its characteristic length (the radius a law sees) that of the sphere of
+ * equal volume, as the standalone driver takes it: (a b c)^(1/3) for an ellipsoid. */
 #ifndef RIGIDSURF_COUPLING_BODIES_H
 #define RIGIDSURF_COUPLING_BODIES_H
 

@@ -87,7 +87,8 @@ int RsBodies::check_convex(const rs_shape &s, const double *verts, int nv,
                                 "face %d has %d vertices (expected 3 .. %d)", f, m,
                                 face_size);
         for (int k = 0; k < m; k++) { // Newell's normal and the centroid
-            const double *a = verts + 3 * (int)row[k], *b = verts + 3 * (int)row[(k + 1) % m];
+            const double *a = verts + 3 * (int)row[k],
+                         *b = verts + 3 * (int)row[(k + 1) % m];
             n[0] += (a[1] - b[1]) * (a[2] + b[2]);
             n[1] += (a[2] - b[2]) * (a[0] + b[0]);
             n[2] += (a[0] - b[0]) * (a[1] + b[1]);

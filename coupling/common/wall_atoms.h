@@ -100,8 +100,8 @@ template <class Fix> class RsWallAtoms : public Fix
     {
         rs_error err;
         rs_error_clear(&err);
-        if (rs_adapter_unpack_restart(wall_, nlocal, this->atom->extra[nlocal], nth, &err) !=
-            RS_OK)
+        if (rs_adapter_unpack_restart(wall_, nlocal, this->atom->extra[nlocal], nth,
+                                      &err) != RS_OK)
             fail_one(err.msg);
     }
 
@@ -117,7 +117,8 @@ template <class Fix> class RsWallAtoms : public Fix
 
     double memory_usage() override
     {
-        return rs_wall_memory(wall_) + (info_->peratom ? 6.0 * nmax_ * sizeof(double) : 0.0);
+        return rs_wall_memory(wall_) +
+               (info_->peratom ? 6.0 * nmax_ * sizeof(double) : 0.0);
     }
 
   protected:
@@ -125,9 +126,7 @@ template <class Fix> class RsWallAtoms : public Fix
     [[noreturn]] virtual void fail(const std::string &msg) = 0;
     [[noreturn]] virtual void fail_one(const std::string &msg) = 0;
     /// After an atom came in through the exchange (its slots may have grown).
-    virtual void exchanged()
-    {
-    }
+    virtual void exchanged() {}
 
     rs_wall *wall_ = nullptr;
     const rs_wall_info *info_ = nullptr;

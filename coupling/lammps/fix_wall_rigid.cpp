@@ -3,8 +3,9 @@
  * (less the material keywords, wall_materials.h), init its run, setup its setup call,
  * initial_integrate its motion, post_force its step, final_integrate its servo; the atom
  * callbacks move its per-atom history. The group's ellipsoids and rounded polyhedra go to
- * the wall as convex bodies (bodies.h), in a run that asks every particle at every step. Syntax, keywords
- * and output: docs/fix_wall_rigid.md and, for what is LAMMPS's own, docs/lammps.md. */
+ * the wall as convex bodies (bodies.h), in a run that asks every particle at every step.
+ * Syntax, keywords and output: docs/fix_wall_rigid.md and, for what is LAMMPS's own,
+ * docs/lammps.md. */
 #include "fix_wall_rigid.h"
 #include "fix_wall_rigid_force.h"
 #include "lammps_law.h"
@@ -183,8 +184,8 @@ void FixWallRigid::init()
     avec_ = atom->ellipsoid_flag
                 ? dynamic_cast<AtomVecEllipsoid *>(atom->style_match("ellipsoid"))
                 : nullptr;
-    bvec_ = atom->body_flag ? dynamic_cast<AtomVecBody *>(atom->style_match("body"))
-                            : nullptr;
+    bvec_ =
+        atom->body_flag ? dynamic_cast<AtomVecBody *>(atom->style_match("body")) : nullptr;
     if (atom->body_flag &&
         (!bvec_ || std::strcmp(bvec_->bptr->style, "rounded/polyhedron") != 0))
         fail("atom_style body: the fix takes rounded/polyhedron bodies only, not " +
@@ -266,16 +267,17 @@ void FixWallRigid::check_particles()
     if (bodies_on_ && model_)
         fail(
             "law lammps runs LAMMPS's sphere-wall models, which take a sphere's centre and "
-            "radius; ellipsoids and bodies take rigidsurf's laws (hertz, hooke, coulomb, ...) or a "
+            "radius; ellipsoids and bodies take rigidsurf's laws (hertz, hooke, coulomb, "
+            "...) or a "
             "user's law");
 }
 
 /* atom_style ellipsoid and body: each ellipsoid of the group as the wall's body (its
- * half-axes and quaternion from LAMMPS's bonus data, its angular velocity from angmom), each
- * rounded polyhedron from its bonus data as body_rounded_polyhedron.cpp keeps it (ivalue:
- * vertices, edges, faces; dvalue: the vertices in its principal axes, the edges' ends, 4
- * vertex indices a face, the enclosing and the rounded radius; the bonus's principal
- * moments), each sphere with its radius and omega. */
+ * half-axes and quaternion from LAMMPS's bonus data, its angular velocity from angmom),
+ * each rounded polyhedron from its bonus data as body_rounded_polyhedron.cpp keeps it
+ * (ivalue: vertices, edges, faces; dvalue: the vertices in its principal axes, the edges'
+ * ends, 4 vertex indices a face, the enclosing and the rounded radius; the bonus's
+ * principal moments), each sphere with its radius and omega. */
 void FixWallRigid::fill_bodies()
 {
     const int n = atom->nlocal, FACE = 4;

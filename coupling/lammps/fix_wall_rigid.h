@@ -5,15 +5,16 @@
  * its own contact models as `law lammps`), keeps the per-atom outputs LAMMPS dumps, and
  * moves the wall's per-atom history through LAMMPS's exchange and restart callbacks. Its
  * particles are spheres (atom_style sphere), ellipsoids (atom_style ellipsoid) and rounded
- * polyhedra (atom_style body rounded/polyhedron), the last two as convex bodies (bodies.h). */
+ * polyhedra (atom_style body rounded/polyhedron), the last two as convex bodies (bodies.h).
+ */
 #ifndef RIGIDSURF_LAMMPS_FIX_WALL_RIGID_H
 #define RIGIDSURF_LAMMPS_FIX_WALL_RIGID_H
 
 #include "fix.h"
 
 #include "bodies.h"
-#include "wall_atoms.h"
 #include "rigidsurf/wall.h"
+#include "wall_atoms.h"
 #include "wall_materials.h"
 
 #include <string>

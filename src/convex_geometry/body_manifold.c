@@ -104,7 +104,8 @@ static int append(rs_contacts *c, int point, double radius, int feature, const m
                   rs_error *err)
 {
     if (c->n >= c->cap || !c->xs[0]) { /* room, and witness points (c->witness) */
-        const int rc = rs_contacts_reserve(c, c->n < c->cap ? c->n + 1 : 2 * c->n + 64, err);
+        const int rc =
+            rs_contacts_reserve(c, c->n < c->cap ? c->n + 1 : 2 * c->n + 64, err);
         if (rc)
             return rc;
     }

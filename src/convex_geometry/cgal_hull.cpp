@@ -204,7 +204,8 @@ void mesh_triangles(const CGAL::Surface_mesh<Point> &sm, std::vector<Point> &hp,
                     std::vector<Tri> &ht)
 {
     typedef CGAL::Surface_mesh<Point> Mesh;
-    std::vector<std::size_t> index(sm.number_of_vertices() + sm.number_of_removed_vertices());
+    std::vector<std::size_t> index(sm.number_of_vertices() +
+                                   sm.number_of_removed_vertices());
     for (Mesh::Vertex_index v : sm.vertices()) {
         index[(std::size_t)v] = hp.size();
         hp.push_back(sm.point(v));

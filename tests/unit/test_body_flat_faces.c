@@ -177,9 +177,9 @@ static void test_shapes_on_a_moved_plane_settle_at_the_closed_form(void)
     for (int k = 0; k < 3; k++)
         ax[k] /= la;
     const double c = cos(th), sn = sin(th), C = 1.0 - c;
-    const double Rm[9] = {c + ax[0] * ax[0] * C,         ax[0] * ax[1] * C - ax[2] * sn,
+    const double Rm[9] = {c + ax[0] * ax[0] * C,          ax[0] * ax[1] * C - ax[2] * sn,
                           ax[0] * ax[2] * C + ax[1] * sn, ax[1] * ax[0] * C + ax[2] * sn,
-                          c + ax[1] * ax[1] * C,         ax[1] * ax[2] * C - ax[0] * sn,
+                          c + ax[1] * ax[1] * C,          ax[1] * ax[2] * C - ax[0] * sn,
                           ax[2] * ax[0] * C - ax[1] * sn, ax[2] * ax[1] * C + ax[0] * sn,
                           c + ax[2] * ax[2] * C};
     memcpy(R, Rm, sizeof R);
@@ -210,7 +210,8 @@ static void test_shapes_on_a_moved_plane_settle_at_the_closed_form(void)
             /* the centre at height hgt - depth above the plane, anywhere along it */
             const double depth = urange(1e-5, 1e-3), t1 = urange(-1, 1), t2 = urange(-1, 1);
             for (int k = 0; k < 3; k++)
-                b.x[k] = pose.T[k] + (hgt - depth) * n[k] + t1 * R[3 * k] + t2 * R[3 * k + 1];
+                b.x[k] =
+                    pose.T[k] + (hgt - depth) * n[k] + t1 * R[3 * k] + t2 * R[3 * k + 1];
             rs_body_contact o[8];
             int m = 0;
             ENSURE(rs_body_surface_contacts(&s, &pose, &b, 0.0, o, 8, &m, &e) == RS_OK);

@@ -131,8 +131,8 @@ static void test_hull_gains_no_energy_as_it_settles(void)
             e_touch = e;
         if (!isnan(e_touch)) {
             excess = fmax(excess, e - e_touch);
-            wmax = fmax(wmax, sqrt(d.wx[0] * d.wx[0] + d.wy[0] * d.wy[0] +
-                                   d.wz[0] * d.wz[0]));
+            wmax =
+                fmax(wmax, sqrt(d.wx[0] * d.wx[0] + d.wy[0] * d.wy[0] + d.wz[0] * d.wz[0]));
         }
     }
     printf("hull: energy at most %.3g J above the first contact's (m g r = %.3g J), spin "

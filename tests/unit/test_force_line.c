@@ -114,8 +114,8 @@ static int tf_update(const rs_law *law, rs_law_block *b, rs_error *err)
     return RS_OK;
 }
 
-static int tf_engine_law(void *ctx, const char *const *words, int nwords, const rs_law **law,
-                         rs_error *err)
+static int tf_engine_law(void *ctx, const char *const *words, int nwords,
+                         const rs_law **law, rs_error *err)
 {
     (void)words, (void)nwords, (void)err;
     sim *s = ctx;
@@ -280,12 +280,11 @@ static void drum_particles(sim *s)
     s->g[1] = -9.81;
 }
 
-static const char *const DRUM[] = {"surface", "inline", "revolution", "origin", "0", "0", "0",
-                                   "axis",    "0",      "0",          "1",      "profile",
-                                   "START",   "0.05",   "-0.05",      "LINE",   "0.05",
-                                   "0.05",    "end",    "rotate",     "origin", "0",
-                                   "0",       "0",      "axis",       "0",      "0",
-                                   "1",       "omega",  "3"};
+static const char *const DRUM[] = {
+    "surface", "inline", "revolution", "origin",  "0",      "0",    "0",     "axis",
+    "0",       "0",      "1",          "profile", "START",  "0.05", "-0.05", "LINE",
+    "0.05",    "0.05",   "end",        "rotate",  "origin", "0",    "0",     "0",
+    "axis",    "0",      "0",          "1",       "omega",  "3"};
 
 static void test_drum_line_path_and_staged_bit_for_bit(void)
 {
@@ -346,8 +345,8 @@ static void test_mesh_line_path_and_staged_bit_for_bit(void)
     static sim a, b;
     plate_particles(&a);
     plate_particles(&b);
-    const char *words[] = {"surface", "inline", "mesh", path, "move", "linear", "0.2", "0",
-                           "0"};
+    const char *words[] = {"surface", "inline", "mesh", path, "move",
+                           "linear",  "0.2",    "0",    "0"};
     rs_error e;
     const int ma = make(&a, words, 9, 0, &e), mb = make(&b, words, 9, 1, &e);
     unlink(path);
