@@ -246,3 +246,14 @@ def x_crossings(frames):
     for (_, a), (_, b) in zip(frames, frames[1:]):
         n += sum(1 for i in a if a[i]["x"] * b[i]["x"] < 0)
     return n
+
+
+def run_ranks_restart(s, full, first, second):
+    """The decks of a ranks-and-restart test: full (its outputs named by the word 'full')
+    on 1 rank as np1 and on 2 ranks as np2, then first on 1 rank and second, which restarts
+    from it, on 2 ranks. Returns the dumps of np1 and np2."""
+    s.run("np1", full.replace("full", "np1"))
+    s.run("np2", full.replace("full", "np2"), np=2)
+    s.run("first", first)
+    s.run("second", second, np=2)
+    return read_dump(s.path("np1.dump")), read_dump(s.path("np2.dump"))

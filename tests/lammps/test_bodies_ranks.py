@@ -98,18 +98,14 @@ def body(s):
     head = M.body_header("bodies.data", DT, M.body_nmax(b), pre="processors * 1 1\n",
                          pair=False)
     full = head + fixes("full") + "run %d\n" % STEPS
-    s.run("np1", full.replace("full", "np1"))
-    s.run("np2", full.replace("full", "np2"), np=2)
     first = head + fixes("first") + "run %d\nwrite_restart half.restart\n" % (STEPS // 2)
-    s.run("first", first)
     second = ("read_restart half.restart\nneighbor 0.002 bin\nneigh_modify delay 0\n"
               "pair_style none\n"
               "comm_modify vel yes\n"
               "compute quat all property/atom quatw quati quatj quatk\n" +
               fixes("second") + "run %d\n" % (STEPS // 2))
-    s.run("second", second, np=2)
 
-    f1, f2 = M.read_dump(s.path("np1.dump")), M.read_dump(s.path("np2.dump"))
+    f1, f2 = M.run_ranks_restart(s, full, first, second)
     s.ck.check("all 10 bodies kept", all(len(f) == 10 for _, f in f1 + f2))
     crossings = M.x_crossings(f1)
     s.ck.check("bodies migrated between the ranks (crossed x = 0)", crossings >= 4,

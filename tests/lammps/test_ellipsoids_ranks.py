@@ -67,17 +67,13 @@ def head():
 def body(s):
     s.write("trough.inp", TROUGH)
     full = head() + atoms() + fixes("full", EVERY) + "run %d\n" % STEPS
-    s.run("np1", full.replace("full", "np1"))
-    s.run("np2", full.replace("full", "np2"), np=2)
     first = head() + atoms() + fixes("first", EVERY) + \
         "run %d\nwrite_restart half.restart\n" % (STEPS // 2)
-    s.run("first", first)
     second = ("read_restart half.restart\nneighbor 0.002 bin\nneigh_modify delay 0\n"
               "compute quat all property/atom quatw quati quatj quatk\n" +
               fixes("second", EVERY) + "run %d\n" % (STEPS // 2))
-    s.run("second", second, np=2)
 
-    f1, f2 = M.read_dump(s.path("np1.dump")), M.read_dump(s.path("np2.dump"))
+    f1, f2 = M.run_ranks_restart(s, full, first, second)
     s.ck.check("all 12 ellipsoids kept", all(len(f) == 12 for _, f in f1 + f2))
     crossings = M.x_crossings(f1)
     s.ck.check("ellipsoids migrated between the ranks (crossed x = 0)", crossings >= 5,

@@ -76,16 +76,12 @@ def head():
 def body(s):
     s.write("drum.inp", DRUM)
     full = head() + atoms() + fixes("full", 200) + "run %d\n" % STEPS
-    s.run("np1", full.replace("full", "np1"))
-    s.run("np2", full.replace("full", "np2"), np=2)
     first = head() + atoms() + fixes("first", 200) + "run %d\nwrite_restart half.restart\n" \
         % (STEPS // 2)
-    s.run("first", first)
     second = ("read_restart half.restart\nneighbor 0.002 bin\nneigh_modify delay 0\n"
               "comm_modify vel yes\n" + fixes("second", 200) + "run %d\n" % (STEPS // 2))
-    s.run("second", second, np=2)
 
-    f1, f2 = M.read_dump(s.path("np1.dump")), M.read_dump(s.path("np2.dump"))
+    f1, f2 = M.run_ranks_restart(s, full, first, second)
     n0 = len(f1[0][1])
     s.ck.check("the drum holds a few hundred spheres, all kept", 300 <= n0 <= 500
                and all(len(f) == n0 for _, f in f1 + f2), "%d" % n0)
