@@ -151,16 +151,18 @@ static int by_depth(const void *a, const void *b)
 }
 
 /* A core point's query: its body, the feature (index into the body's list) and id, its
- * point in the world and the lift of its ball. */
+ * point in the world and the lift of its ball; its row among the balls asked of the
+ * kind's closest operation (ask), or -1 with the kind's closed-form contact in got. */
 typedef struct corner {
-    int body, f, id;
+    int body, f, id, ask;
     double cw[3], lift;
+    rs_body_contact got;
 } corner;
 
 typedef struct corners {
     corner *q;
-    double *x; /* x, y, z, radius: 4 cap each */
-    int n, cap;
+    double *x; /* the balls asked: x, y, z, radius, cap each */
+    int n, nx, cap;
 } corners;
 
 /* Room for cap queries in a; 0, -1 when out of memory (a unchanged but a->q, which may
@@ -176,23 +178,31 @@ static int corners_room(corners *a, int cap)
             return -1;
         }
         for (int k = 0; k < 4; k++)
-            if (a->n)
+            if (a->nx)
                 memcpy(nx + (size_t)k * cap, a->x + (size_t)k * a->cap,
-                       (size_t)a->n * sizeof *nx);
+                       (size_t)a->nx * sizeof *nx);
         free(a->x);
         a->q = nq, a->x = nx, a->cap = cap;
     }
     return 0;
 }
 
-static int corners_add(corners *a, const corner *q, const double cl[3], double r)
+/* Appends q; with got NULL its ball (cl, r) is asked, else got is its contact. */
+static int corners_add(corners *a, const corner *q, const double cl[3], double r,
+                       const rs_body_contact *got)
 {
     if (a->n == a->cap && corners_room(a, 2 * a->cap))
         return -1;
-    a->q[a->n] = *q;
-    a->x[a->n] = cl[0], a->x[a->cap + a->n] = cl[1], a->x[2 * a->cap + a->n] = cl[2];
-    a->x[3 * a->cap + a->n] = r;
-    a->n++;
+    corner *c = a->q + a->n++;
+    *c = *q;
+    if (got) {
+        c->ask = -1;
+        c->got = *got;
+        return 0;
+    }
+    const int k = c->ask = a->nx++;
+    a->x[k] = cl[0], a->x[a->cap + k] = cl[1], a->x[2 * a->cap + k] = cl[2];
+    a->x[3 * a->cap + k] = r;
     return 0;
 }
 
@@ -200,6 +210,18 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
                      int point0, const double *radius, double gap_max, rs_contacts *c,
                      rs_error *err)
 {
+    rs_body_face face = {NULL, NULL, NULL, {0.0}};
+    if (s && s->ops && s->ops->body_face)
+        s->ops->body_face(s, pose, &face);
+    return rs_body_manifold_with(s, pose, body, n, point0, radius, gap_max, &face, c, err);
+}
+
+int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_body *body,
+                          int n, int point0, const double *radius, double gap_max,
+                          const rs_body_face *face, rs_contacts *c, rs_error *err)
+{
+    if (face && !face->fn)
+        face = NULL;
     if (!c || !c->witness)
         return rs_error_set(err, RS_ERR_ARG,
                             "body query: the contact list must keep witness points "
@@ -213,7 +235,7 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
         return RS_OK;
     /* each body's features in a list of its own, on a shared array while they fit */
     enum { FEATURES = 4 };
-    rs_body *b = malloc((size_t)n * sizeof *b);
+    rs_body *b = malloc((size_t)n * (sizeof *b + sizeof(double))); /* and their reach */
     rs_body_contacts *fl = malloc((size_t)n * sizeof *fl);
     rs_body_contact *pool = malloc((size_t)n * FEATURES * sizeof *pool);
     if (!b || !fl || !pool) {
@@ -241,13 +263,16 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
      * on another one). flat facets (the FACETED convention): a ball moved along the
      * normal has the same depth on their planes. */
     const int mesh = s->ops->frame == RS_FRAME_GLOBAL_X;
-    corners cq = {NULL, NULL, 0, 0};
+    corners cq = {NULL, NULL, 0, 0, 0};
     if (rc == RS_OK && corners_room(&cq, n + 64))
         rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
-    double gap = 0.0;
+    double *rch = (double *)(b + n), gap = 0.0;
     for (int i = 0; i < n && rc == RS_OK; i++) {
-        const double rr = rs_shape_core_radius(b[i].shape), reach = rs_body_reach(b + i);
-        gap = fmax(gap, 2.0 * reach + gap_max);
+        rch[i] = rs_body_reach(b + i);
+        gap = fmax(gap, 2.0 * rch[i] + gap_max);
+    }
+    for (int i = 0; i < n && rc == RS_OK; i++) {
+        const double rr = rs_shape_core_radius(b[i].shape), reach = rch[i];
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++)
             if (fl[i].c[f].feature >= RS_MANIFOLD_STRIDE)
                 rc = rs_error_set(err, RS_ERR_CAPACITY,
@@ -285,7 +310,7 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
             for (int k = 0; k < ncp; k++) {
                 if (-dn * rs_dot3(d, cp[k].p) + nx - rr - nxs > clear)
                     continue;
-                corner q = {i, f, cp[k].id, {0.0, 0.0, 0.0}, lift};
+                corner q = {i, f, cp[k].id, -1, {0.0, 0.0, 0.0}, lift, {0}};
                 rs_matvec3(R, cp[k].p, q.cw);
                 for (int j = 0; j < 3; j++)
                     q.cw[j] += b[i].x[j];
@@ -300,7 +325,11 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
                 const double cl[3] = {q.cw[0] + lift * o->normal[0],
                                       q.cw[1] + lift * o->normal[1],
                                       q.cw[2] + lift * o->normal[2]};
-                if (corners_add(&cq, &q, cl, rr + lift))
+                /* the kind's closed form, where it has one for the ball on the feature */
+                rs_body_contact got;
+                const int closed =
+                    face && face->fn(face, RS_FEATURE_BASE(o->feature), cl, gap, rr + lift, &got);
+                if (corners_add(&cq, &q, cl, rr + lift, closed ? &got : NULL))
                     rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
             }
         }
@@ -308,22 +337,22 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
     rs_contacts pc;
     memset(&pc, 0, sizeof pc);
     int *off = NULL;
-    if (rc == RS_OK && cq.n > 0) {
-        off = malloc(((size_t)cq.n + 1) * sizeof *off);
-        rc = off ? rs_contacts_reserve(&pc, 2 * cq.n + 64, err)
+    if (rc == RS_OK && cq.nx > 0) {
+        off = malloc(((size_t)cq.nx + 1) * sizeof *off);
+        rc = off ? rs_contacts_reserve(&pc, 2 * cq.nx + 64, err)
                  : rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
         if (rc == RS_OK)
-            rc = rs_body_closest(s, pose, cq.n, cq.x, cq.x + cq.cap, cq.x + 2 * cq.cap,
+            rc = rs_body_closest(s, pose, cq.nx, cq.x, cq.x + cq.cap, cq.x + 2 * cq.cap,
                                  cq.x + 3 * cq.cap, gap, gap, &pc, err);
         if (rc == RS_OK)
-            rs_contacts_offsets(&pc, cq.n, off);
+            rs_contacts_offsets(&pc, cq.nx, off);
     }
 
     /* Each body's manifold per feature, in order: the deepest point and the core points
      * that rest on the feature's wall. */
     for (int i = 0, a = 0; i < n && rc == RS_OK; i++) {
         const int k0 = c->n;
-        const double rr = rs_shape_core_radius(b[i].shape), reach = rs_body_reach(b + i);
+        const double rr = rs_shape_core_radius(b[i].shape), reach = rch[i];
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
             const rs_body_contact *o = &fl[i].c[f];
             mpoint m[CAND_MAX];
@@ -339,11 +368,28 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
             int deep_is_core = 0;
             for (; a < cq.n && cq.q[a].body == i && cq.q[a].f == f; a++) {
                 const corner *q = cq.q + a;
-                const int j =
-                    rs_contacts_pick(&pc, off[a], off[a + 1], RS_FEATURE_BASE(o->feature));
-                if (j < 0 || !same_wall(&pc, j, o, reach))
-                    continue;
-                const double depth = rr + q->lift - pc.dist[j];
+                const rs_body_contact *g = &q->got;
+                double dist;
+                if (q->ask >= 0) { /* its contact from the query, as the kind's form */
+                    const int j = rs_contacts_pick(&pc, off[q->ask], off[q->ask + 1],
+                                                   RS_FEATURE_BASE(o->feature));
+                    if (j < 0 || !same_wall(&pc, j, o, reach))
+                        continue;
+                    rs_body_contact *t = &cq.q[a].got;
+                    t->feature = pc.feature[j];
+                    t->depth = -pc.dist[j];
+                    for (int k = 0; k < 3; k++) {
+                        t->xm[k] = pc.xm[k][j];
+                        t->normal[k] = pc.nrm[k][j];
+                        t->t1[k] = pc.t1[k][j];
+                        t->t2[k] = pc.t2[k][j];
+                    }
+                    t->curv[0] = pc.curv[0][j];
+                    t->curv[1] = pc.curv[1][j];
+                    dist = pc.dist[j];
+                } else
+                    dist = -g->depth;
+                const double depth = rr + q->lift - dist;
                 if (!(-depth <= gap_max))
                     continue;
                 if (depth >= o->depth - 1e-12 * reach)
@@ -352,14 +398,14 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
                 p->id = q->id;
                 p->depth = depth;
                 for (int k = 0; k < 3; k++) {
-                    p->xs[k] = q->cw[k] - rr * pc.nrm[k][j];
-                    p->xm[k] = pc.xm[k][j];
-                    p->n[k] = pc.nrm[k][j];
-                    p->t1[k] = pc.t1[k][j];
-                    p->t2[k] = pc.t2[k][j];
+                    p->xs[k] = q->cw[k] - rr * g->normal[k];
+                    p->xm[k] = g->xm[k];
+                    p->n[k] = g->normal[k];
+                    p->t1[k] = g->t1[k];
+                    p->t2[k] = g->t2[k];
                 }
-                p->curv[0] = pc.curv[0][j];
-                p->curv[1] = pc.curv[1][j];
+                p->curv[0] = g->curv[0];
+                p->curv[1] = g->curv[1];
             }
             /* the deepest point stands for itself unless a core point is as deep (is it, or
              * rests on the wall beside it: a face, a rim); where it did not settle (a fold
