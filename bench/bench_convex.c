@@ -6,10 +6,11 @@
  * into the floor z = 0, given three ways: a CYLINDER plane and a MESH of two triangles
  * through rs_surface_query with the N bodies as one block (bodies as slaves: their
  * manifolds, what the driver asks), and one large triangle through rs_convex_triangle
- * alone (GJK, libccd's MPR and its refinement). The reference is the sphere's own path: the same N spheres in one
- * rs_surface_query block. Reported: ns per contact (median of the repetitions, thread
- * CPU time), the ratio to the sphere query, the contacts per body, and on the MESH the
- * calls of libccd's MPR and of our GJK per contact (the link wraps both and counts).
+ * alone (GJK, libccd's MPR and its refinement). The reference is the sphere's own path: the
+ * same N spheres in one rs_surface_query block. Reported: ns per contact (median of the
+ * repetitions, thread CPU time), the ratio to the sphere query, the contacts per body, and
+ * on the MESH the calls of libccd's MPR and of our GJK per contact (the link wraps both and
+ * counts).
  * --only K runs nothing but the plane's query of shape K (0 .. 8, the table's order; -1:
  * the sphere reference alone), R times, for an instruction count:
  *   valgrind --tool=callgrind --toggle-collect=rs_surface_query bench_convex --only K */

@@ -327,8 +327,8 @@ int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_bod
                                       q.cw[2] + lift * o->normal[2]};
                 /* the kind's closed form, where it has one for the ball on the feature */
                 rs_body_contact got;
-                const int closed =
-                    face && face->fn(face, RS_FEATURE_BASE(o->feature), cl, gap, rr + lift, &got);
+                const int closed = face && face->fn(face, RS_FEATURE_BASE(o->feature), cl,
+                                                    gap, rr + lift, &got);
                 if (corners_add(&cq, &q, cl, rr + lift, closed ? &got : NULL))
                     rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
             }

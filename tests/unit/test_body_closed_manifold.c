@@ -136,7 +136,8 @@ static void test_closed_form_manifold_is_the_querys(void)
                     X[2] = seg ? urange(-0.05, 0.05) : urange(-0.012, 0.04);
                     if (rev) { /* inside the drum, near its mantle */
                         const double ph = urange(0, 2 * RS_PI), rho = urange(0.035, 0.05);
-                        X[0] = rho * cos(ph), X[1] = rho * sin(ph), X[2] = urange(-0.04, 0.04);
+                        X[0] = rho * cos(ph), X[1] = rho * sin(ph),
+                        X[2] = urange(-0.04, 0.04);
                     }
                     rs_pose_to_global(&pose, X, x0);
                     ENSURE(rs_body_init(b + i, &sh, 1000.0, x0, q, &e) == RS_OK);
