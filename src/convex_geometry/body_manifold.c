@@ -187,23 +187,26 @@ static int corners_room(corners *a, int cap)
     return 0;
 }
 
-/* Appends q; with got NULL its ball (cl, r) is asked, else got is its contact. */
-static int corners_add(corners *a, const corner *q, const double cl[3], double r,
-                       const rs_body_contact *got)
+/* The next corner's slot (a->q[a->n], not yet counted), NULL when out of memory. */
+static corner *corners_next(corners *a)
 {
     if (a->n == a->cap && corners_room(a, 2 * a->cap))
-        return -1;
+        return NULL;
+    return a->q + a->n;
+}
+
+/* Counts the slot corners_next gave; with closed 0 its ball (cl, r) is asked, else its
+ * got is its contact. */
+static void corners_keep(corners *a, int closed, const double cl[3], double r)
+{
     corner *c = a->q + a->n++;
-    *c = *q;
-    if (got) {
+    if (closed) {
         c->ask = -1;
-        c->got = *got;
-        return 0;
+        return;
     }
     const int k = c->ask = a->nx++;
     a->x[k] = cl[0], a->x[a->cap + k] = cl[1], a->x[2 * a->cap + k] = cl[2];
     a->x[3 * a->cap + k] = r;
-    return 0;
 }
 
 int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *body, int n,
@@ -310,11 +313,16 @@ int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_bod
             for (int k = 0; k < ncp; k++) {
                 if (-dn * rs_dot3(d, cp[k].p) + nx - rr - nxs > clear)
                     continue;
-                corner q = {i, f, cp[k].id, -1, {0.0, 0.0, 0.0}, lift, {0}};
-                rs_matvec3(R, cp[k].p, q.cw);
+                corner *q = corners_next(&cq);
+                if (!q) {
+                    rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
+                    break;
+                }
+                q->body = i, q->f = f, q->id = cp[k].id, q->lift = lift;
+                rs_matvec3(R, cp[k].p, q->cw);
                 for (int j = 0; j < 3; j++)
-                    q.cw[j] += b[i].x[j];
-                const double h = rs_dot3(o->normal, q.cw) - rr - rs_dot3(o->normal, o->xs);
+                    q->cw[j] += b[i].x[j];
+                const double h = rs_dot3(o->normal, q->cw) - rr - rs_dot3(o->normal, o->xs);
                 if (h > above)
                     continue; /* too high above the deepest point to reach the wall */
                 /* the core point's rounding ball, as a sphere meets the wall; on a MESH,
@@ -322,15 +330,13 @@ int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_bod
                  * lift about its point moved as far out along the pair's normal, so that
                  * its centre is on the body's side (the same depth on the facets' planes)
                  */
-                const double cl[3] = {q.cw[0] + lift * o->normal[0],
-                                      q.cw[1] + lift * o->normal[1],
-                                      q.cw[2] + lift * o->normal[2]};
+                const double cl[3] = {q->cw[0] + lift * o->normal[0],
+                                      q->cw[1] + lift * o->normal[1],
+                                      q->cw[2] + lift * o->normal[2]};
                 /* the kind's closed form, where it has one for the ball on the feature */
-                rs_body_contact got;
                 const int closed = face && face->fn(face, RS_FEATURE_BASE(o->feature), cl,
-                                                    gap, rr + lift, &got);
-                if (corners_add(&cq, &q, cl, rr + lift, closed ? &got : NULL))
-                    rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
+                                                    gap, rr + lift, &q->got);
+                corners_keep(&cq, closed, cl, rr + lift);
             }
         }
     }
