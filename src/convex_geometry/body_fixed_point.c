@@ -77,11 +77,11 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
 {
     if (face && !face->fn)
         face = NULL;
-    double *rot = malloc((size_t)(n > 0 ? n : 1) * 9 * sizeof *rot); /* each body's R */
-    double *reach = malloc((size_t)(n > 0 ? n : 1) * 4 * sizeof *reach);
+    /* each body's R, reach and centre (x, y, z) */
+    double *rot = malloc((size_t)(n > 0 ? n : 1) * 13 * sizeof *rot);
+    double *reach = rot + 9 * (size_t)n, *ask_xyz = NULL;
     int *off = NULL, *live = NULL;
-    int rc = rot && reach ? RS_OK
-                          : rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
+    int rc = rot ? RS_OK : rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
     fixed *fx = NULL;
     rs_contacts pc; /* the reach spheres' contacts, then each step's */
     memset(&pc, 0, sizeof pc);
@@ -103,14 +103,16 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
         rc = rs_body_closest(s, pose, n, x, y, z, reach, gap_max, far, &pc, err);
     const int nf = pc.n;
     if (rc == RS_OK && nf > 0) {
-        fx = malloc((size_t)nf * sizeof *fx);
-        off = malloc((size_t)(nf + 1) * sizeof *off);
-        live = malloc(2 * (size_t)nf * sizeof *live);
-        double *xyz = realloc(reach, (size_t)(n + 3 * nf) * sizeof *xyz);
-        if (!fx || !off || !live || !xyz)
+        /* the fixed points, the iterates asked (x, y, z), off and live in one block */
+        fx = malloc((size_t)nf * (sizeof *fx + 3 * sizeof(double) + 3 * sizeof(int)) +
+                    sizeof(int));
+        if (!fx)
             rc = rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
-        if (xyz)
-            reach = xyz;
+        else {
+            ask_xyz = (double *)(fx + nf);
+            off = (int *)(ask_xyz + 3 * (size_t)nf);
+            live = off + nf + 1;
+        }
         if (rc == RS_OK)
             rc = rs_contacts_reserve(&pc, 2 * nf + 64, err);
     }
@@ -153,7 +155,7 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
             nact = still;
             continue;
         }
-        x = reach + n, y = x + nask, z = y + nask;
+        x = ask_xyz, y = x + nask, z = y + nask;
         const int *ask = live + nact;
         for (int a = 0; a < nask; a++) {
             const fixed *f = fx + ask[a];
@@ -205,10 +207,7 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
             l->c[slot] = *got;
     }
     free(rot);
-    free(reach);
     free(fx);
-    free(off);
-    free(live);
     rs_contacts_free(&pc);
     return rc;
 }

@@ -238,23 +238,25 @@ int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_bod
         return RS_OK;
     /* each body's features in a list of its own, on a shared array while they fit */
     enum { FEATURES = 4 };
-    rs_body *b = malloc((size_t)n * (sizeof *b + sizeof(double))); /* and their reach */
-    rs_body_contacts *fl = malloc((size_t)n * sizeof *fl);
-    rs_body_contact *pool = malloc((size_t)n * FEATURES * sizeof *pool);
-    if (!b || !fl || !pool) {
-        free(b);
-        free(fl);
-        free(pool);
+    /* in one block: each body's features, checked body, reach and list */
+    rs_body_contact *pool =
+        malloc((size_t)n * (FEATURES * sizeof *pool + sizeof(rs_body) + sizeof(double) +
+                            sizeof(rs_body_contacts)));
+    if (!pool)
         return rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory for %d bodies",
                             n);
-    }
+    rs_body *b = (rs_body *)(pool + (size_t)n * FEATURES);
+    double *rch = (double *)(b + n);
+    rs_body_contacts *fl = (rs_body_contacts *)(rch + n);
     for (int i = 0; i < n; i++) {
         const rs_body_contacts l = {0, FEATURES, pool + (size_t)i * FEATURES, 1};
         fl[i] = l;
     }
     int rc = RS_OK;
-    for (int i = 0; i < n && rc == RS_OK; i++)
-        rc = rs_body_check(s, body + i, gap_max, b + i, err);
+    for (int i = 0; i < n && rc == RS_OK; i++) /* a run of one shape: its checks once */
+        rc = i > 0 && body[i].shape && body[i].shape == body[i - 1].shape
+                 ? rs_body_check_pose(body + i, b + i, err)
+                 : rs_body_check(s, body + i, gap_max, b + i, err);
     if (rc == RS_OK && !s->ops->body)
         rc = rs_error_set(err, RS_ERR_ARG, "body query: surface '%s' (%s) takes no bodies",
                           s->name, s->ops->name);
@@ -269,7 +271,7 @@ int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_bod
     corners cq = {NULL, NULL, 0, 0, 0};
     if (rc == RS_OK && corners_room(&cq, n + 64))
         rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
-    double *rch = (double *)(b + n), gap = 0.0;
+    double gap = 0.0;
     for (int i = 0; i < n && rc == RS_OK; i++) {
         rch[i] = rs_body_reach(b + i);
         gap = fmax(gap, 2.0 * rch[i] + gap_max);
@@ -454,8 +456,6 @@ int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_bod
     free(cq.x);
     for (int i = 0; i < n; i++)
         rs_body_contacts_free(fl + i);
-    free(fl);
     free(pool);
-    free(b);
     return rc;
 }

@@ -35,6 +35,9 @@ void rs_body_support_at(const rs_body *b, const double R[9], const double dir[3]
 /// a capsule (whose cores are a point and a segment).
 double rs_shape_core_radius(const rs_shape *s);
 
+/// rs_body_check's checks of b's pose alone (its shape and the gap checked before, as
+/// for a body of the same shape): into *checked, its quaternion normalised.
+int rs_body_check_pose(const rs_body *b, rs_body *checked, rs_error *err);
 /// A body's reach about its centre: the farthest corner of its bounding box.
 double rs_body_reach(const rs_body *b);
 /// Appends o to l; RS_ERR_NOMEM when it cannot grow.
