@@ -86,6 +86,36 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
     return n;
 }
 
+/* The core points of core_points(s, d) whose height above the deepest point, -dn d.p +
+ * nx - rr - nxs (d unit, the body frame), is at most clear, in its order. A box's come
+ * from the eight sums of +-h_k d_k, which are its corners' d.p bit for bit. */
+static int low_points(const rs_shape *s, const double d[3], double dn, double nx, double rr,
+                      double nxs, double clear, cand *c, int cap)
+{
+    if (s->kind == RS_SHAPE_BOX) {
+        const double *h = s->dim;
+        const double a0 = d[0] * h[0], a1 = d[1] * h[1], a2 = d[2] * h[2];
+        int n = 0;
+        for (int v = 0; v < 8 && n < cap; v++) {
+            const double dp =
+                ((v & 1) ? a0 : -a0) + ((v & 2) ? a1 : -a1) + ((v & 4) ? a2 : -a2);
+            if (-dn * dp + nx - rr - nxs > clear)
+                continue;
+            c[n].p[0] = (v & 1) ? h[0] : -h[0];
+            c[n].p[1] = (v & 2) ? h[1] : -h[1];
+            c[n].p[2] = (v & 4) ? h[2] : -h[2];
+            c[n++].id = 1 + v;
+        }
+        return n;
+    }
+    const int m = core_points(s, d, c, cap);
+    int n = 0;
+    for (int k = 0; k < m; k++)
+        if (!(-dn * rs_dot3(d, c[k].p) + nx - rr - nxs > clear))
+            c[n++] = c[k];
+    return n;
+}
+
 /* Does the shape have core points (core_points gives some)? */
 static int core_points_of(const rs_shape *s)
 {
@@ -239,9 +269,8 @@ int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_bod
     /* each body's features in a list of its own, on a shared array while they fit */
     enum { FEATURES = 4 };
     /* in one block: each body's features, checked body, reach and list */
-    rs_body_contact *pool =
-        malloc((size_t)n * (FEATURES * sizeof *pool + sizeof(rs_body) + sizeof(double) +
-                            sizeof(rs_body_contacts)));
+    rs_body_contact *pool = malloc((size_t)n * (FEATURES * sizeof *pool + sizeof(rs_body) +
+                                                sizeof(double) + sizeof(rs_body_contacts)));
     if (!pool)
         return rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory for %d bodies",
                             n);
@@ -297,8 +326,6 @@ int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_bod
             const double dn = rs_norm3(d);
             for (int k = 0; k < 3; k++)
                 d[k] /= dn;
-            cand cp[CAND_MAX];
-            const int ncp = core_points(b[i].shape, d, cp, CAND_MAX - 1);
             /* a wall flat or convex toward the body lies below the tangent plane at the
              * deepest point: a point higher above it than the depth plus the gap does not
              * reach it; elsewhere the body's reach bounds it */
@@ -312,9 +339,10 @@ int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_bod
              * the margin); the rest are measured in the world as below */
             const double nx = rs_dot3(o->normal, b[i].x), nxs = rs_dot3(o->normal, o->xs);
             const double clear = above + 1e-12 * (reach + fabs(nx) + fabs(nxs));
+            cand cp[CAND_MAX];
+            const int ncp =
+                low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp, CAND_MAX - 1);
             for (int k = 0; k < ncp; k++) {
-                if (-dn * rs_dot3(d, cp[k].p) + nx - rr - nxs > clear)
-                    continue;
                 corner *q = corners_next(&cq);
                 if (!q) {
                     rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
