@@ -129,16 +129,14 @@ void rs_analytic_free(rs_surface *s)
 
 /* The analytic kinds search their profile at every query and have no facets: the
  * optional operations stay NULL. A convex body meets them through the fixed point over
- * their point query (src/convex_geometry/body_fixed_point.c), its iterates and its
- * manifold's core points on an extruded profile's flat faces in closed form
- * (analytic_body.c). */
+ * their point query (src/convex_geometry/body_fixed_point.c), its iterates on an
+ * extruded profile's flat faces in closed form (analytic_body.c). */
 #define ANALYTIC_OPS(kind, nd, conv, sx)                                                   \
     {                                                                                      \
         .name = kind, .ndir = nd, .frame = conv, .closest = rs_analytic_closest,           \
         .adjacent = analytic_adjacent, .bounds = analytic_bounds,                          \
         .spin_axis = analytic_spin_axis, .triangulate = rs_analytic_triangulate,           \
-        .free = rs_analytic_free, .syntax = sx, .body = rs_analytic_body,                  \
-        .body_face = rs_analytic_body_face                                                 \
+        .free = rs_analytic_free, .syntax = sx, .body = rs_analytic_body                   \
     }
 static const rs_surface_ops segments_ops =
     ANALYTIC_OPS("SEGMENTS", 2, RS_FRAME_TRAVEL, &rs_segments_syntax);

@@ -1,26 +1,32 @@
-/* The analytic kinds' body operations (rs_surface_ops.body, body_face): the fixed point
- * of src/convex_geometry/body_fixed_point.c, each of whose iterates on a flat face of a
+/* The analytic kinds' body operation (rs_surface_ops.body): the fixed point of
+ * src/convex_geometry/body_fixed_point.c, each of whose iterates on a flat face of a
  * CYLINDER or SEGMENTS surface (a LINE of the profile, extruded) is measured in closed
  * form: the body's deepest point p along -n lies at the signed distance (p - p0).n from
  * the face's plane, its closest point is its foot, and the face keeps it where the
  * profile's ownership rules give it to the face (rs_pcache_face); elsewhere, and on a
- * REVOLUTION, the iterate asks the kind's point query. Both give the same contact. The
- * manifold's core points (body_manifold.c) are balls measured by the same closed form. */
+ * REVOLUTION, the iterate asks the kind's point query. Both give the same contact. */
 #include "convex_internal.h"
 #include "profile.h"
 #include "revolution_point.h"
 
 #include <string.h>
 
-/* rs_body_face_fn of an extruded profile: the contact of the sphere of radius radius
- * about p on face want, as rs_analytic_closest maps it (local_extrusion, the profile's
- * contact of the centre within gap + radius, map_extrusion). */
-static int extruded_face(const rs_body_face *c, int want, const double p[3], double gap,
-                         double radius, rs_body_contact *o)
+/* A query's set-up for the iterates: the surface, its profile's data and the frame of
+ * its pose (rs_analytic_frame). */
+typedef struct face_ctx {
+    const rs_surface *s;
+    const rs_pcache *pc;
+    double F[12];
+} face_ctx;
+
+/* rs_body_face_fn of an extruded profile: the contact of point p on face want, as
+ * rs_analytic_closest maps it (local_extrusion, the profile's contact, map_extrusion). */
+static int extruded_face(const void *ctx, int want, const double p[3], double gap,
+                         rs_body_contact *o)
 {
+    const face_ctx *c = ctx;
     if (RS_FEATURE_TYPE(want) != RS_FEAT_FACE)
         return 0;
-    const rs_surface *s = c->s;
     const double *F = c->F;
     const double A0 = F[F_A], A1 = F[F_A + 1], A2 = F[F_A + 2];
     const double X0 = F[F_X], X1 = F[F_X + 1], X2 = F[F_X + 2];
@@ -30,10 +36,11 @@ static int extruded_face(const rs_body_face *c, int want, const double p[3], dou
     const double u = wx * X0 + wy * X1 + wz * X2;
     const double v = wx * Y0 + wy * Y1 + wz * Y2;
     const double lz = wx * Z0 + wy * Z1 + wz * Z2;
-    if (s->kind == RS_SURF_CYLINDER && s->bounded && !(lz >= s->zmin && lz <= s->zmax))
+    if (c->s->kind == RS_SURF_CYLINDER && c->s->bounded &&
+        !(lz >= c->s->zmin && lz <= c->s->zmax))
         return 0;
     rs_hit2 h;
-    if (rs_pcache_face(c->data, RS_FEATURE_INDEX(want), u, v, -gap, gap + radius, &h) != 1)
+    if (rs_pcache_face(c->pc, RS_FEATURE_INDEX(want), u, v, -gap, gap, &h) != 1)
         return 0;
     const double hx = h.x[0], hy = h.x[1], nx = h.n[0], ny = h.n[1];
     o->feature = h.feature;
@@ -55,21 +62,15 @@ static int extruded_face(const rs_body_face *c, int want, const double p[3], dou
     return 1;
 }
 
-void rs_analytic_body_face(const rs_surface *s, const rs_pose *pose, rs_body_face *f)
-{
-    memset(f, 0, sizeof *f);
-    if (!s->impl || (s->kind != RS_SURF_CYLINDER && s->kind != RS_SURF_SEGMENTS))
-        return;
-    f->fn = extruded_face;
-    f->s = s;
-    f->data = s->impl;
-    rs_analytic_frame(s, pose, f->F);
-}
-
 int rs_analytic_body(const rs_surface *s, const rs_pose *pose, const rs_body *b, int n,
                      double gap_max, int lenient, rs_body_contacts *out, rs_error *err)
 {
-    rs_body_face f;
-    rs_analytic_body_face(s, pose, &f);
-    return rs_body_fixed_point_with(s, pose, b, n, gap_max, lenient, &f, out, err);
+    if (!s->impl || (s->kind != RS_SURF_CYLINDER && s->kind != RS_SURF_SEGMENTS))
+        return rs_body_fixed_point(s, pose, b, n, gap_max, lenient, out, err);
+    face_ctx c;
+    c.s = s;
+    c.pc = s->impl;
+    rs_analytic_frame(s, pose, c.F);
+    return rs_body_fixed_point_with(s, pose, b, n, gap_max, lenient, extruded_face, &c, out,
+                                    err);
 }

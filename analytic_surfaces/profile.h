@@ -37,10 +37,6 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
 int rs_analytic_body(const rs_surface *s, const rs_pose *pose, const struct rs_body *b,
                      int n, double gap_max, int lenient, struct rs_body_contacts *out,
                      rs_error *err);
-/// The closed form of the body operations (analytic_body.c, rs_surface_ops.body_face):
-/// points and balls on the flat faces of CYLINDER and SEGMENTS; none on a REVOLUTION.
-void rs_analytic_body_face(const rs_surface *s, const rs_pose *pose,
-                           struct rs_body_face *f);
 int rs_analytic_triangulate(const rs_surface *s, double span, int nhoop, rs_trimesh *m,
                             rs_error *err);
 void rs_analytic_free(rs_surface *s);

@@ -96,7 +96,6 @@ struct rs_trimesh;
 struct rs_cands;
 struct rs_body;
 struct rs_body_contacts;
-struct rs_body_face;
 
 /// The operations of one surface kind: the seam through which every kind joins. The
 /// table is chosen once, when the surface is made (rs_surface_read, rs_surface_parse),
@@ -172,12 +171,6 @@ typedef struct rs_surface_ops {
     int (*body)(const struct rs_surface *s, const rs_pose *pose, const struct rs_body *b,
                 int n, double gap_max, int lenient, struct rs_body_contacts *out,
                 rs_error *err);
-    /// Optional (NULL: none), with body: the kind's closed form for the points and balls
-    /// that a body's contacts ask near one of its features (the fixed point's iterates, the
-    /// manifold's core points), set up for surface s in pose into *f (f->fn NULL where s
-    /// has none); each answer is the contact closest gives, bit for bit.
-    void (*body_face)(const struct rs_surface *s, const rs_pose *pose,
-                      struct rs_body_face *f);
     /// How a surface file describes the kind: its parameters, data lines and the making
     /// of its surface (private to the geometry's reader; NULL: no surface file names it).
     const struct rs_surface_syntax *syntax;

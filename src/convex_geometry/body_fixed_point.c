@@ -68,15 +68,14 @@ int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body 
                         int n, double gap_max, int lenient, rs_body_contacts *out,
                         rs_error *err)
 {
-    return rs_body_fixed_point_with(s, pose, body, n, gap_max, lenient, NULL, out, err);
+    return rs_body_fixed_point_with(s, pose, body, n, gap_max, lenient, NULL, NULL, out,
+                                    err);
 }
 
 int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_body *b,
-                             int n, double gap_max, int lenient, const rs_body_face *face,
-                             rs_body_contacts *out, rs_error *err)
+                             int n, double gap_max, int lenient, rs_body_face_fn face,
+                             const void *ctx, rs_body_contacts *out, rs_error *err)
 {
-    if (face && !face->fn)
-        face = NULL;
     /* each body's R, reach and centre (x, y, z) */
     double *rot = malloc((size_t)(n > 0 ? n : 1) * 13 * sizeof *rot);
     double *reach = rot + 9 * (size_t)n, *ask_xyz = NULL;
@@ -144,7 +143,7 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
         for (int a = 0; a < nact; a++) {
             fixed *f = fx + live[a];
             rs_body_contact c;
-            if (face && face->fn(face, f->want, f->p, gap, 0.0, &c)) {
+            if (face && face(ctx, f->want, f->p, gap, &c)) {
                 memcpy(c.xs, f->p, sizeof c.xs);
                 if (step(f, &c))
                     live[still++] = live[a];

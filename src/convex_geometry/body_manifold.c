@@ -181,18 +181,16 @@ static int by_depth(const void *a, const void *b)
 }
 
 /* A core point's query: its body, the feature (index into the body's list) and id, its
- * point in the world and the lift of its ball; its row among the balls asked of the
- * kind's closest operation (ask), or -1 with the kind's closed-form contact in got. */
+ * point in the world and the lift of its ball. */
 typedef struct corner {
-    int body, f, id, ask;
+    int body, f, id;
     double cw[3], lift;
-    rs_body_contact got;
 } corner;
 
 typedef struct corners {
     corner *q;
-    double *x; /* the balls asked: x, y, z, radius, cap each */
-    int n, nx, cap;
+    double *x; /* x, y, z, radius: 4 cap each */
+    int n, cap;
 } corners;
 
 /* Room for cap queries in a; 0, -1 when out of memory (a unchanged but a->q, which may
@@ -208,53 +206,30 @@ static int corners_room(corners *a, int cap)
             return -1;
         }
         for (int k = 0; k < 4; k++)
-            if (a->nx)
+            if (a->n)
                 memcpy(nx + (size_t)k * cap, a->x + (size_t)k * a->cap,
-                       (size_t)a->nx * sizeof *nx);
+                       (size_t)a->n * sizeof *nx);
         free(a->x);
         a->q = nq, a->x = nx, a->cap = cap;
     }
     return 0;
 }
 
-/* The next corner's slot (a->q[a->n], not yet counted), NULL when out of memory. */
-static corner *corners_next(corners *a)
+static int corners_add(corners *a, const corner *q, const double cl[3], double r)
 {
     if (a->n == a->cap && corners_room(a, 2 * a->cap))
-        return NULL;
-    return a->q + a->n;
-}
-
-/* Counts the slot corners_next gave; with closed 0 its ball (cl, r) is asked, else its
- * got is its contact. */
-static void corners_keep(corners *a, int closed, const double cl[3], double r)
-{
-    corner *c = a->q + a->n++;
-    if (closed) {
-        c->ask = -1;
-        return;
-    }
-    const int k = c->ask = a->nx++;
-    a->x[k] = cl[0], a->x[a->cap + k] = cl[1], a->x[2 * a->cap + k] = cl[2];
-    a->x[3 * a->cap + k] = r;
+        return -1;
+    a->q[a->n] = *q;
+    a->x[a->n] = cl[0], a->x[a->cap + a->n] = cl[1], a->x[2 * a->cap + a->n] = cl[2];
+    a->x[3 * a->cap + a->n] = r;
+    a->n++;
+    return 0;
 }
 
 int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *body, int n,
                      int point0, const double *radius, double gap_max, rs_contacts *c,
                      rs_error *err)
 {
-    rs_body_face face = {NULL, NULL, NULL, {0.0}};
-    if (s && s->ops && s->ops->body_face)
-        s->ops->body_face(s, pose, &face);
-    return rs_body_manifold_with(s, pose, body, n, point0, radius, gap_max, &face, c, err);
-}
-
-int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_body *body,
-                          int n, int point0, const double *radius, double gap_max,
-                          const rs_body_face *face, rs_contacts *c, rs_error *err)
-{
-    if (face && !face->fn)
-        face = NULL;
     if (!c || !c->witness)
         return rs_error_set(err, RS_ERR_ARG,
                             "body query: the contact list must keep witness points "
@@ -297,16 +272,14 @@ int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_bod
      * on another one). flat facets (the FACETED convention): a ball moved along the
      * normal has the same depth on their planes. */
     const int mesh = s->ops->frame == RS_FRAME_GLOBAL_X;
-    corners cq = {NULL, NULL, 0, 0, 0};
+    corners cq = {NULL, NULL, 0, 0};
     if (rc == RS_OK && corners_room(&cq, n + 64))
         rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
     double gap = 0.0;
     for (int i = 0; i < n && rc == RS_OK; i++) {
-        rch[i] = rs_body_reach(b + i);
-        gap = fmax(gap, 2.0 * rch[i] + gap_max);
-    }
-    for (int i = 0; i < n && rc == RS_OK; i++) {
-        const double rr = rs_shape_core_radius(b[i].shape), reach = rch[i];
+        const double rr = rs_shape_core_radius(b[i].shape),
+                     reach = rch[i] = rs_body_reach(b + i);
+        gap = fmax(gap, 2.0 * reach + gap_max);
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++)
             if (fl[i].c[f].feature >= RS_MANIFOLD_STRIDE)
                 rc = rs_error_set(err, RS_ERR_CAPACITY,
@@ -343,16 +316,11 @@ int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_bod
             const int ncp =
                 low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp, CAND_MAX - 1);
             for (int k = 0; k < ncp; k++) {
-                corner *q = corners_next(&cq);
-                if (!q) {
-                    rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
-                    break;
-                }
-                q->body = i, q->f = f, q->id = cp[k].id, q->lift = lift;
-                rs_matvec3(R, cp[k].p, q->cw);
+                corner q = {i, f, cp[k].id, {0.0, 0.0, 0.0}, lift};
+                rs_matvec3(R, cp[k].p, q.cw);
                 for (int j = 0; j < 3; j++)
-                    q->cw[j] += b[i].x[j];
-                const double h = rs_dot3(o->normal, q->cw) - rr - rs_dot3(o->normal, o->xs);
+                    q.cw[j] += b[i].x[j];
+                const double h = rs_dot3(o->normal, q.cw) - rr - rs_dot3(o->normal, o->xs);
                 if (h > above)
                     continue; /* too high above the deepest point to reach the wall */
                 /* the core point's rounding ball, as a sphere meets the wall; on a MESH,
@@ -360,28 +328,26 @@ int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_bod
                  * lift about its point moved as far out along the pair's normal, so that
                  * its centre is on the body's side (the same depth on the facets' planes)
                  */
-                const double cl[3] = {q->cw[0] + lift * o->normal[0],
-                                      q->cw[1] + lift * o->normal[1],
-                                      q->cw[2] + lift * o->normal[2]};
-                /* the kind's closed form, where it has one for the ball on the feature */
-                const int closed = face && face->fn(face, RS_FEATURE_BASE(o->feature), cl,
-                                                    gap, rr + lift, &q->got);
-                corners_keep(&cq, closed, cl, rr + lift);
+                const double cl[3] = {q.cw[0] + lift * o->normal[0],
+                                      q.cw[1] + lift * o->normal[1],
+                                      q.cw[2] + lift * o->normal[2]};
+                if (corners_add(&cq, &q, cl, rr + lift))
+                    rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
             }
         }
     }
     rs_contacts pc;
     memset(&pc, 0, sizeof pc);
     int *off = NULL;
-    if (rc == RS_OK && cq.nx > 0) {
-        off = malloc(((size_t)cq.nx + 1) * sizeof *off);
-        rc = off ? rs_contacts_reserve(&pc, 2 * cq.nx + 64, err)
+    if (rc == RS_OK && cq.n > 0) {
+        off = malloc(((size_t)cq.n + 1) * sizeof *off);
+        rc = off ? rs_contacts_reserve(&pc, 2 * cq.n + 64, err)
                  : rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
         if (rc == RS_OK)
-            rc = rs_body_closest(s, pose, cq.nx, cq.x, cq.x + cq.cap, cq.x + 2 * cq.cap,
+            rc = rs_body_closest(s, pose, cq.n, cq.x, cq.x + cq.cap, cq.x + 2 * cq.cap,
                                  cq.x + 3 * cq.cap, gap, gap, &pc, err);
         if (rc == RS_OK)
-            rs_contacts_offsets(&pc, cq.nx, off);
+            rs_contacts_offsets(&pc, cq.n, off);
     }
 
     /* Each body's manifold per feature, in order: the deepest point and the core points
@@ -404,28 +370,11 @@ int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_bod
             int deep_is_core = 0;
             for (; a < cq.n && cq.q[a].body == i && cq.q[a].f == f; a++) {
                 const corner *q = cq.q + a;
-                const rs_body_contact *g = &q->got;
-                double dist;
-                if (q->ask >= 0) { /* its contact from the query, as the kind's form */
-                    const int j = rs_contacts_pick(&pc, off[q->ask], off[q->ask + 1],
-                                                   RS_FEATURE_BASE(o->feature));
-                    if (j < 0 || !same_wall(&pc, j, o, reach))
-                        continue;
-                    rs_body_contact *t = &cq.q[a].got;
-                    t->feature = pc.feature[j];
-                    t->depth = -pc.dist[j];
-                    for (int k = 0; k < 3; k++) {
-                        t->xm[k] = pc.xm[k][j];
-                        t->normal[k] = pc.nrm[k][j];
-                        t->t1[k] = pc.t1[k][j];
-                        t->t2[k] = pc.t2[k][j];
-                    }
-                    t->curv[0] = pc.curv[0][j];
-                    t->curv[1] = pc.curv[1][j];
-                    dist = pc.dist[j];
-                } else
-                    dist = -g->depth;
-                const double depth = rr + q->lift - dist;
+                const int j =
+                    rs_contacts_pick(&pc, off[a], off[a + 1], RS_FEATURE_BASE(o->feature));
+                if (j < 0 || !same_wall(&pc, j, o, reach))
+                    continue;
+                const double depth = rr + q->lift - pc.dist[j];
                 if (!(-depth <= gap_max))
                     continue;
                 if (depth >= o->depth - 1e-12 * reach)
@@ -434,14 +383,14 @@ int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_bod
                 p->id = q->id;
                 p->depth = depth;
                 for (int k = 0; k < 3; k++) {
-                    p->xs[k] = q->cw[k] - rr * g->normal[k];
-                    p->xm[k] = g->xm[k];
-                    p->n[k] = g->normal[k];
-                    p->t1[k] = g->t1[k];
-                    p->t2[k] = g->t2[k];
+                    p->xs[k] = q->cw[k] - rr * pc.nrm[k][j];
+                    p->xm[k] = pc.xm[k][j];
+                    p->n[k] = pc.nrm[k][j];
+                    p->t1[k] = pc.t1[k][j];
+                    p->t2[k] = pc.t2[k][j];
                 }
-                p->curv[0] = g->curv[0];
-                p->curv[1] = g->curv[1];
+                p->curv[0] = pc.curv[0][j];
+                p->curv[1] = pc.curv[1][j];
             }
             /* the deepest point stands for itself unless a core point is as deep (is it, or
              * rests on the wall beside it: a face, a rim); where it did not settle (a fold

@@ -60,31 +60,17 @@ int rs_contacts_pick(const rs_contacts *c, int k0, int k1, int want);
 /// Does body b hold the world point p, to tol (length): is p within the rounding plus tol
 /// of its core (GJK)? 0 for a body rs_convex_pair refuses.
 int rs_body_holds(const rs_body *b, const double p[3], double tol);
-struct rs_body_face;
-/// A kind's closed form for one point or ball near one of its features: when feature want
-/// is among the contacts its closest operation gives the sphere of radius radius (0: a
-/// point) about world point p (gap_max = gap, dist_min = -gap), that contact (feature,
-/// depth = -dist, normal, xm, t1, t2, curv, all as closest writes them) into *o and 1;
-/// else 0 (then closest is asked).
-typedef int (*rs_body_face_fn)(const struct rs_body_face *f, int want, const double p[3],
-                               double gap, double radius, rs_body_contact *o);
-/// A kind's closed form set up for one surface and pose (rs_surface_ops.body_face).
-typedef struct rs_body_face {
-    rs_body_face_fn fn;   ///< NULL: none
-    const void *s, *data; ///< the kind's: its surface and data
-    double F[12];         ///< the kind's: its frame in the pose
-} rs_body_face;
-/// rs_body_fixed_point with a kind's closed form for the iterates (NULL or face->fn NULL:
-/// every iterate by the closest operation); the same contacts either way.
+/// A kind's own answer for one iterate of the fixed point: when feature want is among
+/// the contacts its closest operation gives the world point p (a point, gap_max = gap,
+/// dist_min = -gap), that contact (feature, depth = -dist, normal, xm, t1, t2, curv, all
+/// as closest writes them) into *o and 1; else 0 (then closest is asked).
+typedef int (*rs_body_face_fn)(const void *ctx, int want, const double p[3], double gap,
+                               rs_body_contact *o);
+/// rs_body_fixed_point with a kind's answer for the iterates (face(ctx, ...); NULL: every
+/// iterate by the closest operation); the same contacts either way.
 int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_body *b,
-                             int n, double gap_max, int lenient, const rs_body_face *face,
-                             rs_body_contacts *out, rs_error *err);
-/// rs_body_manifold with a kind's closed form for the core points' balls (NULL or
-/// face->fn NULL: every ball by the closest operation); the same contacts either way.
-/// rs_body_manifold passes the kind's own (rs_surface_ops.body_face).
-int rs_body_manifold_with(const rs_surface *s, const rs_pose *pose, const rs_body *body,
-                          int n, int point0, const double *radius, double gap_max,
-                          const rs_body_face *face, rs_contacts *c, rs_error *err);
+                             int n, double gap_max, int lenient, rs_body_face_fn face,
+                             const void *ctx, rs_body_contacts *out, rs_error *err);
 /// The fixed point of rs_body_fixed_point_with over the kind's point query only: for
 /// each feature near each of the n bodies (a sphere query of its reach about its centre)
 /// the normal iterated to a fixed point through the kind's point query, the bodies in one
