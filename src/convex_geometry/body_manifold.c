@@ -87,16 +87,29 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
 }
 
 /* The core points of core_points(s, d) whose height above the deepest point, -dn d.p +
- * nx - rr - nxs (d unit, the body frame), is at most clear, in its order. A box's come
- * from the eight sums of +-h_k d_k, which are its corners' d.p bit for bit. */
+ * nx - rr - nxs (d unit, the body frame), is at most clear, in its order. A box's corner
+ * v has d.p = sum of +-a_k, a_k = d_k h_k (bit for bit its dot product); the corner
+ * along d (a_k > 0 on its + sides) is the lowest and each other one lies higher by at
+ * least 2 dn min |a_k|: when that clears the lowest corner's height past clear by far
+ * more than rounding, the lowest is the only one. */
 static int low_points(const rs_shape *s, const double d[3], double dn, double nx, double rr,
                       double nxs, double clear, cand *c, int cap)
 {
-    if (s->kind == RS_SHAPE_BOX) {
+    if (s->kind == RS_SHAPE_BOX && cap >= 8) {
         const double *h = s->dim;
         const double a0 = d[0] * h[0], a1 = d[1] * h[1], a2 = d[2] * h[2];
+        const int lo = (a0 > 0.0) | (a1 > 0.0) << 1 | (a2 > 0.0) << 2;
+        const double dlo =
+            ((lo & 1) ? a0 : -a0) + ((lo & 2) ? a1 : -a1) + ((lo & 4) ? a2 : -a2);
+        const double hlo = -dn * dlo + nx - rr - nxs;
+        const double b0 = fabs(a0), b1 = fabs(a1), b2 = fabs(a2);
+        const double rise =
+            2.0 * dn * (b0 < b1 ? (b0 < b2 ? b0 : b2) : (b1 < b2 ? b1 : b2));
+        const double margin = 1e-9 * (dn * (b0 + b1 + b2) + fabs(nx) + rr + fabs(nxs));
+        const int only = hlo + rise > clear + margin; /* the lowest alone */
+        const int v0 = only ? lo : 0, v1 = only ? lo + 1 : 8;
         int n = 0;
-        for (int v = 0; v < 8 && n < cap; v++) {
+        for (int v = v0; v < v1; v++) {
             const double dp =
                 ((v & 1) ? a0 : -a0) + ((v & 2) ? a1 : -a1) + ((v & 4) ? a2 : -a2);
             if (-dn * dp + nx - rr - nxs > clear)
