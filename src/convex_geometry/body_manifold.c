@@ -19,6 +19,37 @@ typedef struct cand {
     int id;
 } cand;
 
+/* The direction (c0, s0) of d's part in the body's x-y plane (unit; (1, 0) along z). */
+static void rim_turn(const double d[3], double *c0, double *s0)
+{
+    const double rho = hypot(d[0], d[1]);
+    *c0 = rho > 0.0 ? d[0] / rho : 1.0, *s0 = rho > 0.0 ? d[1] / rho : 0.0;
+}
+
+/* Core point j of a cylinder or a cone (s) for the turn (c0, s0) of rim_turn: four rim
+ * points from the rim's lowest (the generator under the wall) in quarter turns, a
+ * cylinder's top rim (j < 4) then its bottom one (4 <= j < 8); a cone's one rim (j < 4)
+ * and its apex (j = 4). */
+static void rim_point(const rs_shape *s, double c0, double s0, int j, cand *c)
+{
+    const double *h = s->dim;
+    const int cyl = s->kind == RS_SHAPE_CYLINDER;
+    if (!cyl && j == 4) {
+        c->p[0] = c->p[1] = 0.0;
+        c->p[2] = 0.75 * h[1] - s->shift[2];
+        c->id = 5;
+        return;
+    }
+    const int e = j / 4, k = j % 4;
+    const double z = cyl ? (e ? -h[1] : h[1]) : -0.25 * h[1] - s->shift[2];
+    const double ck = k == 0 ? c0 : k == 1 ? -s0 : k == 2 ? -c0 : s0;
+    const double sk = k == 0 ? s0 : k == 1 ? c0 : k == 2 ? -s0 : -c0;
+    c->p[0] = h[0] * ck;
+    c->p[1] = h[0] * sk;
+    c->p[2] = z;
+    c->id = 1 + 4 * e + k;
+}
+
 /* The core points of b's shape that can touch a wall under it: d is the body-frame
  * direction into the wall (unit). Smooth shapes have none (their deepest point is their
  * only one). A polyhedron gives its cap vertices lowest along d; its vertex i has id
@@ -49,28 +80,10 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
     }
     case RS_SHAPE_CYLINDER:
     case RS_SHAPE_CONE: {
-        /* four rim points from the rim's lowest (the generator under the wall) in
-         * quarter turns; a cone's apex; a cylinder's two rims */
-        const double rho = hypot(d[0], d[1]);
-        const double c0 = rho > 0.0 ? d[0] / rho : 1.0, s0 = rho > 0.0 ? d[1] / rho : 0.0;
-        const int cyl = s->kind == RS_SHAPE_CYLINDER;
-        for (int e = 0; e < (cyl ? 2 : 1); e++) {
-            const double z = cyl ? (e ? -h[1] : h[1]) : -0.25 * h[1] - s->shift[2];
-            for (int k = 0; k < 4 && n < cap; k++, n++) {
-                const double ck = k == 0 ? c0 : k == 1 ? -s0 : k == 2 ? -c0 : s0;
-                const double sk = k == 0 ? s0 : k == 1 ? c0 : k == 2 ? -s0 : -c0;
-                c[n].p[0] = h[0] * ck;
-                c[n].p[1] = h[0] * sk;
-                c[n].p[2] = z;
-                c[n].id = 1 + 4 * e + k;
-            }
-        }
-        if (!cyl && n < cap) {
-            c[n].p[0] = c[n].p[1] = 0.0;
-            c[n].p[2] = 0.75 * h[1] - s->shift[2];
-            c[n].id = 5;
-            n++;
-        }
+        double c0, s0;
+        rim_turn(d, &c0, &s0);
+        for (int j = 0; j < (s->kind == RS_SHAPE_CYLINDER ? 8 : 5) && n < cap; j++)
+            rim_point(s, c0, s0, j, c + n++);
         break;
     }
     case RS_SHAPE_CAPSULE:
@@ -91,7 +104,8 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
  * v has d.p = sum of +-a_k, a_k = d_k h_k (bit for bit its dot product); the corner
  * along d (a_k > 0 on its + sides) is the lowest and each other one lies higher by at
  * least 2 dn min |a_k|: when that clears the lowest corner's height past clear by far
- * more than rounding, the lowest is the only one. */
+ * more than rounding, the lowest is the only one. A cylinder's and a cone's points are
+ * made only where their height about is within far more than rounding of clear. */
 static int low_points(const rs_shape *s, const double d[3], double dn, double nx, double rr,
                       double nxs, double clear, cand *c, int cap)
 {
@@ -118,6 +132,32 @@ static int low_points(const rs_shape *s, const double d[3], double dn, double nx
             c[n].p[1] = (v & 2) ? h[1] : -h[1];
             c[n].p[2] = (v & 4) ? h[2] : -h[2];
             c[n++].id = 1 + v;
+        }
+        return n;
+    }
+    if ((s->kind == RS_SHAPE_CYLINDER || s->kind == RS_SHAPE_CONE) && cap >= 8) {
+        /* each point's d.p about (rim: h_0 (rho, 0, -rho, 0)_k + d_z z; apex: d_z z):
+         * only those within far more than rounding of clear are made and measured */
+        const double *h = s->dim;
+        const int cyl = s->kind == RS_SHAPE_CYLINDER, m = cyl ? 8 : 5;
+        const double ra = h[0] * sqrt(d[0] * d[0] + d[1] * d[1]);
+        const double z0 = cyl ? h[1] : -0.25 * h[1] - s->shift[2], z1 = -h[1];
+        const double za = 0.75 * h[1] - s->shift[2];
+        const double margin = 1e-9 * (dn * (h[0] + fabs(z0) + fabs(z1) + fabs(za)) +
+                                      fabs(nx) + rr + fabs(nxs));
+        const double ring[4] = {ra, 0.0, -ra, 0.0};
+        int n = 0, turned = 0;
+        double c0 = 1.0, s0 = 0.0;
+        for (int j = 0; j < m; j++) {
+            const double dpa =
+                !cyl && j == 4 ? d[2] * za : ring[j % 4] + d[2] * (j < 4 ? z0 : z1);
+            if (-dn * dpa + nx - rr - nxs > clear + margin)
+                continue;
+            if (!turned)
+                rim_turn(d, &c0, &s0), turned = 1;
+            rim_point(s, c0, s0, j, c + n);
+            if (!(-dn * rs_dot3(d, c[n].p) + nx - rr - nxs > clear))
+                n++;
         }
         return n;
     }
