@@ -279,9 +279,31 @@ static int corners_add(corners *a, const corner *q, const double cl[3], double r
     return 0;
 }
 
+void rs_body_work_free(rs_body_work *w)
+{
+    rs_contacts_free(&w->pc);
+    free(w->mem);
+    free(w->q);
+    free(w->x);
+    free(w->off);
+    memset(w, 0, sizeof *w);
+}
+
 int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *body, int n,
                      int point0, const double *radius, double gap_max, rs_contacts *c,
                      rs_error *err)
+{
+    rs_body_work w;
+    memset(&w, 0, sizeof w);
+    const int rc =
+        rs_body_manifold_in(s, pose, body, n, point0, radius, gap_max, &w, c, err);
+    rs_body_work_free(&w);
+    return rc;
+}
+
+int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body *body,
+                        int n, int point0, const double *radius, double gap_max,
+                        rs_body_work *w, rs_contacts *c, rs_error *err)
 {
     if (!c || !c->witness)
         return rs_error_set(err, RS_ERR_ARG,
@@ -297,11 +319,17 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
     /* each body's features in a list of its own, on a shared array while they fit */
     enum { FEATURES = 4 };
     /* in one block: each body's features, checked body, reach and list */
-    rs_body_contact *pool = malloc((size_t)n * (FEATURES * sizeof *pool + sizeof(rs_body) +
-                                                sizeof(double) + sizeof(rs_body_contacts)));
-    if (!pool)
-        return rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory for %d bodies",
-                            n);
+    const size_t bytes = (size_t)n * (FEATURES * sizeof(rs_body_contact) + sizeof(rs_body) +
+                                      sizeof(double) + sizeof(rs_body_contacts));
+    if (bytes > w->bytes) {
+        free(w->mem);
+        w->bytes = 0;
+        if (!(w->mem = malloc(bytes)))
+            return rs_error_set(err, RS_ERR_NOMEM,
+                                "body query: out of memory for %d bodies", n);
+        w->bytes = bytes;
+    }
+    rs_body_contact *pool = w->mem;
     rs_body *b = (rs_body *)(pool + (size_t)n * FEATURES);
     double *rch = (double *)(b + n);
     rs_body_contacts *fl = (rs_body_contacts *)(rch + n);
@@ -325,9 +353,10 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
      * on another one). flat facets (the FACETED convention): a ball moved along the
      * normal has the same depth on their planes. */
     const int mesh = s->ops->frame == RS_FRAME_GLOBAL_X;
-    corners cq = {NULL, NULL, 0, 0};
+    corners cq = {w->q, w->x, 0, w->cap};
     if (rc == RS_OK && corners_room(&cq, n + 64))
         rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
+    w->q = cq.q, w->x = cq.x, w->cap = cq.cap;
     double gap = 0.0;
     for (int i = 0; i < n && rc == RS_OK; i++) {
         const double rr = rs_shape_core_radius(b[i].shape),
@@ -389,11 +418,16 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
             }
         }
     }
-    rs_contacts pc;
-    memset(&pc, 0, sizeof pc);
-    int *off = NULL;
+    w->q = cq.q, w->x = cq.x, w->cap = cq.cap; /* (moved as the list grew) */
+    rs_contacts pc = w->pc;
+    if (rc == RS_OK && cq.n > 0 && cq.n + 1 > w->noff) {
+        free(w->off);
+        w->noff = 0;
+        if ((w->off = malloc(((size_t)cq.n + 1) * sizeof *w->off)))
+            w->noff = cq.n + 1;
+    }
+    int *off = w->off;
     if (rc == RS_OK && cq.n > 0) {
-        off = malloc(((size_t)cq.n + 1) * sizeof *off);
         rc = off ? rs_contacts_reserve(&pc, 2 * cq.n + 64, err)
                  : rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
         if (rc == RS_OK)
@@ -480,12 +514,8 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
         if (rc == RS_OK && c->n - k0 > 1)
             rs_contacts_body_shares(c, k0, c->n - k0, radius[i]);
     }
-    rs_contacts_free(&pc);
-    free(off);
-    free(cq.q);
-    free(cq.x);
+    w->pc = pc;
     for (int i = 0; i < n; i++)
         rs_body_contacts_free(fl + i);
-    free(pool);
     return rc;
 }

@@ -78,6 +78,24 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
 int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body *b, int n,
                         double gap_max, int lenient, rs_body_contacts *out, rs_error *err);
 
+/// rs_body_manifold's work arrays, kept over the runs of bodies of one query (zero it
+/// first; rs_body_work_free).
+typedef struct rs_body_work {
+    rs_contacts pc; ///< the core points' contacts
+    void *mem;      ///< the bodies' features, checked copies, reach and lists
+    size_t bytes;
+    void *q;   ///< the core points' queries
+    double *x; ///< their balls
+    int cap;
+    int *off; ///< where each ball's contacts start
+    int noff;
+} rs_body_work;
+/// rs_body_manifold on the work arrays w, grown as needed and kept.
+int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body *body,
+                        int n, int point0, const double *radius, double gap_max,
+                        rs_body_work *w, rs_contacts *c, rs_error *err);
+void rs_body_work_free(rs_body_work *w);
+
 /// Volume moments of a solid about the frame's origin: v = int dV, s = int x dV,
 /// ss = int x x^T dV (row-major).
 typedef struct rs_moments {
