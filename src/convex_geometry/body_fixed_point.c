@@ -47,13 +47,13 @@ static int step(fixed *f, const rs_body_contact *c)
     f->found = c->feature;
     if (c->feature < 0)
         return 0;
-    if (c->depth > f->best.depth) {
-        f->best = *c;
-        f->best.iterations = -1;
-    }
     const double turn = fabs(c->normal[0] - f->nrm[0]) + fabs(c->normal[1] - f->nrm[1]) +
                         fabs(c->normal[2] - f->nrm[2]);
     f->conv = turn <= 1e-13 && RS_FEATURE_BASE(c->feature) == f->want;
+    if (!f->conv && c->depth > f->best.depth) { /* (read only where none settles) */
+        f->best = *c;
+        f->best.iterations = -1;
+    }
     f->want = RS_FEATURE_BASE(c->feature);
     memcpy(f->nrm, c->normal, sizeof f->nrm);
     f->it++;
