@@ -93,7 +93,8 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
     double *x = reach + n, *y = x + n, *z = y + n, far = gap_max;
     for (int i = 0; rc == RS_OK && i < n; i++) {
         x[i] = b[i].x[0], y[i] = b[i].x[1], z[i] = b[i].x[2];
-        far = fmax(far, 2.0 * reach[i] + gap_max);
+        far =
+            2.0 * reach[i] + gap_max > far ? 2.0 * reach[i] + gap_max : far; /* (no NaN) */
     }
     /* room for a few features a body at once: the query then grows no list */
     if (rc == RS_OK)
@@ -136,7 +137,8 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
             fixed *f = fx + live[a];
             const double down[3] = {-f->nrm[0], -f->nrm[1], -f->nrm[2]};
             rs_body_support_at(b + f->body, rot + 9 * f->body, down, f->p);
-            gap = fmax(gap, 2.0 * reach[f->body] + gap_max);
+            gap =
+                2.0 * reach[f->body] + gap_max > gap ? 2.0 * reach[f->body] + gap_max : gap;
         }
         /* the kind's answers first; the rest (ask) keep their order for the query */
         int still = 0, nask = 0;

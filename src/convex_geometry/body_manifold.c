@@ -361,7 +361,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
     for (int i = 0; i < n && rc == RS_OK; i++) {
         const double rr = rs_shape_core_radius(b[i].shape),
                      reach = rch[i] = rs_body_reach(b + i);
-        gap = fmax(gap, 2.0 * reach + gap_max);
+        gap = 2.0 * reach + gap_max > gap ? 2.0 * reach + gap_max : gap; /* (no NaN) */
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++)
             if (fl[i].c[f].feature >= RS_MANIFOLD_STRIDE)
                 rc = rs_error_set(err, RS_ERR_CAPACITY,
@@ -388,7 +388,8 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                 o->depth + gap_max +
                 (o->curv[0] >= 0.0 && o->curv[1] >= 0.0 ? 1e-9 : 1.0) * reach;
             const int flat = mesh || (o->curv[0] == 0.0 && o->curv[1] == 0.0);
-            const double lift = flat ? fmax(o->depth, 0.0) + 1e-9 * reach : 0.0;
+            const double lift =
+                flat ? (o->depth > 0.0 ? o->depth : 0.0) + 1e-9 * reach : 0.0;
             /* a core point's height in the body frame, n.(R p) = -dn d.p, passes over the
              * points clearly too high at three products each (its rounding is far below
              * the margin); the rest are measured in the world as below */
