@@ -448,13 +448,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
             mpoint m[CAND_MAX];
             int nm = 1;
             m[0].id = 0;
-            m[0].depth = o->depth;
-            memcpy(m[0].xs, o->xs, sizeof m[0].xs);
-            memcpy(m[0].xm, o->xm, sizeof m[0].xm);
-            memcpy(m[0].n, o->normal, sizeof m[0].n);
-            memcpy(m[0].t1, o->t1, sizeof m[0].t1);
-            memcpy(m[0].t2, o->t2, sizeof m[0].t2);
-            memcpy(m[0].curv, o->curv, sizeof m[0].curv);
+            m[0].depth = o->depth; /* the rest below, where it stands for itself */
             int deep_is_core = 0;
             for (; a < cq.n && cq.q[a].body == i && cq.q[a].f == f; a++) {
                 const corner *q = cq.q + a;
@@ -486,6 +480,14 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
              * its deepest iterate */
             if (o->iterations < 0 && core_points_of(b[i].shape))
                 deep_is_core = 1;
+            if (!deep_is_core) {
+                memcpy(m[0].xs, o->xs, sizeof m[0].xs);
+                memcpy(m[0].xm, o->xm, sizeof m[0].xm);
+                memcpy(m[0].n, o->normal, sizeof m[0].n);
+                memcpy(m[0].t1, o->t1, sizeof m[0].t1);
+                memcpy(m[0].t2, o->t2, sizeof m[0].t2);
+                memcpy(m[0].curv, o->curv, sizeof m[0].curv);
+            }
             mpoint *keep = deep_is_core ? m + 1 : m;
             const int count = deep_is_core ? nm - 1 : nm;
             for (int k = 1; k < count; k++) /* by depth, a few: by insertion */
@@ -501,8 +503,8 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                 int dup = 0;
                 for (int q = 0; q < nk; q++)
                     dup |= keep[q].id == keep[k].id;
-                if (!dup)
-                    keep[nk++] = keep[k];
+                if (!dup && nk++ != k)
+                    keep[nk - 1] = keep[k];
             }
             for (int k = 0; k < nk && rc == RS_OK; k++)
                 rc = append(c, point0 + i, radius[i], o->feature, &keep[k], err);
