@@ -209,7 +209,7 @@ int main(int argc, char **argv)
             rs_shape_free(&sh);
             continue;
         }
-        printf("%-14s %9.1f %6.1f %6.2f %9.1f %6.1f %6.2f %6.2f %6.2f %9.1f %6.1f%s\n",
+        printf("%-14s %9.1f %6.1f %6.3f %9.1f %6.1f %6.3f %6.2f %6.2f %9.1f %6.1f%s\n",
                name, med[0], med[0] / sphere_ns, (double)found[0] / n, med[1],
                med[1] / sphere_ns, (double)found[1] / n, mpr / cm, gjk / cm, med[2],
                med[2] / sphere_ns, found[2] == n ? "" : " (!)");
