@@ -4,7 +4,9 @@
  * flat on a face, an end or a side, tilted by 1e-7 to 0.03 rad, so that the points
  * beside the lowest lie just inside, at and just outside the gap, and for bodies in
  * random orientations. The manifold passes over points clearly out of reach without
- * measuring them (body_manifold.c, low_points): none it keeps may go missing. */
+ * measuring them (body_manifold.c, low_points): none it keeps may go missing. A block of
+ * bodies, whose runs share the manifold's work arrays, gives each body's contacts as it
+ * alone does. */
 #include "rigidsurf/convex.h"
 #include "rigidsurf/surface.h"
 #include "rigidsurf/vec.h"
@@ -170,8 +172,93 @@ static void test_manifold_on_a_plane_is_the_core_points_within_the_gap(void)
     ENSURE(trials > 15000 && several > 3000 && beside > 300);
 }
 
+/* A block of 1000 bodies, a shape a run, in one rs_surface_query, whose runs share
+ * work arrays kept over the block, against each body alone through rs_body_query: the
+ * same contacts bit for bit, on a plane and a filleted trough. */
+static void test_a_block_is_its_bodies_alone(void)
+{
+    static const char *TROUGH =
+        "*SURFACE, TYPE=CYLINDER, NAME=trough, FILLET RADIUS=0.005\n0, 0, 0, 1, 0, 0\n"
+        "0, -1, 0\nSTART, -0.05, 0.03\nLINE, -0.02, 0\nLINE, 0.02, 0\nLINE, 0.05, 0.03\n";
+    enum { N = 1000 };
+    rs_shape sh[4];
+    rs_error e;
+    ENSURE(rs_shape_make_box(&sh[0], 0.005, 0.004, 0.003, 0.0, &e) == RS_OK);
+    ENSURE(rs_shape_make_cylinder(&sh[1], 0.004, 0.004, 0.0, &e) == RS_OK);
+    ENSURE(rs_shape_make_cone(&sh[2], 0.004, 0.008, 0.0, &e) == RS_OK);
+    ENSURE(rs_shape_make_ellipsoid(&sh[3], 0.006, 0.004, 0.003, 0.0, &e) == RS_OK);
+    rs_body *b = malloc(N * sizeof *b);
+    double *x = malloc(4 * N * sizeof *x), *y = x + N, *z = y + N, *r = z + N;
+    ENSURE(b && x);
+    long total = 0;
+    for (int p = 0; p < 2; p++) {
+        rs_surface s;
+        ENSURE(rs_surface_parse(p ? TROUGH : PLANE, "t", NULL, &s, &e) == RS_OK);
+        for (int i = 0; i < N; i++) {
+            double q[4], l = 0.0;
+            for (int k = 0; k < 4; k++) {
+                q[k] = urange(-1, 1);
+                l += q[k] * q[k];
+            }
+            l = sqrt(l);
+            for (int k = 0; k < 4; k++)
+                q[k] /= l;
+            /* a shape a run of RS_BLOCK bodies (as rs_surface_query cuts them), each
+             * in front of the wall: a body's windows (its run's largest reach) are then
+             * its own */
+            const rs_shape *shape = &sh[(i / RS_BLOCK + p) % 4];
+            const double x0[3] = {urange(-0.02, 0.02), urange(-0.02, 0.02),
+                                  urange(0.0, 0.01)};
+            ENSURE(rs_body_init(b + i, shape, 1000.0, x0, q, &e) == RS_OK);
+            x[i] = x0[0], y[i] = x0[1], z[i] = x0[2], r[i] = 0.005;
+        }
+        rs_query qy;
+        memset(&qy, 0, sizeof qy);
+        qy.n = N;
+        qy.slave.x = x, qy.slave.y = y, qy.slave.z = z, qy.slave.radius = r;
+        qy.slave.body = b;
+        qy.gap_max = 1e-3;
+        qy.dist_min = -INFINITY;
+        rs_contacts all, one;
+        memset(&all, 0, sizeof all);
+        memset(&one, 0, sizeof one);
+        all.witness = one.witness = 1;
+        ENSURE(rs_surface_query(&s, &qy, &all, &e) == RS_OK);
+        int k = 0;
+        for (int i = 0; i < N; i++) {
+            one.n = 0;
+            ENSURE(rs_body_query(&s, NULL, b + i, i, 0.005, 1e-3, &one, &e) == RS_OK);
+            for (int j = 0; j < one.n; j++, k++) {
+                ENSURE(k < all.n);
+                if (k >= all.n)
+                    break;
+                int same = all.point[k] == i && all.feature[k] == one.feature[j] &&
+                           all.dist[k] == one.dist[j] && all.share[k] == one.share[j] &&
+                           all.curv[0][k] == one.curv[0][j] &&
+                           all.curv[1][k] == one.curv[1][j];
+                for (int d = 0; d < 3; d++)
+                    same &= all.xm[d][k] == one.xm[d][j] &&
+                            all.nrm[d][k] == one.nrm[d][j] &&
+                            all.t1[d][k] == one.t1[d][j] && all.t2[d][k] == one.t2[d][j] &&
+                            all.xs[d][k] == one.xs[d][j];
+                ENSURE(same);
+            }
+        }
+        ENSURE(k == all.n);
+        total += all.n;
+        rs_contacts_free(&all);
+        rs_contacts_free(&one);
+        rs_surface_free(&s);
+    }
+    ENSURE(total > 400);
+    free(b), free(x);
+    for (int k = 0; k < 4; k++)
+        rs_shape_free(&sh[k]);
+}
+
 int main(void)
 {
     RS_RUN(test_manifold_on_a_plane_is_the_core_points_within_the_gap);
+    RS_RUN(test_a_block_is_its_bodies_alone);
     return rs_test_summary();
 }
