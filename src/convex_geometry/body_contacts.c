@@ -110,10 +110,12 @@ void rs_contacts_offsets(const rs_contacts *c, int n, int *off)
     off[n] = k;
 }
 
-int rs_contacts_pick(const rs_contacts *c, int k0, int k1, int want)
+int rs_contacts_pick(const rs_contacts *c, int k0, int k1, int want, double lo, double hi)
 {
     int best = -1;
     for (int k = k0; k < k1; k++) {
+        if (!(c->dist[k] >= lo && c->dist[k] <= hi))
+            continue; /* outside the slave's own window, tested as closest tests it */
         if (RS_FEATURE_BASE(c->feature[k]) == want)
             return k;
         if (best < 0 || c->dist[k] < c->dist[best])

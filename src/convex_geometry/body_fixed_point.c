@@ -76,8 +76,8 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
                              int n, double gap_max, int lenient, rs_body_face_fn face,
                              const void *ctx, rs_body_contacts *out, rs_error *err)
 {
-    /* each body's R, reach and centre (x, y, z) */
-    double *rot = malloc((size_t)(n > 0 ? n : 1) * 13 * sizeof *rot);
+    /* each body's R, reach, centre (x, y, z) and window */
+    double *rot = malloc((size_t)(n > 0 ? n : 1) * 14 * sizeof *rot);
     double *reach = rot + 9 * (size_t)n, *ask_xyz = NULL;
     int *off = NULL, *live = NULL;
     int rc = rot ? RS_OK : rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
@@ -89,35 +89,42 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
         rs_body_rotation(b + i, rot + 9 * i);
     }
     /* The features near each body: a sphere of its reach about its centre (its centre
-     * sought as deep as twice its reach: a body deeper lies behind the wall). */
-    double *x = reach + n, *y = x + n, *z = y + n, far = gap_max;
+     * sought as deep as twice its reach: a body deeper lies behind the wall). Each body's
+     * window, win: its centre's depth limit, then its iterates' gap and depth limit; the
+     * block is asked over the widest, and each body keeps what lies in its own. */
+    double *x = reach + n, *y = x + n, *z = y + n, *win = z + n, far = gap_max;
     for (int i = 0; rc == RS_OK && i < n; i++) {
         x[i] = b[i].x[0], y[i] = b[i].x[1], z[i] = b[i].x[2];
-        far =
-            2.0 * reach[i] + gap_max > far ? 2.0 * reach[i] + gap_max : far; /* (no NaN) */
+        const double w = 2.0 * reach[i] + gap_max;
+        win[i] = w > gap_max ? w : gap_max; /* (no NaN) */
+        far = win[i] > far ? win[i] : far;
     }
     /* room for a few features a body at once: the query then grows no list */
     if (rc == RS_OK)
         rc = rs_contacts_reserve(&pc, 2 * n + 64, err);
     if (rc == RS_OK)
         rc = rs_body_closest(s, pose, n, x, y, z, reach, gap_max, far, &pc, err);
-    const int nf = pc.n;
-    if (rc == RS_OK && nf > 0) {
+    const int npc = pc.n;
+    if (rc == RS_OK && npc > 0) {
         /* the fixed points, the iterates asked (x, y, z), off and live in one block */
-        fx = malloc((size_t)nf * (sizeof *fx + 3 * sizeof(double) + 3 * sizeof(int)) +
+        fx = malloc((size_t)npc * (sizeof *fx + 3 * sizeof(double) + 3 * sizeof(int)) +
                     sizeof(int));
         if (!fx)
             rc = rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
         else {
-            ask_xyz = (double *)(fx + nf);
-            off = (int *)(ask_xyz + 3 * (size_t)nf);
-            live = off + nf + 1;
+            ask_xyz = (double *)(fx + npc);
+            off = (int *)(ask_xyz + 3 * (size_t)npc);
+            live = off + npc + 1;
         }
         if (rc == RS_OK)
-            rc = rs_contacts_reserve(&pc, 2 * nf + 64, err);
+            rc = rs_contacts_reserve(&pc, 2 * npc + 64, err);
     }
-    for (int k = 0; rc == RS_OK && k < nf; k++) {
-        fixed *f = fx + k;
+    int nf = 0; /* the features within their body's own depth limit */
+    for (int k = 0; rc == RS_OK && k < npc; k++) {
+        if (!(pc.dist[k] >= -win[pc.point[k]]))
+            continue; /* (the test of the kinds' closest, dist >= dist_min) */
+        const int kf = nf++;
+        fixed *f = fx + kf;
         f->body = pc.point[k];
         f->want = RS_FEATURE_BASE(pc.feature[k]);
         f->it = f->conv = 0;
@@ -125,27 +132,24 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
         f->best.depth = -INFINITY;
         for (int d = 0; d < 3; d++)
             f->nrm[d] = pc.nrm[d][k];
-        live[k] = k;
+        live[kf] = kf;
     }
     /* Each step: every unsettled iterate's point, the body's support along -n, asked in
      * one query, or of the kind's own answer where it has one; n the normal of its
      * feature's contact there (the feature it follows, else the deepest). */
     int nact = rc == RS_OK ? nf : 0;
     while (rc == RS_OK && nact > 0) {
-        double gap = 0.0;
         for (int a = 0; a < nact; a++) {
             fixed *f = fx + live[a];
             const double down[3] = {-f->nrm[0], -f->nrm[1], -f->nrm[2]};
             rs_body_support_at(b + f->body, rot + 9 * f->body, down, f->p);
-            gap =
-                2.0 * reach[f->body] + gap_max > gap ? 2.0 * reach[f->body] + gap_max : gap;
         }
         /* the kind's answers first; the rest (ask) keep their order for the query */
         int still = 0, nask = 0;
         for (int a = 0; a < nact; a++) {
             fixed *f = fx + live[a];
             rs_body_contact c;
-            if (face && face(ctx, f->want, f->p, gap, &c)) {
+            if (face && face(ctx, f->want, f->p, win[f->body], &c)) {
                 memcpy(c.xs, f->p, sizeof c.xs);
                 if (step(f, &c))
                     live[still++] = live[a];
@@ -158,9 +162,11 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
         }
         x = ask_xyz, y = x + nask, z = y + nask;
         const int *ask = live + nact;
+        double gap = 0.0; /* the widest window of those asked */
         for (int a = 0; a < nask; a++) {
             const fixed *f = fx + ask[a];
             x[a] = f->p[0], y[a] = f->p[1], z[a] = f->p[2];
+            gap = win[f->body] > gap ? win[f->body] : gap;
         }
         rc = rs_body_closest(s, pose, nask, x, y, z, NULL, gap, gap, &pc, err);
         if (rc != RS_OK)
@@ -168,7 +174,8 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
         rs_contacts_offsets(&pc, nask, off);
         for (int a = 0; a < nask; a++) {
             fixed *f = fx + ask[a];
-            const int j = rs_contacts_pick(&pc, off[a], off[a + 1], f->want);
+            const double g = win[f->body];
+            const int j = rs_contacts_pick(&pc, off[a], off[a + 1], f->want, -g, g);
             rs_body_contact c;
             c.feature = -1;
             if (j >= 0)

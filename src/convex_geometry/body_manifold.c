@@ -227,6 +227,15 @@ static int same_wall(const rs_contacts *pc, int j, const rs_body_contact *o, dou
            fabs(rs_dot3(dx, o->normal)) <= 1e-12 * reach;
 }
 
+/* A body's window for its core points' balls: gap and depth limit twice its reach and
+ * the gap (0 for none: no NaN). The block's balls are asked over the widest, and each
+ * keeps what lies in its own body's (rs_contacts_pick). */
+static double window(double reach, double gap_max)
+{
+    const double w = 2.0 * reach + gap_max;
+    return w > 0.0 ? w : 0.0;
+}
+
 static int by_depth(const void *a, const void *b)
 {
     const double da = ((const mpoint *)a)->depth, db = ((const mpoint *)b)->depth;
@@ -357,11 +366,11 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
     if (rc == RS_OK && corners_room(&cq, n + 64))
         rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
     w->q = cq.q, w->x = cq.x, w->cap = cq.cap;
-    double gap = 0.0;
+    double gap = 0.0; /* the widest window of the bodies (window) */
     for (int i = 0; i < n && rc == RS_OK; i++) {
         const double rr = rs_shape_core_radius(b[i].shape),
                      reach = rch[i] = rs_body_reach(b + i);
-        gap = 2.0 * reach + gap_max > gap ? 2.0 * reach + gap_max : gap; /* (no NaN) */
+        gap = window(reach, gap_max) > gap ? window(reach, gap_max) : gap;
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++)
             if (fl[i].c[f].feature >= RS_MANIFOLD_STRIDE)
                 rc = rs_error_set(err, RS_ERR_CAPACITY,
@@ -443,6 +452,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
     for (int i = 0, a = 0; i < n && rc == RS_OK; i++) {
         const int k0 = c->n;
         const double rr = rs_shape_core_radius(b[i].shape), reach = rch[i];
+        const double win = window(reach, gap_max);
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
             const rs_body_contact *o = &fl[i].c[f];
             mpoint m[CAND_MAX];
@@ -452,8 +462,9 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
             int deep_is_core = 0;
             for (; a < cq.n && cq.q[a].body == i && cq.q[a].f == f; a++) {
                 const corner *q = cq.q + a;
-                const int j =
-                    rs_contacts_pick(&pc, off[a], off[a + 1], RS_FEATURE_BASE(o->feature));
+                const int j = rs_contacts_pick(&pc, off[a], off[a + 1],
+                                               RS_FEATURE_BASE(o->feature), -win,
+                                               win + cq.x[3 * cq.cap + a]);
                 if (j < 0 || !same_wall(&pc, j, o, reach))
                     continue;
                 const double depth = rr + q->lift - pc.dist[j];

@@ -53,9 +53,13 @@ int rs_body_closest(const rs_surface *s, const rs_pose *pose, int n, const doubl
 /// Where slave i's contacts start in c (off[i]; off[n] = c->n): a query's contacts of
 /// one slave are consecutive, in block order.
 void rs_contacts_offsets(const rs_contacts *c, int n, int *off);
-/// Among contacts [k0, k1) of one slave, the one of feature base want, else the deepest
-/// (the first of ties); -1 for none.
-int rs_contacts_pick(const rs_contacts *c, int k0, int k1, int want);
+/// Among contacts [k0, k1) of one slave whose distance lies in [lo, hi], the one of
+/// feature base want, else the deepest (the first of ties); -1 for none. [lo, hi] is the
+/// slave's own window (dist_min, gap_max + radius): a block's slaves whose windows differ
+/// are asked at once over the widest, and each picks within its own what a query of its
+/// own window gives it (the kinds' closest operations filter each slave's contacts by
+/// its window), so that a body's contacts do not depend on the others in its block.
+int rs_contacts_pick(const rs_contacts *c, int k0, int k1, int want, double lo, double hi);
 
 /// Does body b hold the world point p, to tol (length): is p within the rounding plus tol
 /// of its core (GJK)? 0 for a body rs_convex_pair refuses.
