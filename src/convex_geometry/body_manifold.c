@@ -462,9 +462,9 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
             int deep_is_core = 0;
             for (; a < cq.n && cq.q[a].body == i && cq.q[a].f == f; a++) {
                 const corner *q = cq.q + a;
-                const int j = rs_contacts_pick(&pc, off[a], off[a + 1],
-                                               RS_FEATURE_BASE(o->feature), -win,
-                                               win + cq.x[3 * cq.cap + a]);
+                const int j =
+                    rs_contacts_pick(&pc, off[a], off[a + 1], RS_FEATURE_BASE(o->feature),
+                                     -win, win + cq.x[3 * cq.cap + a]);
                 if (j < 0 || !same_wall(&pc, j, o, reach))
                     continue;
                 const double depth = rr + q->lift - pc.dist[j];
