@@ -452,7 +452,6 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
     for (int i = 0, a = 0; i < n && rc == RS_OK; i++) {
         const int k0 = c->n;
         const double rr = rs_shape_core_radius(b[i].shape), reach = rch[i];
-        const double win = window(reach, gap_max);
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
             const rs_body_contact *o = &fl[i].c[f];
             mpoint m[CAND_MAX];
@@ -462,6 +461,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
             int deep_is_core = 0;
             for (; a < cq.n && cq.q[a].body == i && cq.q[a].f == f; a++) {
                 const corner *q = cq.q + a;
+                const double win = window(reach, gap_max);
                 const int j =
                     rs_contacts_pick(&pc, off[a], off[a + 1], RS_FEATURE_BASE(o->feature),
                                      -win, win + cq.x[3 * cq.cap + a]);
