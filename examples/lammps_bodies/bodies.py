@@ -31,7 +31,11 @@ principal axes, which it chooses itself).
 
 Lengths in mm, masses in g, times in ms, as in.bodies has them.
 
-Usage: bodies.py OUTDIR
+With --short (the test suite's run, 200 ms of rotation, too short for a steady angle) the
+second check is that the turning wall lifted the bed (its angle reached 25 to 65 degrees),
+and the third the speed bound alone (the bed's energy is still changing as it is lifted).
+
+Usage: bodies.py OUTDIR [--short]
 """
 import math
 import os
@@ -136,6 +140,7 @@ def mean(v):
 
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "out"
+    short = "--short" in sys.argv[2:]
     bodies = read_bodies(os.path.join(out, "bodies.data"))
     frames = read_custom(os.path.join(out, "post", "bodies.dump"))
     t, th, om = read_com(os.path.join(out, "post", "com.txt"))
@@ -226,7 +231,7 @@ def main():
     ang = math.radians(th[-1])
     cx.plot([-R_DRUM * math.cos(ang), R_DRUM * math.cos(ang)],
             [-R_DRUM * math.sin(ang), R_DRUM * math.sin(ang)], "--", color="C3", lw=1,
-            label="normal to the centre of mass: %.1f°" % th[-1])
+            label="free surface from the centre of mass: %.1f°" % th[-1])
     cx.set_aspect("equal")
     cx.set_xlim(-1.1 * R_DRUM, 1.1 * R_DRUM)
     cx.set_ylim(-1.1 * R_DRUM, 1.1 * R_DRUM)
@@ -238,13 +243,18 @@ def main():
 
     ok_in = worst_r <= rnd / 4 and worst_z <= rnd / 4
     ok_tumble = drift <= 4.0 and 25.0 <= m <= 65.0 and turned > 50.0
-    ok_energy = vmax <= vmax_allowed and k2 <= 1.5 * k1 and k1 <= 1.5 * k2
+    if short:
+        ok_tumble = 25.0 <= max(th) <= 65.0
+        print("lifted: the bed's angle reached %.1f deg (25 to 65): %s"
+              % (max(th), "yes" if ok_tumble else "NO"))
+    ok_energy = vmax <= vmax_allowed and (short or (k2 <= 1.5 * k1 and k1 <= 1.5 * k2))
     print("contained: nearest approach of a centre beyond R - r_in: %.3g mm (mantle), "
           "%.3g mm (end caps); allowed r/4 = %.2g mm: %s"
           % (worst_r, worst_z, rnd / 4, "yes" if ok_in else "NO"))
-    print("dynamic angle of repose, steady (t >= %.2f s, the drum turning %.0f deg): "
+    print("dynamic angle of repose%s, steady (t >= %.2f s, the drum turning %.0f deg): "
           "%.1f deg (std %.1f, halves differ by %.1f): %s"
-          % (tw / 1e3, turned, m, s_, drift, "yes" if ok_tumble else "NO"))
+          % (" (not checked)" if short else "", tw / 1e3, turned, m, s_, drift,
+             "" if short else "yes" if ok_tumble else "NO"))
     print("energy: fastest body %.3g m/s (bound %.3g); kinetic energy %.3g then %.3g "
           "(mJ; rotation %.0f %% of it): %s"
           % (vmax, vmax_allowed, k1, k2, 100 * mean([b for ti, b in zip(tk, ker) if ti >= tw])

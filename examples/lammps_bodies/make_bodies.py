@@ -16,8 +16,8 @@ the solid box of its outer size (core plus rounding), density RHO.
 The rounding radius is about a quarter of a body's smallest core half-extent. LAMMPS's
 pair body/rounded/polyhedron (29Sep2021) is not reliable with rounder bodies: of 20 random
 impacts of two cubes rounded by 0.42 of their half-side (damped, 0.3 m/s), 7 left with
-more kinetic energy than a plastic impact keeps, one with 3 times what came in; rounded by
-0.25, none of 44.
+more kinetic energy than a plastic impact keeps, 3 with more than came in (up to 3 times);
+rounded by 0.25, none of 44.
 
 Usage: make_bodies.py OUT.data [N]   (at most N bodies; default: one on every lattice point)
 Prints the number of bodies and their sizes.
