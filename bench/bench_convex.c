@@ -1,6 +1,6 @@
 /* Convex bodies: the cost of one body-contact for each shape, against a sphere contact.
  *
- *   bench_convex [--bodies N] [--reps R]
+ *   bench_convex [--bodies N] [--reps R] [--only K --way W]
  *
  * N bodies of each shape (about 1 cm across, random orientations) are pressed 0.1 mm
  * into the floor z = 0, given three ways: a CYLINDER plane and a MESH of two triangles
@@ -9,7 +9,13 @@
  * alone (GJK, libccd's MPR and its refinement). The reference is the sphere's own path: the same N spheres in one
  * rs_surface_query block. Reported: ns per contact (median of the repetitions, thread
  * CPU time), the ratio to the sphere query, the contacts per body, and on the MESH the
- * calls of libccd's MPR and of our GJK per contact (the link wraps both and counts). */
+ * calls of libccd's MPR and of our GJK per contact (the link wraps both and counts).
+ *
+ * --only K --way W runs one shape (K = 0 .. 8, in the table's order) one way (0 the
+ * plane, 1 the MESH, 2 the triangle) and nothing else but the set-up, the same bodies
+ * as the full run: a program for an instruction count of the body path alone, e.g.
+ *   valgrind --tool=callgrind --toggle-collect=rs_surface_query \
+ *       bench_convex --bodies 1000 --reps 1 --only 2 --way 1 */
 #define _POSIX_C_SOURCE 200809L
 #include "rigidsurf/convex.h"
 #include "rigidsurf/vec.h"
@@ -91,15 +97,21 @@ static int make_shape(int k, rs_shape *s, const char **name)
 
 int main(int argc, char **argv)
 {
-    int n = 2000, reps = 7;
+    int n = 2000, reps = 7, only = -1, only_way = -1;
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!strcmp(argv[i], "--bodies"))
             n = atoi(argv[i + 1]);
         else if (!strcmp(argv[i], "--reps"))
             reps = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "--only"))
+            only = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "--way"))
+            only_way = atoi(argv[i + 1]);
     }
-    if (n < 1 || reps < 1) {
-        fprintf(stderr, "usage: bench_convex [--bodies N] [--reps R]\n");
+    if (n < 1 || reps < 1 || only < -1 || only > 8 || only_way < -1 || only_way > 2 ||
+        (only < 0) != (only_way < 0)) {
+        fprintf(stderr,
+                "usage: bench_convex [--bodies N] [--reps R] [--only K(0-8) --way W(0-2)]\n");
         return 2;
     }
     printf("# bench_convex: %d bodies a shape, %d repetitions (%s, %s)\n", n, reps,
@@ -130,13 +142,13 @@ int main(int argc, char **argv)
     q.slave.x = x, q.slave.y = y, q.slave.z = z, q.slave.radius = r;
     q.gap_max = 0.0;
     q.dist_min = -INFINITY;
-    for (int k = 0; k < reps; k++) {
+    for (int k = 0; k < reps && only < 0; k++) {
         const double t0 = rs_bench_thread_now();
         c.n = 0;
         rs_surface_query(&plane, &q, &c, NULL);
         t[k] = (rs_bench_thread_now() - t0) / c.n;
     }
-    const double sphere_ns = 1e9 * rs_bench_median(t, reps);
+    const double sphere_ns = only < 0 ? 1e9 * rs_bench_median(t, reps) : 1.0;
     printf("sphere query (rs_surface_query, a block of %d): %.1f ns per contact\n", n,
            sphere_ns);
     const double fxyz[12] = {-10, -10, 0, 10, -10, 0, 10, 10, 0, -10, 10, 0};
@@ -174,9 +186,11 @@ int main(int argc, char **argv)
             rs_body_support(&b[i], down, low);
             b[i].x[2] = -low[2] - 1e-4;
         }
-        double med[3];
+        double med[3] = {0.0, 0.0, 0.0};
         long found[3] = {0, 0, 0}, mpr = 0, gjk = 0;
         for (int way = 0; way < 3; way++) {
+            if (only >= 0 && (s != only || way != only_way))
+                continue;
             for (int k = 0; k < reps; k++) {
                 long m = 0;
                 mpr_calls = gjk_calls = 0;
@@ -199,10 +213,11 @@ int main(int argc, char **argv)
             med[way] = 1e9 * rs_bench_median(t, reps);
         }
         const double cm = found[1] ? (double)found[1] : 1.0;
-        printf("%-14s %9.1f %6.1f %6.2f %9.1f %6.1f %6.2f %6.2f %6.2f %9.1f %6.1f%s\n",
+        if (only < 0 || s == only)
+            printf("%-14s %9.1f %6.1f %6.2f %9.1f %6.1f %6.2f %6.2f %6.2f %9.1f %6.1f%s\n",
                name, med[0], med[0] / sphere_ns, (double)found[0] / n, med[1],
                med[1] / sphere_ns, (double)found[1] / n, mpr / cm, gjk / cm, med[2],
-               med[2] / sphere_ns, found[2] == n ? "" : " (!)");
+               med[2] / sphere_ns, found[2] == n || only_way >= 0 ? "" : " (!)");
         rs_shape_free(&sh);
     }
     rs_contacts_free(&bq);
