@@ -151,10 +151,13 @@ static int by_depth(const void *a, const void *b)
 }
 
 /* A core point's query: its body, the feature (index into the body's list) and id, its
- * point in the world and the lift of its ball. */
+ * place among the body's core points (seq), its point in the world and the lift of its
+ * ball; where the kind answers it in closed form (rs_surface_ops.feature_point), that
+ * answer. */
 typedef struct corner {
-    int body, f, id;
+    int body, f, id, seq;
     double cw[3], lift;
+    double dist, xm[3], n[3];
 } corner;
 
 typedef struct corners {
@@ -162,6 +165,25 @@ typedef struct corners {
     double *x; /* x, y, z, radius: 4 cap each */
     int n, cap;
 } corners;
+
+/* The core points answered in closed form, in the order of the queried ones. */
+typedef struct answered {
+    corner *q;
+    int n, cap;
+} answered;
+
+static int answered_add(answered *a, const corner *q)
+{
+    if (a->n == a->cap) {
+        const int cap = a->cap ? 2 * a->cap : 64;
+        corner *nq = realloc(a->q, (size_t)cap * sizeof *nq);
+        if (!nq)
+            return -1;
+        a->q = nq, a->cap = cap;
+    }
+    a->q[a->n++] = *q;
+    return 0;
+}
 
 /* Room for cap queries in a; 0, -1 when out of memory (a unchanged but a->q, which may
  * have moved). */
@@ -242,12 +264,14 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
      * normal has the same depth on their planes. */
     const int mesh = s->ops->frame == RS_FRAME_GLOBAL_X;
     corners cq = {NULL, NULL, 0, 0};
+    answered ca = {NULL, 0, 0};
     if (rc == RS_OK && corners_room(&cq, n + 64))
         rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
-    double gap = 0.0;
+    double gap = 0.0; /* the query's gap and depth limit */
+    for (int i = 0; i < n; i++)
+        gap = fmax(gap, 2.0 * rs_body_reach(b + i) + gap_max);
     for (int i = 0; i < n && rc == RS_OK; i++) {
         const double rr = rs_shape_core_radius(b[i].shape), reach = rs_body_reach(b + i);
-        gap = fmax(gap, 2.0 * reach + gap_max);
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++)
             if (fl[i].c[f].feature >= RS_MANIFOLD_STRIDE)
                 rc = rs_error_set(err, RS_ERR_CAPACITY,
@@ -285,7 +309,7 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
             for (int k = 0; k < ncp; k++) {
                 if (-dn * rs_dot3(d, cp[k].p) + nx - rr - nxs > clear)
                     continue;
-                corner q = {i, f, cp[k].id, {0.0, 0.0, 0.0}, lift};
+                corner q = {.body = i, .f = f, .id = cp[k].id, .seq = k, .lift = lift};
                 rs_matvec3(R, cp[k].p, q.cw);
                 for (int j = 0; j < 3; j++)
                     q.cw[j] += b[i].x[j];
@@ -300,7 +324,12 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
                 const double cl[3] = {q.cw[0] + lift * o->normal[0],
                                       q.cw[1] + lift * o->normal[1],
                                       q.cw[2] + lift * o->normal[2]};
-                if (corners_add(&cq, &q, cl, rr + lift))
+                /* the kind's closed form where it has one, else the query */
+                const int known = s->ops->feature_point &&
+                                  s->ops->feature_point(s, pose, RS_FEATURE_BASE(o->feature),
+                                                        cl, rr + lift, gap, gap, &q.dist,
+                                                        q.xm, q.n);
+                if (known ? answered_add(&ca, &q) : corners_add(&cq, &q, cl, rr + lift))
                     rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
             }
         }
@@ -321,7 +350,7 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
 
     /* Each body's manifold per feature, in order: the deepest point and the core points
      * that rest on the feature's wall. */
-    for (int i = 0, a = 0; i < n && rc == RS_OK; i++) {
+    for (int i = 0, a = 0, e = 0; i < n && rc == RS_OK; i++) {
         const int k0 = c->n;
         const double rr = rs_shape_core_radius(b[i].shape), reach = rs_body_reach(b + i);
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
@@ -337,13 +366,36 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
             memcpy(m[0].t2, o->t2, sizeof m[0].t2);
             memcpy(m[0].curv, o->curv, sizeof m[0].curv);
             int deep_is_core = 0;
-            for (; a < cq.n && cq.q[a].body == i && cq.q[a].f == f; a++) {
-                const corner *q = cq.q + a;
-                const int j =
-                    rs_contacts_pick(&pc, off[a], off[a + 1], RS_FEATURE_BASE(o->feature));
-                if (j < 0 || !same_wall(&pc, j, o, reach))
-                    continue;
-                const double depth = rr + q->lift - pc.dist[j];
+            /* the core points in their order, each from the query or the closed form */
+            for (;;) {
+                const int qa = a < cq.n && cq.q[a].body == i && cq.q[a].f == f;
+                const int qe = e < ca.n && ca.q[e].body == i && ca.q[e].f == f;
+                if (!qa && !qe)
+                    break;
+                const int from_query = qa && (!qe || cq.q[a].seq < ca.q[e].seq);
+                const corner *q = from_query ? cq.q + a++ : ca.q + e++;
+                double dist, xm[3], nw[3], t1[3] = {0.0, 0.0, 0.0}, t2[3] = {0.0, 0.0, 0.0};
+                double curv[2] = {0.0, 0.0};
+                if (from_query) {
+                    const int j = rs_contacts_pick(&pc, off[a - 1], off[a],
+                                                   RS_FEATURE_BASE(o->feature));
+                    if (j < 0 || !same_wall(&pc, j, o, reach))
+                        continue;
+                    dist = pc.dist[j];
+                    for (int k = 0; k < 3; k++) {
+                        xm[k] = pc.xm[k][j];
+                        nw[k] = pc.nrm[k][j];
+                        t1[k] = pc.t1[k][j];
+                        t2[k] = pc.t2[k][j];
+                    }
+                    curv[0] = pc.curv[0][j];
+                    curv[1] = pc.curv[1][j];
+                } else { /* on the pair's own feature: on its wall */
+                    dist = q->dist;
+                    memcpy(xm, q->xm, sizeof xm);
+                    memcpy(nw, q->n, sizeof nw);
+                }
+                const double depth = rr + q->lift - dist;
                 if (!(-depth <= gap_max))
                     continue;
                 if (depth >= o->depth - 1e-12 * reach)
@@ -352,14 +404,14 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
                 p->id = q->id;
                 p->depth = depth;
                 for (int k = 0; k < 3; k++) {
-                    p->xs[k] = q->cw[k] - rr * pc.nrm[k][j];
-                    p->xm[k] = pc.xm[k][j];
-                    p->n[k] = pc.nrm[k][j];
-                    p->t1[k] = pc.t1[k][j];
-                    p->t2[k] = pc.t2[k][j];
+                    p->xs[k] = q->cw[k] - rr * nw[k];
+                    p->xm[k] = xm[k];
+                    p->n[k] = nw[k];
+                    p->t1[k] = t1[k];
+                    p->t2[k] = t2[k];
                 }
-                p->curv[0] = pc.curv[0][j];
-                p->curv[1] = pc.curv[1][j];
+                p->curv[0] = curv[0];
+                p->curv[1] = curv[1];
             }
             /* the deepest point stands for itself unless a core point is as deep (is it, or
              * rests on the wall beside it: a face, a rim); where it did not settle (a fold
@@ -400,6 +452,7 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
     free(off);
     free(cq.q);
     free(cq.x);
+    free(ca.q);
     for (int i = 0; i < n; i++)
         rs_body_contacts_free(fl + i);
     free(fl);

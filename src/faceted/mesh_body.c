@@ -28,6 +28,53 @@ int rs_mesh_box_candidates(const rs_surface *s, const double lo[3], const double
     return rs_cgal_tree_box(m->tree, l, h, ids, cap);
 }
 
+int rs_mesh_feature_point(const rs_surface *s, const rs_pose *pose, int f, const double x[3],
+                          double radius, double gap_max, double depth_max, double *dist,
+                          double xm[3], double n[3])
+{
+    const rs_mesh *m = s->impl;
+    const int el = RS_FEATURE_INDEX(f);
+    if (!m || RS_FEATURE_TYPE(f) != RS_FEAT_FACE || f != RS_FEATURE_BASE(f) || el < 0 ||
+        el >= m->nel || m->el_t0[el + 1] != m->el_t0[el] + 1)
+        return 0; /* a face of one triangle: closest's only contact of that face */
+    const int t = m->el_t0[el];
+    pose = pose_moved(pose);
+    double p[3]; /* the point in the reference configuration, as slave_local maps it */
+    if (pose) {
+        const double w[3] = {x[0] - pose->T[0], x[1] - pose->T[1], x[2] - pose->T[2]};
+        for (int d = 0; d < 3; d++)
+            p[d] = pose->R[d] * w[0] + pose->R[3 + d] * w[1] + pose->R[6 + d] * w[2];
+    } else {
+        memcpy(p, x, sizeof p);
+    }
+    /* point_hits' face test: inside every edge of t (its sides, tri_bound's products),
+     * its plane within the query's reach, the distance within its limits */
+    for (int j = 0; j < 3; j++)
+        if (!(side_of(m, t, j, p) > 0.0))
+            return 0;
+    const double gap_lim = gap_max + radius, dist_min = -depth_max;
+    const double lim = fmax(gap_lim, -dist_min), h = plane_height(m, t, p);
+    if (!(gap_lim >= 0.0) || !(h * h <= lim * lim))
+        return 0;
+    const int one_sided = s->sides != 2;
+    double X[3], N[3];
+    const double d = face_contact(m, t, one_sided, p, h, X, N);
+    /* behind a one-sided mesh a face's penetration may give way to a neighbour's */
+    if (!(d <= gap_lim && d >= dist_min) || (one_sided && d < 0.0))
+        return 0;
+    *dist = d;
+    if (pose) {
+        rs_matvec3(pose->R, X, xm);
+        rs_matvec3(pose->R, N, n);
+        for (int k = 0; k < 3; k++)
+            xm[k] += pose->T[k];
+    } else {
+        memcpy(xm, X, sizeof X);
+        memcpy(n, N, sizeof N);
+    }
+    return 1;
+}
+
 int rs_mesh_triangle(const rs_surface *s, int t, double xyz[9], double n[3])
 {
     const rs_mesh *m = s->impl;
