@@ -421,24 +421,26 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
                 deep_is_core = 1;
             mpoint *keep = deep_is_core ? m + 1 : m;
             const int count = deep_is_core ? nm - 1 : nm;
-            for (int k = 1; k < count; k++) /* by depth, a few: by insertion */
-                for (int q = k; q > 0 && by_depth(keep + q - 1, keep + q) > 0; q--) {
-                    const mpoint t = keep[q];
-                    keep[q] = keep[q - 1];
-                    keep[q - 1] = t;
-                }
-            /* two kept points of one id (a polyhedron's vertices i and i + 30): the deeper
-             */
-            int nk = 0;
-            for (int k = 0; k < count && nk < RS_MANIFOLD_MAX; k++) {
+            /* the deepest first (ties: the lower id, then the earlier point), one point
+             * an id (a polyhedron's vertices i and i + 30: the deeper), at most
+             * RS_MANIFOLD_MAX: the next in that order picked from those left, so that
+             * only the kept and the skipped are ordered */
+            unsigned char taken[CAND_MAX] = {0};
+            int nk = 0, kept[RS_MANIFOLD_MAX];
+            for (int round = 0; round < count && nk < RS_MANIFOLD_MAX; round++) {
+                int next = -1;
+                for (int k = 0; k < count; k++)
+                    if (!taken[k] && (next < 0 || by_depth(keep + k, keep + next) < 0))
+                        next = k;
+                taken[next] = 1;
                 int dup = 0;
                 for (int q = 0; q < nk; q++)
-                    dup |= keep[q].id == keep[k].id;
+                    dup |= keep[kept[q]].id == keep[next].id;
                 if (!dup)
-                    keep[nk++] = keep[k];
+                    kept[nk++] = next;
             }
             for (int k = 0; k < nk && rc == RS_OK; k++)
-                rc = append(c, point0 + i, radius[i], o->feature, &keep[k], err);
+                rc = append(c, point0 + i, radius[i], o->feature, &keep[kept[k]], err);
         }
         /* Contacts on features that fold concavely under the body (two facets of a drum)
          * overlap one patch of it: their shares, as a sphere's of radius R on each
