@@ -164,7 +164,7 @@ int rs_hull_farthest(const rs_shape *s, const double d[3], int cap, int *out)
     }
     /* best-first from the support: the frontier (a small heap by key) and the vertices
      * seen (few: the cap and their neighbours), in a small open-addressed set */
-    enum { SEEN = 16 * RS_HULL_FARTHEST_MAX, SET = 4 * SEEN };
+    enum { SEEN = 16 * RS_HULL_FARTHEST_MAX, SET = 2 * SEEN };
     _Static_assert((SET & (SET - 1)) == 0, "the seen set's size is a power of two");
     int heap[SEEN], set[SET], nh = 0, ns = 0;
     double hk[SEEN];
