@@ -218,6 +218,69 @@ static int corners_add(corners *a, const corner *q, const double cl[3], double r
     return 0;
 }
 
+/* A polyhedron's first cap vertices asked (core_points), before the rest. */
+enum { CORE_FIRST = 8 };
+
+/* The core points of one feature answered in closed form so far, as the manifold will
+ * read them: their depths and ids where within the gap, and whether one went to the
+ * query (its depth unknown here). */
+typedef struct known_points {
+    int n, asked;
+    double depth[CAND_MAX], key[CAND_MAX];
+    int id[CAND_MAX];
+} known_points;
+
+static void kp_note(known_points *kp, int known, const corner *q, double rr, double gap_max,
+                    double key)
+{
+    if (!known) {
+        kp->asked = 1;
+        return;
+    }
+    const double depth = rr + q->lift - q->dist;
+    if (!(-depth <= gap_max))
+        return;
+    kp->depth[kp->n] = depth, kp->key[kp->n] = key, kp->id[kp->n] = q->id;
+    kp->n++;
+}
+
+/* Do the core points so far, all answered in closed form on the pair's feature (a plane),
+ * settle the manifold of pair o: are RS_MANIFOLD_MAX of the points it keeps (the deepest
+ * point among them unless a core point stands for it) deeper than any later point can
+ * be, and is whether a core point stands for it decided? Later points lie no farther
+ * along d than key_last: on the plane, no deeper than the last known point by more than
+ * dn times the keys' difference, and a margin for the rounding and for the faces a later
+ * point may rest on (the feature's own, or a coplanar one: same_wall). */
+static int settled(const known_points *kp, const rs_body_contact *o, double dn,
+                   double key_last, double reach, const double x[3], double nxs)
+{
+    if (kp->asked || kp->n == 0 || RS_FEATURE_TYPE(o->feature) != RS_FEAT_FACE)
+        return 0;
+    const int j = kp->n - 1;
+    const double margin =
+        1e-6 * reach + 1e-12 * (fabs(x[0]) + fabs(x[1]) + fabs(x[2]) + fabs(nxs));
+    const double bound = kp->depth[j] - dn * (kp->key[j] - key_last) + margin;
+    int core = o->iterations < 0; /* a core point stands for the deepest point (as the
+                                   * manifold decides) */
+    for (int k = 0; k < kp->n; k++)
+        core |= kp->depth[k] >= o->depth - 1e-12 * reach;
+    if (!core && !(bound < o->depth - 1e-12 * reach))
+        return 0; /* a later point may still stand for it */
+    int ids[RS_MANIFOLD_MAX], nid = 0;
+    if (!core && o->depth > bound)
+        ids[nid++] = 0;
+    for (int k = 0; k < kp->n && nid < RS_MANIFOLD_MAX; k++) {
+        if (!(kp->depth[k] > bound))
+            continue;
+        int dup = 0;
+        for (int q = 0; q < nid; q++)
+            dup |= ids[q] == kp->id[k];
+        if (!dup)
+            ids[nid++] = kp->id[k];
+    }
+    return nid >= RS_MANIFOLD_MAX;
+}
+
 int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *body, int n,
                      int point0, const double *radius, double gap_max, rs_contacts *c,
                      rs_error *err)
@@ -292,7 +355,12 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
             for (int k = 0; k < 3; k++)
                 d[k] /= dn;
             cand cp[CAND_MAX];
-            const int ncp = core_points(b[i].shape, d, cp, CAND_MAX - 1);
+            /* a polyhedron's cap vertices, farthest first: the first few, the rest where
+             * those do not settle the manifold (settled) */
+            const int poly = b[i].shape->kind == RS_SHAPE_POLYHEDRON;
+            int ncp = core_points(b[i].shape, d, cp, poly ? CORE_FIRST : CAND_MAX - 1);
+            known_points kp;
+            kp.n = kp.asked = 0;
             /* a wall flat or convex toward the body lies below the tangent plane at the
              * deepest point: a point higher above it than the depth plus the gap does not
              * reach it; elsewhere the body's reach bounds it */
@@ -306,7 +374,12 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
              * the margin); the rest are measured in the world as below */
             const double nx = rs_dot3(o->normal, b[i].x), nxs = rs_dot3(o->normal, o->xs);
             const double clear = above + 1e-12 * (reach + fabs(nx) + fabs(nxs));
-            for (int k = 0; k < ncp; k++) {
+            for (int k = 0;; k++) {
+                if (k == ncp && poly && ncp == CORE_FIRST &&
+                    !settled(&kp, o, dn, rs_dot3(d, cp[k - 1].p), reach, b[i].x, nxs))
+                    ncp = core_points(b[i].shape, d, cp, CAND_MAX - 1); /* the same first */
+                if (k == ncp)
+                    break;
                 if (-dn * rs_dot3(d, cp[k].p) + nx - rr - nxs > clear)
                     continue;
                 corner q = {.body = i, .f = f, .id = cp[k].id, .seq = k, .lift = lift};
@@ -331,6 +404,7 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
                                                         q.xm, q.n);
                 if (known ? answered_add(&ca, &q) : corners_add(&cq, &q, cl, rr + lift))
                     rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
+                kp_note(&kp, known, &q, rr, gap_max, rs_dot3(d, cp[k].p));
             }
         }
     }
