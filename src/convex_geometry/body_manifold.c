@@ -247,12 +247,14 @@ static void kp_note(known_points *kp, int known, const corner *q, double rr, dou
 /* Do the core points so far, all answered in closed form on the pair's feature (a plane),
  * settle the manifold of pair o: are RS_MANIFOLD_MAX of the points it keeps (the deepest
  * point among them unless a core point stands for it) deeper than any later point can
- * be, and is whether a core point stands for it decided? Later points lie no farther
+ * be (or is none within the gap), and is whether a core point stands for it decided?
+ * Later points lie no farther
  * along d than key_last: on the plane, no deeper than the last known point by more than
  * dn times the keys' difference, and a margin for the rounding and for the faces a later
  * point may rest on (the feature's own, or a coplanar one: same_wall). */
 static int settled(const known_points *kp, const rs_body_contact *o, double dn,
-                   double key_last, double reach, const double x[3], double nxs)
+                   double key_last, double reach, const double x[3], double nxs,
+                   double gap_max)
 {
     if (kp->asked || kp->n == 0 || RS_FEATURE_TYPE(o->feature) != RS_FEAT_FACE)
         return 0;
@@ -260,6 +262,8 @@ static int settled(const known_points *kp, const rs_body_contact *o, double dn,
     const double margin =
         1e-6 * reach + 1e-12 * (fabs(x[0]) + fabs(x[1]) + fabs(x[2]) + fabs(nxs));
     const double bound = kp->depth[j] - dn * (kp->key[j] - key_last) + margin;
+    if (bound < -gap_max && bound < o->depth - 1e-12 * reach)
+        return 1; /* no later point is within the gap */
     int core = o->iterations < 0; /* a core point stands for the deepest point (as the
                                    * manifold decides) */
     for (int k = 0; k < kp->n; k++)
@@ -375,8 +379,13 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
             const double nx = rs_dot3(o->normal, b[i].x), nxs = rs_dot3(o->normal, o->xs);
             const double clear = above + 1e-12 * (reach + fabs(nx) + fabs(nxs));
             for (int k = 0;; k++) {
+                /* the rest, unless the last is passed over as too high (so is every
+                 * later one: its height is monotone in its place along d) or those so far
+                 * settle the manifold */
                 if (k == ncp && poly && ncp == CORE_FIRST &&
-                    !settled(&kp, o, dn, rs_dot3(d, cp[k - 1].p), reach, b[i].x, nxs))
+                    !(-dn * rs_dot3(d, cp[k - 1].p) + nx - rr - nxs > clear) &&
+                    !settled(&kp, o, dn, rs_dot3(d, cp[k - 1].p), reach, b[i].x, nxs,
+                             gap_max))
                     ncp = core_points(b[i].shape, d, cp, CAND_MAX - 1); /* the same first */
                 if (k == ncp)
                     break;
