@@ -359,9 +359,10 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
             for (int k = 0; k < 3; k++)
                 d[k] /= dn;
             cand cp[CAND_MAX];
-            /* a polyhedron's cap vertices, farthest first: the first few, the rest where
-             * those do not settle the manifold (settled) */
-            const int poly = b[i].shape->kind == RS_SHAPE_POLYHEDRON;
+            /* a polyhedron's cap vertices, farthest first: on a kind with closed forms
+             * the first few, the rest where those do not settle the manifold (settled) */
+            const int poly =
+                b[i].shape->kind == RS_SHAPE_POLYHEDRON && s->ops->feature_point != NULL;
             int ncp = core_points(b[i].shape, d, cp, poly ? CORE_FIRST : CAND_MAX - 1);
             known_points kp;
             kp.n = kp.asked = 0;
