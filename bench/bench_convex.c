@@ -1,21 +1,21 @@
 /* Convex bodies: the cost of one body-contact for each shape, against a sphere contact.
  *
- *   bench_convex [--bodies N] [--reps R] [--only K --way W]
+ *   bench_convex [--bodies N] [--reps R] [--only K [--way W]]
  *
  * N bodies of each shape (about 1 cm across, random orientations) are pressed 0.1 mm
  * into the floor z = 0, given three ways: a CYLINDER plane and a MESH of two triangles
  * through rs_surface_query with the N bodies as one block (bodies as slaves: their
  * manifolds, what the driver asks), and one large triangle through rs_convex_triangle
- * alone (GJK, libccd's MPR and its refinement). The reference is the sphere's own path: the same N spheres in one
- * rs_surface_query block. Reported: ns per contact (median of the repetitions, thread
- * CPU time), the ratio to the sphere query, the contacts per body, and on the MESH the
- * calls of libccd's MPR and of our GJK per contact (the link wraps both and counts).
- *
- * --only K --way W runs one shape (K = 0 .. 8, in the table's order) one way (0 the
- * plane, 1 the MESH, 2 the triangle) and nothing else but the set-up, the same bodies
- * as the full run: a program for an instruction count of the body path alone, e.g.
- *   valgrind --tool=callgrind --toggle-collect=rs_surface_query \
- *       bench_convex --bodies 1000 --reps 1 --only 2 --way 1 */
+ * alone (GJK, libccd's MPR and its refinement). The reference is the sphere's own path: the
+ * same N spheres in one rs_surface_query block. Reported: ns per contact (median of the
+ * repetitions, thread CPU time), the ratio to the sphere query, the contacts per body, and
+ * on the MESH the calls of libccd's MPR and of our GJK per contact (the link wraps both and
+ * counts).
+ * --only K runs nothing but the plane's query of shape K (0 .. 8, the table's order; -1:
+ * the sphere reference alone), R times, for an instruction count; --way W asks it the
+ * MESH's (1) or the triangle's (2) way instead (the same bodies):
+ *   valgrind --tool=callgrind --toggle-collect=rs_surface_query bench_convex --only K
+ *       [--way W] */
 #define _POSIX_C_SOURCE 200809L
 #include "rigidsurf/convex.h"
 #include "rigidsurf/vec.h"
@@ -97,7 +97,7 @@ static int make_shape(int k, rs_shape *s, const char **name)
 
 int main(int argc, char **argv)
 {
-    int n = 2000, reps = 7, only = -1, only_way = -1;
+    int n = 2000, reps = 7, only = -2, only_way = 0; /* -2: everything */
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!strcmp(argv[i], "--bodies"))
             n = atoi(argv[i + 1]);
@@ -108,10 +108,8 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--way"))
             only_way = atoi(argv[i + 1]);
     }
-    if (n < 1 || reps < 1 || only < -1 || only > 8 || only_way < -1 || only_way > 2 ||
-        (only < 0) != (only_way < 0)) {
-        fprintf(stderr,
-                "usage: bench_convex [--bodies N] [--reps R] [--only K(0-8) --way W(0-2)]\n");
+    if (n < 1 || reps < 1 || only < -2 || only > 8 || only_way < 0 || only_way > 2) {
+        fprintf(stderr, "usage: bench_convex [--bodies N] [--reps R] [--only K [--way W]]\n");
         return 2;
     }
     printf("# bench_convex: %d bodies a shape, %d repetitions (%s, %s)\n", n, reps,
@@ -142,7 +140,7 @@ int main(int argc, char **argv)
     q.slave.x = x, q.slave.y = y, q.slave.z = z, q.slave.radius = r;
     q.gap_max = 0.0;
     q.dist_min = -INFINITY;
-    for (int k = 0; k < reps && only < 0; k++) {
+    for (int k = 0; k < (only < 0 ? reps : 0); k++) {
         const double t0 = rs_bench_thread_now();
         c.n = 0;
         rs_surface_query(&plane, &q, &c, NULL);
@@ -168,7 +166,7 @@ int main(int argc, char **argv)
     /* the bodies as one block (radius 5 mm, the laws' radius), as the driver asks */
     rs_query bqry = q;
     bqry.slave.body = b;
-    for (int s = 0; s < 9; s++) {
+    for (int s = 0; s < (only == -2 ? 9 : only + 1); s++) {
         rs_shape sh;
         const char *name;
         if (make_shape(s, &sh, &name) != RS_OK)
@@ -189,7 +187,7 @@ int main(int argc, char **argv)
         double med[3] = {0.0, 0.0, 0.0};
         long found[3] = {0, 0, 0}, mpr = 0, gjk = 0;
         for (int way = 0; way < 3; way++) {
-            if (only >= 0 && (s != only || way != only_way))
+            if (only != -2 && (only != s || way != only_way))
                 continue;
             for (int k = 0; k < reps; k++) {
                 long m = 0;
@@ -213,11 +211,14 @@ int main(int argc, char **argv)
             med[way] = 1e9 * rs_bench_median(t, reps);
         }
         const double cm = found[1] ? (double)found[1] : 1.0;
-        if (only < 0 || s == only)
-            printf("%-14s %9.1f %6.1f %6.2f %9.1f %6.1f %6.2f %6.2f %6.2f %9.1f %6.1f%s\n",
+        if (only >= 0 && s != only) {
+            rs_shape_free(&sh);
+            continue;
+        }
+        printf("%-14s %9.1f %6.1f %6.3f %9.1f %6.1f %6.3f %6.2f %6.2f %9.1f %6.1f%s\n",
                name, med[0], med[0] / sphere_ns, (double)found[0] / n, med[1],
                med[1] / sphere_ns, (double)found[1] / n, mpr / cm, gjk / cm, med[2],
-               med[2] / sphere_ns, found[2] == n || only_way >= 0 ? "" : " (!)");
+               med[2] / sphere_ns, found[2] == n || only != -2 ? "" : " (!)");
         rs_shape_free(&sh);
     }
     rs_contacts_free(&bq);
