@@ -448,7 +448,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
         rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
     w->q = cq.q, w->x = cq.x, w->cap = cq.cap;
     double gap = 0.0; /* the query's gap and depth limit */
-    for (int i = 0; i < n; i++) {
+    for (int i = 0; i < n && rc == RS_OK; i++) { /* (checked bodies only) */
         const double g = 2.0 * rs_body_reach(b + i) + gap_max;
         gap = g > gap ? g : gap; /* (no NaN) */
     }
