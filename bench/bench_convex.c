@@ -1,6 +1,6 @@
 /* Convex bodies: the cost of one body-contact for each shape, against a sphere contact.
  *
- *   bench_convex [--bodies N] [--reps R] [--only K]
+ *   bench_convex [--bodies N] [--reps R] [--only K [--way W]]
  *
  * N bodies of each shape (about 1 cm across, random orientations) are pressed 0.1 mm
  * into the floor z = 0, given three ways: a CYLINDER plane and a MESH of two triangles
@@ -12,8 +12,10 @@
  * on the MESH the calls of libccd's MPR and of our GJK per contact (the link wraps both and
  * counts).
  * --only K runs nothing but the plane's query of shape K (0 .. 8, the table's order; -1:
- * the sphere reference alone), R times, for an instruction count:
- *   valgrind --tool=callgrind --toggle-collect=rs_surface_query bench_convex --only K */
+ * the sphere reference alone), R times, for an instruction count; --way W asks it the
+ * MESH's (1) or the triangle's (2) way instead (the same bodies):
+ *   valgrind --tool=callgrind --toggle-collect=rs_surface_query bench_convex --only K
+ *       [--way W] */
 #define _POSIX_C_SOURCE 200809L
 #include "rigidsurf/convex.h"
 #include "rigidsurf/vec.h"
@@ -95,7 +97,7 @@ static int make_shape(int k, rs_shape *s, const char **name)
 
 int main(int argc, char **argv)
 {
-    int n = 2000, reps = 7, only = -2; /* -2: everything */
+    int n = 2000, reps = 7, only = -2, only_way = 0; /* -2: everything */
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!strcmp(argv[i], "--bodies"))
             n = atoi(argv[i + 1]);
@@ -103,9 +105,11 @@ int main(int argc, char **argv)
             reps = atoi(argv[i + 1]);
         else if (!strcmp(argv[i], "--only"))
             only = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "--way"))
+            only_way = atoi(argv[i + 1]);
     }
-    if (n < 1 || reps < 1 || only < -2 || only > 8) {
-        fprintf(stderr, "usage: bench_convex [--bodies N] [--reps R] [--only K]\n");
+    if (n < 1 || reps < 1 || only < -2 || only > 8 || only_way < 0 || only_way > 2) {
+        fprintf(stderr, "usage: bench_convex [--bodies N] [--reps R] [--only K [--way W]]\n");
         return 2;
     }
     printf("# bench_convex: %d bodies a shape, %d repetitions (%s, %s)\n", n, reps,
@@ -182,7 +186,9 @@ int main(int argc, char **argv)
         }
         double med[3] = {0.0, 0.0, 0.0};
         long found[3] = {0, 0, 0}, mpr = 0, gjk = 0;
-        for (int way = 0; way < (only == -2 ? 3 : only == s ? 1 : 0); way++) {
+        for (int way = 0; way < 3; way++) {
+            if (only != -2 && (only != s || way != only_way))
+                continue;
             for (int k = 0; k < reps; k++) {
                 long m = 0;
                 mpr_calls = gjk_calls = 0;
@@ -212,7 +218,7 @@ int main(int argc, char **argv)
         printf("%-14s %9.1f %6.1f %6.3f %9.1f %6.1f %6.3f %6.2f %6.2f %9.1f %6.1f%s\n",
                name, med[0], med[0] / sphere_ns, (double)found[0] / n, med[1],
                med[1] / sphere_ns, (double)found[1] / n, mpr / cm, gjk / cm, med[2],
-               med[2] / sphere_ns, found[2] == n ? "" : " (!)");
+               med[2] / sphere_ns, found[2] == n || only != -2 ? "" : " (!)");
         rs_shape_free(&sh);
     }
     rs_contacts_free(&bq);

@@ -33,7 +33,10 @@ typedef enum rs_shape_kind {
 } rs_shape_kind;
 
 /// Directions along which a polyhedron keeps its extreme vertex (rs_shape.hint).
-#define RS_HULL_HINTS 26
+/// A polyhedron's start vertices for its support's climb: one per cell of a cube's faces,
+/// RS_HULL_CELLS x RS_HULL_CELLS cells a face.
+#define RS_HULL_CELLS 8
+#define RS_HULL_HINTS (6 * RS_HULL_CELLS * RS_HULL_CELLS)
 
 /// A support function: writes to out the point of the shape farthest along dir (any
 /// length, not zero), both in the shape's body frame. The shape is convex and bounded.
@@ -53,8 +56,8 @@ typedef struct rs_shape {
     int *tris;       ///< polyhedron: triangles (3 * nt), counter-clockwise from outside
     int *adj0;       ///< polyhedron: vertex v's neighbours on the hull are
     int *adj;        ///< adj[adj0[v] .. adj0[v + 1]) (adj0: nv + 1 entries)
-    int hint[RS_HULL_HINTS]; ///< polyhedron: its extreme vertices along the 26 directions
-                             ///< of a cube's neighbours (where a support's climb starts)
+    int hint[RS_HULL_HINTS]; ///< polyhedron: its extreme vertex along the centre of each
+                             ///< cell of a cube's faces (where a support's climb starts)
     double box[6];           ///< its body-frame bounds, lo then hi (rs_shape_bounds; set by
                              ///< the make call)
     double reach;          ///< the farthest corner of those bounds from the origin (length)

@@ -243,10 +243,13 @@ static int by_depth(const void *a, const void *b)
 }
 
 /* A core point's query: its body, the feature (index into the body's list) and id, its
- * point in the world and the lift of its ball. */
+ * place among the body's core points (seq), its point in the world and the lift of its
+ * ball; where the kind answers it in closed form (rs_surface_ops.feature_point), that
+ * answer. */
 typedef struct corner {
-    int body, f, id;
+    int body, f, id, seq;
     double cw[3], lift;
+    double dist, xm[3], n[3];
 } corner;
 
 typedef struct corners {
@@ -286,6 +289,92 @@ static int corners_add(corners *a, const corner *q, const double cl[3], double r
     a->x[3 * a->cap + a->n] = r;
     a->n++;
     return 0;
+}
+
+/* The core points answered in closed form, in the order of the queried ones. */
+typedef struct answered {
+    corner *q;
+    int n, cap;
+} answered;
+
+static int answered_add(answered *a, const corner *q)
+{
+    if (a->n == a->cap) {
+        const int cap = a->cap ? 2 * a->cap : 64;
+        corner *nq = realloc(a->q, (size_t)cap * sizeof *nq);
+        if (!nq)
+            return -1;
+        a->q = nq, a->cap = cap;
+    }
+    a->q[a->n++] = *q;
+    return 0;
+}
+
+/* A polyhedron's first cap vertices asked (low_points), before the rest. */
+enum { CORE_FIRST = 8 };
+
+/* The core points of one feature answered in closed form so far, as the manifold will
+ * read them: their depths and ids where within the gap, and whether one went to the
+ * query (its depth unknown here). */
+typedef struct known_points {
+    int n, asked;
+    double depth[CAND_MAX], key[CAND_MAX];
+    int id[CAND_MAX];
+} known_points;
+
+static void kp_note(known_points *kp, int known, const corner *q, double rr, double gap_max,
+                    double key)
+{
+    if (!known) {
+        kp->asked = 1;
+        return;
+    }
+    const double depth = rr + q->lift - q->dist;
+    if (!(-depth <= gap_max))
+        return;
+    kp->depth[kp->n] = depth, kp->key[kp->n] = key, kp->id[kp->n] = q->id;
+    kp->n++;
+}
+
+/* Do the core points so far, all answered in closed form on the pair's feature (a plane),
+ * settle the manifold of pair o: are RS_MANIFOLD_MAX of the points it keeps (the deepest
+ * point among them unless a core point stands for it) deeper than any later point can
+ * be (or is none within the gap), and is whether a core point stands for it decided?
+ * Later points lie no farther along d than key_last: on the plane, no deeper than the
+ * last known point by more than dn times the keys' difference, and a margin for the
+ * rounding and for the faces a later point may rest on (the feature's own, or a coplanar
+ * one: same_wall). */
+static int settled(const known_points *kp, const rs_body_contact *o, double dn,
+                   double key_last, double reach, const double x[3], double nxs,
+                   double gap_max)
+{
+    if (kp->asked || kp->n == 0 || RS_FEATURE_TYPE(o->feature) != RS_FEAT_FACE)
+        return 0;
+    const int j = kp->n - 1;
+    const double margin =
+        1e-6 * reach + 1e-12 * (fabs(x[0]) + fabs(x[1]) + fabs(x[2]) + fabs(nxs));
+    const double bound = kp->depth[j] - dn * (kp->key[j] - key_last) + margin;
+    if (bound < -gap_max && bound < o->depth - 1e-12 * reach)
+        return 1; /* no later point is within the gap */
+    int core = o->iterations < 0; /* a core point stands for the deepest point (as the
+                                   * manifold decides) */
+    for (int k = 0; k < kp->n; k++)
+        core |= kp->depth[k] >= o->depth - 1e-12 * reach;
+    if (!core && !(bound < o->depth - 1e-12 * reach))
+        return 0; /* a later point may still stand for it */
+    int ids[RS_MANIFOLD_MAX], nid = 0;
+    if (!core && o->depth > bound)
+        ids[nid++] = 0;
+    for (int k = 0; k < kp->n && nid < RS_MANIFOLD_MAX; k++) {
+        if (!(kp->depth[k] > bound))
+            continue;
+        int dup = 0;
+        for (int q = 0; q < nid; q++)
+            dup |= ids[q] == kp->id[k];
+        if (!dup)
+            ids[nid++] = kp->id[k];
+    }
+    return nid >= RS_MANIFOLD_MAX;
 }
 
 void rs_body_work_free(rs_body_work *w)
@@ -363,14 +452,18 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
      * normal has the same depth on their planes. */
     const int mesh = s->ops->frame == RS_FRAME_GLOBAL_X;
     corners cq = {w->q, w->x, 0, w->cap};
+    answered ca = {NULL, 0, 0};
     if (rc == RS_OK && corners_room(&cq, n + 64))
         rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
     w->q = cq.q, w->x = cq.x, w->cap = cq.cap;
     double gap = 0.0; /* the widest window of the bodies (window) */
+    for (int i = 0; i < n && rc == RS_OK; i++) { /* (checked bodies only) */
+        const double g = window(rs_body_reach(b + i), gap_max);
+        gap = g > gap ? g : gap;
+    }
     for (int i = 0; i < n && rc == RS_OK; i++) {
         const double rr = rs_shape_core_radius(b[i].shape),
                      reach = rch[i] = rs_body_reach(b + i);
-        gap = window(reach, gap_max) > gap ? window(reach, gap_max) : gap;
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++)
             if (fl[i].c[f].feature >= RS_MANIFOLD_STRIDE)
                 rc = rs_error_set(err, RS_ERR_CAPACITY,
@@ -405,10 +498,24 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
             const double nx = rs_dot3(o->normal, b[i].x), nxs = rs_dot3(o->normal, o->xs);
             const double clear = above + 1e-12 * (reach + fabs(nx) + fabs(nxs));
             cand cp[CAND_MAX];
-            const int ncp =
-                low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp, CAND_MAX - 1);
-            for (int k = 0; k < ncp; k++) {
-                corner q = {i, f, cp[k].id, {0.0, 0.0, 0.0}, lift};
+            /* a polyhedron's cap vertices low enough, farthest first: on a kind with
+             * closed forms the first few, the rest where all of those are low enough (the
+             * height is monotone along the list) and do not settle the manifold */
+            const int poly =
+                b[i].shape->kind == RS_SHAPE_POLYHEDRON && s->ops->feature_point != NULL;
+            int ncp = low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp,
+                                 poly ? CORE_FIRST : CAND_MAX - 1);
+            known_points kp;
+            kp.n = kp.asked = 0;
+            for (int k = 0;; k++) {
+                if (k == ncp && poly && ncp == CORE_FIRST &&
+                    !settled(&kp, o, dn, rs_dot3(d, cp[k - 1].p), reach, b[i].x, nxs,
+                             gap_max)) /* the same first */
+                    ncp = low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp,
+                                     CAND_MAX - 1);
+                if (k == ncp)
+                    break;
+                corner q = {.body = i, .f = f, .id = cp[k].id, .seq = k, .lift = lift};
                 rs_matvec3(R, cp[k].p, q.cw);
                 for (int j = 0; j < 3; j++)
                     q.cw[j] += b[i].x[j];
@@ -423,8 +530,15 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                 const double cl[3] = {q.cw[0] + lift * o->normal[0],
                                       q.cw[1] + lift * o->normal[1],
                                       q.cw[2] + lift * o->normal[2]};
-                if (corners_add(&cq, &q, cl, rr + lift))
+                /* the kind's closed form where it has one, else the query */
+                const int known =
+                    s->ops->feature_point &&
+                    s->ops->feature_point(s, pose, RS_FEATURE_BASE(o->feature), cl,
+                                          rr + lift, window(reach, gap_max),
+                                          window(reach, gap_max), &q.dist, q.xm, q.n);
+                if (known ? answered_add(&ca, &q) : corners_add(&cq, &q, cl, rr + lift))
                     rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
+                kp_note(&kp, known, &q, rr, gap_max, rs_dot3(d, cp[k].p));
             }
         }
     }
@@ -449,7 +563,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
 
     /* Each body's manifold per feature, in order: the deepest point and the core points
      * that rest on the feature's wall. */
-    for (int i = 0, a = 0; i < n && rc == RS_OK; i++) {
+    for (int i = 0, a = 0, e = 0; i < n && rc == RS_OK; i++) {
         const int k0 = c->n;
         const double rr = rs_shape_core_radius(b[i].shape), reach = rch[i];
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
@@ -459,15 +573,38 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
             m[0].id = 0;
             m[0].depth = o->depth; /* the rest below, where it stands for itself */
             int deep_is_core = 0;
-            for (; a < cq.n && cq.q[a].body == i && cq.q[a].f == f; a++) {
-                const corner *q = cq.q + a;
-                const double win = window(reach, gap_max);
-                const int j =
-                    rs_contacts_pick(&pc, off[a], off[a + 1], RS_FEATURE_BASE(o->feature),
-                                     -win, win + cq.x[3 * cq.cap + a]);
-                if (j < 0 || !same_wall(&pc, j, o, reach))
-                    continue;
-                const double depth = rr + q->lift - pc.dist[j];
+            /* the core points in their order, each from the query or the closed form */
+            for (;;) {
+                const int qa = a < cq.n && cq.q[a].body == i && cq.q[a].f == f;
+                const int qe = e < ca.n && ca.q[e].body == i && ca.q[e].f == f;
+                if (!qa && !qe)
+                    break;
+                const int from_query = qa && (!qe || cq.q[a].seq < ca.q[e].seq);
+                const corner *q = from_query ? cq.q + a++ : ca.q + e++;
+                double dist, xm[3], nw[3], t1[3] = {0.0, 0.0, 0.0}, t2[3] = {0.0, 0.0, 0.0};
+                double curv[2] = {0.0, 0.0};
+                if (from_query) {
+                    const double win = window(reach, gap_max);
+                    const int j = rs_contacts_pick(&pc, off[a - 1], off[a],
+                                                   RS_FEATURE_BASE(o->feature), -win,
+                                                   win + cq.x[3 * cq.cap + a - 1]);
+                    if (j < 0 || !same_wall(&pc, j, o, reach))
+                        continue;
+                    dist = pc.dist[j];
+                    for (int k = 0; k < 3; k++) {
+                        xm[k] = pc.xm[k][j];
+                        nw[k] = pc.nrm[k][j];
+                        t1[k] = pc.t1[k][j];
+                        t2[k] = pc.t2[k][j];
+                    }
+                    curv[0] = pc.curv[0][j];
+                    curv[1] = pc.curv[1][j];
+                } else { /* on the pair's own feature: on its wall */
+                    dist = q->dist;
+                    memcpy(xm, q->xm, sizeof xm);
+                    memcpy(nw, q->n, sizeof nw);
+                }
+                const double depth = rr + q->lift - dist;
                 if (!(-depth <= gap_max))
                     continue;
                 if (depth >= o->depth - 1e-12 * reach)
@@ -476,14 +613,14 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                 p->id = q->id;
                 p->depth = depth;
                 for (int k = 0; k < 3; k++) {
-                    p->xs[k] = q->cw[k] - rr * pc.nrm[k][j];
-                    p->xm[k] = pc.xm[k][j];
-                    p->n[k] = pc.nrm[k][j];
-                    p->t1[k] = pc.t1[k][j];
-                    p->t2[k] = pc.t2[k][j];
+                    p->xs[k] = q->cw[k] - rr * nw[k];
+                    p->xm[k] = xm[k];
+                    p->n[k] = nw[k];
+                    p->t1[k] = t1[k];
+                    p->t2[k] = t2[k];
                 }
-                p->curv[0] = pc.curv[0][j];
-                p->curv[1] = pc.curv[1][j];
+                p->curv[0] = curv[0];
+                p->curv[1] = curv[1];
             }
             /* the deepest point stands for itself unless a core point is as deep (is it, or
              * rests on the wall beside it: a face, a rim); where it did not settle (a fold
@@ -501,24 +638,26 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
             }
             mpoint *keep = deep_is_core ? m + 1 : m;
             const int count = deep_is_core ? nm - 1 : nm;
-            for (int k = 1; k < count; k++) /* by depth, a few: by insertion */
-                for (int q = k; q > 0 && by_depth(keep + q - 1, keep + q) > 0; q--) {
-                    const mpoint t = keep[q];
-                    keep[q] = keep[q - 1];
-                    keep[q - 1] = t;
-                }
-            /* two kept points of one id (a polyhedron's vertices i and i + 30): the deeper
-             */
-            int nk = 0;
-            for (int k = 0; k < count && nk < RS_MANIFOLD_MAX; k++) {
+            /* the deepest first (ties: the lower id, then the earlier point), one point
+             * an id (a polyhedron's vertices i and i + 30: the deeper), at most
+             * RS_MANIFOLD_MAX: the next in that order picked from those left, so that
+             * only the kept and the skipped are ordered */
+            unsigned char taken[CAND_MAX] = {0};
+            int nk = 0, kept[RS_MANIFOLD_MAX];
+            for (int round = 0; round < count && nk < RS_MANIFOLD_MAX; round++) {
+                int next = -1;
+                for (int k = 0; k < count; k++)
+                    if (!taken[k] && (next < 0 || by_depth(keep + k, keep + next) < 0))
+                        next = k;
+                taken[next] = 1;
                 int dup = 0;
                 for (int q = 0; q < nk; q++)
-                    dup |= keep[q].id == keep[k].id;
-                if (!dup && nk++ != k)
-                    keep[nk - 1] = keep[k];
+                    dup |= keep[kept[q]].id == keep[next].id;
+                if (!dup)
+                    kept[nk++] = next;
             }
             for (int k = 0; k < nk && rc == RS_OK; k++)
-                rc = append(c, point0 + i, radius[i], o->feature, &keep[k], err);
+                rc = append(c, point0 + i, radius[i], o->feature, &keep[kept[k]], err);
         }
         /* Contacts on features that fold concavely under the body (two facets of a drum)
          * overlap one patch of it: their shares, as a sphere's of radius R on each
@@ -529,6 +668,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
             rs_contacts_body_shares(c, k0, c->n - k0, radius[i]);
     }
     w->pc = pc;
+    free(ca.q);
     for (int i = 0; i < n; i++)
         rs_body_contacts_free(fl + i);
     return rc;

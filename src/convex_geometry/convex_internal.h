@@ -18,12 +18,12 @@ void rs_shape_core_support(const rs_shape *s, const double d[3], double out[3]);
 /// The vertex adjacency of polyhedron s (adj0, adj) from its triangles. 0, -1 when out
 /// of memory.
 int rs_hull_adjacency(rs_shape *s);
-/// The climbs' starts of polyhedron s (rs_shape.hint): its extreme vertices along the 26
-/// directions of a cube's neighbours.
+/// The climbs' starts of polyhedron s (rs_shape.hint): its extreme vertex along the
+/// centre of each cell of a cube's faces (RS_HULL_CELLS x RS_HULL_CELLS a face).
 void rs_hull_hints(rs_shape *s);
 /// The index of polyhedron s's vertex farthest along d (body frame): by a scan of its
 /// vertices (the first of ties), or for more than RS_HULL_SCAN by hill climbing over its
-/// adjacency from the hint nearest d.
+/// adjacency from the hint of the cell d points through.
 int rs_hull_support(const rs_shape *s, const double d[3]);
 /// The cap (<= RS_HULL_FARTHEST_MAX) vertices of s farthest along d, farthest first (ties:
 /// the lower index), into out; returns how many.

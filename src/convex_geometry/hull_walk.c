@@ -7,6 +7,7 @@
 #include "convex_internal.h"
 #include "rigidsurf/vec.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -61,28 +62,44 @@ int rs_hull_adjacency(rs_shape *s)
     return 0;
 }
 
-/* The 26 directions of a cube's neighbours, (a, b, c) in {-1, 0, 1}^3 less the origin:
- * their extreme vertices are the climb's starts. */
-static void hint_dir(int k, double dir[3])
+/* The cell of a cube's faces that direction d points through: the face of d's largest
+ * part (axis a, its sign), and on it the cell of d's other two parts over that one, each
+ * in RS_HULL_CELLS equal steps of [-1, 1]. 0 for a direction without a finite largest
+ * part. */
+static int cell_of(const double d[3])
 {
-    const int m = k < 13 ? k : k + 1; /* skip the centre, 13 */
-    dir[0] = m % 3 - 1.0, dir[1] = (m / 3) % 3 - 1.0, dir[2] = m / 9 - 1.0;
+    const double ax = fabs(d[0]), ay = fabs(d[1]), az = fabs(d[2]);
+    const int a = ax >= ay ? (ax >= az ? 0 : 2) : (ay >= az ? 1 : 2);
+    const double top = a == 0 ? ax : a == 1 ? ay : az;
+    if (!(top > 0.0) || !(top < INFINITY))
+        return 0;
+    const int b = (a + 1) % 3, c = (a + 2) % 3, K = RS_HULL_CELLS;
+    const double fu = (d[b] / top + 1.0) * 0.5 * K, fv = (d[c] / top + 1.0) * 0.5 * K;
+    const int i = fu >= 1.0 ? (fu < K ? (int)fu : K - 1) : 0;
+    const int j = fv >= 1.0 ? (fv < K ? (int)fv : K - 1) : 0;
+    return ((2 * a + (d[a] < 0.0)) * K + i) * K + j;
 }
 
 void rs_hull_hints(rs_shape *s)
 {
-    for (int k = 0; k < RS_HULL_HINTS; k++) {
-        double dir[3];
-        hint_dir(k, dir);
-        int best = 0;
-        double bd = -INFINITY;
-        for (int i = 0; i < s->nv; i++) {
-            const double p = rs_dot3(s->verts + 3 * i, dir);
-            if (p > bd)
-                bd = p, best = i;
-        }
-        s->hint[k] = best;
-    }
+    const int K = RS_HULL_CELLS;
+    for (int a = 0; a < 3; a++)
+        for (int sg = 0; sg < 2; sg++)
+            for (int i = 0; i < K; i++)
+                for (int j = 0; j < K; j++) {
+                    double dir[3];
+                    dir[a] = sg ? -1.0 : 1.0;
+                    dir[(a + 1) % 3] = -1.0 + (2.0 * i + 1.0) / K;
+                    dir[(a + 2) % 3] = -1.0 + (2.0 * j + 1.0) / K;
+                    int best = 0;
+                    double bd = -INFINITY;
+                    for (int v = 0; v < s->nv; v++) {
+                        const double p = rs_dot3(s->verts + 3 * v, dir);
+                        if (p > bd)
+                            bd = p, best = v;
+                    }
+                    s->hint[((2 * a + sg) * K + i) * K + j] = best;
+                }
 }
 
 int rs_hull_support(const rs_shape *s, const double d[3])
@@ -100,15 +117,10 @@ int rs_hull_support(const rs_shape *s, const double d[3])
         }
         return best;
     }
-    /* from the hint nearest d (the extreme vertices along 26 directions), up the graph:
-     * to a higher neighbour, or an equal one of a lower index (so that it ends) */
-    int best = s->hint[0];
+    /* from the extreme vertex of the cell d points through, up the graph: to a higher
+     * neighbour, or an equal one of a lower index (so that it ends) */
+    int best = s->hint[cell_of(d)];
     double bd = rs_dot3(v + 3 * best, d);
-    for (int k = 1; k < RS_HULL_HINTS; k++) {
-        const double p = rs_dot3(v + 3 * s->hint[k], d);
-        if (p > bd)
-            bd = p, best = s->hint[k];
-    }
     for (int moved = 1; moved;) {
         moved = 0;
         for (int k = s->adj0[best], e = s->adj0[best + 1]; k < e; k++) {
@@ -152,14 +164,15 @@ int rs_hull_farthest(const rs_shape *s, const double d[3], int cap, int *out)
     }
     /* best-first from the support: the frontier (a small heap by key) and the vertices
      * seen (few: the cap and their neighbours), in a small open-addressed set */
-    enum { SEEN = 16 * RS_HULL_FARTHEST_MAX, SET = 4 * SEEN };
+    enum { SEEN = 16 * RS_HULL_FARTHEST_MAX, SET = 2 * SEEN };
+    _Static_assert((SET & (SET - 1)) == 0, "the seen set's size is a power of two");
     int heap[SEEN], set[SET], nh = 0, ns = 0;
     double hk[SEEN];
-    for (int k = 0; k < SET; k++)
-        set[k] = -1;
+    const unsigned mask = SET - 1;
+    memset(set, 0xff, sizeof set); /* all -1 */
     const int s0 = rs_hull_support(s, d);
     heap[nh] = s0, hk[nh++] = rs_dot3(v + 3 * s0, d);
-    set[(unsigned)s0 * 2654435761u % SET] = s0, ns++;
+    set[(unsigned)s0 * 2654435761u & mask] = s0, ns++;
     while (nh > 0 && n < cap) {
         const int top = heap[0];
         out[n++] = top;
@@ -182,9 +195,9 @@ int rs_hull_farthest(const rs_shape *s, const double d[3], int cap, int *out)
         }
         for (int k = s->adj0[top], e = s->adj0[top + 1]; k < e; k++) {
             const int w = s->adj[k];
-            unsigned h = (unsigned)w * 2654435761u % SET;
+            unsigned h = (unsigned)w * 2654435761u & mask;
             while (set[h] >= 0 && set[h] != w)
-                h = (h + 1) % SET;
+                h = (h + 1) & mask;
             if (set[h] == w || ns == SEEN || nh == SEEN)
                 continue;
             set[h] = w, ns++;

@@ -28,6 +28,53 @@ int rs_mesh_box_candidates(const rs_surface *s, const double lo[3], const double
     return rs_cgal_tree_box(m->tree, l, h, ids, cap);
 }
 
+int rs_mesh_feature_point(const rs_surface *s, const rs_pose *pose, int f, const double x[3],
+                          double radius, double gap_max, double depth_max, double *dist,
+                          double xm[3], double n[3])
+{
+    const rs_mesh *m = s->impl;
+    const int el = RS_FEATURE_INDEX(f);
+    if (!m || RS_FEATURE_TYPE(f) != RS_FEAT_FACE || f != RS_FEATURE_BASE(f) || el < 0 ||
+        el >= m->nel || m->el_t0[el + 1] != m->el_t0[el] + 1)
+        return 0; /* a face of one triangle: closest's only contact of that face */
+    const int t = m->el_t0[el];
+    pose = pose_moved(pose);
+    double p[3]; /* the point in the reference configuration, as slave_local maps it */
+    if (pose) {
+        const double w[3] = {x[0] - pose->T[0], x[1] - pose->T[1], x[2] - pose->T[2]};
+        for (int d = 0; d < 3; d++)
+            p[d] = pose->R[d] * w[0] + pose->R[3 + d] * w[1] + pose->R[6 + d] * w[2];
+    } else {
+        memcpy(p, x, sizeof p);
+    }
+    /* point_hits' face test: inside every edge of t (its sides, tri_bound's products),
+     * its plane within the query's reach, the distance within its limits */
+    for (int j = 0; j < 3; j++)
+        if (!(side_of(m, t, j, p) > 0.0))
+            return 0;
+    const double gap_lim = gap_max + radius, dist_min = -depth_max;
+    const double lim = fmax(gap_lim, -dist_min), h = plane_height(m, t, p);
+    if (!(gap_lim >= 0.0) || !(h * h <= lim * lim))
+        return 0;
+    const int one_sided = s->sides != 2;
+    double X[3], N[3];
+    const double d = face_contact(m, t, one_sided, p, h, X, N);
+    /* behind a one-sided mesh a face's penetration may give way to a neighbour's */
+    if (!(d <= gap_lim && d >= dist_min) || (one_sided && d < 0.0))
+        return 0;
+    *dist = d;
+    if (pose) {
+        rs_matvec3(pose->R, X, xm);
+        rs_matvec3(pose->R, N, n);
+        for (int k = 0; k < 3; k++)
+            xm[k] += pose->T[k];
+    } else {
+        memcpy(xm, X, sizeof X);
+        memcpy(n, N, sizeof N);
+    }
+    return 1;
+}
+
 int rs_mesh_triangle(const rs_surface *s, int t, double xyz[9], double n[3])
 {
     const rs_mesh *m = s->impl;
@@ -45,13 +92,28 @@ int rs_mesh_triangle_holds(const rs_surface *s, int t, const double x[3])
            side_of(m, t, 2, x) >= 0.0;
 }
 
+/* Is x clearly farther than r from the segment ab: outside the segment's box grown by r
+ * and a margin far above the rounding of segment_distance2, on some axis? */
+static int clear_of_segment(const double a[3], const double b[3], const double x[3],
+                            double r)
+{
+    for (int d = 0; d < 3; d++) {
+        const double lo = a[d] < b[d] ? a[d] : b[d], hi = a[d] < b[d] ? b[d] : a[d];
+        const double g = r + 1e-9 * (r + hi - lo) + 1e-300;
+        if (x[d] < lo - g || x[d] > hi + g)
+            return 1;
+    }
+    return 0;
+}
+
 int rs_mesh_triangle_plain(const rs_surface *s, int t, const double c[3], double r)
 {
     const rs_mesh *m = s->impl;
     const rs_mtri *rec = m->rec + t;
     for (int j = 0; j < 3; j++) {
         const double *a = m->xyz + 3 * rec->v[j], *b = m->xyz + 3 * rec->v[(j + 1) % 3];
-        if (rec->kind[j] != RS_EDGE_FLAT && segment_distance2(a, b, c) <= r * r)
+        if (rec->kind[j] != RS_EDGE_FLAT && !clear_of_segment(a, b, c, r) &&
+            segment_distance2(a, b, c) <= r * r)
             return 0;
         const double d[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
         if (!m->vflat[rec->v[j]] && rs_dot3(d, d) <= r * r)
@@ -190,6 +252,20 @@ static int cmp_int(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* The position of id among sorted[0 .. n), -1 if absent: a scan for a few, else a
+ * binary search. */
+static int find_sorted(const int *sorted, int n, int id)
+{
+    if (n <= 16) {
+        for (int i = 0; i < n; i++)
+            if (sorted[i] == id)
+                return i;
+        return -1;
+    }
+    const int *hit = bsearch(&id, sorted, (size_t)n, sizeof *sorted, cmp_int);
+    return hit ? (int)(hit - sorted) : -1;
+}
+
 void rs_mesh_flat_regions(const rs_surface *s, const int *ids, int n, int *label,
                           int *sorted)
 {
@@ -208,8 +284,7 @@ void rs_mesh_flat_regions(const rs_surface *s, const int *ids, int n, int *label
             }
     /* pos[i]: the index in ids of sorted[i] */
     for (int k = 0; k < n; k++) {
-        const int *hit = bsearch(ids + k, sorted, (size_t)n, sizeof *sorted, cmp_int);
-        pos[hit - sorted] = k;
+        pos[find_sorted(sorted, n, ids[k])] = k;
         label[k] = k;
     }
     for (int k = 0; k < n; k++) {
@@ -217,11 +292,10 @@ void rs_mesh_flat_regions(const rs_surface *s, const int *ids, int n, int *label
         for (int j = 0; j < 3; j++) {
             if (r->kind[j] != RS_EDGE_FLAT || r->nbr[j] < 0)
                 continue;
-            const int other = r->nbr[j] / 3;
-            const int *hit = bsearch(&other, sorted, (size_t)n, sizeof *sorted, cmp_int);
-            if (!hit)
+            const int at = find_sorted(sorted, n, r->nbr[j] / 3);
+            if (at < 0)
                 continue; /* not among the candidates */
-            const int a = find_root(label, k), b = find_root(label, pos[hit - sorted]);
+            const int a = find_root(label, k), b = find_root(label, pos[at]);
             if (a != b)
                 label[a > b ? a : b] = a < b ? a : b;
         }

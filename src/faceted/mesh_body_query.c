@@ -83,13 +83,27 @@ static void unrotate(const rs_pose *p, const double v[3], double V[3])
 }
 
 /* The box about the body in the reference configuration: the corners of its body-frame
- * bounds, placed and taken back through the pose, widened by gap_max. */
-static void body_box(const rs_body *b, const rs_pose *p, double gap_max, double lo[3],
-                     double hi[3])
+ * bounds, placed and taken back through the pose, widened by gap_max. Without a pose each
+ * bound is a sum of one product per axis of the body frame, each term largest (least) at
+ * its own corner: rounding is monotone, so the bound is the same number as the largest
+ * (least) over the eight corners. R is the body's rotation. */
+static void body_box(const rs_body *b, const double R[9], const rs_pose *p, double gap_max,
+                     double lo[3], double hi[3])
 {
     const double *blo = b->shape->box, *bhi = b->shape->box + 3;
-    double R[9];
-    rs_body_rotation(b, R);
+    if (!p) {
+        for (int d = 0; d < 3; d++) {
+            double tl[3], th[3];
+            for (int j = 0; j < 3; j++) {
+                const double u = R[3 * d + j] * blo[j], v = R[3 * d + j] * bhi[j];
+                tl[j] = v < u ? v : u;
+                th[j] = v < u ? u : v;
+            }
+            lo[d] = tl[0] + tl[1] + tl[2] + b->x[d] - gap_max;
+            hi[d] = th[0] + th[1] + th[2] + b->x[d] + gap_max;
+        }
+        return;
+    }
     for (int d = 0; d < 3; d++) {
         lo[d] = INFINITY;
         hi[d] = -INFINITY;
@@ -107,6 +121,27 @@ static void body_box(const rs_body *b, const rs_pose *p, double gap_max, double 
             hi[d] = X[d] + gap_max > hi[d] ? X[d] + gap_max : hi[d];
         }
     }
+}
+
+/* A body with its rotation and its last support (one query asks the same direction of
+ * each triangle of a coplanar region and of the region): the support is a function of
+ * the direction, so a repeated direction takes the last answer. */
+typedef struct sbody {
+    const rs_body *b;
+    double R[9];
+    double dir[3], xs[3];
+    int have;
+} sbody;
+
+static void support(sbody *sb, const double dir[3], double xs[3])
+{
+    if (!(sb->have && sb->dir[0] == dir[0] && sb->dir[1] == dir[1] &&
+          sb->dir[2] == dir[2])) {
+        rs_body_support_at(sb->b, sb->R, dir, sb->xs);
+        memcpy(sb->dir, dir, sizeof sb->dir);
+        sb->have = 1;
+    }
+    memcpy(xs, sb->xs, sizeof sb->xs);
 }
 
 static void set_contact(found *g, int feature, double depth, const double n[3],
@@ -158,11 +193,11 @@ static int cmp_member(const void *pa, const void *pb)
 /* The body's deepest point xs along -n below the plane through a0 with unit normal n
  * (toward the body): its depth (a0 - xs).n, its foot on the plane, and the foot in the
  * mesh's reference configuration F. */
-static double deepest_along(const rs_body *b, const rs_pose *p, const double n[3],
+static double deepest_along(sbody *b, const rs_pose *p, const double n[3],
                             const double a0[3], double xs[3], double foot[3], double F[3])
 {
     const double down[3] = {-n[0], -n[1], -n[2]};
-    rs_body_support(b, down, xs);
+    support(b, down, xs);
     const double depth =
         (a0[0] - xs[0]) * n[0] + (a0[1] - xs[1]) * n[1] + (a0[2] - xs[2]) * n[2];
     for (int d = 0; d < 3; d++)
@@ -176,9 +211,10 @@ static double deepest_along(const rs_body *b, const rs_pose *p, const double n[3
  * of a one-sided mesh), its depth, the normal from the body toward the plane; apart when
  * the foot of that point lies off the triangle (the body meets the plane elsewhere: its
  * own triangle answers there). */
-static void plane_pair(const rs_surface *s, const rs_pose *p, const rs_body *b, cand *ck,
+static void plane_pair(const rs_surface *s, const rs_pose *p, sbody *sb, cand *ck,
                        double gap_max)
 {
+    const rs_body *b = sb->b;
     const double *a0 = ck->tri, *nf = ck->nf;
     const double h =
         (b->x[0] - a0[0]) * nf[0] + (b->x[1] - a0[1]) * nf[1] + (b->x[2] - a0[2]) * nf[2];
@@ -186,7 +222,7 @@ static void plane_pair(const rs_surface *s, const rs_pose *p, const rs_body *b, 
     const double ns[3] = {side * nf[0], side * nf[1], side * nf[2]};
     const double down[3] = {-ns[0], -ns[1], -ns[2]};
     rs_convex_contact *cc = &ck->cc;
-    rs_body_support(b, down, cc->pa);
+    support(sb, down, cc->pa);
     cc->depth = (a0[0] - cc->pa[0]) * ns[0] + (a0[1] - cc->pa[1]) * ns[1] +
                 (a0[2] - cc->pa[2]) * ns[2];
     for (int d = 0; d < 3; d++) {
@@ -224,9 +260,10 @@ static int region_holds(const rs_surface *s, const cand *c, const member *ru, in
  * the foot of the body's centre where the region holds it (a face's corners tie as the
  * deepest point; the centre's foot moves with the body), else under the deepest
  * point's. */
-static int region_face(const rs_surface *s, const rs_pose *p, const rs_body *b,
-                       double gap_max, const cand *c, const member *ru, int nr, found *g)
+static int region_face(const rs_surface *s, const rs_pose *p, sbody *sb, double gap_max,
+                       const cand *c, const member *ru, int nr, found *g)
 {
+    const rs_body *b = sb->b;
     int best = -1;
     double ba = -1.0;
     for (int i = 0; i < nr; i++) {
@@ -244,7 +281,7 @@ static int region_face(const rs_surface *s, const rs_pose *p, const rs_body *b,
     const double side = s->sides != 2 || h >= 0.0 ? 1.0 : -1.0;
     const double ns[3] = {side * nf[0], side * nf[1], side * nf[2]};
     double xs[3], foot[3], F[3];
-    const double depth = deepest_along(b, p, ns, a0, xs, foot, F);
+    const double depth = deepest_along(sb, p, ns, a0, xs, foot, F);
     if (!(depth >= -gap_max))
         return 0;
     int k = region_holds(s, c, ru, nr, F);
@@ -279,13 +316,13 @@ static int region_face(const rs_surface *s, const rs_pose *p, const rs_body *b,
  * contact with the face until its centre crosses the fold (docs/conventions.md, "Shares
  * at concave folds"); nor has a body until its deepest point does, when region_face
  * answers for the face. */
-static int over_a_fold(const rs_surface *s, const rs_pose *p, const rs_body *b,
-                       const cand *c, int nc, int k, const double n[3])
+static int over_a_fold(const rs_surface *s, const rs_pose *p, sbody *b, const cand *c,
+                       int nc, int k, const double n[3])
 {
     const cand *ck = c + k;
     double xs[3], foot[3], F[3];
     const double depth = deepest_along(b, p, n, ck->tri, xs, foot, F);
-    if (!(depth > ck->cc.depth + RS_BODY_TIE_REL * rs_body_reach(b)))
+    if (!(depth > ck->cc.depth + RS_BODY_TIE_REL * rs_body_reach(b->b)))
         return 0;
     int beyond = 0;
     for (int j = 0; j < nc; j++) {
@@ -300,9 +337,10 @@ static int over_a_fold(const rs_surface *s, const rs_pose *p, const rs_body *b,
 
 /* The contact of candidate k from the pair's witness on its triangle, owned by the
  * feature whose cone holds the pair's normal there, if any. */
-static int witness_contact(const rs_surface *s, const rs_pose *p, const rs_body *b,
+static int witness_contact(const rs_surface *s, const rs_pose *p, sbody *sb,
                            const cand *c, int nc, int k, found *g)
 {
+    const rs_body *b = sb->b;
     const cand *ck = c + k;
     const rs_convex_contact *cc = &ck->cc;
     /* an overlap's witness on the mesh lies in the body (the pair's way out through a far
@@ -330,7 +368,7 @@ static int witness_contact(const rs_surface *s, const rs_pose *p, const rs_body 
         return 0; /* behind a one-sided face, along no face's normal */
     const double sg = along < 0.0 ? -1.0 : 1.0;
     const double n[3] = {sg * ck->nf[0], sg * ck->nf[1], sg * ck->nf[2]};
-    if (over_a_fold(s, p, b, c, nc, k, n))
+    if (over_a_fold(s, p, sb, c, nc, k, n))
         return 0;
     set_contact(g, f, cc->depth, n, cc->pb, cc->pa, ck->region, 0);
     return 1;
@@ -345,8 +383,10 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
         return rs_error_set(err, RS_ERR_ARG, "body contacts: mesh '%s' has no data",
                             s->name);
     pose = pose_moved(pose);
+    sbody sb = {.b = b, .have = 0};
+    rs_body_rotation(b, sb.R);
     double lo[3], hi[3];
-    body_box(b, pose, gap_max, lo, hi);
+    body_box(b, sb.R, pose, gap_max, lo, hi);
     /* the candidates' arrays in one block: on the stack for a few, else the heap */
     int small_ids[WORK_SMALL];
     _Alignas(64) unsigned char small[WORK_SMALL * WORK_BYTES];
@@ -389,7 +429,7 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
          * closed form gives; no pair query */
         ck->plain = rs_mesh_triangle_plain(s, ck->t, C, near);
         if (ck->plain)
-            plane_pair(s, pose, b, ck, gap_max);
+            plane_pair(s, pose, &sb, ck, gap_max);
         else if ((rc = rs_convex_triangle(b, ck->tri, gap_max, &ck->cc, err)) != RS_OK)
             goto done;
         ck->reach = ck->cc.state != RS_CONVEX_APART && ck->cc.depth >= -gap_max;
@@ -407,12 +447,12 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
         for (j = i + 1; j < nt && ru[j].region == ru[i].region;)
             j++;
         found g;
-        if (region_face(s, pose, b, gap_max, c, ru + i, j - i, &g))
+        if (region_face(s, pose, &sb, gap_max, c, ru + i, j - i, &g))
             keep(&l, &g);
     }
     for (int k = 0; k < nt; k++) {
         found g;
-        if (c[k].reach && !c[k].plain && witness_contact(s, pose, b, c, nt, k, &g))
+        if (c[k].reach && !c[k].plain && witness_contact(s, pose, &sb, c, nt, k, &g))
             keep(&l, &g);
     }
     for (int k = 0; k < l.n && rc == RS_OK; k++)

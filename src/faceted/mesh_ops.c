@@ -143,4 +143,5 @@ const rs_surface_ops rs_mesh_ops = {.name = "MESH",
                                     .facet_index = rs_mesh_facet_index,
                                     .facet_count = rs_mesh_facet_count,
                                     .body = rs_mesh_body,
+                                    .feature_point = rs_mesh_feature_point,
                                     .syntax = &rs_mesh_syntax};
