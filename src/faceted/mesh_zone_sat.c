@@ -19,8 +19,8 @@ static void span(const zpiece *P, const double u[3], double *lo, double *hi)
     *hi = -INFINITY;
     for (int k = 0; k < 2 * P->nc; k++) {
         const double v = dot3(u, P->c[k]);
-        *lo = fmin(*lo, v);
-        *hi = fmax(*hi, v);
+        *lo = v < *lo ? v : *lo; /* the corners are finite */
+        *hi = v > *hi ? v : *hi;
     }
 }
 
@@ -85,9 +85,13 @@ int rs_zone_planes_out(const zpiece *P, const region *R, double margin)
         const double l = R->gl[k];
         if (!(l > 0.0))
             continue;
-        double lo, hi;
-        span(P, R->g[k], &lo, &hi);
-        if ((lo - R->g[k][3]) / l > margin)
+        /* (v - c) / l > margin at every corner: at the lowest, for the expression grows
+         * with v; the first corner that fails decides */
+        const double *g = R->g[k];
+        int c = 0;
+        while (c < 2 * P->nc && (dot3(g, P->c[c]) - g[3]) / l > margin)
+            c++;
+        if (c == 2 * P->nc)
             return 1;
     }
     return 0;
