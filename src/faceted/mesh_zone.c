@@ -463,6 +463,7 @@ static void mirror_zone(const rs_mesh *m, int t, const rs_mzone *z)
         z2->slot[k] = z->slot[(k + 2) % 4];
     }
     z2->quad = 1;
+    z2->t2 = t;
     z2->jd = (unsigned char)j2;
     z2->first = (unsigned char)(m->rec[t2].first >> j2 & 1u);
     atomic_store_explicit(&z2->state, RS_ZONE_READY, memory_order_release);
@@ -483,6 +484,7 @@ int rs_mesh_zone_make(const rs_mesh *m, int t, rs_mzone *z)
                 z->clear[1] >= z->hmax) {
                 const rs_mtri *r = m->rec + t;
                 z->quad = 1;
+                z->t2 = r->nbr[jd] / 3;
                 z->jd = (unsigned char)jd;
                 z->first = (unsigned char)(r->first >> jd & 1u);
                 for (int k = 0; k < 4; k++)
