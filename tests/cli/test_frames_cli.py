@@ -6,43 +6,18 @@ Usage: test_frames_cli.py PATH/TO/rigidsurf-frames
 import math
 import os
 import random
-import subprocess
 import sys
-import tempfile
 
-EXE = sys.argv[1]
-TMP = tempfile.mkdtemp(prefix="rs_cli_")
-passed = failed = 0
+import clilib
+from clilib import close
 
-
-def check(name, cond, detail=""):
-    global passed, failed
-    if cond:
-        passed += 1
-        print("ok   " + name)
-    else:
-        failed += 1
-        print("FAIL " + name + (": " + detail if detail else ""))
-
-
-def write(name, text):
-    path = os.path.join(TMP, name)
-    with open(path, "w") as f:
-        f.write(text)
-    return path
-
-
-def run(args, stdin=None):
-    p = subprocess.run([EXE] + args, input=stdin, capture_output=True, text=True, timeout=60)
-    return p.returncode, p.stdout, p.stderr
+T = clilib.Tool(sys.argv[1], "rs_cli_")
+TMP = T.tmp
+check, write, run = T.check, T.write, T.run
 
 
 def rows(out):
     return [[float(v) for v in line.split()] for line in out.splitlines() if line.strip()]
-
-
-def close(a, b, tol=1e-12):
-    return all(abs(x - y) <= tol * max(1.0, abs(x), abs(y)) for x, y in zip(a, b))
 
 
 def cross(a, b):
@@ -199,5 +174,4 @@ check("tracking_nan", code != 0 and "--tracking" in err and "nan" in err, err)
 code, out, err = run([drum, "--bogus"], "")
 check("unknown_option", code != 0 and "--bogus" in err, err)
 
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+T.finish()

@@ -11,48 +11,24 @@ import math
 import os
 import random
 import re
-import subprocess
 import sys
-import tempfile
 
-EXE = sys.argv[1]
+import clilib
+from clilib import close
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "src", "cli"))
 import rigidsurf_migrate_walls as M  # noqa: E402
-TMP = tempfile.mkdtemp(prefix="rs_migrate_")
-# the meshes the decks below name: one triangle each (the tool reads every mesh it
-# migrates, and stops at one it cannot find, as LIGGGHTS does)
-TRI = ("solid t\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n"
-       "   vertex 0 1 0\n  endloop\n endfacet\nendsolid t\n")
-os.makedirs(os.path.join(TMP, "meshes"))
+T = clilib.Tool(sys.argv[1], "rs_migrate_")
+TMP = T.tmp
+check = T.check
+# the meshes the decks below name: one triangle each
 for name in ("a.stl", "b.stl", "p.stl", "plate.stl", "meshes/a.stl"):
-    with open(os.path.join(TMP, name), "w") as f:
-        f.write(TRI)
-passed = failed = 0
-
-
-def check(name, cond, detail=""):
-    """Counts and prints one check; returns cond."""
-    global passed, failed
-    if cond:
-        passed += 1
-        print("ok   " + name)
-    else:
-        failed += 1
-        print("FAIL " + name + (": " + detail if detail else ""))
-    return cond
+    T.write(name, clilib.TRI)
 
 
 def run(deck):
-    path = os.path.join(TMP, "in.deck")
-    with open(path, "w", newline="") as f:
-        f.write(deck)
-    p = subprocess.run([EXE, path], capture_output=True, text=True, timeout=60)
-    return p.returncode, p.stdout, p.stderr
-
-
-def close(a, b, tol=1e-12):
-    return all(abs(x - y) <= tol * max(1.0, abs(x), abs(y)) for x, y in zip(a, b))
+    return T.migrate(deck, cwd=None)
 
 
 # ---- placement --------------------------------------------------------------------------
@@ -509,12 +485,12 @@ m = re.search(r"<!-- migrate-output: (\S+) .*?-->\n```\n(.*?)```\n", doc, re.S)
 if check("docs/migration.md shows the tool's output for a deck", m is not None) and \
         os.path.isfile(os.path.join(TUT, m.group(1))):
     deck = os.path.join(TUT, m.group(1))
-    p = subprocess.run([EXE, deck], capture_output=True, text=True, timeout=60)
+    rc, out, err = T.run([deck])
     name = os.path.basename(deck)
     diff = "".join(difflib.unified_diff(open(deck).read().splitlines(True),
-                                        p.stdout.splitlines(True), name, name + ".rigid", n=0))
-    check("the doc's shown output equals the tool's", m.group(2) == p.stderr + diff,
-          "\n--- tool\n%s%s" % (p.stderr, diff))
+                                        out.splitlines(True), name, name + ".rigid", n=0))
+    check("the doc's shown output equals the tool's", m.group(2) == err + diff,
+          "\n--- tool\n%s%s" % (err, diff))
 # each migrate-example of the page: the second block is the tool's output for the first
 examples = re.findall(r"<!-- migrate-example .*?-->\n```\n(.*?)```\n```\n(.*?)```\n", doc,
                       re.S)
@@ -523,13 +499,12 @@ for deck, want in examples:
     rc, out, err = run(deck)
     check("the doc's example is the tool's output (%s)" % deck.splitlines()[2][:40],
           rc == 0 and out == want, "\n--- tool\n%s%s" % (out, err))
-p = subprocess.run([EXE], capture_output=True, text=True)
-check("no argument: usage, exit 1", p.returncode == 1 and "usage" in p.stderr, p.stderr)
-p = subprocess.run([EXE, "--help"], capture_output=True, text=True)
+rc, out, err = T.run([])
+check("no argument: usage, exit 1", rc == 1 and "usage" in err, err)
+rc, out, err = T.run(["--help"])
 doc_codes = re.search(r"<!-- exit-codes[^>]*-->\n```\n(.*?)```", doc, re.S)
-check("--help states the exit codes, as docs/migration.md does", p.returncode == 0 and
-      "Exit status:" in p.stdout and doc_codes is not None and
-      doc_codes.group(1) in p.stdout, p.stdout)
+check("--help states the exit codes, as docs/migration.md does", rc == 0 and
+      "Exit status:" in out and doc_codes is not None and
+      doc_codes.group(1) in out, out)
 
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+T.finish()

@@ -28,36 +28,13 @@ import re
 import shutil
 import subprocess
 import sys
-import tempfile
 
-EXE = os.path.abspath(sys.argv[1])
+import clilib
+
 LMP = shutil.which("lmp")
-TMP = tempfile.mkdtemp(prefix="rs_migrate_lmp_")
-passed = failed = 0
-
-
-def check(name, cond, detail=""):
-    global passed, failed
-    if cond:
-        passed += 1
-        print("ok   " + name)
-    else:
-        failed += 1
-        print("FAIL " + name + (": " + detail if detail else ""))
-    return cond
-
-
-def write(name, text):
-    path = os.path.join(TMP, name)
-    with open(path, "w") as f:
-        f.write(text)
-    return path
-
-
-def migrate(deck, args=(), name="in.deck"):
-    p = subprocess.run([EXE, write(name, deck)] + list(args), capture_output=True,
-                       text=True, timeout=60, cwd=TMP)
-    return p.returncode, p.stdout, p.stderr
+T = clilib.Tool(sys.argv[1], "rs_migrate_lmp_")
+TMP = T.tmp
+check, write, migrate = T.check, T.write, T.migrate
 
 
 def flat(out):
@@ -489,6 +466,4 @@ for name, lines, msg in ERRORS:
           rc == 1 and out == "" and msg in err and "nothing written" in err and
           not any(f.endswith(".stl") for f in os.listdir(TMP)), err)
 
-print("%d passed, %d failed" % (passed, failed))
-shutil.rmtree(TMP, ignore_errors=True)
-sys.exit(1 if failed else 0)
+T.finish()

@@ -22,45 +22,19 @@ import re
 import shutil
 import subprocess
 import sys
-import tempfile
 
-EXE = os.path.abspath(sys.argv[1])
+import clilib
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "src", "cli"))
 import rigidsurf_migrate_expr as E  # noqa: E402
 
 LIGGGHTS = shutil.which("liggghts")
-TMP = tempfile.mkdtemp(prefix="rs_reader_")
-TRI = ("solid t\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n"
-       "   vertex 0 1 0\n  endloop\n endfacet\nendsolid t\n")
+T = clilib.Tool(sys.argv[1], "rs_reader_")
+TMP = T.tmp
+check, write, migrate = T.check, T.write, T.migrate
 for name in ("a.stl", "b.stl"):
-    with open(os.path.join(TMP, name), "w") as f:
-        f.write(TRI)
-passed = failed = 0
-
-
-def check(name, cond, detail=""):
-    global passed, failed
-    if cond:
-        passed += 1
-        print("ok   " + name)
-    else:
-        failed += 1
-        print("FAIL " + name + (": " + detail if detail else ""))
-    return cond
-
-
-def write(name, text):
-    path = os.path.join(TMP, name)
-    with open(path, "w") as f:
-        f.write(text)
-    return path
-
-
-def migrate(deck, args=()):
-    p = subprocess.run([EXE, write("in.deck", deck)] + list(args), capture_output=True,
-                       text=True, timeout=60, cwd=TMP)
-    return p.returncode, p.stdout, p.stderr
+    write(name, clilib.TRI)
 
 
 def stock(deck, args=()):
@@ -322,6 +296,4 @@ for args, want in (("scale 1 type 1", "'type' is not one of its keywords, or com
     rc, mig, err = migrate(BOX + "fix m all mesh/surface file a.stl %s\n" % args)
     check("mesh/surface '%s': exit 1, as LIGGGHTS stops" % args, rc == 1 and want in err, err)
 
-print("%d passed, %d failed" % (passed, failed))
-shutil.rmtree(TMP, ignore_errors=True)
-sys.exit(1 if failed else 0)
+T.finish()

@@ -10,45 +10,20 @@ run against stock LIGGGHTS in tests/liggghts/test_migrate_decks.py.
 Usage: test_migrate_refs.py PATH/TO/rigidsurf-migrate
 """
 import math
-import os
-import shutil
-import subprocess
 import sys
-import tempfile
 
-EXE = os.path.abspath(sys.argv[1])
-TMP = tempfile.mkdtemp(prefix="rs_refs_")
-passed = failed = 0
+import clilib
 
-
-def check(name, cond, detail=""):
-    global passed, failed
-    if cond:
-        passed += 1
-        print("ok   " + name)
-    else:
-        failed += 1
-        print("FAIL " + name + (": " + detail if detail else ""))
-    return cond
+T = clilib.Tool(sys.argv[1], "rs_refs_")
+TMP = T.tmp
+check, migrate = T.check, T.migrate
 
 
 def stl(name, tris):
-    with open(os.path.join(TMP, name), "w") as f:
-        f.write("solid s\n")
-        for t in tris:
-            f.write(" facet normal 0 0 0\n  outer loop\n")
-            for p in t:
-                f.write("   vertex %.17g %.17g %.17g\n" % tuple(p))
-            f.write("  endloop\n endfacet\n")
-        f.write("endsolid s\n")
-
-
-def migrate(deck):
-    path = os.path.join(TMP, "in.deck")
-    with open(path, "w") as f:
-        f.write(deck)
-    p = subprocess.run([EXE, path], capture_output=True, text=True, timeout=60, cwd=TMP)
-    return p.returncode, p.stdout, p.stderr
+    T.write(name, "solid s\n" + "".join(
+        " facet normal 0 0 0\n  outer loop\n" +
+        "".join("   vertex %.17g %.17g %.17g\n" % tuple(p) for p in t) +
+        "  endloop\n endfacet\n" for t in tris) + "endsolid s\n")
 
 
 PLATE = [((0, 0, 0), (1, 0, 0), (1, 1, 0)), ((0, 0, 0), (1, 1, 0), (0, 1, 0))]
@@ -190,6 +165,4 @@ for name, want in (("chute.stl", "29 of its 59 inner edges are folds of 6 to 6 d
                        and "LINE 3: NOTE: mesh m (%s): %s" % (name, want) in notes[0]),
           err)
 
-print("%d passed, %d failed" % (passed, failed))
-shutil.rmtree(TMP, ignore_errors=True)
-sys.exit(1 if failed else 0)
+T.finish()
