@@ -1,15 +1,19 @@
 /* Convex bodies: the cost of one body-contact for each shape, against a sphere contact.
  *
- *   bench_convex [--bodies N] [--reps R]
+ *   bench_convex [--bodies N] [--reps R] [--only K]
  *
  * N bodies of each shape (about 1 cm across, random orientations) are pressed 0.1 mm
  * into the floor z = 0, given three ways: a CYLINDER plane and a MESH of two triangles
  * through rs_surface_query with the N bodies as one block (bodies as slaves: their
  * manifolds, what the driver asks), and one large triangle through rs_convex_triangle
- * alone (GJK, libccd's MPR and its refinement). The reference is the sphere's own path: the same N spheres in one
- * rs_surface_query block. Reported: ns per contact (median of the repetitions, thread
- * CPU time), the ratio to the sphere query, the contacts per body, and on the MESH the
- * calls of libccd's MPR and of our GJK per contact (the link wraps both and counts). */
+ * alone (GJK, libccd's MPR and its refinement). The reference is the sphere's own path: the
+ * same N spheres in one rs_surface_query block. Reported: ns per contact (median of the
+ * repetitions, thread CPU time), the ratio to the sphere query, the contacts per body, and
+ * on the MESH the calls of libccd's MPR and of our GJK per contact (the link wraps both and
+ * counts).
+ * --only K runs nothing but the plane's query of shape K (0 .. 8, the table's order; -1:
+ * the sphere reference alone), R times, for an instruction count:
+ *   valgrind --tool=callgrind --toggle-collect=rs_surface_query bench_convex --only K */
 #define _POSIX_C_SOURCE 200809L
 #include "rigidsurf/convex.h"
 #include "rigidsurf/vec.h"
@@ -91,15 +95,17 @@ static int make_shape(int k, rs_shape *s, const char **name)
 
 int main(int argc, char **argv)
 {
-    int n = 2000, reps = 7;
+    int n = 2000, reps = 7, only = -2; /* -2: everything */
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!strcmp(argv[i], "--bodies"))
             n = atoi(argv[i + 1]);
         else if (!strcmp(argv[i], "--reps"))
             reps = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "--only"))
+            only = atoi(argv[i + 1]);
     }
-    if (n < 1 || reps < 1) {
-        fprintf(stderr, "usage: bench_convex [--bodies N] [--reps R]\n");
+    if (n < 1 || reps < 1 || only < -2 || only > 8) {
+        fprintf(stderr, "usage: bench_convex [--bodies N] [--reps R] [--only K]\n");
         return 2;
     }
     printf("# bench_convex: %d bodies a shape, %d repetitions (%s, %s)\n", n, reps,
@@ -130,13 +136,13 @@ int main(int argc, char **argv)
     q.slave.x = x, q.slave.y = y, q.slave.z = z, q.slave.radius = r;
     q.gap_max = 0.0;
     q.dist_min = -INFINITY;
-    for (int k = 0; k < reps; k++) {
+    for (int k = 0; k < (only < 0 ? reps : 0); k++) {
         const double t0 = rs_bench_thread_now();
         c.n = 0;
         rs_surface_query(&plane, &q, &c, NULL);
         t[k] = (rs_bench_thread_now() - t0) / c.n;
     }
-    const double sphere_ns = 1e9 * rs_bench_median(t, reps);
+    const double sphere_ns = only < 0 ? 1e9 * rs_bench_median(t, reps) : 1.0;
     printf("sphere query (rs_surface_query, a block of %d): %.1f ns per contact\n", n,
            sphere_ns);
     const double fxyz[12] = {-10, -10, 0, 10, -10, 0, 10, 10, 0, -10, 10, 0};
@@ -156,7 +162,7 @@ int main(int argc, char **argv)
     /* the bodies as one block (radius 5 mm, the laws' radius), as the driver asks */
     rs_query bqry = q;
     bqry.slave.body = b;
-    for (int s = 0; s < 9; s++) {
+    for (int s = 0; s < (only == -2 ? 9 : only + 1); s++) {
         rs_shape sh;
         const char *name;
         if (make_shape(s, &sh, &name) != RS_OK)
@@ -174,9 +180,9 @@ int main(int argc, char **argv)
             rs_body_support(&b[i], down, low);
             b[i].x[2] = -low[2] - 1e-4;
         }
-        double med[3];
+        double med[3] = {0.0, 0.0, 0.0};
         long found[3] = {0, 0, 0}, mpr = 0, gjk = 0;
-        for (int way = 0; way < 3; way++) {
+        for (int way = 0; way < (only == -2 ? 3 : only == s ? 1 : 0); way++) {
             for (int k = 0; k < reps; k++) {
                 long m = 0;
                 mpr_calls = gjk_calls = 0;
@@ -199,7 +205,11 @@ int main(int argc, char **argv)
             med[way] = 1e9 * rs_bench_median(t, reps);
         }
         const double cm = found[1] ? (double)found[1] : 1.0;
-        printf("%-14s %9.1f %6.1f %6.2f %9.1f %6.1f %6.2f %6.2f %6.2f %9.1f %6.1f%s\n",
+        if (only >= 0 && s != only) {
+            rs_shape_free(&sh);
+            continue;
+        }
+        printf("%-14s %9.1f %6.1f %6.3f %9.1f %6.1f %6.3f %6.2f %6.2f %9.1f %6.1f%s\n",
                name, med[0], med[0] / sphere_ns, (double)found[0] / n, med[1],
                med[1] / sphere_ns, (double)found[1] / n, mpr / cm, gjk / cm, med[2],
                med[2] / sphere_ns, found[2] == n ? "" : " (!)");

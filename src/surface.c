@@ -2,6 +2,7 @@
  * operations (rs_surface_ops), chosen when the surface was made; a convex body through
  * the kind's body operation, its contacts turned into the kind's frame convention. */
 #include "rigidsurf/surface.h"
+#include "convex_geometry/convex_internal.h"
 #include "rigidsurf/convex.h"
 
 #include <string.h>
@@ -90,6 +91,8 @@ static int query_bodies(const rs_surface *s, const rs_query *q, rs_contacts *out
                             "rs_surface_query: a block with bodies needs a contact list "
                             "that keeps witness points (rs_contacts.witness)");
     int rc = RS_OK;
+    rs_body_work w; /* the runs' work arrays, made once */
+    memset(&w, 0, sizeof w);
     for (int i = 0; i < q->n && rc == RS_OK;) {
         int j = i;
         if (q->slave.body[i].shape) { /* a run of bodies, asked in one block */
@@ -99,9 +102,9 @@ static int query_bodies(const rs_surface *s, const rs_query *q, rs_contacts *out
             for (int k = i; q->near && k < j; k++)
                 q->near[k] = 0.0;
             const int k0 = out->n;
-            rc = rs_body_manifold(s, q->pose, q->slave.body + i, j - i, i,
-                                  q->slave.radius ? q->slave.radius + i : zero, q->gap_max,
-                                  out, err);
+            rc = rs_body_manifold_in(s, q->pose, q->slave.body + i, j - i, i,
+                                     q->slave.radius ? q->slave.radius + i : zero,
+                                     q->gap_max, &w, out, err);
             if (rc == RS_OK)
                 rs_frame_orient(s->ops->frame, out, k0, out->n);
             i = j;
@@ -124,6 +127,7 @@ static int query_bodies(const rs_surface *s, const rs_query *q, rs_contacts *out
             out->point[k] += i;
         i = j;
     }
+    rs_body_work_free(&w);
     return rc;
 }
 

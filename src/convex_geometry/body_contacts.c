@@ -27,6 +27,11 @@ int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_body
         return rs_error_set(err, RS_ERR_ARG,
                             "body contacts: gap_max = %g (expected a finite number >= 0)",
                             gap_max);
+    return rs_body_check_pose(b, checked, err);
+}
+
+int rs_body_check_pose(const rs_body *b, rs_body *checked, rs_error *err)
+{
     for (int k = 0; k < 3; k++)
         if (!(fabs(b->x[k]) <= RS_CONVEX_COORD_MAX))
             return rs_error_set(err, RS_ERR_ARG, "body contacts: body position %g",

@@ -47,13 +47,13 @@ static int step(fixed *f, const rs_body_contact *c)
     f->found = c->feature;
     if (c->feature < 0)
         return 0;
-    if (c->depth > f->best.depth) {
-        f->best = *c;
-        f->best.iterations = -1;
-    }
     const double turn = fabs(c->normal[0] - f->nrm[0]) + fabs(c->normal[1] - f->nrm[1]) +
                         fabs(c->normal[2] - f->nrm[2]);
     f->conv = turn <= 1e-13 && RS_FEATURE_BASE(c->feature) == f->want;
+    if (!f->conv && c->depth > f->best.depth) { /* (read only where none settles) */
+        f->best = *c;
+        f->best.iterations = -1;
+    }
     f->want = RS_FEATURE_BASE(c->feature);
     memcpy(f->nrm, c->normal, sizeof f->nrm);
     f->it++;
@@ -76,11 +76,11 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
                              int n, double gap_max, int lenient, rs_body_face_fn face,
                              const void *ctx, rs_body_contacts *out, rs_error *err)
 {
-    double *rot = malloc((size_t)(n > 0 ? n : 1) * 9 * sizeof *rot); /* each body's R */
-    double *reach = malloc((size_t)(n > 0 ? n : 1) * 4 * sizeof *reach);
+    /* each body's R, reach and centre (x, y, z) */
+    double *rot = malloc((size_t)(n > 0 ? n : 1) * 13 * sizeof *rot);
+    double *reach = rot + 9 * (size_t)n, *ask_xyz = NULL;
     int *off = NULL, *live = NULL;
-    int rc = rot && reach ? RS_OK
-                          : rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
+    int rc = rot ? RS_OK : rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
     fixed *fx = NULL;
     rs_contacts pc; /* the reach spheres' contacts, then each step's */
     memset(&pc, 0, sizeof pc);
@@ -93,7 +93,8 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
     double *x = reach + n, *y = x + n, *z = y + n, far = gap_max;
     for (int i = 0; rc == RS_OK && i < n; i++) {
         x[i] = b[i].x[0], y[i] = b[i].x[1], z[i] = b[i].x[2];
-        far = fmax(far, 2.0 * reach[i] + gap_max);
+        far =
+            2.0 * reach[i] + gap_max > far ? 2.0 * reach[i] + gap_max : far; /* (no NaN) */
     }
     /* room for a few features a body at once: the query then grows no list */
     if (rc == RS_OK)
@@ -102,14 +103,16 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
         rc = rs_body_closest(s, pose, n, x, y, z, reach, gap_max, far, &pc, err);
     const int nf = pc.n;
     if (rc == RS_OK && nf > 0) {
-        fx = malloc((size_t)nf * sizeof *fx);
-        off = malloc((size_t)(nf + 1) * sizeof *off);
-        live = malloc(2 * (size_t)nf * sizeof *live);
-        double *xyz = realloc(reach, (size_t)(n + 3 * nf) * sizeof *xyz);
-        if (!fx || !off || !live || !xyz)
+        /* the fixed points, the iterates asked (x, y, z), off and live in one block */
+        fx = malloc((size_t)nf * (sizeof *fx + 3 * sizeof(double) + 3 * sizeof(int)) +
+                    sizeof(int));
+        if (!fx)
             rc = rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
-        if (xyz)
-            reach = xyz;
+        else {
+            ask_xyz = (double *)(fx + nf);
+            off = (int *)(ask_xyz + 3 * (size_t)nf);
+            live = off + nf + 1;
+        }
         if (rc == RS_OK)
             rc = rs_contacts_reserve(&pc, 2 * nf + 64, err);
     }
@@ -134,7 +137,8 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
             fixed *f = fx + live[a];
             const double down[3] = {-f->nrm[0], -f->nrm[1], -f->nrm[2]};
             rs_body_support_at(b + f->body, rot + 9 * f->body, down, f->p);
-            gap = fmax(gap, 2.0 * reach[f->body] + gap_max);
+            gap =
+                2.0 * reach[f->body] + gap_max > gap ? 2.0 * reach[f->body] + gap_max : gap;
         }
         /* the kind's answers first; the rest (ask) keep their order for the query */
         int still = 0, nask = 0;
@@ -152,7 +156,7 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
             nact = still;
             continue;
         }
-        x = reach + n, y = x + nask, z = y + nask;
+        x = ask_xyz, y = x + nask, z = y + nask;
         const int *ask = live + nact;
         for (int a = 0; a < nask; a++) {
             const fixed *f = fx + ask[a];
@@ -204,10 +208,7 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
             l->c[slot] = *got;
     }
     free(rot);
-    free(reach);
     free(fx);
-    free(off);
-    free(live);
     rs_contacts_free(&pc);
     return rc;
 }

@@ -19,6 +19,37 @@ typedef struct cand {
     int id;
 } cand;
 
+/* The direction (c0, s0) of d's part in the body's x-y plane (unit; (1, 0) along z). */
+static void rim_turn(const double d[3], double *c0, double *s0)
+{
+    const double rho = hypot(d[0], d[1]);
+    *c0 = rho > 0.0 ? d[0] / rho : 1.0, *s0 = rho > 0.0 ? d[1] / rho : 0.0;
+}
+
+/* Core point j of a cylinder or a cone (s) for the turn (c0, s0) of rim_turn: four rim
+ * points from the rim's lowest (the generator under the wall) in quarter turns, a
+ * cylinder's top rim (j < 4) then its bottom one (4 <= j < 8); a cone's one rim (j < 4)
+ * and its apex (j = 4). */
+static void rim_point(const rs_shape *s, double c0, double s0, int j, cand *c)
+{
+    const double *h = s->dim;
+    const int cyl = s->kind == RS_SHAPE_CYLINDER;
+    if (!cyl && j == 4) {
+        c->p[0] = c->p[1] = 0.0;
+        c->p[2] = 0.75 * h[1] - s->shift[2];
+        c->id = 5;
+        return;
+    }
+    const int e = j / 4, k = j % 4;
+    const double z = cyl ? (e ? -h[1] : h[1]) : -0.25 * h[1] - s->shift[2];
+    const double ck = k == 0 ? c0 : k == 1 ? -s0 : k == 2 ? -c0 : s0;
+    const double sk = k == 0 ? s0 : k == 1 ? c0 : k == 2 ? -s0 : -c0;
+    c->p[0] = h[0] * ck;
+    c->p[1] = h[0] * sk;
+    c->p[2] = z;
+    c->id = 1 + 4 * e + k;
+}
+
 /* The core points of b's shape that can touch a wall under it: d is the body-frame
  * direction into the wall (unit). Smooth shapes have none (their deepest point is their
  * only one). A polyhedron gives its cap vertices lowest along d; its vertex i has id
@@ -49,28 +80,10 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
     }
     case RS_SHAPE_CYLINDER:
     case RS_SHAPE_CONE: {
-        /* four rim points from the rim's lowest (the generator under the wall) in
-         * quarter turns; a cone's apex; a cylinder's two rims */
-        const double rho = hypot(d[0], d[1]);
-        const double c0 = rho > 0.0 ? d[0] / rho : 1.0, s0 = rho > 0.0 ? d[1] / rho : 0.0;
-        const int cyl = s->kind == RS_SHAPE_CYLINDER;
-        for (int e = 0; e < (cyl ? 2 : 1); e++) {
-            const double z = cyl ? (e ? -h[1] : h[1]) : -0.25 * h[1] - s->shift[2];
-            for (int k = 0; k < 4 && n < cap; k++, n++) {
-                const double ck = k == 0 ? c0 : k == 1 ? -s0 : k == 2 ? -c0 : s0;
-                const double sk = k == 0 ? s0 : k == 1 ? c0 : k == 2 ? -s0 : -c0;
-                c[n].p[0] = h[0] * ck;
-                c[n].p[1] = h[0] * sk;
-                c[n].p[2] = z;
-                c[n].id = 1 + 4 * e + k;
-            }
-        }
-        if (!cyl && n < cap) {
-            c[n].p[0] = c[n].p[1] = 0.0;
-            c[n].p[2] = 0.75 * h[1] - s->shift[2];
-            c[n].id = 5;
-            n++;
-        }
+        double c0, s0;
+        rim_turn(d, &c0, &s0);
+        for (int j = 0; j < (s->kind == RS_SHAPE_CYLINDER ? 8 : 5) && n < cap; j++)
+            rim_point(s, c0, s0, j, c + n++);
         break;
     }
     case RS_SHAPE_CAPSULE:
@@ -83,6 +96,76 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
     default: /* sphere, ellipsoid, user shape: smooth or unknown, the deepest point */
         break;
     }
+    return n;
+}
+
+/* The core points of core_points(s, d) whose height above the deepest point, -dn d.p +
+ * nx - rr - nxs (d unit, the body frame), is at most clear, in its order. A box's corner
+ * v has d.p = sum of +-a_k, a_k = d_k h_k (bit for bit its dot product); the corner
+ * along d (a_k > 0 on its + sides) is the lowest and each other one lies higher by at
+ * least 2 dn min |a_k|: when that clears the lowest corner's height past clear by far
+ * more than rounding, the lowest is the only one. A cylinder's and a cone's points are
+ * made only where their height about is within far more than rounding of clear. */
+static int low_points(const rs_shape *s, const double d[3], double dn, double nx, double rr,
+                      double nxs, double clear, cand *c, int cap)
+{
+    if (s->kind == RS_SHAPE_BOX && cap >= 8) {
+        const double *h = s->dim;
+        const double a0 = d[0] * h[0], a1 = d[1] * h[1], a2 = d[2] * h[2];
+        const int lo = (a0 > 0.0) | (a1 > 0.0) << 1 | (a2 > 0.0) << 2;
+        const double dlo =
+            ((lo & 1) ? a0 : -a0) + ((lo & 2) ? a1 : -a1) + ((lo & 4) ? a2 : -a2);
+        const double hlo = -dn * dlo + nx - rr - nxs;
+        const double b0 = fabs(a0), b1 = fabs(a1), b2 = fabs(a2);
+        const double rise =
+            2.0 * dn * (b0 < b1 ? (b0 < b2 ? b0 : b2) : (b1 < b2 ? b1 : b2));
+        const double margin = 1e-9 * (dn * (b0 + b1 + b2) + fabs(nx) + rr + fabs(nxs));
+        const int only = hlo + rise > clear + margin; /* the lowest alone */
+        const int v0 = only ? lo : 0, v1 = only ? lo + 1 : 8;
+        int n = 0;
+        for (int v = v0; v < v1; v++) {
+            const double dp =
+                ((v & 1) ? a0 : -a0) + ((v & 2) ? a1 : -a1) + ((v & 4) ? a2 : -a2);
+            if (-dn * dp + nx - rr - nxs > clear)
+                continue;
+            c[n].p[0] = (v & 1) ? h[0] : -h[0];
+            c[n].p[1] = (v & 2) ? h[1] : -h[1];
+            c[n].p[2] = (v & 4) ? h[2] : -h[2];
+            c[n++].id = 1 + v;
+        }
+        return n;
+    }
+    if ((s->kind == RS_SHAPE_CYLINDER || s->kind == RS_SHAPE_CONE) && cap >= 8) {
+        /* each point's d.p about (rim: h_0 (rho, 0, -rho, 0)_k + d_z z; apex: d_z z):
+         * only those within far more than rounding of clear are made and measured */
+        const double *h = s->dim;
+        const int cyl = s->kind == RS_SHAPE_CYLINDER, m = cyl ? 8 : 5;
+        const double ra = h[0] * sqrt(d[0] * d[0] + d[1] * d[1]);
+        const double z0 = cyl ? h[1] : -0.25 * h[1] - s->shift[2], z1 = -h[1];
+        const double za = 0.75 * h[1] - s->shift[2];
+        const double margin = 1e-9 * (dn * (h[0] + fabs(z0) + fabs(z1) + fabs(za)) +
+                                      fabs(nx) + rr + fabs(nxs));
+        const double ring[4] = {ra, 0.0, -ra, 0.0};
+        int n = 0, turned = 0;
+        double c0 = 1.0, s0 = 0.0;
+        for (int j = 0; j < m; j++) {
+            const double dpa =
+                !cyl && j == 4 ? d[2] * za : ring[j % 4] + d[2] * (j < 4 ? z0 : z1);
+            if (-dn * dpa + nx - rr - nxs > clear + margin)
+                continue;
+            if (!turned)
+                rim_turn(d, &c0, &s0), turned = 1;
+            rim_point(s, c0, s0, j, c + n);
+            if (!(-dn * rs_dot3(d, c[n].p) + nx - rr - nxs > clear))
+                n++;
+        }
+        return n;
+    }
+    const int m = core_points(s, d, c, cap);
+    int n = 0;
+    for (int k = 0; k < m; k++)
+        if (!(-dn * rs_dot3(d, c[k].p) + nx - rr - nxs > clear))
+            c[n++] = c[k];
     return n;
 }
 
@@ -196,9 +279,31 @@ static int corners_add(corners *a, const corner *q, const double cl[3], double r
     return 0;
 }
 
+void rs_body_work_free(rs_body_work *w)
+{
+    rs_contacts_free(&w->pc);
+    free(w->mem);
+    free(w->q);
+    free(w->x);
+    free(w->off);
+    memset(w, 0, sizeof *w);
+}
+
 int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *body, int n,
                      int point0, const double *radius, double gap_max, rs_contacts *c,
                      rs_error *err)
+{
+    rs_body_work w;
+    memset(&w, 0, sizeof w);
+    const int rc =
+        rs_body_manifold_in(s, pose, body, n, point0, radius, gap_max, &w, c, err);
+    rs_body_work_free(&w);
+    return rc;
+}
+
+int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body *body,
+                        int n, int point0, const double *radius, double gap_max,
+                        rs_body_work *w, rs_contacts *c, rs_error *err)
 {
     if (!c || !c->witness)
         return rs_error_set(err, RS_ERR_ARG,
@@ -213,23 +318,30 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
         return RS_OK;
     /* each body's features in a list of its own, on a shared array while they fit */
     enum { FEATURES = 4 };
-    rs_body *b = malloc((size_t)n * sizeof *b);
-    rs_body_contacts *fl = malloc((size_t)n * sizeof *fl);
-    rs_body_contact *pool = malloc((size_t)n * FEATURES * sizeof *pool);
-    if (!b || !fl || !pool) {
-        free(b);
-        free(fl);
-        free(pool);
-        return rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory for %d bodies",
-                            n);
+    /* in one block: each body's features, checked body, reach and list */
+    const size_t bytes = (size_t)n * (FEATURES * sizeof(rs_body_contact) + sizeof(rs_body) +
+                                      sizeof(double) + sizeof(rs_body_contacts));
+    if (bytes > w->bytes) {
+        free(w->mem);
+        w->bytes = 0;
+        if (!(w->mem = malloc(bytes)))
+            return rs_error_set(err, RS_ERR_NOMEM,
+                                "body query: out of memory for %d bodies", n);
+        w->bytes = bytes;
     }
+    rs_body_contact *pool = w->mem;
+    rs_body *b = (rs_body *)(pool + (size_t)n * FEATURES);
+    double *rch = (double *)(b + n);
+    rs_body_contacts *fl = (rs_body_contacts *)(rch + n);
     for (int i = 0; i < n; i++) {
         const rs_body_contacts l = {0, FEATURES, pool + (size_t)i * FEATURES, 1};
         fl[i] = l;
     }
     int rc = RS_OK;
-    for (int i = 0; i < n && rc == RS_OK; i++)
-        rc = rs_body_check(s, body + i, gap_max, b + i, err);
+    for (int i = 0; i < n && rc == RS_OK; i++) /* a run of one shape: its checks once */
+        rc = i > 0 && body[i].shape && body[i].shape == body[i - 1].shape
+                 ? rs_body_check_pose(body + i, b + i, err)
+                 : rs_body_check(s, body + i, gap_max, b + i, err);
     if (rc == RS_OK && !s->ops->body)
         rc = rs_error_set(err, RS_ERR_ARG, "body query: surface '%s' (%s) takes no bodies",
                           s->name, s->ops->name);
@@ -241,13 +353,15 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
      * on another one). flat facets (the FACETED convention): a ball moved along the
      * normal has the same depth on their planes. */
     const int mesh = s->ops->frame == RS_FRAME_GLOBAL_X;
-    corners cq = {NULL, NULL, 0, 0};
+    corners cq = {w->q, w->x, 0, w->cap};
     if (rc == RS_OK && corners_room(&cq, n + 64))
         rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
+    w->q = cq.q, w->x = cq.x, w->cap = cq.cap;
     double gap = 0.0;
     for (int i = 0; i < n && rc == RS_OK; i++) {
-        const double rr = rs_shape_core_radius(b[i].shape), reach = rs_body_reach(b + i);
-        gap = fmax(gap, 2.0 * reach + gap_max);
+        const double rr = rs_shape_core_radius(b[i].shape),
+                     reach = rch[i] = rs_body_reach(b + i);
+        gap = 2.0 * reach + gap_max > gap ? 2.0 * reach + gap_max : gap; /* (no NaN) */
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++)
             if (fl[i].c[f].feature >= RS_MANIFOLD_STRIDE)
                 rc = rs_error_set(err, RS_ERR_CAPACITY,
@@ -267,8 +381,6 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
             const double dn = rs_norm3(d);
             for (int k = 0; k < 3; k++)
                 d[k] /= dn;
-            cand cp[CAND_MAX];
-            const int ncp = core_points(b[i].shape, d, cp, CAND_MAX - 1);
             /* a wall flat or convex toward the body lies below the tangent plane at the
              * deepest point: a point higher above it than the depth plus the gap does not
              * reach it; elsewhere the body's reach bounds it */
@@ -276,15 +388,17 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
                 o->depth + gap_max +
                 (o->curv[0] >= 0.0 && o->curv[1] >= 0.0 ? 1e-9 : 1.0) * reach;
             const int flat = mesh || (o->curv[0] == 0.0 && o->curv[1] == 0.0);
-            const double lift = flat ? fmax(o->depth, 0.0) + 1e-9 * reach : 0.0;
+            const double lift =
+                flat ? (o->depth > 0.0 ? o->depth : 0.0) + 1e-9 * reach : 0.0;
             /* a core point's height in the body frame, n.(R p) = -dn d.p, passes over the
              * points clearly too high at three products each (its rounding is far below
              * the margin); the rest are measured in the world as below */
             const double nx = rs_dot3(o->normal, b[i].x), nxs = rs_dot3(o->normal, o->xs);
             const double clear = above + 1e-12 * (reach + fabs(nx) + fabs(nxs));
+            cand cp[CAND_MAX];
+            const int ncp =
+                low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp, CAND_MAX - 1);
             for (int k = 0; k < ncp; k++) {
-                if (-dn * rs_dot3(d, cp[k].p) + nx - rr - nxs > clear)
-                    continue;
                 corner q = {i, f, cp[k].id, {0.0, 0.0, 0.0}, lift};
                 rs_matvec3(R, cp[k].p, q.cw);
                 for (int j = 0; j < 3; j++)
@@ -305,11 +419,16 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
             }
         }
     }
-    rs_contacts pc;
-    memset(&pc, 0, sizeof pc);
-    int *off = NULL;
+    w->q = cq.q, w->x = cq.x, w->cap = cq.cap; /* (moved as the list grew) */
+    rs_contacts pc = w->pc;
+    if (rc == RS_OK && cq.n > 0 && cq.n + 1 > w->noff) {
+        free(w->off);
+        w->noff = 0;
+        if ((w->off = malloc(((size_t)cq.n + 1) * sizeof *w->off)))
+            w->noff = cq.n + 1;
+    }
+    int *off = w->off;
     if (rc == RS_OK && cq.n > 0) {
-        off = malloc(((size_t)cq.n + 1) * sizeof *off);
         rc = off ? rs_contacts_reserve(&pc, 2 * cq.n + 64, err)
                  : rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
         if (rc == RS_OK)
@@ -323,19 +442,13 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
      * that rest on the feature's wall. */
     for (int i = 0, a = 0; i < n && rc == RS_OK; i++) {
         const int k0 = c->n;
-        const double rr = rs_shape_core_radius(b[i].shape), reach = rs_body_reach(b + i);
+        const double rr = rs_shape_core_radius(b[i].shape), reach = rch[i];
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
             const rs_body_contact *o = &fl[i].c[f];
             mpoint m[CAND_MAX];
             int nm = 1;
             m[0].id = 0;
-            m[0].depth = o->depth;
-            memcpy(m[0].xs, o->xs, sizeof m[0].xs);
-            memcpy(m[0].xm, o->xm, sizeof m[0].xm);
-            memcpy(m[0].n, o->normal, sizeof m[0].n);
-            memcpy(m[0].t1, o->t1, sizeof m[0].t1);
-            memcpy(m[0].t2, o->t2, sizeof m[0].t2);
-            memcpy(m[0].curv, o->curv, sizeof m[0].curv);
+            m[0].depth = o->depth; /* the rest below, where it stands for itself */
             int deep_is_core = 0;
             for (; a < cq.n && cq.q[a].body == i && cq.q[a].f == f; a++) {
                 const corner *q = cq.q + a;
@@ -367,6 +480,14 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
              * its deepest iterate */
             if (o->iterations < 0 && core_points_of(b[i].shape))
                 deep_is_core = 1;
+            if (!deep_is_core) {
+                memcpy(m[0].xs, o->xs, sizeof m[0].xs);
+                memcpy(m[0].xm, o->xm, sizeof m[0].xm);
+                memcpy(m[0].n, o->normal, sizeof m[0].n);
+                memcpy(m[0].t1, o->t1, sizeof m[0].t1);
+                memcpy(m[0].t2, o->t2, sizeof m[0].t2);
+                memcpy(m[0].curv, o->curv, sizeof m[0].curv);
+            }
             mpoint *keep = deep_is_core ? m + 1 : m;
             const int count = deep_is_core ? nm - 1 : nm;
             for (int k = 1; k < count; k++) /* by depth, a few: by insertion */
@@ -382,8 +503,8 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
                 int dup = 0;
                 for (int q = 0; q < nk; q++)
                     dup |= keep[q].id == keep[k].id;
-                if (!dup)
-                    keep[nk++] = keep[k];
+                if (!dup && nk++ != k)
+                    keep[nk - 1] = keep[k];
             }
             for (int k = 0; k < nk && rc == RS_OK; k++)
                 rc = append(c, point0 + i, radius[i], o->feature, &keep[k], err);
@@ -396,14 +517,8 @@ int rs_body_manifold(const rs_surface *s, const rs_pose *pose, const rs_body *bo
         if (rc == RS_OK && c->n - k0 > 1)
             rs_contacts_body_shares(c, k0, c->n - k0, radius[i]);
     }
-    rs_contacts_free(&pc);
-    free(off);
-    free(cq.q);
-    free(cq.x);
+    w->pc = pc;
     for (int i = 0; i < n; i++)
         rs_body_contacts_free(fl + i);
-    free(fl);
-    free(pool);
-    free(b);
     return rc;
 }

@@ -35,6 +35,9 @@ void rs_body_support_at(const rs_body *b, const double R[9], const double dir[3]
 /// a capsule (whose cores are a point and a segment).
 double rs_shape_core_radius(const rs_shape *s);
 
+/// rs_body_check's checks of b's pose alone (its shape and the gap checked before, as
+/// for a body of the same shape): into *checked, its quaternion normalised.
+int rs_body_check_pose(const rs_body *b, rs_body *checked, rs_error *err);
 /// A body's reach about its centre: the farthest corner of its bounding box.
 double rs_body_reach(const rs_body *b);
 /// Appends o to l; RS_ERR_NOMEM when it cannot grow.
@@ -74,6 +77,24 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
 /// block; one contact per owning feature, the deepest, into out[i] for body i.
 int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body *b, int n,
                         double gap_max, int lenient, rs_body_contacts *out, rs_error *err);
+
+/// rs_body_manifold's work arrays, kept over the runs of bodies of one query (zero it
+/// first; rs_body_work_free).
+typedef struct rs_body_work {
+    rs_contacts pc; ///< the core points' contacts
+    void *mem;      ///< the bodies' features, checked copies, reach and lists
+    size_t bytes;
+    void *q;   ///< the core points' queries
+    double *x; ///< their balls
+    int cap;
+    int *off; ///< where each ball's contacts start
+    int noff;
+} rs_body_work;
+/// rs_body_manifold on the work arrays w, grown as needed and kept.
+int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body *body,
+                        int n, int point0, const double *radius, double gap_max,
+                        rs_body_work *w, rs_contacts *c, rs_error *err);
+void rs_body_work_free(rs_body_work *w);
 
 /// Volume moments of a solid about the frame's origin: v = int dV, s = int x dV,
 /// ss = int x x^T dV (row-major).

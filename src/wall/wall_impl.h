@@ -6,6 +6,8 @@
 #include "rigidsurf/wall.h"
 
 #include <stddef.h>
+#include <stdint.h>
+#include <string.h>
 
 /* What a law is to the wall: a built-in one (hertz and hooke may read the engine's
  * material properties), one loaded from a library or a Fortran source (owned), or the
@@ -233,7 +235,11 @@ static inline int wall_kept_away_at(const double *gapref, const double *xref,
 {
     const double room = gapref[i] - tracking;
     const double *xr = &xref[4 * (size_t)i], *xi = x + 3 * (size_t)i;
-    if (!(room > 0.0) || radius[i] != xr[3])
+    /* the radius the bound was made with, the same bit for bit */
+    uint64_t r_now, r_then;
+    memcpy(&r_now, &radius[i], sizeof r_now);
+    memcpy(&r_then, &xr[3], sizeof r_then);
+    if (!(room > 0.0) || r_now != r_then)
         return 0;
     const double dx = xi[0] - xr[0], dy = xi[1] - xr[1], dz = xi[2] - xr[2];
     return dx * dx + dy * dy + dz * dz < room * room;

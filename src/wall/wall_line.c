@@ -11,12 +11,48 @@
  * but those whose distance bound keeps them away. */
 #include "wall_impl.h"
 
+#include "rs_compiler.h"
 #include "faceted/mesh_held.h"
 #include "line_revolution.h"
 #include "track_fused.h"
 
 #include <math.h>
 #include <string.h>
+
+/* What a sphere's distance bound is tested with (wall_kept_away_at). */
+typedef struct {
+    const double *gapref, *xref, *x, *radius;
+    double tracking;
+} line_bounds;
+
+/* The candidates idx[k] .. that are not usual, up to the first that is (returned; n if
+ * none): each joins the rest (rest[*nrest]) unless its distance bound (kb, if any) keeps
+ * it away. A loop of its own, with only its own values in registers: on a bouncing bed
+ * most candidates pass through it alone. */
+static RS_NOINLINE int line_unusual(const int *idx, int k, int n, const int *usual,
+                                    const line_bounds *kb, int *rest, int *nrest)
+{
+    int nr = *nrest;
+    if (kb) {
+        const double *const gapref = kb->gapref, *const xref = kb->xref, *const x = kb->x,
+                            *const radius = kb->radius;
+        const double tracking = kb->tracking;
+        const int *p = idx + k, *const end = idx + n;
+        for (; p < end; p++) {
+            const int i = *p;
+            if (usual[i])
+                break;
+            if (!wall_kept_away_at(gapref, xref, tracking, x, radius, i))
+                rest[nr++] = i;
+        }
+        k = (int)(p - idx);
+    } else {
+        for (; k < n && !usual[idx[k]]; k++)
+            rest[nr++] = idx[k];
+    }
+    *nrest = nr;
+    return k;
+}
 
 int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
                     const int *idx, int n, double dt, rs_error *err)
@@ -74,8 +110,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     int *const rest = w->active;
     int nrest = 0, nheld = 0;
     const int *const usual = w->usual;
-    const double *const gapref = w->gapref, *const xref = w->xref;
-    const double tracking = w->tracking;
+    const line_bounds kb = {w->gapref, w->xref, x, radius, w->tracking};
     const int bounds = w->bounds_ok || w->list_bounds;
     double live[M];
     double *pl[M];
@@ -85,21 +120,28 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
          * in slot 0, which the kernel takes if it is still the face's); the others join
          * the rest, but those whose distance bound keeps them away. */
         int ix[M], m = 0;
-        for (; next < n && m < M; next++) {
-            const int i = idx[next];
-            if (usual[i]) {
-                if (type && type[i] != run_t) {
-                    if (m > 0)
-                        break;
-                    run_t = type[i];
-                    run_ok = force || wall_fused_props(w, run_t, &props);
-                }
-                if (run_ok)
-                    ix[m++] = i;
-                else
-                    rest[nrest++] = i;
-            } else if (!(bounds && wall_kept_away_at(gapref, xref, tracking, x, radius, i))) {
+        for (; next < n; next++) {
+            int i = idx[next];
+            if (!usual[i]) {
+                next = line_unusual(idx, next, n, usual, bounds ? &kb : NULL, rest, &nrest);
+                if (next == n)
+                    break;
+                i = idx[next];
+            }
+            if (type && type[i] != run_t) {
+                if (m > 0)
+                    break;
+                run_t = type[i];
+                run_ok = force || wall_fused_props(w, run_t, &props);
+            }
+            if (!run_ok) {
                 rest[nrest++] = i;
+                continue;
+            }
+            ix[m++] = i;
+            if (m == M) {
+                next++;
+                break;
             }
         }
         if (m == 0)
