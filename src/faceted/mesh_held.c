@@ -31,49 +31,61 @@ void rs_mesh_held_faces(const rs_surface *s, const rs_pose *pose, int m, const d
     q.pose = pose;
     const rs_pose *moved = moved_pose(&q);
     const int one_sided = s->sides != 2;
+    /* the zone's limit fmax(gap_lim, -dist_min), without a call: a NaN is ignored */
+    const double deep = -dist_min;
+    const int no_deep = deep != deep;
+    /* the columns, read once: the stores below cannot move them */
+    int *restrict const point = c->point, *restrict const feature = c->feature;
+    double *restrict const dist = c->dist;
+    double *restrict const n0 = c->nrm[0], *restrict const n1 = c->nrm[1],
+                           *restrict const n2 = c->nrm[2];
+    double *restrict const xm0 = c->xm[0], *restrict const xm1 = c->xm[1],
+                           *restrict const xm2 = c->xm[2];
+    double *restrict const k0 = c->curv[0], *restrict const k1 = c->curv[1];
+    double *restrict const share = c->share;
     for (int j = 0; j < m; j++) {
         const double r = radius[j];
         const double gap_lim = gap_max + r;
         double p[3], h = 0.0, xl[3] = {0.0, 0.0, 0.0}, nl[3] = {0.0, 0.0, 1.0};
         slave_local(&q, moved, j, p);
-        const int t = rs_mesh_zone_face(msh, p, held[j], fmax(gap_lim, -dist_min), &h);
-        double dist = INFINITY;
+        const double lim = no_deep || gap_lim > deep ? gap_lim : deep;
+        const int t = rs_mesh_zone_face(msh, p, held[j], lim, &h);
+        double d = INFINITY;
         if (t >= 0)
-            dist = face_contact(msh, t, one_sided, p, h, xl, nl);
-        face[j] = t >= 0 && dist <= gap_lim && dist >= -r;
-        c->point[j] = j;
-        if (!face[j]) { /* a unit normal, so that the frame stays finite */
-            c->feature[j] = RS_FEATURE_NONE;
-            c->dist[j] = INFINITY;
-            c->nrm[0][j] = c->nrm[1][j] = 0.0;
-            c->nrm[2][j] = 1.0;
-            if (c->xm[0])
-                c->xm[0][j] = c->xm[1][j] = c->xm[2][j] = 0.0;
+            d = face_contact(msh, t, one_sided, p, h, xl, nl);
+        const int ok = t >= 0 && d <= gap_lim && d >= -r;
+        face[j] = ok;
+        point[j] = j;
+        if (!ok) { /* a unit normal, so that the frame stays finite */
+            feature[j] = RS_FEATURE_NONE;
+            dist[j] = INFINITY;
+            n0[j] = n1[j] = 0.0;
+            n2[j] = 1.0;
+            if (xm0)
+                xm0[j] = xm1[j] = xm2[j] = 0.0;
         } else {
-            double xm[3], n[3];
+            double xw[3], nw[3];
             if (moved) { /* x = R X + T */
-                rs_matvec3(moved->R, xl, xm);
-                rs_matvec3(moved->R, nl, n);
-                for (int d = 0; d < 3; d++)
-                    xm[d] += moved->T[d];
+                rs_matvec3(moved->R, xl, xw);
+                rs_matvec3(moved->R, nl, nw);
+                for (int e = 0; e < 3; e++)
+                    xw[e] += moved->T[e];
             } else {
-                for (int d = 0; d < 3; d++) {
-                    xm[d] = xl[d];
-                    n[d] = nl[d];
+                for (int e = 0; e < 3; e++) {
+                    xw[e] = xl[e];
+                    nw[e] = nl[e];
                 }
             }
-            c->feature[j] = RS_FEATURE(RS_FEAT_FACE, msh->rec[t].el);
-            c->dist[j] = dist;
-            for (int d = 0; d < 3; d++) {
-                c->nrm[d][j] = n[d];
-                if (c->xm[0])
-                    c->xm[d][j] = xm[d];
-            }
+            feature[j] = RS_FEATURE(RS_FEAT_FACE, msh->rec[t].el);
+            dist[j] = d;
+            n0[j] = nw[0], n1[j] = nw[1], n2[j] = nw[2];
+            if (xm0)
+                xm0[j] = xw[0], xm1[j] = xw[1], xm2[j] = xw[2];
         }
-        if (c->curv[0])
-            c->curv[0][j] = c->curv[1][j] = 0.0;
-        if (c->share)
-            c->share[j] = 1.0;
+        if (k0)
+            k0[j] = k1[j] = 0.0;
+        if (share)
+            share[j] = 1.0;
     }
     c->n = m;
     c->shared = 0;

@@ -118,10 +118,17 @@ static void near_features(const rs_mesh *m, const zown *o, int tp, const zpiece 
     const double margin = 2.0 * delta;
     clear[0] = clear[1] = INFINITY;
     region R;
+    /* a region's rays are made only where its planes keep a piece in: the other tests
+     * (rs_zone_axes_out) read them */
+    int in[2];
     if (tp != o->tri[0] && (o->nt < 2 || tp != o->tri[1])) {
         rs_zone_face_region(m, tp, &R);
         for (int s = 0; s < 2; s++)
-            if (live[s] && !rs_zone_region_out(&P[s], &X[s], &R, margin)) {
+            in[s] = live[s] && !rs_zone_planes_out(&P[s], &R, margin);
+        if (in[0] || in[1])
+            rs_zone_face_rays(m, tp, &R);
+        for (int s = 0; s < 2; s++)
+            if (in[s] && !rs_zone_axes_out(&P[s], &X[s], &R, margin)) {
                 const double *T[3] = {R.v[0], R.v[1], R.v[2]};
                 clear[s] = fmin(clear[s], rs_zone_sep_bound(&P[s], &X[s], T, 3));
             }
@@ -134,7 +141,11 @@ static void near_features(const rs_mesh *m, const zown *o, int tp, const zpiece 
             continue; /* the zone's own edge: its side keeps it out */
         rs_zone_edge_region(m, e, scale, &R);
         for (int s = 0; s < 2; s++)
-            if (live[s] && !rs_zone_region_out(&P[s], &X[s], &R, margin)) {
+            in[s] = live[s] && !rs_zone_planes_out(&P[s], &R, margin);
+        if (in[0] || in[1])
+            rs_zone_edge_rays(m, e, &R);
+        for (int s = 0; s < 2; s++)
+            if (in[s] && !rs_zone_axes_out(&P[s], &X[s], &R, margin)) {
                 const double *T[2] = {R.v[0], R.v[1]};
                 clear[s] = fmin(clear[s], rs_zone_sep_bound(&P[s], &X[s], T, 2));
             }
@@ -463,6 +474,7 @@ static void mirror_zone(const rs_mesh *m, int t, const rs_mzone *z)
         z2->slot[k] = z->slot[(k + 2) % 4];
     }
     z2->quad = 1;
+    z2->t2 = t;
     z2->jd = (unsigned char)j2;
     z2->first = (unsigned char)(m->rec[t2].first >> j2 & 1u);
     atomic_store_explicit(&z2->state, RS_ZONE_READY, memory_order_release);
@@ -483,6 +495,7 @@ int rs_mesh_zone_make(const rs_mesh *m, int t, rs_mzone *z)
                 z->clear[1] >= z->hmax) {
                 const rs_mtri *r = m->rec + t;
                 z->quad = 1;
+                z->t2 = r->nbr[jd] / 3;
                 z->jd = (unsigned char)jd;
                 z->first = (unsigned char)(r->first >> jd & 1u);
                 for (int k = 0; k < 4; k++)

@@ -35,6 +35,7 @@ typedef struct rs_mzone {
     unsigned char jd;      ///< the diagonal's slot in t
     unsigned char first;   ///< t is the diagonal's first face (it takes points on it)
     unsigned char slot[4]; ///< the quad's outer edges, in turn around it
+    int t2;                ///< the triangle across jd (with quad set)
 } rs_mzone;
 _Static_assert(sizeof(rs_mzone) == 64, "a zone is one cache line");
 
@@ -82,19 +83,20 @@ static inline int rs_mzone_holds(const rs_mzone *z, double h, const double sd[3]
 static inline int rs_mzone_quad_face(const rs_mesh *m, const rs_mzone *z, int t,
                                      const double p[3], double lim, double *h)
 {
-    double sd[3], h0;
-    tri_bound(m, t, p, &h0, sd);
-    const int t2 = m->rec[t].nbr[z->jd] / 3;
-    const double sdd = sd[z->jd];
+    /* tri_bound's and side_of's expressions of the records' numbers, each side once */
+    const int t2 = z->t2;
+    const double sdd = side_of(m, t, z->jd, p);
     const int in0 = sdd > 0.0 || (sdd == 0.0 && z->first);
-    *h = in0 ? h0 : plane_height(m, t2, p);
-    const double ah = fabs(*h);
+    const double hh = plane_height(m, in0 ? t : t2, p);
+    *h = hh;
+    const double ah = fabs(hh), eps = z->eps;
+    const double s0 = side_of(m, t, z->slot[0], p), s1 = side_of(m, t, z->slot[1], p);
     const double s2 = side_of(m, t2, z->slot[2], p), s3 = side_of(m, t2, z->slot[3], p);
-    const int ok = ah <= z->hmax && ah >= z->eps && lim < z->clear[*h < 0.0] &&
-                   sd[z->slot[0]] >= z->eps + (double)z->kappa[0] * ah &&
-                   sd[z->slot[1]] >= z->eps + (double)z->kappa[1] * ah &&
-                   s2 >= z->eps + (double)z->kappa[2] * ah &&
-                   s3 >= z->eps + (double)z->kappa[3] * ah;
+    const int ok = (ah <= z->hmax) & (ah >= eps) & (lim < z->clear[hh < 0.0]) &
+                   (s0 >= eps + (double)z->kappa[0] * ah) &
+                   (s1 >= eps + (double)z->kappa[1] * ah) &
+                   (s2 >= eps + (double)z->kappa[2] * ah) &
+                   (s3 >= eps + (double)z->kappa[3] * ah);
     return ok ? (in0 ? t : t2) : -1;
 }
 

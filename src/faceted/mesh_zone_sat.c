@@ -19,8 +19,8 @@ static void span(const zpiece *P, const double u[3], double *lo, double *hi)
     *hi = -INFINITY;
     for (int k = 0; k < 2 * P->nc; k++) {
         const double v = dot3(u, P->c[k]);
-        *lo = fmin(*lo, v);
-        *hi = fmax(*hi, v);
+        *lo = v < *lo ? v : *lo; /* the corners are finite */
+        *hi = v > *hi ? v : *hi;
     }
 }
 
@@ -85,9 +85,13 @@ int rs_zone_planes_out(const zpiece *P, const region *R, double margin)
         const double l = R->gl[k];
         if (!(l > 0.0))
             continue;
-        double lo, hi;
-        span(P, R->g[k], &lo, &hi);
-        if ((lo - R->g[k][3]) / l > margin)
+        /* (v - c) / l > margin at every corner: at the lowest, for the expression grows
+         * with v; the first corner that fails decides */
+        const double *g = R->g[k];
+        int c = 0;
+        while (c < 2 * P->nc && (dot3(g, P->c[c]) - g[3]) / l > margin)
+            c++;
+        if (c == 2 * P->nc)
             return 1;
     }
     return 0;
@@ -95,8 +99,11 @@ int rs_zone_planes_out(const zpiece *P, const region *R, double margin)
 
 int rs_zone_region_out(const zpiece *P, const zaxes *X, const region *R, double margin)
 {
-    if (rs_zone_planes_out(P, R, margin))
-        return 1;
+    return rs_zone_planes_out(P, R, margin) || rs_zone_axes_out(P, X, R, margin);
+}
+
+int rs_zone_axes_out(const zpiece *P, const zaxes *X, const region *R, double margin)
+{
     double dirs[RS_ZONE_MAX_RAYS + 3][3];
     int nd = 0;
     for (int k = 0; k < R->nray; k++, nd++)
@@ -204,7 +211,11 @@ void rs_zone_face_region(const rs_mesh *m, int tp, region *R)
         R->g[j][3] = -r->e[j][3];
     }
     plane_norms(R);
-    add_ray(R, r->n, 1);
+}
+
+void rs_zone_face_rays(const rs_mesh *m, int tp, region *R)
+{
+    add_ray(R, m->rec[tp].n, 1);
 }
 
 /* The region of edge e: outside each of its faces (sides <= 0), between its ends. */
@@ -229,7 +240,6 @@ void rs_zone_edge_region(const rs_mesh *m, int e, double scale, region *R)
             R->g[R->ng][d] = m->rec[t].e[j][d];
         R->ng++;
     }
-    const int nf = R->ng;
     for (int d = 0; d < 3; d++) {
         R->g[R->ng][d] = -u[d];
         R->g[R->ng + 1][d] = u[d];
@@ -238,6 +248,12 @@ void rs_zone_edge_region(const rs_mesh *m, int e, double scale, region *R)
     R->g[R->ng + 1][3] = dot3(u, pb);
     R->ng += 2;
     plane_norms(R);
+    (void)scale;
+}
+
+void rs_zone_edge_rays(const rs_mesh *m, int e, region *R)
+{
+    const int nf = R->ng - 2;
     /* the cone across the edge: the faces' normals, where the others' sides allow, and
      * outward from a lone face */
     for (int f = m->edge_f0[e]; f < m->edge_f0[e + 1]; f++) {
@@ -249,7 +265,6 @@ void rs_zone_edge_region(const rs_mesh *m, int e, double scale, region *R)
                 add_ray(R, o, 0);
         }
     }
-    (void)scale;
 }
 
 /* The region of node v: (p - v).(w - v) <= 0 for each neighbour w. 0 when it has more

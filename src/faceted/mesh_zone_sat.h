@@ -42,8 +42,11 @@ typedef struct region {
 void rs_zone_piece_axes(const zpiece *P, const double n[3], zaxes *x);
 /* Is P beyond one of R's planes by more than margin? */
 int rs_zone_planes_out(const zpiece *P, const region *R, double margin);
-/* Is region R apart from piece P (axes X) by more than margin? */
+/* Is region R apart from piece P (axes X) by more than margin? One of R's planes
+ * (rs_zone_planes_out), or an axis of P or across the edges of both (rs_zone_axes_out,
+ * which alone reads R's rays). */
 int rs_zone_region_out(const zpiece *P, const zaxes *X, const region *R, double margin);
+int rs_zone_axes_out(const zpiece *P, const zaxes *X, const region *R, double margin);
 /* A lower bound of the distance between P and the hull of points T[0 .. nt). */
 double rs_zone_sep_bound(const zpiece *P, const zaxes *X, const double *const *T, int nt);
 /* The regions of the face of triangle tp, of edge e and of node v (vertex: 0 when it has
@@ -51,6 +54,10 @@ double rs_zone_sep_bound(const zpiece *P, const zaxes *X, const double *const *T
  * its planes alone keep every piece P[s] with live[s] out by margin). */
 void rs_zone_face_region(const rs_mesh *m, int tp, region *R);
 void rs_zone_edge_region(const rs_mesh *m, int e, double scale, region *R);
+/* The rays of a face's or an edge's region, once its planes are made by the function
+ * above (which leaves it none): asked for only where its planes keep a piece in. */
+void rs_zone_face_rays(const rs_mesh *m, int tp, region *R);
+void rs_zone_edge_rays(const rs_mesh *m, int e, region *R);
 int rs_zone_vertex_region(const rs_mesh *m, int v, const zpiece P[2], const int live[2],
                           double margin, region *R);
 

@@ -14,7 +14,8 @@
  * never exceeds the distance to a triangle that can give a contact. The wall's held faces
  * (rs_mesh_held_faces, one sphere at a time) are the hinted query's contacts, value for
  * value, in the reference configuration and under a pose, for every sphere the zone
- * takes, and flag every other. */
+ * takes, and flag every other; and at the diagonals and folds of the cylinder's quads,
+ * against the query without hints. */
 #include "faceted/cgal_mesh.h"
 #include "faceted/mesh.h"
 #include "faceted/mesh_held.h"
@@ -631,6 +632,140 @@ static void cylinder_from_inside(void)
     sp_free(&sp);
 }
 
+/* The held faces at the places a quad's zone decides most: spheres touching the
+ * benchmark's cylinder (triangles, as in its STL) across the diagonals of its quads, a
+ * fraction 10^-12 .. 10^-1 of the quad's width to either side, and near its folds, the
+ * quads' outer edges, 10^-4 .. 10^-1 of it inside (where the zones' insets end). Each flagged sphere's contact must be the query's
+ * without hints (the tree's, every feature tested), value for value; the zone of a quad
+ * names the triangle across its diagonal (rs_mzone.t2) as the records do, and that
+ * triangle's zone is the same quad seen from it. */
+static void quad_diagonals_and_folds(void)
+{
+    soup sp;
+    memset(&sp, 0, sizeof sp);
+    cylinder(&sp, 200, 10, 0.05, -0.002, 0.317, 0);
+    for (int sides = 1; sides <= 2; sides++) {
+        rs_surface s;
+        if (make(&sp, sides, &s) != RS_OK) {
+            rs_test_current_failed = 1;
+            break;
+        }
+        const rs_mesh *m = s.impl;
+        const double r0 = 0.001;
+        unsigned long long seed = 909 + (unsigned)sides;
+        rs_contacts hc, gc;
+        memset(&hc, 0, sizeof hc);
+        memset(&gc, 0, sizeof gc);
+        rs_error e;
+        int points = 0, flagged = 0, across = 0, own = 0, at_fold = 0, bad = 0;
+        ENSURE(rs_contacts_reserve(&hc, NB, &e) == RS_OK);
+        for (int b0 = 0; b0 < 4096 && !bad; b0 += NB) {
+            double x[NB], y[NB], z[NB], r[NB];
+            int hint[NB], tri[NB], fold[NB];
+            for (int i = 0; i < NB; i++) {
+                int t = -1;
+                const rs_mzone *zn = NULL;
+                while (!zn) {
+                    t = (int)(rs_test_xorshift(&seed) % (unsigned long long)m->nt);
+                    zn = rs_mesh_zone(m, t);
+                    zn = zn && zn->quad ? zn : NULL;
+                }
+                const rs_mtri *rt = m->rec + t;
+                const int t2 = rt->nbr[zn->jd] / 3;
+                const rs_mzone *z2 = rs_mesh_zone(m, t2);
+                if (zn->t2 != t2 || !z2 || !z2->quad || z2->t2 != t ||
+                    m->rec[t2].nbr[z2->jd] / 3 != t)
+                    bad++;
+                /* on the diagonal (slot jd of t) or on an outer edge of either triangle */
+                const int k = (int)(rs_test_xorshift(&seed) % 5);
+                const rs_mtri *re = k == 4 ? rt : m->rec + (k < 2 ? t : t2);
+                const int slot = k == 4 ? zn->jd : zn->slot[k];
+                const double *a = m->xyz + 3 * re->v[slot];
+                const double *bb = m->xyz + 3 * re->v[(slot + 1) % 3];
+                const double w = rs_test_urand(&seed);
+                /* the width across the edge: the distance to the far node */
+                const double *c = m->xyz + 3 * re->v[(slot + 2) % 3];
+                const double width = rs_dot3(re->e[slot], c) - re->e[slot][3];
+                const double off =
+                    width * pow(10.0, -1.0 - (k == 4 ? 11.0 : 3.0) * rs_test_urand(&seed));
+                /* into the triangle, or, across the diagonal, to either side */
+                const double sg = k == 4 && rs_test_urand(&seed) < 0.5 ? -1.0 : 1.0;
+                r[i] = r0 * (0.5 + 0.5 * rs_test_urand(&seed));
+                const double hs = sides == 2 && rs_test_urand(&seed) < 0.25 ? -1.0 : 1.0;
+                const double h = hs * r[i] * (0.8 + 0.2 * rs_test_urand(&seed));
+                double p[3];
+                for (int d = 0; d < 3; d++)
+                    p[d] = a[d] + w * (bb[d] - a[d]) + sg * off * re->e[slot][d] +
+                           h * re->n[d];
+                x[i] = p[0], y[i] = p[1], z[i] = p[2];
+                hint[i] = RS_FEATURE(RS_FEAT_FACE, rt->el);
+                tri[i] = t;
+                fold[i] = k < 4;
+            }
+            double rmax = 0.0;
+            for (int i = 0; i < NB; i++)
+                rmax = fmax(rmax, r[i]);
+            int face[NB];
+            rs_mesh_held_faces(&s, NULL, NB, x, y, z, r, hint, 0.0, -rmax, &hc, face);
+            rs_frame_orient(s.ops->frame, &hc, 0, hc.n);
+            rs_query q;
+            memset(&q, 0, sizeof q);
+            q.n = NB;
+            q.slave.x = x, q.slave.y = y, q.slave.z = z, q.slave.radius = r;
+            q.gap_max = 0.0;
+            q.dist_min = -rmax;
+            gc.n = 0;
+            if (rs_surface_query(&s, &q, &gc, &e) != RS_OK) {
+                fprintf(stderr, "query: %s\n", e.msg);
+                bad++;
+                break;
+            }
+            for (int i = 0; i < NB; i++) {
+                points++;
+                if (!face[i])
+                    continue;
+                flagged++;
+                int kk = -1, nk = 0;
+                for (int a = 0; a < gc.n; a++)
+                    if (gc.point[a] == i)
+                        kk = a, nk++;
+                int same = nk == 1 && hc.point[i] == i && hc.feature[i] == gc.feature[kk] &&
+                           hc.dist[i] == gc.dist[kk] && gc.share[kk] == 1.0 &&
+                           hc.curv[0][i] == 0.0 && hc.curv[1][i] == 0.0 &&
+                           hc.share[i] == 1.0;
+                for (int d = 0; d < 3; d++)
+                    same = same && hc.xm[d][i] == gc.xm[d][kk] &&
+                           hc.nrm[d][i] == gc.nrm[d][kk] && hc.t1[d][i] == gc.t1[d][kk] &&
+                           hc.t2[d][i] == gc.t2[d][kk];
+                if (!same) {
+                    fprintf(stderr,
+                            "%d sides, sphere %d: held face %d at %.17g, the query's %d "
+                            "contacts, %d at %.17g\n",
+                            sides, b0 + i, hc.feature[i], hc.dist[i], nk,
+                            kk >= 0 ? gc.feature[kk] : -1, kk >= 0 ? gc.dist[kk] : 0.0);
+                    bad++;
+                }
+                const int mine = hc.feature[i] == RS_FEATURE(RS_FEAT_FACE, m->rec[tri[i]].el);
+                own += mine;
+                across += !mine;
+                at_fold += fold[i];
+            }
+        }
+        printf("  cylinder, %d side%s: %d spheres at diagonals and folds, %d held (%d on "
+               "the held triangle, %d across the diagonal, %d near a fold)\n",
+               sides, sides == 1 ? "" : "s", points, flagged, own, across, at_fold);
+        rs_contacts_free(&hc);
+        rs_contacts_free(&gc);
+        rs_surface_free(&s);
+        ENSURE(bad == 0);
+        ENSURE(points == 4096);
+        /* the zones take most spheres off the folds, on both sides of the diagonals */
+        ENSURE(flagged >= points / 4);
+        ENSURE(own > 0 && across > 0 && at_fold > 0);
+    }
+    sp_free(&sp);
+}
+
 static void sphere_both_sides(void)
 {
     soup sp;
@@ -678,6 +813,7 @@ static void thin_slab(void)
 int main(void)
 {
     RS_RUN(cylinder_from_inside);
+    RS_RUN(quad_diagonals_and_folds);
     RS_RUN(sphere_both_sides);
     RS_RUN(bumpy_fields);
     RS_RUN(box_of_quads);
