@@ -109,7 +109,8 @@ int main(int argc, char **argv)
             only_way = atoi(argv[i + 1]);
     }
     if (n < 1 || reps < 1 || only < -2 || only > 8 || only_way < 0 || only_way > 2) {
-        fprintf(stderr, "usage: bench_convex [--bodies N] [--reps R] [--only K [--way W]]\n");
+        fprintf(stderr,
+                "usage: bench_convex [--bodies N] [--reps R] [--only K [--way W]]\n");
         return 2;
     }
     printf("# bench_convex: %d bodies a shape, %d repetitions (%s, %s)\n", n, reps,

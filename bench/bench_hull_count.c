@@ -25,7 +25,8 @@ static double urange(double a, double b)
 int main(int argc, char **argv)
 {
     if (argc < 3 || (strcmp(argv[1], "make") && (strcmp(argv[1], "read") || argc < 4))) {
-        fprintf(stderr, "usage: bench_hull_count make FILE | read FILE WAY(0 plane, 1 mesh)\n");
+        fprintf(stderr,
+                "usage: bench_hull_count make FILE | read FILE WAY(0 plane, 1 mesh)\n");
         return 2;
     }
     rs_shape s;
@@ -44,10 +45,10 @@ int main(int argc, char **argv)
             return 1;
         }
         FILE *f = fopen(argv[2], "wb");
-        const int ok = f && fwrite(&s, sizeof s, 1, f) == 1 &&
-                       fwrite(s.verts, sizeof *s.verts, 3 * (size_t)s.nv, f) ==
-                           3 * (size_t)s.nv &&
-                       fwrite(s.tris, sizeof *s.tris, 3 * (size_t)s.nt, f) == 3 * (size_t)s.nt;
+        const int ok =
+            f && fwrite(&s, sizeof s, 1, f) == 1 &&
+            fwrite(s.verts, sizeof *s.verts, 3 * (size_t)s.nv, f) == 3 * (size_t)s.nv &&
+            fwrite(s.tris, sizeof *s.tris, 3 * (size_t)s.nt, f) == 3 * (size_t)s.nt;
         if (f)
             fclose(f);
         rs_shape_free(&s);

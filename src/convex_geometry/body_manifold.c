@@ -354,10 +354,11 @@ static int settled(const known_points *kp, const rs_body_contact *o, double dn,
     const double margin =
         1e-6 * reach + 1e-12 * (fabs(x[0]) + fabs(x[1]) + fabs(x[2]) + fabs(nxs));
     const double bound = kp->depth[j] - dn * (kp->key[j] - key_last) + margin;
+    /* no later point is within the gap */
     if (bound < -gap_max && bound < o->depth - 1e-12 * reach)
-        return 1; /* no later point is within the gap */
-    int core = o->iterations < 0; /* a core point stands for the deepest point (as the
-                                   * manifold decides) */
+        return 1;
+    /* a core point stands for the deepest point (as the manifold decides) */
+    int core = o->iterations < 0;
     for (int k = 0; k < kp->n; k++)
         core |= kp->depth[k] >= o->depth - 1e-12 * reach;
     if (!core && !(bound < o->depth - 1e-12 * reach))
@@ -511,8 +512,8 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                 if (k == ncp && poly && ncp == CORE_FIRST &&
                     !settled(&kp, o, dn, rs_dot3(d, cp[k - 1].p), reach, b[i].x, nxs,
                              gap_max)) /* the same first */
-                    ncp = low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp,
-                                     CAND_MAX - 1);
+                    ncp =
+                        low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp, CAND_MAX - 1);
                 if (k == ncp)
                     break;
                 corner q = {.body = i, .f = f, .id = cp[k].id, .seq = k, .lift = lift};

@@ -28,9 +28,9 @@ int rs_mesh_box_candidates(const rs_surface *s, const double lo[3], const double
     return rs_cgal_tree_box(m->tree, l, h, ids, cap);
 }
 
-int rs_mesh_feature_point(const rs_surface *s, const rs_pose *pose, int f, const double x[3],
-                          double radius, double gap_max, double depth_max, double *dist,
-                          double xm[3], double n[3])
+int rs_mesh_feature_point(const rs_surface *s, const rs_pose *pose, int f,
+                          const double x[3], double radius, double gap_max,
+                          double depth_max, double *dist, double xm[3], double n[3])
 {
     const rs_mesh *m = s->impl;
     const int el = RS_FEATURE_INDEX(f);

@@ -337,8 +337,8 @@ static int over_a_fold(const rs_surface *s, const rs_pose *p, sbody *b, const ca
 
 /* The contact of candidate k from the pair's witness on its triangle, owned by the
  * feature whose cone holds the pair's normal there, if any. */
-static int witness_contact(const rs_surface *s, const rs_pose *p, sbody *sb,
-                           const cand *c, int nc, int k, found *g)
+static int witness_contact(const rs_surface *s, const rs_pose *p, sbody *sb, const cand *c,
+                           int nc, int k, found *g)
 {
     const rs_body *b = sb->b;
     const cand *ck = c + k;

@@ -92,11 +92,10 @@ static inline int rs_mzone_quad_face(const rs_mesh *m, const rs_mzone *z, int t,
     const double ah = fabs(hh), eps = z->eps;
     const double s0 = side_of(m, t, z->slot[0], p), s1 = side_of(m, t, z->slot[1], p);
     const double s2 = side_of(m, t2, z->slot[2], p), s3 = side_of(m, t2, z->slot[3], p);
-    const int ok = (ah <= z->hmax) & (ah >= eps) & (lim < z->clear[hh < 0.0]) &
-                   (s0 >= eps + (double)z->kappa[0] * ah) &
-                   (s1 >= eps + (double)z->kappa[1] * ah) &
-                   (s2 >= eps + (double)z->kappa[2] * ah) &
-                   (s3 >= eps + (double)z->kappa[3] * ah);
+    const int ok =
+        (ah <= z->hmax) & (ah >= eps) & (lim < z->clear[hh < 0.0]) &
+        (s0 >= eps + (double)z->kappa[0] * ah) & (s1 >= eps + (double)z->kappa[1] * ah) &
+        (s2 >= eps + (double)z->kappa[2] * ah) & (s3 >= eps + (double)z->kappa[3] * ah);
     return ok ? (in0 ? t : t2) : -1;
 }
 

@@ -11,9 +11,9 @@
  * but those whose distance bound keeps them away. */
 #include "wall_impl.h"
 
-#include "rs_compiler.h"
 #include "faceted/mesh_held.h"
 #include "line_revolution.h"
+#include "rs_compiler.h"
 #include "track_fused.h"
 
 #include <math.h>

@@ -138,7 +138,8 @@ static void test_feature_point_is_the_point_query(void)
                 double x[3] = {urange(-0.025, 0.025), urange(-0.025, 0.025), 0.0};
                 x[2] = ground(k, x[0], x[1]) + urange(-0.004, 0.006);
                 if (k == 6 && i % 2)
-                    x[2] = urange(-0.025, 0.025), x[i % 4 == 1 ? 0 : 1] = urange(0.014, 0.024);
+                    x[2] = urange(-0.025, 0.025),
+                    x[i % 4 == 1 ? 0 : 1] = urange(0.014, 0.024);
                 const double r = urange(0.0, 0.003), gap = urange(0.0, 0.02);
                 rs_query q;
                 memset(&q, 0, sizeof q);
@@ -159,7 +160,8 @@ static void test_feature_point_is_the_point_query(void)
                     if (RS_FEATURE_TYPE(f) != RS_FEAT_FACE)
                         continue;
                     double dist, xm[3], n[3];
-                    if (!s.ops->feature_point(&s, q.pose, f, x, r, gap, gap, &dist, xm, n)) {
+                    if (!s.ops->feature_point(&s, q.pose, f, x, r, gap, gap, &dist, xm,
+                                              n)) {
                         declined++;
                         continue;
                     }
@@ -243,7 +245,8 @@ static void test_manifold_is_the_general_paths(void)
                 rs_body b[N];
                 double zero[N], radius[N];
                 for (int i = 0; i < N; i++) {
-                    double q[4], x0[3] = {urange(-0.025, 0.025), urange(-0.025, 0.025), 0.0};
+                    double q[4],
+                        x0[3] = {urange(-0.025, 0.025), urange(-0.025, 0.025), 0.0};
                     random_unit_quaternion(q);
                     ENSURE(rs_body_init(b + i, &shape, 1000.0, x0, q, NULL) == RS_OK);
                     const double down[3] = {0, 0, -1};
@@ -312,14 +315,16 @@ static const double *sort_key;
 static int by_key(const void *a, const void *b)
 {
     const int i = *(const int *)a, j = *(const int *)b;
-    return sort_key[i] > sort_key[j] ? -1 : sort_key[i] < sort_key[j] ? 1 : (i > j) - (i < j);
+    return sort_key[i] > sort_key[j]   ? -1
+           : sort_key[i] < sort_key[j] ? 1
+                                       : (i > j) - (i < j);
 }
 
 /* Hulls of points on an ellipsoid (100 to 10^4 points: climbed) and on the rims of a
- * prism's caps (many coplanar vertices: ties along its axis): the climb's vertex is as far along d as
- * the scan's, the same vertex where no other is as far; the best-first walk's 31 farthest
- * are the scan's order. Directions at random, along the axes and the cube's cell borders,
- * with parts of 1e-300 and zero. */
+ * prism's caps (many coplanar vertices: ties along its axis): the climb's vertex is as far
+ * along d as the scan's, the same vertex where no other is as far; the best-first walk's 31
+ * farthest are the scan's order. Directions at random, along the axes and the cube's cell
+ * borders, with parts of 1e-300 and zero. */
 static void test_hull_support_is_the_scan(void)
 {
     const int sizes[4] = {100, 1000, 10000, 3000};
@@ -334,7 +339,8 @@ static void test_hull_support_is_the_scan(void)
                 xyz[3 * i + 1] = sin(ph);
                 xyz[3 * i + 2] = i % 2 ? 1.0 : -1.0;
             } else {
-                const double z = urange(-1, 1), ph = urange(0, 2 * RS_PI), r = sqrt(1 - z * z);
+                const double z = urange(-1, 1), ph = urange(0, 2 * RS_PI),
+                             r = sqrt(1 - z * z);
                 xyz[3 * i] = 0.005 * r * cos(ph);
                 xyz[3 * i + 1] = 0.003 * r * sin(ph);
                 xyz[3 * i + 2] = 0.004 * z;

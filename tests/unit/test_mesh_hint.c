@@ -635,10 +635,11 @@ static void cylinder_from_inside(void)
 /* The held faces at the places a quad's zone decides most: spheres touching the
  * benchmark's cylinder (triangles, as in its STL) across the diagonals of its quads, a
  * fraction 10^-12 .. 10^-1 of the quad's width to either side, and near its folds, the
- * quads' outer edges, 10^-4 .. 10^-1 of it inside (where the zones' insets end). Each flagged sphere's contact must be the query's
- * without hints (the tree's, every feature tested), value for value; the zone of a quad
- * names the triangle across its diagonal (rs_mzone.t2) as the records do, and that
- * triangle's zone is the same quad seen from it. */
+ * quads' outer edges, 10^-4 .. 10^-1 of it inside (where the zones' insets end). Each
+ * flagged sphere's contact must be the query's without hints (the tree's, every feature
+ * tested), value for value; the zone of a quad names the triangle across its diagonal
+ * (rs_mzone.t2) as the records do, and that triangle's zone is the same quad seen from it.
+ */
 static void quad_diagonals_and_folds(void)
 {
     soup sp;
@@ -745,7 +746,8 @@ static void quad_diagonals_and_folds(void)
                             kk >= 0 ? gc.feature[kk] : -1, kk >= 0 ? gc.dist[kk] : 0.0);
                     bad++;
                 }
-                const int mine = hc.feature[i] == RS_FEATURE(RS_FEAT_FACE, m->rec[tri[i]].el);
+                const int mine =
+                    hc.feature[i] == RS_FEATURE(RS_FEAT_FACE, m->rec[tri[i]].el);
                 own += mine;
                 across += !mine;
                 at_fold += fold[i];
