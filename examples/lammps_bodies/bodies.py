@@ -46,8 +46,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path[:0] = [HERE, os.path.join(HERE, "..", "drum")]
 from bodies_vtk import read_custom  # noqa: E402
+from angle import read_com  # noqa: E402  (the main job's: time, bed angle, drum speed)
 
 # Units of in.bodies: mm, g, ms (speeds in m/s, energies in mJ)
 R_DRUM, HALF = 35.0, 15.0     # drum.inp: radius and half the inner length, mm
@@ -119,19 +121,6 @@ def inverse(a):
          for j in range(3)]
     det = sum(a[0][k] * c[k][0] for k in range(3))
     return [[c[i][j] / det for j in range(3)] for i in range(3)]
-
-
-def read_com(path):
-    t, th, om = [], [], []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            v = [float(x) for x in line.split()]
-            t.append(v[0])
-            th.append(math.degrees(math.atan2(v[1], -v[2])))
-            om.append(v[3])
-    return t, th, om
 
 
 def mean(v):

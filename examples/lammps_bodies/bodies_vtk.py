@@ -15,6 +15,9 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from liggghts_out import read_dump  # noqa: E402  (LAMMPS's dump custom is the same format)
+
 
 def read_faces(path):
     """{id: [face, ...]} from a data file's Bodies section (atom_style body
@@ -65,23 +68,7 @@ def read_local(path):
 
 def read_custom(path):
     """{step: {id: {column: value}}} from a dump custom."""
-    out = {}
-    with open(path) as f:
-        lines = f.read().split("\n")
-    i = 0
-    while i < len(lines):
-        if lines[i].startswith("ITEM: TIMESTEP"):
-            step = int(lines[i + 1])
-            n = int(lines[i + 3])
-            cols = lines[i + 8].split()[2:]
-            out[step] = {}
-            for line in lines[i + 9:i + 9 + n]:
-                row = dict(zip(cols, (float(c) for c in line.split())))
-                out[step][int(row["id"])] = row
-            i += 9 + n
-        else:
-            i += 1
-    return out
+    return dict(read_dump(path))
 
 
 def write(path, verts, faces, atoms):
