@@ -278,6 +278,9 @@ int wall_build_candidates(rs_wall *w, const rs_wall_block *b, rs_error *err)
             w->xref = x;
         if (!g || !x)
             return rs_error_set(err, RS_ERR_NOMEM, "out of memory for the distance bounds");
+        /* defined from the start: the bound's test may read a reference position before
+         * its room (wall_kept_away_at), whose result does not depend on it then */
+        memset(w->xref + 4 * (size_t)w->nref, 0, 4 * (size_t)(nr - w->nref) * sizeof *x);
         w->nref = nr;
     }
     for (int i = 0; i < b->n; i++)
