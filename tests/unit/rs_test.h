@@ -117,6 +117,27 @@ static inline double urand(void)
     static unsigned long long state = RS_TEST_SEED;
     return rs_test_urand(&state);
 }
+/// Uniform in [a, b) from the test file's stream.
+static inline double urange(double a, double b)
+{
+    return a + (b - a) * urand();
+}
+/// A unit quaternion (w, x, y, z) uniform over rotations: a point of the 4-ball by
+/// rejection from the test file's stream, scaled to unit length.
+static inline void random_unit_quaternion(double q[4])
+{
+    double l;
+    do {
+        l = 0.0;
+        for (int k = 0; k < 4; k++) {
+            q[k] = urange(-1.0, 1.0);
+            l += q[k] * q[k];
+        }
+    } while (l < 1e-4 || l > 1.0);
+    l = sqrt(l);
+    for (int k = 0; k < 4; k++)
+        q[k] /= l;
+}
 
 static inline int rs_test_summary(void)
 {

@@ -40,26 +40,6 @@ static const char *PROFILES[] = {
 };
 enum { NPROFILES = sizeof PROFILES / sizeof *PROFILES };
 
-static double urange(double a, double b)
-{
-    return a + (b - a) * urand();
-}
-
-static void random_unit_quaternion(double q[4])
-{
-    double l = 0.0;
-    do {
-        l = 0.0;
-        for (int k = 0; k < 4; k++) {
-            q[k] = urange(-1.0, 1.0);
-            l += q[k] * q[k];
-        }
-    } while (l < 1e-4 || l > 1.0);
-    l = sqrt(l);
-    for (int k = 0; k < 4; k++)
-        q[k] /= l;
-}
-
 /* Whether the point lies farther than reach from segment q's box along x or y. */
 static int box_far_of(const rs_pseg *q, double u, double v, double reach)
 {

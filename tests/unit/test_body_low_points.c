@@ -20,11 +20,6 @@
 static const char *PLANE = "*SURFACE, TYPE=CYLINDER, NAME=floor\n"
                            "0, 0, 0, 1, 0, 0\n0, -1, 0\nSTART, -10, 0\nLINE, 10, 0\n";
 
-static double urange(double a, double b)
-{
-    return a + (b - a) * urand();
-}
-
 /* q = a * b (w, x, y, z). */
 static void qmul(const double a[4], const double b[4], double q[4])
 {

@@ -17,26 +17,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static double urange(double a, double b)
-{
-    return a + (b - a) * urand();
-}
-
-static void random_unit_quaternion(double q[4])
-{
-    double l;
-    do {
-        l = 0.0;
-        for (int k = 0; k < 4; k++) {
-            q[k] = urange(-1.0, 1.0);
-            l += q[k] * q[k];
-        }
-    } while (l < 1e-4 || l > 1.0);
-    l = sqrt(l);
-    for (int k = 0; k < 4; k++)
-        q[k] /= l;
-}
-
 enum { NMESH = 7 };
 
 /* Mesh k: 0 a floor of two triangles; 1 a tilted grid; 2 a vee (concave fold); 3 a

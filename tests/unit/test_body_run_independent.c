@@ -19,11 +19,6 @@
 
 enum { NSHAPE = 8, N = 320, GAP_MM = 2 };
 
-static double urange(double a, double b)
-{
-    return a + (b - a) * urand();
-}
-
 /* The eight shapes at size a (a hull of 24 random points in a ball of radius a). */
 static int make_shapes(double a, rs_shape *sh)
 {
