@@ -23,8 +23,12 @@ Usage: make_bodies.py OUT.data [N]   (at most N bodies; default: one on every la
 Prints the number of bodies and their sizes.
 """
 import math
+import os
 import random
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from lammps_bodies import box_body  # noqa: E402
 
 RHO = 2.5e-3                          # g/mm^3 (2500 kg/m^3)
 R_DRUM, HALF_LEN = 35.0, 15.0         # the drum of drum.inp: radius, half its length
@@ -36,21 +40,10 @@ CLEAR = 5.5                           # lattice points this far inside the mantl
 TOP = 12.0                            # highest lattice row (y), drum centre at 0
 
 
-def box(h):
-    """8 vertices, 12 edges, 6 quadrilateral faces (outward, right-handed) of a box of
-    half-extents h about its centre."""
-    V = [(sx * h[0], sy * h[1], sz * h[2]) for sz in (-1, 1) for sy in (-1, 1)
-         for sx in (-1, 1)]
-    E = [(0, 1), (2, 3), (4, 5), (6, 7), (0, 2), (1, 3), (4, 6), (5, 7), (0, 4), (1, 5),
-         (2, 6), (3, 7)]
-    F = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
-    return V, E, F
-
-
 def body(core, r):
     """Vertices, edges, faces, mass and the diagonal inertia of a box of core half-extents
     core rounded by r (mass and moments of the solid box of the outer size)."""
-    V, E, F = box(core)
+    V, E, F = box_body(core)
     a, b, c = (h + r for h in core)
     m = RHO * 8 * a * b * c
     inertia = (m / 3 * (b * b + c * c), m / 3 * (a * a + c * c), m / 3 * (a * a + b * b))

@@ -13,6 +13,8 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "liggghts"))
 import liglib as L  # noqa: E402,F401
 from liglib import read_dump, read_table, rel_diff  # noqa: E402,F401
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from lammps_bodies import box_body  # noqa: E402,F401
 
 STOCK = ("--lmp", "Debian's stock lmp")
 COLS = "id x y z vx vy vz omegax omegay omegaz fx fy fz tqx tqy tqz"
@@ -151,17 +153,6 @@ def rotate(v, axis, angle):
     d = sum(k[i] * v[i] for i in range(3))
     cr = (k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2], k[0] * v[1] - k[1] * v[0])
     return tuple(v[i] * c + cr[i] * s + k[i] * d * (1 - c) for i in range(3))
-
-
-def box_body(h):
-    """A box of half-extents h: its 8 vertices, 12 edges and 6 quadrilateral faces
-    (right-handed, outward)."""
-    V = [(sx * h[0], sy * h[1], sz * h[2]) for sz in (-1, 1) for sy in (-1, 1)
-         for sx in (-1, 1)]
-    E = [(0, 1), (2, 3), (4, 5), (6, 7), (0, 2), (1, 3), (4, 6), (5, 7), (0, 4), (1, 5),
-         (2, 6), (3, 7)]
-    F = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
-    return V, E, F
 
 
 def prism_body(n, radius, half_len):
