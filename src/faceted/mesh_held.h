@@ -15,6 +15,18 @@ extern "C" {
 /// Whether s is a MESH whose faces have clear zones (rs_mesh_held_faces applies).
 int rs_mesh_held(const rs_surface *s);
 
+/// What a sphere's test in a face's clear zone leaves for the next step's
+/// (rs_mesh_held_faces): a ball about a point of the reference configuration within which
+/// every point passes the zone's test for face feature `face` as that point did, with the
+/// same triangle, whichever sphere asks (only the limit on the other features' contacts,
+/// which comes with the sphere, is tested again). A fact about the mesh alone, so that a
+/// ball left by another particle, or from another step, is as true as one's own. 32 bytes.
+typedef struct rs_mesh_held_ball {
+    double x[3]; ///< the centre
+    float reach; ///< the radius (> 0), negated for the triangle across a quad's diagonal
+    int face;    ///< the face feature, -1: no ball
+} rs_mesh_held_ball;
+
 /// For m spheres (centres x, y, z, radii radius) on a surface of rs_mesh_held under pose
 /// (NULL: the reference configuration), each holding the feature held[j]: where held[j] is
 /// a face and the sphere lies in the clear zone of one of its triangles for the limit
@@ -34,6 +46,17 @@ int rs_mesh_held(const rs_surface *s);
 void rs_mesh_held_faces(const rs_surface *s, const rs_pose *pose, int m, const double *x,
                         const double *y, const double *z, const double *radius,
                         const int *held, double gap_max, double dist_min, rs_contacts *c,
+                        int *face);
+
+/// rs_mesh_held_faces with a ball for each sphere, sphere j's at balls[row[j]] (face -1
+/// before a first call): where the sphere lies within its ball for the face it holds, the
+/// zone's test is that ball's (only the limit on the other features' contacts is tested
+/// again); where it passes the test of a quad's zone or a one-triangle face's, its ball is
+/// made anew; else it is left as it was. The numbers are rs_mesh_held_faces's.
+void rs_mesh_held_balls(const rs_surface *s, const rs_pose *pose, int m, const double *x,
+                        const double *y, const double *z, const double *radius,
+                        const int *held, double gap_max, double dist_min,
+                        rs_mesh_held_ball *balls, const int *row, rs_contacts *c,
                         int *face);
 
 #ifdef __cplusplus

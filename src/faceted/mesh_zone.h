@@ -74,29 +74,53 @@ static inline int rs_mzone_holds(const rs_mzone *z, double h, const double sd[3]
            sd[2] >= z->eps + (double)z->kappa[2] * ah;
 }
 
+/// What the test of quad zone z (quad set, made on triangle t and its coplanar neighbour
+/// z->t2 across slot jd) compares at p, each side once, by the records' own expressions
+/// (tri_bound's and side_of's): the diagonal's side sdd, whether the query gives p the
+/// face of t (in0: t strictly inside the diagonal, or on it where t is its first face;
+/// across a FLAT edge the second face's side is exactly the first's negated, else of t2),
+/// p's height h over that triangle and its sides s of the quad's four outer edges.
+typedef struct rs_mzone_at {
+    double sdd, h, s[4];
+    int in0;
+} rs_mzone_at;
+
+static inline void rs_mzone_quad_at(const rs_mesh *m, const rs_mzone *z, int t,
+                                    const double p[3], rs_mzone_at *a)
+{
+    const int t2 = z->t2;
+    a->sdd = side_of(m, t, z->jd, p);
+    a->in0 = a->sdd > 0.0 || (a->sdd == 0.0 && z->first);
+    a->h = plane_height(m, a->in0 ? t : t2, p);
+    a->s[0] = side_of(m, t, z->slot[0], p);
+    a->s[1] = side_of(m, t, z->slot[1], p);
+    a->s[2] = side_of(m, t2, z->slot[2], p);
+    a->s[3] = side_of(m, t2, z->slot[3], p);
+}
+
+/// Does quad zone z hold the point of a (rs_mzone_quad_at), where no other feature gives
+/// a contact within lim?
+static inline int rs_mzone_quad_holds(const rs_mzone *z, const rs_mzone_at *a, double lim)
+{
+    const double ah = fabs(a->h), eps = z->eps;
+    return (ah <= z->hmax) & (ah >= eps) & (lim < z->clear[a->h < 0.0]) &
+           (a->s[0] >= eps + (double)z->kappa[0] * ah) &
+           (a->s[1] >= eps + (double)z->kappa[1] * ah) &
+           (a->s[2] >= eps + (double)z->kappa[2] * ah) &
+           (a->s[3] >= eps + (double)z->kappa[3] * ah);
+}
+
 /// The triangle of the quad of zone z (quad set, made on triangle t and its coplanar
 /// neighbour across slot jd) whose face the query gives p, where z holds p and no other
 /// feature gives a contact within lim, with p's height over it in *h; -1 where z does not
-/// hold p. The diagonal's side decides the triangle as the query does: t strictly inside
-/// it, or on it where t is its first face (across a FLAT edge the second face's side is
-/// exactly the first's negated).
+/// hold p (rs_mzone_quad_at, rs_mzone_quad_holds).
 static inline int rs_mzone_quad_face(const rs_mesh *m, const rs_mzone *z, int t,
                                      const double p[3], double lim, double *h)
 {
-    /* tri_bound's and side_of's expressions of the records' numbers, each side once */
-    const int t2 = z->t2;
-    const double sdd = side_of(m, t, z->jd, p);
-    const int in0 = sdd > 0.0 || (sdd == 0.0 && z->first);
-    const double hh = plane_height(m, in0 ? t : t2, p);
-    *h = hh;
-    const double ah = fabs(hh), eps = z->eps;
-    const double s0 = side_of(m, t, z->slot[0], p), s1 = side_of(m, t, z->slot[1], p);
-    const double s2 = side_of(m, t2, z->slot[2], p), s3 = side_of(m, t2, z->slot[3], p);
-    const int ok =
-        (ah <= z->hmax) & (ah >= eps) & (lim < z->clear[hh < 0.0]) &
-        (s0 >= eps + (double)z->kappa[0] * ah) & (s1 >= eps + (double)z->kappa[1] * ah) &
-        (s2 >= eps + (double)z->kappa[2] * ah) & (s3 >= eps + (double)z->kappa[3] * ah);
-    return ok ? (in0 ? t : t2) : -1;
+    rs_mzone_at a;
+    rs_mzone_quad_at(m, z, t, p, &a);
+    *h = a.h;
+    return rs_mzone_quad_holds(z, &a, lim) ? (a.in0 ? t : z->t2) : -1;
 }
 
 /// The triangle of face feature hint (an element's face) whose clear zone holds p, where

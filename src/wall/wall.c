@@ -212,6 +212,7 @@ void rs_wall_free(rs_wall *w)
     free(w->rows);
     free(w->hist);
     free(w->usual);
+    free(w->hball);
     free(w->cand);
     free(w->active);
     free(w->cfirst);

@@ -7,6 +7,8 @@
  * way (wall_sides.c). */
 #include "wall_impl.h"
 
+#include "faceted/mesh_held.h"
+
 #include "rigidsurf/vec.h"
 
 #include <math.h>
@@ -276,11 +278,19 @@ int wall_build_candidates(rs_wall *w, const rs_wall_block *b, rs_error *err)
         double *x = realloc(w->xref, 4 * (size_t)nr * sizeof *x);
         if (x)
             w->xref = x;
-        if (!g || !x)
+        rs_mesh_held_ball *hb = w->hball;
+        const int hb0 = hb ? w->nref : 0; /* the balls' rows defined before */
+        if (w->line_mesh && (hb = realloc(w->hball, (size_t)nr * sizeof *hb)))
+            w->hball = hb;
+        if (!g || !x || (w->line_mesh && !hb))
             return rs_error_set(err, RS_ERR_NOMEM, "out of memory for the distance bounds");
         /* defined from the start: the bound's test may read a reference position before
          * its room (wall_kept_away_at), whose result does not depend on it then */
         memset(w->xref + 4 * (size_t)w->nref, 0, 4 * (size_t)(nr - w->nref) * sizeof *x);
+        /* no ball yet (a ball is true of the mesh alone: those of particles since
+         * renumbered stay) */
+        for (int i = hb0; w->line_mesh && i < nr; i++)
+            w->hball[i].face = -1;
         w->nref = nr;
     }
     for (int i = 0; i < b->n; i++)

@@ -139,6 +139,9 @@ struct rs_wall {
     int *cand, ncand, cand_cap;
     int rebuild;
     double *xref, *gapref; ///< distance bounds per particle (wall_candidates.c)
+    /** on the line path of a MESH, per particle the ball its held face's zone test left
+     * (rs_mesh_held_balls; wall_candidates.c) */
+    struct rs_mesh_held_ball *hball;
     int nref;
     int *active;
     double lookahead, rglob;

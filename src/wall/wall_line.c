@@ -177,8 +177,8 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
                 held[j] = usual[ix[j]] - 1;
                 rmax = rmax > pr[j] ? rmax : pr[j];
             }
-            rs_mesh_held_faces(w->surf, &w->motion->pose, m, px, py, pz, pr, held, gap_max,
-                               -rmax, &c, face);
+            rs_mesh_held_balls(w->surf, &w->motion->pose, m, px, py, pz, pr, held, gap_max,
+                               -rmax, w->hball, ix, &c, face);
         } else {
             rs_line_revolution_faces(w->surf, &w->motion->pose, m, px, py, pz, pr, gap_max,
                                      &c, face);
