@@ -49,16 +49,25 @@ static float ball_reach(const rs_mzone *z, double h, const double *s, int ns, do
     return f;
 }
 
+/* Ball b about p for face feature face (its zone z, p at height h over the triangle tri
+ * the zone gives): reach, and z's clear distance on p's side rounded down; none where
+ * the reach is 0. */
 static void put_ball(rs_mesh_held_ball *b, const double p[3], int face, float reach,
-                     int second)
+                     int tri, const rs_mzone *z, double h)
 {
     if (!(reach > 0.0f)) {
         b->face = -1;
         return;
     }
+    const double clear = z->clear[h < 0.0];
+    float cf = (float)clear;
+    if ((double)cf > clear)
+        cf = nextafterf(cf, -INFINITY);
     b->x[0] = p[0], b->x[1] = p[1], b->x[2] = p[2];
-    b->reach = second ? -reach : reach;
+    b->reach = reach;
+    b->clear = cf;
     b->face = face;
+    b->tri = tri;
 }
 
 /* The scale of the numbers the zone's tests round at p. */
@@ -85,11 +94,12 @@ static RS_NOINLINE int zone_test(const rs_mesh *msh, const rs_mzone *zq, int t0,
         *h = a.h;
         if (!rs_mzone_quad_holds(zq, &a, lim))
             return -1;
+        const int t = a.in0 ? t0 : zq->t2;
         if (b)
             put_ball(b, p, hint,
                      ball_reach(zq, a.h, a.s, 4, a.in0 ? a.sdd : -a.sdd, round_scale(msh, p)),
-                     !a.in0);
-        return a.in0 ? t0 : zq->t2;
+                     t, zq, a.h);
+        return t;
     }
     if (msh->el_t0[el + 1] == t0 + 1) { /* and for a one-triangle face's */
         double sd[3];
@@ -97,7 +107,8 @@ static RS_NOINLINE int zone_test(const rs_mesh *msh, const rs_mzone *zq, int t0,
         if (!rs_mzone_holds(zq, *h, sd, lim))
             return -1;
         if (b)
-            put_ball(b, p, hint, ball_reach(zq, *h, sd, 3, INFINITY, round_scale(msh, p)), 0);
+            put_ball(b, p, hint, ball_reach(zq, *h, sd, 3, INFINITY, round_scale(msh, p)), t0,
+                     zq, *h);
         return t0;
     }
     return rs_mesh_zone_face(msh, p, hint, lim, h);
@@ -139,24 +150,20 @@ RS_INLINE void held_run(const rs_mesh *msh, const rs_pose *moved, int two_sided,
         const int hint = held[j];
         int t = -1;
         double h = 0.0;
-        if (hint >= 0 && RS_FEATURE_TYPE(hint) == RS_FEAT_FACE &&
-            RS_FEATURE_INDEX(hint) < nel) {
+        rs_mesh_held_ball *b = balls ? balls + row[j] : NULL;
+        double dx = 0.0, dy = 0.0, dz = 0.0, rb = 0.0;
+        if (b && b->face == hint && hint >= 0) {
+            dx = p[0] - b->x[0], dy = p[1] - b->x[1], dz = p[2] - b->x[2];
+            rb = (double)b->reach;
+        }
+        if (dx * dx + dy * dy + dz * dz < rb * rb && lim < (double)b->clear) {
+            /* within the ball and its limit: the zone's own answer */
+            t = b->tri;
+            h = plane_height(msh, t, p);
+        } else if (hint >= 0 && RS_FEATURE_TYPE(hint) == RS_FEAT_FACE &&
+                   RS_FEATURE_INDEX(hint) < nel) {
             const int el = RS_FEATURE_INDEX(hint), t0 = el_t0[el];
-            const rs_mzone *zq = zone + t0;
-            rs_mesh_held_ball *b = balls ? balls + row[j] : NULL;
-            double dx = 0.0, dy = 0.0, dz = 0.0, rb = 0.0;
-            if (b && b->face == hint) {
-                dx = p[0] - b->x[0], dy = p[1] - b->x[1], dz = p[2] - b->x[2];
-                rb = (double)b->reach;
-            }
-            if (dx * dx + dy * dy + dz * dz < rb * rb) {
-                /* within the ball: the zone's own answer, the limit tested again */
-                const int tb = rb < 0.0 ? zq->t2 : t0;
-                h = plane_height(msh, tb, p);
-                t = lim < zq->clear[h < 0.0] ? tb : -1;
-            } else {
-                t = zone_test(msh, zq, t0, el, p[0], p[1], p[2], hint, lim, b, &h);
-            }
+            t = zone_test(msh, zone + t0, t0, el, p[0], p[1], p[2], hint, lim, b, &h);
         }
         /* face_contact */
         const rs_mtri *rt = rec;

@@ -16,15 +16,18 @@ extern "C" {
 int rs_mesh_held(const rs_surface *s);
 
 /// What a sphere's test in a face's clear zone leaves for the next step's
-/// (rs_mesh_held_faces): a ball about a point of the reference configuration within which
+/// (rs_mesh_held_balls): a ball about a point of the reference configuration within which
 /// every point passes the zone's test for face feature `face` as that point did, with the
 /// same triangle, whichever sphere asks (only the limit on the other features' contacts,
-/// which comes with the sphere, is tested again). A fact about the mesh alone, so that a
-/// ball left by another particle, or from another step, is as true as one's own. 32 bytes.
+/// which comes with the sphere, is compared again, with the zone's clear distance on the
+/// ball's side). A fact about the mesh alone, so that a ball left by another particle, or
+/// from another step, is as true as one's own. 40 bytes.
 typedef struct rs_mesh_held_ball {
     double x[3]; ///< the centre
-    float reach; ///< the radius (> 0), negated for the triangle across a quad's diagonal
+    float reach; ///< the radius (> 0)
+    float clear; ///< the zone's clear distance on the ball's side, rounded down
     int face;    ///< the face feature, -1: no ball
+    int tri;     ///< the triangle whose face the zone gives within the ball
 } rs_mesh_held_ball;
 
 /// For m spheres (centres x, y, z, radii radius) on a surface of rs_mesh_held under pose
