@@ -138,6 +138,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
                 rest[nrest++] = i;
                 continue;
             }
+            held[m] = usual[i] - 1; /* the feature it holds */
             ix[m++] = i;
             if (m == M) {
                 next++;
@@ -171,12 +172,10 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
                     pwx[j] = pwy[j] = pwz[j] = 0.0;
         }
         if (w->line_mesh) {
-            /* the face each holds; the depth limit of any block's query (wall_block.c) */
+            /* the depth limit of any block's query (wall_block.c) */
             double rmax = w->rglob;
-            for (int j = 0; j < m; j++) {
-                held[j] = usual[ix[j]] - 1;
+            for (int j = 0; j < m; j++)
                 rmax = rmax > pr[j] ? rmax : pr[j];
-            }
             rs_mesh_held_balls(w->surf, &w->motion->pose, m, px, py, pz, pr, held, gap_max,
                                -rmax, w->hball, ix, &c, face);
         } else {
@@ -192,7 +191,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
         for (int j = 0; j < m; j++) {
             const int still_usual = face[j] && c.dist[j] <= w->tracking + pr[j] &&
                                     !(c.dist[j] - pr[j] > w->tracker.tracking) &&
-                                    usual[row[j]] == c.feature[j] + 1;
+                                    held[j] == c.feature[j];
             if (!still_usual) {
                 rest[n - 1 - nheld++] = row[j];
                 continue;
