@@ -218,6 +218,35 @@ static void emit_leaving(const rs_tracker *tr, const master_rates *mr,
     o->share[e] = 1.0;
 }
 
+/* One run of pass 2: the m live contacts of entries e0 .. (contacts k0 .. of particles
+ * i0 ..), their history, kinematics, outputs and stored history; sc: the next of
+ * out->seeded, returned past this run's. */
+RS_INLINE int emit_run(const rs_tracker *tr, const master_rates *mr, double dt,
+                       const rs_particles *p, const rs_contacts *c, rs_track_out *out,
+                       track_run *r, int e0, int m, int k0, int i0, int sc, const int nd,
+                       const int lean, const int hs)
+{
+    const int nseeded = out->nseeded, *const seeded = out->seeded;
+    run_gather(r, m, out, e0, lean, hs);
+    const int s0 = sc; /* seeded entries of this run: live, from the copied slot */
+    if (nseeded)
+        for (; sc < nseeded && seeded[sc] < e0 + m; sc++)
+            r->live[seeded[sc] - e0] = 1.0;
+    if (c->witness && c->xs[0])
+        run_kinematics(r, m, mr, dt, p, i0, c, k0, nd, mr->belt, 1, lean);
+    else if (mr->belt)
+        run_kinematics(r, m, mr, dt, p, i0, c, k0, nd, 1, 0, lean);
+    else
+        run_kinematics(r, m, mr, dt, p, i0, c, k0, nd, 0, 0, lean);
+    for (int q = s0; q < sc; q++) { /* its own normal increment, as a new contact's */
+        const int j = seeded[q] - e0;
+        r->drd1[j] = -r->vn[j] * dt;
+    }
+    run_outputs(r, m, c, k0, out, e0, nd, !(tr->drop & RS_DROP_COORDMST));
+    run_store(r->live, r->rd1, r->s1, r->s2, m, tr, c, k0, out, e0, lean, NULL, NULL);
+    return sc;
+}
+
 /* Pass 2 over the ne entries of pass 1: runs of live contacts, leaving slots as they
  * come. ident: entry e is contact e of particle e for every e (no leaving slot), so the
  * runs are known without looking. */
@@ -228,7 +257,6 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
     track_run r;
     const int lean = (tr->drop & RS_DROP_SLIP) != 0, hs = rs_track_slot_size(tr);
     int e = 0, sc = 0; /* sc: the next of out->seeded */
-    const int nseeded = out->nseeded, *const seeded = out->seeded;
     while (e < ne) {
         const int k0 = out->point[e];
         if (k0 < 0) {
@@ -249,23 +277,12 @@ RS_INLINE void emit_all(const rs_tracker *tr, const master_rates *mr, double dt,
                 e++;
             }
         }
-        run_gather(&r, m, out, e0, lean, hs);
-        const int s0 = sc; /* seeded entries of this run: live, from the copied slot */
-        if (nseeded)
-            for (; sc < nseeded && seeded[sc] < e0 + m; sc++)
-                r.live[seeded[sc] - e0] = 1.0;
-        if (c->witness && c->xs[0])
-            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, mr->belt, 1, lean);
-        else if (mr->belt)
-            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 1, 0, lean);
+        /* a run of one (a sphere at a fold holds two contacts, each a run) in a copy of
+         * its own, its loops gone */
+        if (m == 1)
+            sc = emit_run(tr, mr, dt, p, c, out, &r, e0, 1, k0, i0, sc, nd, lean, hs);
         else
-            run_kinematics(&r, m, mr, dt, p, i0, c, k0, nd, 0, 0, lean);
-        for (int q = s0; q < sc; q++) { /* its own normal increment, as a new contact's */
-            const int j = seeded[q] - e0;
-            r.drd1[j] = -r.vn[j] * dt;
-        }
-        run_outputs(&r, m, c, k0, out, e0, nd, !(tr->drop & RS_DROP_COORDMST));
-        run_store(r.live, r.rd1, r.s1, r.s2, m, tr, c, k0, out, e0, lean, NULL, NULL);
+            sc = emit_run(tr, mr, dt, p, c, out, &r, e0, m, k0, i0, sc, nd, lean, hs);
     }
 }
 
