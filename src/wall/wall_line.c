@@ -85,7 +85,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     double px[M], py[M], pz[M], pvx[M], pvy[M], pvz[M], pwx[M], pwy[M], pwz[M], pr[M],
         pm[M];
     double *ph[M];
-    int pid[M], row[M], face[M], held[M];
+    int pid[M], row[M], face[M], held[M], hint[M];
     /* the frames, distances and features: what the kernel reads (no master points,
      * curvatures or shares: rs_line_revolution_faces leaves them out); for a force law's
      * model also the master points and curvatures (and shares, which the faces give) */
@@ -121,12 +121,13 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
          * the rest, but those whose distance bound keeps them away. */
         int ix[M], m = 0;
         for (; next < n; next++) {
-            int i = idx[next];
-            if (!usual[i]) {
+            int i = idx[next], u = usual[i];
+            if (!u) {
                 next = line_unusual(idx, next, n, usual, bounds ? &kb : NULL, rest, &nrest);
                 if (next == n)
                     break;
                 i = idx[next];
+                u = usual[i];
             }
             if (type && type[i] != run_t) {
                 if (m > 0)
@@ -138,7 +139,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
                 rest[nrest++] = i;
                 continue;
             }
-            held[m] = usual[i] - 1; /* the feature it holds */
+            held[m] = u; /* its summary: the feature it holds + 1 */
             ix[m++] = i;
             if (m == M) {
                 next++;
@@ -174,9 +175,11 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
         if (w->line_mesh) {
             /* the depth limit of any block's query (wall_block.c) */
             double rmax = w->rglob;
-            for (int j = 0; j < m; j++)
+            for (int j = 0; j < m; j++) {
+                hint[j] = held[j] - 1; /* the face each holds */
                 rmax = rmax > pr[j] ? rmax : pr[j];
-            rs_mesh_held_balls(w->surf, &w->motion->pose, m, px, py, pz, pr, held, gap_max,
+            }
+            rs_mesh_held_balls(w->surf, &w->motion->pose, m, px, py, pz, pr, hint, gap_max,
                                -rmax, w->hball, ix, &c, face);
         } else {
             rs_line_revolution_faces(w->surf, &w->motion->pose, m, px, py, pz, pr, gap_max,
@@ -191,7 +194,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
         for (int j = 0; j < m; j++) {
             const int still_usual = face[j] && c.dist[j] <= w->tracking + pr[j] &&
                                     !(c.dist[j] - pr[j] > w->tracker.tracking) &&
-                                    held[j] == c.feature[j];
+                                    held[j] == c.feature[j] + 1;
             if (!still_usual) {
                 rest[n - 1 - nheld++] = row[j];
                 continue;
