@@ -116,8 +116,10 @@ static RS_NOINLINE int zone_test(const rs_mesh *msh, const rs_mzone *zq, int t0,
 
 /* The m spheres of a run: the triangle whose zone holds each (its ball's, or the test's)
  * for the limit max(gap_max + radius[j], deep), its height over it, and the face contact
- * from that triangle's record (face_contact, the pose's mapping back). */
-RS_INLINE void held_run(const rs_mesh *msh, const rs_pose *moved, int two_sided, int m,
+ * from that triangle's record (face_contact, the pose's mapping back). lean: balls given,
+ * no master points asked for, the reference configuration (the wall's line path). */
+RS_INLINE void held_run(const rs_mesh *msh, const rs_pose *moved, const int two_sided,
+                        const int lean, int m,
                         const double *x, const double *y, const double *z,
                         const double *radius, const int *held, double gap_max, double deep,
                         rs_mesh_held_ball *balls, const int *row, rs_contacts *c,
@@ -134,7 +136,7 @@ RS_INLINE void held_run(const rs_mesh *msh, const rs_pose *moved, int two_sided,
     double *restrict const dist = c->dist;
     double *restrict const n0 = c->nrm[0], *restrict const n1 = c->nrm[1],
                            *restrict const n2 = c->nrm[2];
-    double *restrict const xm0 = c->xm[0], *restrict const xm1 = c->xm[1],
+    double *restrict const xm0 = lean ? NULL : c->xm[0], *restrict const xm1 = c->xm[1],
                            *restrict const xm2 = c->xm[2];
     for (int j = 0; j < m; j++) {
         double p[3];
@@ -150,7 +152,7 @@ RS_INLINE void held_run(const rs_mesh *msh, const rs_pose *moved, int two_sided,
         const int hint = held[j];
         int t = -1;
         double h = 0.0;
-        rs_mesh_held_ball *b = balls ? balls + row[j] : NULL;
+        rs_mesh_held_ball *b = lean || balls ? balls + row[j] : NULL;
         double dx = 0.0, dy = 0.0, dz = 0.0, rb = 0.0;
         if (b && b->face == hint && hint >= 0) {
             dx = p[0] - b->x[0], dy = p[1] - b->x[1], dz = p[2] - b->x[2];
@@ -220,23 +222,22 @@ void rs_mesh_held_balls(const rs_surface *s, const rs_pose *pose, int m, const d
 {
     const rs_mesh *msh = s->impl;
     const rs_pose *moved = pose_moved(pose);
-    /* the pose and the sides as constants of each copy of the run's loop */
+    /* the pose and the sides as constants of each copy of the run's loop, and the wall's
+     * case (balls, no master points) in place */
     const double dm = -dist_min;
-    if (s->sides == 2) {
-        if (moved)
-            held_run(msh, moved, 1, m, x, y, z, radius, held, gap_max, dm, balls, row, c,
-                     face);
-        else
-            held_run(msh, NULL, 1, m, x, y, z, radius, held, gap_max, dm, balls, row, c,
-                     face);
-    } else {
-        if (moved)
-            held_run(msh, moved, 0, m, x, y, z, radius, held, gap_max, dm, balls, row, c,
-                     face);
-        else
-            held_run(msh, NULL, 0, m, x, y, z, radius, held, gap_max, dm, balls, row, c,
-                     face);
-    }
+    const int two = s->sides == 2, lean = balls && !c->xm[0] && !moved;
+    if (lean && two)
+        held_run(msh, NULL, 1, 1, m, x, y, z, radius, held, gap_max, dm, balls, row, c, face);
+    else if (lean)
+        held_run(msh, NULL, 0, 1, m, x, y, z, radius, held, gap_max, dm, balls, row, c, face);
+    else if (moved && two)
+        held_run(msh, moved, 1, 0, m, x, y, z, radius, held, gap_max, dm, balls, row, c, face);
+    else if (moved)
+        held_run(msh, moved, 0, 0, m, x, y, z, radius, held, gap_max, dm, balls, row, c, face);
+    else if (two)
+        held_run(msh, NULL, 1, 0, m, x, y, z, radius, held, gap_max, dm, balls, row, c, face);
+    else
+        held_run(msh, NULL, 0, 0, m, x, y, z, radius, held, gap_max, dm, balls, row, c, face);
     for (int j = 0; j < m; j++)
         c->point[j] = j;
     if (c->curv[0])
