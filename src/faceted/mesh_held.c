@@ -96,9 +96,10 @@ static RS_NOINLINE int zone_test(const rs_mesh *msh, const rs_mzone *zq, int t0,
             return -1;
         const int t = a.in0 ? t0 : zq->t2;
         if (b)
-            put_ball(b, p, hint,
-                     ball_reach(zq, a.h, a.s, 4, a.in0 ? a.sdd : -a.sdd, round_scale(msh, p)),
-                     t, zq, a.h);
+            put_ball(
+                b, p, hint,
+                ball_reach(zq, a.h, a.s, 4, a.in0 ? a.sdd : -a.sdd, round_scale(msh, p)), t,
+                zq, a.h);
         return t;
     }
     if (msh->el_t0[el + 1] == t0 + 1) { /* and for a one-triangle face's */
@@ -107,8 +108,8 @@ static RS_NOINLINE int zone_test(const rs_mesh *msh, const rs_mzone *zq, int t0,
         if (!rs_mzone_holds(zq, *h, sd, lim))
             return -1;
         if (b)
-            put_ball(b, p, hint, ball_reach(zq, *h, sd, 3, INFINITY, round_scale(msh, p)), t0,
-                     zq, *h);
+            put_ball(b, p, hint, ball_reach(zq, *h, sd, 3, INFINITY, round_scale(msh, p)),
+                     t0, zq, *h);
         return t0;
     }
     return rs_mesh_zone_face(msh, p, hint, lim, h);
@@ -119,11 +120,10 @@ static RS_NOINLINE int zone_test(const rs_mesh *msh, const rs_mzone *zq, int t0,
  * from that triangle's record (face_contact, the pose's mapping back). lean: balls given,
  * no master points asked for, the reference configuration (the wall's line path). */
 RS_INLINE void held_run(const rs_mesh *msh, const rs_pose *moved, const int two_sided,
-                        const int lean, int m,
-                        const double *x, const double *y, const double *z,
-                        const double *radius, const int *held, double gap_max, double deep,
-                        rs_mesh_held_ball *balls, const int *row, rs_contacts *c,
-                        int *restrict face)
+                        const int lean, int m, const double *x, const double *y,
+                        const double *z, const double *radius, const int *held,
+                        double gap_max, double deep, rs_mesh_held_ball *balls,
+                        const int *row, rs_contacts *c, int *restrict face)
 {
     /* the zone's limit fmax(gap_lim, -dist_min), without a call: a NaN is ignored */
     const int no_deep = deep != deep;
@@ -141,7 +141,8 @@ RS_INLINE void held_run(const rs_mesh *msh, const rs_pose *moved, const int two_
     for (int j = 0; j < m; j++) {
         double p[3];
         if (moved) { /* slave_local: X = R^T (x - T) */
-            const double w[3] = {x[j] - moved->T[0], y[j] - moved->T[1], z[j] - moved->T[2]};
+            const double w[3] = {x[j] - moved->T[0], y[j] - moved->T[1],
+                                 z[j] - moved->T[2]};
             for (int d = 0; d < 3; d++)
                 p[d] = moved->R[d] * w[0] + moved->R[3 + d] * w[1] + moved->R[6 + d] * w[2];
         } else {
@@ -217,8 +218,7 @@ RS_INLINE void held_run(const rs_mesh *msh, const rs_pose *moved, const int two_
 void rs_mesh_held_balls(const rs_surface *s, const rs_pose *pose, int m, const double *x,
                         const double *y, const double *z, const double *radius,
                         const int *held, double gap_max, double dist_min,
-                        rs_mesh_held_ball *balls, const int *row, rs_contacts *c,
-                        int *face)
+                        rs_mesh_held_ball *balls, const int *row, rs_contacts *c, int *face)
 {
     const rs_mesh *msh = s->impl;
     const rs_pose *moved = pose_moved(pose);
@@ -227,17 +227,23 @@ void rs_mesh_held_balls(const rs_surface *s, const rs_pose *pose, int m, const d
     const double dm = -dist_min;
     const int two = s->sides == 2, lean = balls && !c->xm[0] && !moved;
     if (lean && two)
-        held_run(msh, NULL, 1, 1, m, x, y, z, radius, held, gap_max, dm, balls, row, c, face);
+        held_run(msh, NULL, 1, 1, m, x, y, z, radius, held, gap_max, dm, balls, row, c,
+                 face);
     else if (lean)
-        held_run(msh, NULL, 0, 1, m, x, y, z, radius, held, gap_max, dm, balls, row, c, face);
+        held_run(msh, NULL, 0, 1, m, x, y, z, radius, held, gap_max, dm, balls, row, c,
+                 face);
     else if (moved && two)
-        held_run(msh, moved, 1, 0, m, x, y, z, radius, held, gap_max, dm, balls, row, c, face);
+        held_run(msh, moved, 1, 0, m, x, y, z, radius, held, gap_max, dm, balls, row, c,
+                 face);
     else if (moved)
-        held_run(msh, moved, 0, 0, m, x, y, z, radius, held, gap_max, dm, balls, row, c, face);
+        held_run(msh, moved, 0, 0, m, x, y, z, radius, held, gap_max, dm, balls, row, c,
+                 face);
     else if (two)
-        held_run(msh, NULL, 1, 0, m, x, y, z, radius, held, gap_max, dm, balls, row, c, face);
+        held_run(msh, NULL, 1, 0, m, x, y, z, radius, held, gap_max, dm, balls, row, c,
+                 face);
     else
-        held_run(msh, NULL, 0, 0, m, x, y, z, radius, held, gap_max, dm, balls, row, c, face);
+        held_run(msh, NULL, 0, 0, m, x, y, z, radius, held, gap_max, dm, balls, row, c,
+                 face);
     for (int j = 0; j < m; j++)
         c->point[j] = j;
     if (c->curv[0])

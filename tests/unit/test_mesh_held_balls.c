@@ -173,8 +173,7 @@ static void walk(const rs_surface *s, const rs_pose *pose, double r0, double gap
                 const double w[3] = {rs_test_urand(&seed), rs_test_urand(&seed),
                                      rs_test_urand(&seed)};
                 r[i] = r[i + 1] = r0 * (0.5 + 0.5 * rs_test_urand(&seed));
-                const double hs =
-                    s->sides == 2 && rs_test_urand(&seed) < 0.3 ? -1.0 : 1.0;
+                const double hs = s->sides == 2 && rs_test_urand(&seed) < 0.3 ? -1.0 : 1.0;
                 on_triangle(m, t, w, hs * r[i] * (0.8 + 0.3 * rs_test_urand(&seed)), X[i]);
                 hint[i] = hint[i + 1] = RS_FEATURE(RS_FEAT_FACE, m->rec[t].el);
             } else {
@@ -183,9 +182,9 @@ static void walk(const rs_surface *s, const rs_pose *pose, double r0, double gap
                 for (int d = 0; d < 3; d++)
                     X[i][d] += f * step * (2.0 * rs_test_urand(&seed) - 1.0);
                 if (rs_test_urand(&seed) < 0.02) /* another face held */
-                    hint[i] = hint[i + 1] = RS_FEATURE(
-                        RS_FEAT_FACE, (int)(rs_test_xorshift(&seed) %
-                                            (unsigned long long)m->nel));
+                    hint[i] = hint[i + 1] =
+                        RS_FEATURE(RS_FEAT_FACE, (int)(rs_test_xorshift(&seed) %
+                                                       (unsigned long long)m->nel));
             }
             for (int d = 0; d < 3; d++)
                 X[i + 1][d] = X[i][d] + 1e-9 * r0 * (rs_test_urand(&seed) - 0.5);
@@ -218,7 +217,8 @@ static void walk(const rs_surface *s, const rs_pose *pose, double r0, double gap
         ty->calls += NB;
         if (ca.n != NB || cb.n != NB || memcmp(face_a, face_b, sizeof face_a) ||
             !same_lists(&ca, &cb, NB)) {
-            fprintf(stderr, "step %d: the held faces with balls differ from those without\n",
+            fprintf(stderr,
+                    "step %d: the held faces with balls differ from those without\n",
                     step_no);
             ty->bad++;
             break;
@@ -251,8 +251,9 @@ static void walk(const rs_surface *s, const rs_pose *pose, double r0, double gap
                 same = same && cb.xm[d][i] == cq.xm[d][k] && cb.nrm[d][i] == cq.nrm[d][k] &&
                        cb.t1[d][i] == cq.t1[d][k] && cb.t2[d][i] == cq.t2[d][k];
             if (!same) {
-                fprintf(stderr, "step %d, sphere %d: held face %d at %.17g, the query's %d "
-                                "contacts, %d at %.17g\n",
+                fprintf(stderr,
+                        "step %d, sphere %d: held face %d at %.17g, the query's %d "
+                        "contacts, %d at %.17g\n",
                         step_no, i, cb.feature[i], cb.dist[i], nk,
                         k >= 0 ? cq.feature[k] : -1, k >= 0 ? cq.dist[k] : 0.0);
                 ty->bad++;
@@ -299,7 +300,8 @@ static void cylinder_walks(void)
         cylinder(&sp, 200, 10, 0.05, -0.002, 0.317, quads);
         const char *name = quads ? "cylinder of quads" : "cylinder";
         for (int sides = 1; sides <= 2; sides++)
-            walk_case(name, &sp, sides, NULL, 0.001, 2e-6, 11 + 2 * (unsigned)quads + sides);
+            walk_case(name, &sp, sides, NULL, 0.001, 2e-6,
+                      11 + 2 * (unsigned)quads + sides);
         walk_case(name, &sp, 2, &pose, 0.001, 2e-6, 17 + (unsigned)quads);
     }
 }
