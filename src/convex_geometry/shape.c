@@ -256,13 +256,6 @@ void rs_shape_free(rs_shape *s)
     s->nv = s->nt = 0;
 }
 
-double rs_shape_core_radius(const rs_shape *s)
-{
-    if (s->kind == RS_SHAPE_SPHERE || s->kind == RS_SHAPE_CAPSULE)
-        return s->rounding + s->dim[0];
-    return s->rounding;
-}
-
 static double sign1(double x)
 {
     return x < 0.0 ? -1.0 : 1.0;
@@ -335,6 +328,17 @@ void rs_shape_support(const rs_shape *s, const double dir[3], double out[3])
 {
     double d[3] = {dir[0], dir[1], dir[2]};
     double n = rs_norm3(d);
+    if (s->kind == RS_SHAPE_BOX && n > 0.0) { /* the corner, as below without the calls */
+        const double *h = s->dim;
+        for (int k = 0; k < 3; k++)
+            out[k] = sign1(d[k]) * h[k];
+        if (s->rounding != 0.0) { /* (none: out + 0 d is out, no corner being at 0) */
+            const double r = s->rounding / n;
+            for (int k = 0; k < 3; k++)
+                out[k] += r * d[k];
+        }
+        return;
+    }
     if (n == 0.0) {
         d[2] = 1.0;
         n = 1.0;
