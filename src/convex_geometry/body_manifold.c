@@ -653,6 +653,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
     }
     w->pc = pc;
     for (int i = 0; i < n; i++)
-        rs_body_contacts_free(fl + i);
+        if (!fl[i].borrowed) /* (grown past its room in the pool) */
+            rs_body_contacts_free(fl + i);
     return rc;
 }

@@ -33,13 +33,21 @@ void rs_body_support_at(const rs_body *b, const double R[9], const double dir[3]
                         double out[3]);
 /// The rounding around the core: the shape's rounding, plus the radius of a sphere or
 /// a capsule (whose cores are a point and a segment).
-double rs_shape_core_radius(const rs_shape *s);
+static inline double rs_shape_core_radius(const rs_shape *s)
+{
+    if (s->kind == RS_SHAPE_SPHERE || s->kind == RS_SHAPE_CAPSULE)
+        return s->rounding + s->dim[0];
+    return s->rounding;
+}
 
 /// rs_body_check's checks of b's pose alone (its shape and the gap checked before, as
 /// for a body of the same shape): into *checked, its quaternion normalised.
 int rs_body_check_pose(const rs_body *b, rs_body *checked, rs_error *err);
 /// A body's reach about its centre: the farthest corner of its bounding box.
-double rs_body_reach(const rs_body *b);
+static inline double rs_body_reach(const rs_body *b)
+{
+    return b->shape->reach;
+}
 /// Appends o to l; RS_ERR_NOMEM when it cannot grow.
 int rs_body_contacts_push(rs_body_contacts *l, const rs_body_contact *o, rs_error *err);
 /// The contacts of n slaves with surface s, into c (emptied first): points (radius NULL)
