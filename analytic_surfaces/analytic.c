@@ -136,7 +136,8 @@ void rs_analytic_free(rs_surface *s)
         .name = kind, .ndir = nd, .frame = conv, .closest = rs_analytic_closest,           \
         .adjacent = analytic_adjacent, .bounds = analytic_bounds,                          \
         .spin_axis = analytic_spin_axis, .triangulate = rs_analytic_triangulate,           \
-        .free = rs_analytic_free, .syntax = sx, .body = rs_analytic_body                   \
+        .free = rs_analytic_free, .syntax = sx, .body = rs_analytic_body,                  \
+        .body_run = rs_analytic_body_run                                                   \
     }
 static const rs_surface_ops segments_ops =
     ANALYTIC_OPS("SEGMENTS", 2, RS_FRAME_TRAVEL, &rs_segments_syntax);

@@ -393,6 +393,8 @@ void rs_body_work_free(rs_body_work *w)
     free(w->q);
     free(w->x);
     free(w->off);
+    free(w->rot);
+    rs_body_fixed_work_free(&w->fp);
     memset(w, 0, sizeof *w);
 }
 
@@ -452,8 +454,25 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
     if (rc == RS_OK && !s->ops->body)
         rc = rs_error_set(err, RS_ERR_ARG, "body query: surface '%s' (%s) takes no bodies",
                           s->name, s->ops->name);
+    /* where the kind takes them, the bodies' rotations made once for it and for the core
+     * points below, and its work arrays kept over the query's runs */
+    const double *rot = NULL;
+    if (rc == RS_OK && s->ops->body_run) {
+        if (n > w->nrot) {
+            free(w->rot);
+            w->nrot = 0;
+            if ((w->rot = malloc(9 * (size_t)n * sizeof *w->rot)))
+                w->nrot = n;
+            else
+                rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
+        }
+        for (int i = 0; i < n && rc == RS_OK; i++)
+            rs_body_rotation(b + i, w->rot + 9 * i);
+        rot = w->rot;
+    }
     if (rc == RS_OK)
-        rc = s->ops->body(s, pose, b, n, gap_max, 1, fl, err);
+        rc = rot ? s->ops->body_run(s, pose, b, rot, n, gap_max, 1, fl, w, err)
+                 : s->ops->body(s, pose, b, n, gap_max, 1, fl, err);
 
     /* Every body's core points that may reach the wall, each rounded toward it, asked in
      * one query: its own contact with the feature (the same owning feature, else it rests
@@ -480,7 +499,10 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
         if (rc != RS_OK || !core_points_of(b[i].shape))
             continue; /* a smooth body: its deepest point only */
         double R[9];
-        rs_body_rotation(b + i, R);
+        if (rot)
+            memcpy(R, rot + 9 * i, sizeof R);
+        else
+            rs_body_rotation(b + i, R);
         const double win = window(reach, gap_max);
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
             const rs_body_contact *o = &fl[i].c[f];

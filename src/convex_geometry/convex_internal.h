@@ -83,6 +83,22 @@ typedef int (*rs_body_face_fn)(const void *ctx, int want, const double p[3], dou
 int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_body *b,
                              int n, double gap_max, int lenient, rs_body_face_fn face,
                              const void *ctx, rs_body_contacts *out, rs_error *err);
+/// The fixed point's work arrays, kept over the runs of bodies of one query (zero it first;
+/// rs_body_fixed_work_free).
+typedef struct rs_body_fixed_work {
+    rs_contacts pc; ///< the reach spheres' and the iterates' contacts
+    void *mem;      ///< the bodies' rotations (where not given), reach, centres, windows
+    size_t bytes;
+    void *fx; ///< the fixed points and their iterates' queries
+    size_t fxbytes;
+} rs_body_fixed_work;
+/// rs_body_fixed_point_with on the work arrays w, grown as needed and kept, with the
+/// bodies' rotations R(q_i) at R + 9 i (rs_body_rotation; NULL: made here).
+int rs_body_fixed_point_run(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                            const double *R, int n, double gap_max, int lenient,
+                            rs_body_face_fn face, const void *ctx, rs_body_contacts *out,
+                            rs_body_fixed_work *w, rs_error *err);
+void rs_body_fixed_work_free(rs_body_fixed_work *w);
 /// The fixed point of rs_body_fixed_point_with over the kind's point query only: for
 /// each feature near each of the n bodies (a sphere query of its reach about its centre)
 /// the normal iterated to a fixed point through the kind's point query, the bodies in one
@@ -101,6 +117,9 @@ typedef struct rs_body_work {
     int cap;
     int *off; ///< where each ball's contacts start
     int noff;
+    double *rot; ///< the bodies' rotations (rs_surface_ops.body_run)
+    int nrot;
+    rs_body_fixed_work fp; ///< the kind's (rs_surface_ops.body_run)
 } rs_body_work;
 /// rs_body_manifold on the work arrays w, grown as needed and kept.
 int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body *body,
