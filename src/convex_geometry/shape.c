@@ -327,16 +327,26 @@ void rs_shape_core_support(const rs_shape *s, const double dir[3], double out[3]
 void rs_shape_support(const rs_shape *s, const double dir[3], double out[3])
 {
     double d[3] = {dir[0], dir[1], dir[2]};
-    double n = rs_norm3(d);
-    if (s->kind == RS_SHAPE_BOX && n > 0.0) { /* the corner, as below without the calls */
-        const double *h = s->dim;
+    const double *h = s->dim;
+    if (s->kind == RS_SHAPE_BOX && s->rounding == 0.0) {
+        /* the corner, as below without the calls (d = 0 gives the corner of d = +z too;
+         * out + 0 d is out, no corner being at 0) */
         for (int k = 0; k < 3; k++)
             out[k] = sign1(d[k]) * h[k];
-        if (s->rounding != 0.0) { /* (none: out + 0 d is out, no corner being at 0) */
-            const double r = s->rounding / n;
+        return;
+    }
+    double n = rs_norm3(d);
+    if ((s->kind == RS_SHAPE_BOX || s->kind == RS_SHAPE_CAPSULE) && n > 0.0) {
+        /* a rounded box's corner, a capsule's end, as below without the calls */
+        const int box = s->kind == RS_SHAPE_BOX;
+        if (box)
             for (int k = 0; k < 3; k++)
-                out[k] += r * d[k];
-        }
+                out[k] = sign1(d[k]) * h[k];
+        else
+            out[0] = out[1] = 0.0, out[2] = sign1(d[2]) * h[1];
+        const double r = rs_shape_core_radius(s) / n;
+        for (int k = 0; k < 3; k++)
+            out[k] += r * d[k];
         return;
     }
     if (n == 0.0) {
