@@ -11,6 +11,12 @@
 int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_body *checked,
                   rs_error *err)
 {
+    const int rc = rs_body_check_shape(s, b, gap_max, err);
+    return rc ? rc : rs_body_check_pose(b, checked, err);
+}
+
+int rs_body_check_shape(const rs_surface *s, const rs_body *b, double gap_max, rs_error *err)
+{
     if (!s || !s->ops || !b || !b->shape)
         return rs_error_set(err, RS_ERR_ARG,
                             "body contacts: NULL argument (a surface with a kind and a "
@@ -22,17 +28,17 @@ int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_body
         return rs_error_set(err, RS_ERR_ARG,
                             "body contacts: gap_max = %g (expected a finite number >= 0)",
                             gap_max);
-    return rs_body_check_pose(b, checked, err);
+    return RS_OK;
 }
 
-int rs_body_check_pose(const rs_body *b, rs_body *checked, rs_error *err)
+int rs_body_check_norm(const rs_body *b, double *nq, rs_error *err)
 {
     const double *q = b->q;
-    const double nq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    *nq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     /* the position and the norm at once (a unit norm has finite parts); what failed, in
      * this order, below */
     if (!(fabs(b->x[0]) <= RS_CONVEX_COORD_MAX && fabs(b->x[1]) <= RS_CONVEX_COORD_MAX &&
-          fabs(b->x[2]) <= RS_CONVEX_COORD_MAX && fabs(nq - 1.0) <= 1e-6)) {
+          fabs(b->x[2]) <= RS_CONVEX_COORD_MAX && fabs(*nq - 1.0) <= 1e-6)) {
         for (int k = 0; k < 3; k++)
             if (!(fabs(b->x[k]) <= RS_CONVEX_COORD_MAX))
                 return rs_error_set(err, RS_ERR_ARG, "body contacts: body position %g",
@@ -46,30 +52,36 @@ int rs_body_check_pose(const rs_body *b, rs_body *checked, rs_error *err)
         return rs_error_set(err, RS_ERR_ARG,
                             "body contacts: body quaternion (w, x, y, z) has norm %.17g "
                             "(expected a unit quaternion to 1e-6)",
-                            nq);
+                            *nq);
     }
-    *checked = *b;
-    if (fabs(nq - 1.0) > 1e-12)
-        for (int k = 0; k < 4; k++)
-            checked->q[k] = q[k] / nq;
     return RS_OK;
 }
 
-int rs_body_contacts_push(rs_body_contacts *l, const rs_body_contact *o, rs_error *err)
+int rs_body_check_pose(const rs_body *b, rs_body *checked, rs_error *err)
 {
-    if (l->n == l->cap) {
-        const int cap = l->cap ? 2 * l->cap : 16;
-        rs_body_contact *nc = realloc(l->borrowed ? NULL : l->c, (size_t)cap * sizeof *nc);
-        if (!nc)
-            return rs_error_set(err, RS_ERR_NOMEM,
-                                "body contacts: out of memory for %d contacts", cap);
-        if (l->borrowed)
-            memcpy(nc, l->c, (size_t)l->n * sizeof *nc);
-        l->c = nc;
-        l->cap = cap;
-        l->borrowed = 0;
-    }
-    l->c[l->n++] = *o;
+    double nq;
+    const int rc = rs_body_check_norm(b, &nq, err);
+    if (rc)
+        return rc;
+    *checked = *b;
+    if (fabs(nq - 1.0) > 1e-12)
+        for (int k = 0; k < 4; k++)
+            checked->q[k] = b->q[k] / nq;
+    return RS_OK;
+}
+
+int rs_body_contacts_grow(rs_body_contacts *l, rs_error *err)
+{
+    const int cap = l->cap ? 2 * l->cap : 16;
+    rs_body_contact *nc = realloc(l->borrowed ? NULL : l->c, (size_t)cap * sizeof *nc);
+    if (!nc)
+        return rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory for %d contacts",
+                            cap);
+    if (l->borrowed)
+        memcpy(nc, l->c, (size_t)l->n * sizeof *nc);
+    l->c = nc;
+    l->cap = cap;
+    l->borrowed = 0;
     return RS_OK;
 }
 

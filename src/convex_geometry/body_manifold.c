@@ -439,18 +439,26 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
         w->bytes = bytes;
     }
     rs_body_contact *pool = w->mem;
-    rs_body *b = (rs_body *)(pool + (size_t)n * FEATURES);
-    double *rch = (double *)(b + n);
+    rs_body *bc = (rs_body *)(pool + (size_t)n * FEATURES);
+    double *rch = (double *)(bc + n);
     rs_body_contacts *fl = (rs_body_contacts *)(rch + n);
     for (int i = 0; i < n; i++) {
         const rs_body_contacts l = {0, FEATURES, pool + (size_t)i * FEATURES, 1};
         fl[i] = l;
     }
-    int rc = RS_OK;
-    for (int i = 0; i < n && rc == RS_OK; i++) /* a run of one shape: its checks once */
-        rc = i > 0 && body[i].shape && body[i].shape == body[i - 1].shape
-                 ? rs_body_check_pose(body + i, b + i, err)
-                 : rs_body_check(s, body + i, gap_max, b + i, err);
+    /* the checked bodies: as given, unless a quaternion is to be normalised (then all
+     * copied, that one normalised: rs_body_check_pose) */
+    int rc = RS_OK, unit = 1;
+    for (int i = 0; i < n && rc == RS_OK; i++) { /* a run of one shape: its checks once */
+        if (!(i > 0 && body[i].shape && body[i].shape == body[i - 1].shape))
+            rc = rs_body_check_shape(s, body + i, gap_max, err);
+        double nq;
+        if (rc == RS_OK && (rc = rs_body_check_norm(body + i, &nq, err)) == RS_OK)
+            unit &= !(fabs(nq - 1.0) > 1e-12);
+    }
+    for (int i = 0; i < n && rc == RS_OK && !unit; i++)
+        rc = rs_body_check_pose(body + i, bc + i, err);
+    const rs_body *b = unit ? body : bc;
     if (rc == RS_OK && !s->ops->body)
         rc = rs_error_set(err, RS_ERR_ARG, "body query: surface '%s' (%s) takes no bodies",
                           s->name, s->ops->name);
@@ -648,9 +656,13 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
              * an id (a polyhedron's vertices i and i + 30: the deeper), at most
              * RS_MANIFOLD_MAX: the next in that order picked from those left, so that
              * only the kept and the skipped are ordered */
-            unsigned char taken[CAND_MAX] = {0};
+            unsigned char taken[CAND_MAX];
             int nk = 0, kept[RS_MANIFOLD_MAX];
-            for (int round = 0; round < count && nk < RS_MANIFOLD_MAX; round++) {
+            if (count == 1)
+                kept[nk++] = 0;
+            else
+                memset(taken, 0, sizeof taken);
+            for (int round = 0; count > 1 && round < count && nk < RS_MANIFOLD_MAX; round++) {
                 int next = -1;
                 for (int k = 0; k < count; k++)
                     if (!taken[k] && (next < 0 || by_depth(keep + k, keep + next) < 0))

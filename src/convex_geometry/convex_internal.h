@@ -43,13 +43,31 @@ static inline double rs_shape_core_radius(const rs_shape *s)
 /// rs_body_check's checks of b's pose alone (its shape and the gap checked before, as
 /// for a body of the same shape): into *checked, its quaternion normalised.
 int rs_body_check_pose(const rs_body *b, rs_body *checked, rs_error *err);
+/// rs_body_check's checks but those of the pose (rs_body_check_norm).
+int rs_body_check_shape(const rs_surface *s, const rs_body *b, double gap_max,
+                        rs_error *err);
+/// rs_body_check_pose's checks without the copy: *nq, the quaternion's norm (b is used as
+/// it is where |nq - 1| <= 1e-12, else normalised).
+int rs_body_check_norm(const rs_body *b, double *nq, rs_error *err);
 /// A body's reach about its centre: the farthest corner of its bounding box.
 static inline double rs_body_reach(const rs_body *b)
 {
     return b->shape->reach;
 }
+/// Doubles l's room (at least 16), moving a borrowed array to the heap; RS_ERR_NOMEM.
+int rs_body_contacts_grow(rs_body_contacts *l, rs_error *err);
 /// Appends o to l; RS_ERR_NOMEM when it cannot grow.
-int rs_body_contacts_push(rs_body_contacts *l, const rs_body_contact *o, rs_error *err);
+static inline int rs_body_contacts_push(rs_body_contacts *l, const rs_body_contact *o,
+                                        rs_error *err)
+{
+    if (l->n == l->cap) {
+        const int rc = rs_body_contacts_grow(l, err);
+        if (rc)
+            return rc;
+    }
+    l->c[l->n++] = *o;
+    return RS_OK;
+}
 /// The contacts of n slaves with surface s, into c (emptied first): points (radius NULL)
 /// or spheres at (x, y, z) with a gap of at most gap_max whose centres lie at most
 /// depth_max behind the surface (a body's points are sought no deeper than twice its
