@@ -105,7 +105,8 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
  * along d (a_k > 0 on its + sides) is the lowest and each other one lies higher by at
  * least 2 dn min |a_k|: when that clears the lowest corner's height past clear by far
  * more than rounding, the lowest is the only one. A cylinder's and a cone's points are
- * made only where their height about is within far more than rounding of clear. */
+ * made only where their height about is within far more than rounding of clear; a
+ * capsule's ends are measured by d_z z. */
 static int low_points(const rs_shape *s, const double d[3], double dn, double nx, double rr,
                       double nxs, double clear, cand *c, int cap)
 {
@@ -158,6 +159,20 @@ static int low_points(const rs_shape *s, const double d[3], double dn, double nx
             rim_point(s, c0, s0, j, c + n);
             if (!(-dn * rs_dot3(d, c[n].p) + nx - rr - nxs > clear))
                 n++;
+        }
+        return n;
+    }
+    if (s->kind == RS_SHAPE_CAPSULE && cap >= 2) {
+        /* its ends' d.p = d_z z (the dot product's other terms are zeros, which change
+         * no comparison) */
+        int n = 0;
+        for (int e = 0; e < 2; e++) {
+            const double z = e ? -s->dim[1] : s->dim[1];
+            if (-dn * (d[2] * z) + nx - rr - nxs > clear)
+                continue;
+            c[n].p[0] = c[n].p[1] = 0.0;
+            c[n].p[2] = z;
+            c[n++].id = 1 + e;
         }
         return n;
     }
@@ -427,9 +442,9 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
         return RS_OK;
     /* each body's features in a list of its own, on a shared array while they fit */
     enum { FEATURES = 4 };
-    /* in one block: each body's features, checked body, reach and list */
+    /* in one block: each body's features, checked body, reach, window and list */
     const size_t bytes = (size_t)n * (FEATURES * sizeof(rs_body_contact) + sizeof(rs_body) +
-                                      sizeof(double) + sizeof(rs_body_contacts));
+                                      2 * sizeof(double) + sizeof(rs_body_contacts));
     if (bytes > w->bytes) {
         free(w->mem);
         w->bytes = 0;
@@ -440,8 +455,8 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
     }
     rs_body_contact *pool = w->mem;
     rs_body *bc = (rs_body *)(pool + (size_t)n * FEATURES);
-    double *rch = (double *)(bc + n);
-    rs_body_contacts *fl = (rs_body_contacts *)(rch + n);
+    double *rch = (double *)(bc + n), *win = rch + n;
+    rs_body_contacts *fl = (rs_body_contacts *)(win + n);
     for (int i = 0; i < n; i++) {
         const rs_body_contacts l = {0, FEATURES, pool + (size_t)i * FEATURES, 1};
         fl[i] = l;
@@ -493,7 +508,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
     w->q = cq.q, w->x = cq.x, w->cap = cq.cap;
     double gap = 0.0; /* the widest window of the bodies (window) */
     for (int i = 0; i < n && rc == RS_OK; i++) { /* (checked bodies only) */
-        const double g = window(rch[i] = rs_body_reach(b + i), gap_max);
+        const double g = win[i] = window(rch[i] = rs_body_reach(b + i), gap_max);
         gap = g > gap ? g : gap;
     }
     for (int i = 0; i < n && rc == RS_OK; i++) {
@@ -511,7 +526,6 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
             memcpy(R, rot + 9 * i, sizeof R);
         else
             rs_body_rotation(b + i, R);
-        const double win = window(reach, gap_max);
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
             const rs_body_contact *o = &fl[i].c[f];
             double d[3];
@@ -576,7 +590,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                 /* the kind's closed form where it has one, else the query */
                 const int known = s->ops->feature_point &&
                                   s->ops->feature_point(s, pose, RS_FEATURE_BASE(o->feature),
-                                                        cl, rr + lift, win, win, &q->dist,
+                                                        cl, rr + lift, win[i], win[i], &q->dist,
                                                         q->xm, q->n);
                 q->ball = -1;
                 if (!known)
@@ -610,7 +624,6 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
     for (int i = 0, a = 0; i < n && rc == RS_OK; i++) {
         const int k0 = c->n;
         const double rr = rs_shape_core_radius(b[i].shape), reach = rch[i];
-        const double win = window(reach, gap_max);
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
             const rs_body_contact *o = &fl[i].c[f];
             mpoint m[CAND_MAX];
@@ -627,8 +640,8 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                 int j = -1;
                 if (q->ball >= 0) {
                     j = rs_contacts_pick(&pc, off[q->ball], off[q->ball + 1],
-                                         RS_FEATURE_BASE(o->feature), -win,
-                                         win + cq.x[3 * cq.cap + q->ball]);
+                                         RS_FEATURE_BASE(o->feature), -win[i],
+                                         win[i] + cq.x[3 * cq.cap + q->ball]);
                     if (j < 0 || !same_wall(&pc, j, o, reach))
                         continue;
                     dist = pc.dist[j];
