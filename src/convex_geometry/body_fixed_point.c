@@ -58,7 +58,8 @@ static int step(fixed *f, const rs_body_contact *c)
     memcpy(f->nrm, c->normal, sizeof f->nrm);
     f->it++;
     if (f->conv) {
-        f->got = *c;
+        if (c != &f->got) /* (the kind's answer is made there) */
+            f->got = *c;
         f->got.iterations = f->it;
     }
     return !f->conv && f->it < BODY_ITER_MAX;
@@ -188,10 +189,10 @@ int rs_body_fixed_point_run(const rs_surface *s, const rs_pose *pose, const rs_b
         int still = 0, nask = 0;
         for (int a = 0; a < nact; a++) {
             fixed *f = fx + live[a];
-            rs_body_contact c;
-            if (face && face(ctx, f->want, f->p, win[f->body], &c)) {
-                memcpy(c.xs, f->p, sizeof c.xs);
-                if (step(f, &c))
+            rs_body_contact *c = &f->got; /* kept where it settles (step) */
+            if (face && face(ctx, f->want, f->p, win[f->body], c)) {
+                memcpy(c->xs, f->p, sizeof c->xs);
+                if (step(f, c))
                     live[still++] = live[a];
             } else
                 live[nact + nask++] = live[a]; /* live has room for 2 nf */
