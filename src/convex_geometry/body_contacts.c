@@ -31,30 +31,21 @@ int rs_body_check_shape(const rs_surface *s, const rs_body *b, double gap_max, r
     return RS_OK;
 }
 
-int rs_body_check_norm(const rs_body *b, double *nq, rs_error *err)
+int rs_body_pose_error(const rs_body *b, double nq, rs_error *err)
 {
     const double *q = b->q;
-    *nq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    /* the position and the norm at once (a unit norm has finite parts); what failed, in
-     * this order, below */
-    if (!(fabs(b->x[0]) <= RS_CONVEX_COORD_MAX && fabs(b->x[1]) <= RS_CONVEX_COORD_MAX &&
-          fabs(b->x[2]) <= RS_CONVEX_COORD_MAX && fabs(*nq - 1.0) <= 1e-6)) {
-        for (int k = 0; k < 3; k++)
-            if (!(fabs(b->x[k]) <= RS_CONVEX_COORD_MAX))
-                return rs_error_set(err, RS_ERR_ARG, "body contacts: body position %g",
-                                    b->x[k]);
-        if (!isfinite(q[0]) || !isfinite(q[1]) || !isfinite(q[2]) || !isfinite(q[3]))
-            return rs_error_set(
-                err, RS_ERR_ARG,
-                "body contacts: body quaternion (w, x, y, z) = (%g, %g, %g, %g) "
-                "(expected finite values)",
-                q[0], q[1], q[2], q[3]);
+    for (int k = 0; k < 3; k++)
+        if (!(fabs(b->x[k]) <= RS_CONVEX_COORD_MAX))
+            return rs_error_set(err, RS_ERR_ARG, "body contacts: body position %g", b->x[k]);
+    if (!isfinite(q[0]) || !isfinite(q[1]) || !isfinite(q[2]) || !isfinite(q[3]))
         return rs_error_set(err, RS_ERR_ARG,
-                            "body contacts: body quaternion (w, x, y, z) has norm %.17g "
-                            "(expected a unit quaternion to 1e-6)",
-                            *nq);
-    }
-    return RS_OK;
+                            "body contacts: body quaternion (w, x, y, z) = (%g, %g, %g, %g) "
+                            "(expected finite values)",
+                            q[0], q[1], q[2], q[3]);
+    return rs_error_set(err, RS_ERR_ARG,
+                        "body contacts: body quaternion (w, x, y, z) has norm %.17g "
+                        "(expected a unit quaternion to 1e-6)",
+                        nq);
 }
 
 int rs_body_check_pose(const rs_body *b, rs_body *checked, rs_error *err)

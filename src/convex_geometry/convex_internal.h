@@ -6,6 +6,8 @@
 
 #include "rigidsurf/convex.h"
 
+#include <math.h>
+
 /// RS_ERR_ARG unless s is a shape an rs_shape_make_* call made (kind, dimensions,
 /// rounding, a polyhedron's hull, a user shape's support).
 int rs_shape_check(const rs_shape *s, rs_error *err);
@@ -46,9 +48,21 @@ int rs_body_check_pose(const rs_body *b, rs_body *checked, rs_error *err);
 /// rs_body_check's checks but those of the pose (rs_body_check_norm).
 int rs_body_check_shape(const rs_surface *s, const rs_body *b, double gap_max,
                         rs_error *err);
+/// What is wrong with b's pose, whose quaternion has norm nq, as rs_body_check_norm says
+/// it (RS_ERR_ARG).
+int rs_body_pose_error(const rs_body *b, double nq, rs_error *err);
 /// rs_body_check_pose's checks without the copy: *nq, the quaternion's norm (b is used as
 /// it is where |nq - 1| <= 1e-12, else normalised).
-int rs_body_check_norm(const rs_body *b, double *nq, rs_error *err);
+static inline int rs_body_check_norm(const rs_body *b, double *nq, rs_error *err)
+{
+    const double *q = b->q;
+    *nq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    /* the position and the norm at once (a unit norm has finite parts) */
+    if (fabs(b->x[0]) <= RS_CONVEX_COORD_MAX && fabs(b->x[1]) <= RS_CONVEX_COORD_MAX &&
+        fabs(b->x[2]) <= RS_CONVEX_COORD_MAX && fabs(*nq - 1.0) <= 1e-6)
+        return RS_OK;
+    return rs_body_pose_error(b, *nq, err);
+}
 /// A body's reach about its centre: the farthest corner of its bounding box.
 static inline double rs_body_reach(const rs_body *b)
 {
