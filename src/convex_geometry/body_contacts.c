@@ -15,7 +15,8 @@ int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_body
     return rc ? rc : rs_body_check_pose(b, checked, err);
 }
 
-int rs_body_check_shape(const rs_surface *s, const rs_body *b, double gap_max, rs_error *err)
+int rs_body_check_shape(const rs_surface *s, const rs_body *b, double gap_max,
+                        rs_error *err)
 {
     if (!s || !s->ops || !b || !b->shape)
         return rs_error_set(err, RS_ERR_ARG,
@@ -36,12 +37,14 @@ int rs_body_pose_error(const rs_body *b, double nq, rs_error *err)
     const double *q = b->q;
     for (int k = 0; k < 3; k++)
         if (!(fabs(b->x[k]) <= RS_CONVEX_COORD_MAX))
-            return rs_error_set(err, RS_ERR_ARG, "body contacts: body position %g", b->x[k]);
+            return rs_error_set(err, RS_ERR_ARG, "body contacts: body position %g",
+                                b->x[k]);
     if (!isfinite(q[0]) || !isfinite(q[1]) || !isfinite(q[2]) || !isfinite(q[3]))
-        return rs_error_set(err, RS_ERR_ARG,
-                            "body contacts: body quaternion (w, x, y, z) = (%g, %g, %g, %g) "
-                            "(expected finite values)",
-                            q[0], q[1], q[2], q[3]);
+        return rs_error_set(
+            err, RS_ERR_ARG,
+            "body contacts: body quaternion (w, x, y, z) = (%g, %g, %g, %g) "
+            "(expected finite values)",
+            q[0], q[1], q[2], q[3]);
     return rs_error_set(err, RS_ERR_ARG,
                         "body contacts: body quaternion (w, x, y, z) has norm %.17g "
                         "(expected a unit quaternion to 1e-6)",
@@ -66,8 +69,8 @@ int rs_body_contacts_grow(rs_body_contacts *l, rs_error *err)
     const int cap = l->cap ? 2 * l->cap : 16;
     rs_body_contact *nc = realloc(l->borrowed ? NULL : l->c, (size_t)cap * sizeof *nc);
     if (!nc)
-        return rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory for %d contacts",
-                            cap);
+        return rs_error_set(err, RS_ERR_NOMEM,
+                            "body contacts: out of memory for %d contacts", cap);
     if (l->borrowed)
         memcpy(nc, l->c, (size_t)l->n * sizeof *nc);
     l->c = nc;

@@ -222,12 +222,13 @@ static double window(double reach, double gap_max)
 /* A core point's query: its body, the feature (index into the body's list) and id, its
  * ball's place among the balls asked of the kind's query (-1 where the kind answers it in
  * closed form, rs_surface_ops.feature_point: that answer in dist, xm, n), its point in the
- * world and the lift of its ball. A body's core points are listed feature by feature, each
- * feature's in the order made, asked and answered alike. */
+ * world and the lift of its ball; with framed, the frame t1, t2 of the closed form (else
+ * the frame follows from n, as on a MESH: zeros). A body's core points are listed feature
+ * by feature, each feature's in the order made, asked and answered alike. */
 typedef struct corner {
-    int body, f, id, ball;
+    int body, f, id, ball, framed;
     double cw[3], lift;
-    double dist, xm[3], n[3];
+    double dist, xm[3], n[3], t1[3], t2[3];
 } corner;
 
 typedef struct corners {
@@ -258,7 +259,8 @@ static int corners_room(corners *a, int cap)
     return 0;
 }
 
-/* The ball of core point q (the last of a's list) asked of the query: centre cl, radius r. */
+/* The ball of core point q (the last of a's list) asked of the query: centre cl, radius r.
+ */
 static void corners_ball(corners *a, corner *q, const double cl[3], double r)
 {
     const int j = q->ball = a->nball++;
@@ -281,9 +283,9 @@ static int by_depth(const mpoint *a, const mpoint *b)
 }
 
 /* Appends manifold point m of pair o (feature, its deepest point) to c, read from where
- * it stands: the query's contacts pc, a core point's closed form (its tangents and
- * curvatures zero: the kind's frame convention sets them), or o; a core point's witness
- * is its ball's foot on the body, cw - rr n. */
+ * it stands: the query's contacts pc, a core point's closed form (flat: curvatures zero;
+ * its frame, or zeros where the kind's frame convention sets it), or o; a core point's
+ * witness is its ball's foot on the body, cw - rr n. */
 static int append(rs_contacts *c, int point, double radius, const rs_body_contact *o,
                   const mpoint *m, const rs_contacts *pc, double rr, rs_error *err)
 {
@@ -311,7 +313,8 @@ static int append(rs_contacts *c, int point, double radius, const rs_body_contac
         cv[0] = pc->curv[0][j], cv[1] = pc->curv[1][j];
     } else {
         for (int d = 0; d < 3; d++) {
-            xm[d] = q->xm[d], nw[d] = q->n[d], t1[d] = t2[d] = 0.0;
+            xm[d] = q->xm[d], nw[d] = q->n[d];
+            t1[d] = q->framed ? q->t1[d] : 0.0, t2[d] = q->framed ? q->t2[d] : 0.0;
             xs[d] = q->cw[d] - rr * nw[d];
         }
         cv[0] = cv[1] = 0.0;
@@ -587,11 +590,18 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                 const double cl[3] = {q->cw[0] + lift * o->normal[0],
                                       q->cw[1] + lift * o->normal[1],
                                       q->cw[2] + lift * o->normal[2]};
-                /* the kind's closed form where it has one, else the query */
-                const int known = s->ops->feature_point &&
-                                  s->ops->feature_point(s, pose, RS_FEATURE_BASE(o->feature),
-                                                        cl, rr + lift, win[i], win[i], &q->dist,
-                                                        q->xm, q->n);
+                /* the kind's closed form where it has one and it pays, else the block's
+                 * query: on a MESH, whose point query is dear, for every core point; on
+                 * the other kinds, whose query of a block is cheaper a point than the
+                 * closed form, for a polyhedron's cap vertices, whose answers let the
+                 * manifold stop after the first few; the frame kept where it does not
+                 * follow from n (not on a MESH) */
+                q->framed = !mesh;
+                const int known =
+                    (mesh || poly) && s->ops->feature_point &&
+                    s->ops->feature_point(s, pose, RS_FEATURE_BASE(o->feature), cl,
+                                          rr + lift, win[i], win[i], &q->dist, q->xm, q->n,
+                                          mesh ? NULL : q->t1, mesh ? NULL : q->t2);
                 q->ball = -1;
                 if (!known)
                     corners_ball(&cq, q, cl, rr + lift);
@@ -675,7 +685,8 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                 kept[nk++] = 0;
             else
                 memset(taken, 0, sizeof taken);
-            for (int round = 0; count > 1 && round < count && nk < RS_MANIFOLD_MAX; round++) {
+            for (int round = 0; count > 1 && round < count && nk < RS_MANIFOLD_MAX;
+                 round++) {
                 int next = -1;
                 for (int k = 0; k < count; k++)
                     if (!taken[k] && (next < 0 || by_depth(keep + k, keep + next) < 0))

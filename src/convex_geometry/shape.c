@@ -346,7 +346,8 @@ void rs_shape_support(const rs_shape *s, const double dir[3], double out[3])
             break;
         case RS_SHAPE_ELLIPSOID: { /* rs_shape_core_support's, d's norm being n */
             const double u[3] = {d[0] / n, d[1] / n, d[2] / n};
-            const double e[3] = {h[0] * h[0] * u[0], h[1] * h[1] * u[1], h[2] * h[2] * u[2]};
+            const double e[3] = {h[0] * h[0] * u[0], h[1] * h[1] * u[1],
+                                 h[2] * h[2] * u[2]};
             const double k = 1.0 / sqrt(rs_dot3(e, u));
             for (int i = 0; i < 3; i++)
                 out[i] = k * e[i];
