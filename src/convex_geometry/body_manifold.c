@@ -404,6 +404,14 @@ static int settled(const known_points *kp, const rs_body_contact *o, double dn,
     return nid >= RS_MANIFOLD_MAX;
 }
 
+/* A feature f of s beyond the manifold's ids (RS_MANIFOLD_STRIDE). */
+static int beyond_ids(const rs_surface *s, int f, rs_error *err)
+{
+    return rs_error_set(err, RS_ERR_CAPACITY,
+                        "body query: feature %d of '%s' is beyond the manifold's ids (%d)",
+                        f, s->name, RS_MANIFOLD_STRIDE);
+}
+
 void rs_body_work_free(rs_body_work *w)
 {
     rs_contacts_free(&w->pc);
@@ -516,21 +524,24 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
     }
     for (int i = 0; i < n && rc == RS_OK; i++) {
         const double rr = rs_shape_core_radius(b[i].shape), reach = rch[i];
-        for (int f = 0; f < fl[i].n && rc == RS_OK; f++)
+        /* every feature within the manifold's ids (a body with core points: below, before
+         * its core points are asked) */
+        const int core = core_points_of(b[i].shape);
+        for (int f = 0; !core && f < fl[i].n && rc == RS_OK; f++)
             if (fl[i].c[f].feature >= RS_MANIFOLD_STRIDE)
-                rc = rs_error_set(err, RS_ERR_CAPACITY,
-                                  "body query: feature %d of '%s' is beyond the manifold's "
-                                  "ids (%d)",
-                                  fl[i].c[f].feature, s->name, RS_MANIFOLD_STRIDE);
-        if (rc != RS_OK || !core_points_of(b[i].shape))
+                rc = beyond_ids(s, fl[i].c[f].feature, err);
+        if (rc != RS_OK || !core)
             continue; /* a smooth body: its deepest point only */
-        double R[9];
-        if (rot)
-            memcpy(R, rot + 9 * i, sizeof R);
-        else
-            rs_body_rotation(b + i, R);
+        double Ri[9];
+        if (!rot)
+            rs_body_rotation(b + i, Ri);
+        const double *const R = rot ? rot + 9 * i : Ri;
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
             const rs_body_contact *o = &fl[i].c[f];
+            if (o->feature >= RS_MANIFOLD_STRIDE) {
+                rc = beyond_ids(s, o->feature, err);
+                break;
+            }
             double d[3];
             for (int k = 0; k < 3; k++)
                 d[k] = -(R[k] * o->normal[0] + R[3 + k] * o->normal[1] +
