@@ -14,7 +14,7 @@
 #include "rigidsurf/surface.h"
 #define RS_TEST_SEED 0x6A09E667F3BCC909ull
 #include "rs_test.h"
-#include "test_shapes.h"
+#include "test_bodies.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -279,11 +279,6 @@ static void test_body_operation_is_the_fixed_point_over_the_query(void)
     ENSURE(contacts > 5000);
 }
 
-static int same_bits(double a, double b)
-{
-    return memcmp(&a, &b, sizeof a) == 0;
-}
-
 /* Points near each profile, with and without a pose: wherever the kind's closed form of a
  * point on a flat face (rs_surface_ops.feature_point) answers for a face, the point query
  * gives that face exactly one contact, flat, with the same numbers and frame; a random
@@ -345,13 +340,15 @@ static void test_feature_point_is_the_point_query(void)
                         if (RS_FEATURE_BASE(c.feature[m]) == f)
                             hits++, at = m;
                     ENSURE(hits == 1);
-                    ENSURE(same_bits(dist, c.dist[at]) && same_bits(d2, dist));
+                    ENSURE(test_same_bits(dist, c.dist[at]) && test_same_bits(d2, dist));
                     ENSURE(c.curv[0][at] == 0.0 && c.curv[1][at] == 0.0);
                     for (int d = 0; d < 3; d++) {
-                        ENSURE(same_bits(xm[d], c.xm[d][at]) && same_bits(xm2[d], xm[d]));
-                        ENSURE(same_bits(n[d], c.nrm[d][at]) && same_bits(n2[d], n[d]));
-                        ENSURE(same_bits(t1[d], c.t1[d][at]));
-                        ENSURE(same_bits(t2[d], c.t2[d][at]));
+                        ENSURE(test_same_bits(xm[d], c.xm[d][at]) &&
+                               test_same_bits(xm2[d], xm[d]));
+                        ENSURE(test_same_bits(n[d], c.nrm[d][at]) &&
+                               test_same_bits(n2[d], n[d]));
+                        ENSURE(test_same_bits(t1[d], c.t1[d][at]));
+                        ENSURE(test_same_bits(t2[d], c.t2[d][at]));
                     }
                 }
                 rs_contacts_free(&c);
@@ -417,21 +414,7 @@ static void test_hull_manifold_is_the_general_paths(void)
                 rs_error_clear(&e);
                 ENSURE(rs_surface_query(&s, &q, &ca, &e) == RS_OK);
                 ENSURE(rs_surface_query(&g, &q, &cb, &e) == RS_OK);
-                ENSURE(ca.n == cb.n);
-                for (int j = 0; j < ca.n && j < cb.n; j++) {
-                    ENSURE(ca.point[j] == cb.point[j] && ca.feature[j] == cb.feature[j]);
-                    ENSURE(same_bits(ca.dist[j], cb.dist[j]));
-                    ENSURE(same_bits(ca.share[j], cb.share[j]));
-                    for (int d = 0; d < 3; d++) {
-                        ENSURE(same_bits(ca.nrm[d][j], cb.nrm[d][j]));
-                        ENSURE(same_bits(ca.xm[d][j], cb.xm[d][j]));
-                        ENSURE(same_bits(ca.xs[d][j], cb.xs[d][j]));
-                        ENSURE(same_bits(ca.t1[d][j], cb.t1[d][j]));
-                        ENSURE(same_bits(ca.t2[d][j], cb.t2[d][j]));
-                    }
-                    ENSURE(same_bits(ca.curv[0][j], cb.curv[0][j]));
-                    ENSURE(same_bits(ca.curv[1][j], cb.curv[1][j]));
-                }
+                test_same_contacts(&ca, &cb);
                 contacts += ca.n;
                 rs_contacts_free(&ca), rs_contacts_free(&cb);
                 rs_shape_free(&shape);

@@ -12,7 +12,7 @@
 #include "rigidsurf/vec.h"
 #define RS_TEST_SEED 0xBB67AE8584CAA73Bull
 #include "rs_test.h"
-#include "test_shapes.h"
+#include "test_bodies.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -97,11 +97,6 @@ static void moved_pose(rs_pose *p)
     p->T[0] = 0.001, p->T[1] = -0.0005, p->T[2] = 0.002;
 }
 
-static int same_bits(double a, double b)
-{
-    return memcmp(&a, &b, sizeof a) == 0;
-}
-
 /* Points near each mesh, with and without a pose: wherever feature_point answers for a
  * face, the point query gives that face exactly one contact, with the same numbers; a
  * random face it answers for is among the query's. */
@@ -152,10 +147,10 @@ static void test_feature_point_is_the_point_query(void)
                         if (RS_FEATURE_BASE(c.feature[m]) == f)
                             hits++, at = m;
                     ENSURE(hits == 1);
-                    ENSURE(same_bits(dist, c.dist[at]));
+                    ENSURE(test_same_bits(dist, c.dist[at]));
                     for (int d = 0; d < 3; d++) {
-                        ENSURE(same_bits(xm[d], c.xm[d][at]));
-                        ENSURE(same_bits(n[d], c.nrm[d][at]));
+                        ENSURE(test_same_bits(xm[d], c.xm[d][at]));
+                        ENSURE(test_same_bits(n[d], c.nrm[d][at]));
                         ENSURE(t1[d] == 0.0 && t2[d] == 0.0); /* the frame follows n */
                     }
                 }
@@ -218,21 +213,7 @@ static void test_manifold_is_the_general_paths(void)
                 rs_error_clear(&e);
                 ENSURE(rs_surface_query(&s, &q, &ca, &e) == RS_OK);
                 ENSURE(rs_surface_query(&g, &q, &cb, &e) == RS_OK);
-                ENSURE(ca.n == cb.n);
-                for (int j = 0; j < ca.n; j++) {
-                    ENSURE(ca.point[j] == cb.point[j] && ca.feature[j] == cb.feature[j]);
-                    ENSURE(same_bits(ca.dist[j], cb.dist[j]));
-                    ENSURE(same_bits(ca.share[j], cb.share[j]));
-                    for (int d = 0; d < 3; d++) {
-                        ENSURE(same_bits(ca.nrm[d][j], cb.nrm[d][j]));
-                        ENSURE(same_bits(ca.xm[d][j], cb.xm[d][j]));
-                        ENSURE(same_bits(ca.xs[d][j], cb.xs[d][j]));
-                        ENSURE(same_bits(ca.t1[d][j], cb.t1[d][j]));
-                        ENSURE(same_bits(ca.t2[d][j], cb.t2[d][j]));
-                    }
-                    ENSURE(same_bits(ca.curv[0][j], cb.curv[0][j]));
-                    ENSURE(same_bits(ca.curv[1][j], cb.curv[1][j]));
-                }
+                test_same_contacts(&ca, &cb);
                 contacts += ca.n;
                 rs_contacts_free(&ca), rs_contacts_free(&cb);
                 rs_shape_free(&shape);

@@ -1,8 +1,9 @@
-/* The unit tests' bodies of every kind: the seven built-in shapes and two hulls of points
+/* The unit tests' bodies of every kind (the seven built-in shapes and two hulls of points
  * on an ellipsoid, one scanned for its support (64 points) and one climbed (1500), from
- * the test's random stream (rs_test.h). */
-#ifndef RS_TEST_SHAPES_H
-#define RS_TEST_SHAPES_H
+ * the test's random stream, rs_test.h) and the check that two paths give a block of them
+ * the same contacts, bit for bit. */
+#ifndef RS_TEST_BODIES_H
+#define RS_TEST_BODIES_H
 
 #include "rigidsurf/convex.h"
 #include "rigidsurf/vec.h"
@@ -10,6 +11,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 enum { TEST_NSHAPE = 9, TEST_HULL64 = 7, TEST_HULL1500 = 8 };
 
@@ -46,6 +48,31 @@ static inline int test_make_shape(int k, rs_shape *s)
         free(xyz);
         return rc;
     }
+    }
+}
+
+static inline int test_same_bits(double a, double b)
+{
+    return memcmp(&a, &b, sizeof a) == 0;
+}
+
+/* Two contact lists alike in every field, bit for bit. */
+static inline void test_same_contacts(const rs_contacts *ca, const rs_contacts *cb)
+{
+    ENSURE(ca->n == cb->n);
+    for (int j = 0; j < ca->n && j < cb->n; j++) {
+        ENSURE(ca->point[j] == cb->point[j] && ca->feature[j] == cb->feature[j]);
+        ENSURE(test_same_bits(ca->dist[j], cb->dist[j]));
+        ENSURE(test_same_bits(ca->share[j], cb->share[j]));
+        for (int d = 0; d < 3; d++) {
+            ENSURE(test_same_bits(ca->nrm[d][j], cb->nrm[d][j]));
+            ENSURE(test_same_bits(ca->xm[d][j], cb->xm[d][j]));
+            ENSURE(test_same_bits(ca->xs[d][j], cb->xs[d][j]));
+            ENSURE(test_same_bits(ca->t1[d][j], cb->t1[d][j]));
+            ENSURE(test_same_bits(ca->t2[d][j], cb->t2[d][j]));
+        }
+        ENSURE(test_same_bits(ca->curv[0][j], cb->curv[0][j]));
+        ENSURE(test_same_bits(ca->curv[1][j], cb->curv[1][j]));
     }
 }
 
