@@ -209,8 +209,14 @@ struct ModelCall {
         const double r =
             (xi[0] - xm[0]) * n[0] + (xi[1] - xm[1]) * n[1] + (xi[2] - xm[2]) * n[2];
         const double rsq = r * r;
-        const double rad = jkr ? R + m.pulloff_distance(R) : R;
-        if (rsq > rad * rad || (jkr && h[0] == 0.0 && rsq > R * R)) {
+        /* what a known model cannot be: JKR is a granular model's, a kept effective radius
+         * a curved model's */
+        const bool pull = (STYLE < 0 || STYLE == FixWallGran::GRANULAR) && jkr;
+        const bool kept = (STYLE < 0 || STYLE == FixWallGran::HERTZ_HISTORY ||
+                           STYLE == FixWallGran::GRANULAR) &&
+                          keep;
+        const double rad = pull ? R + m.pulloff_distance(R) : R;
+        if (rsq > rad * rad || (pull && h[0] == 0.0 && rsq > R * R)) {
             for (int k = 0; k < ns; k++)
                 h[k] = 0.0;
             return 0;
@@ -222,7 +228,7 @@ struct ModelCall {
          * the contact lasts, as a sphere slides from a mantle onto a fillet, would make
          * the normal force do net work. */
         double rwall = 0.0;
-        if (keep) {
+        if (kept) {
             double &reff = h[ns - 1];
             if (reff == 0.0) {
                 reff = R;
@@ -248,12 +254,12 @@ struct ModelCall {
     {
         double vw[3] = {ru.vwall0[0], ru.vwall0[1], ru.vwall0[2]};
         const bool vcol = ru.vwall[0] != nullptr;
-        for (int j = 0; j < ru.n; j++) {
+        double *h = ru.history; /* contact j's: NULL without state variables */
+        for (int j = 0; j < ru.n; j++, h += ns) {
             const double n[3] = {ru.nrm[0][j], ru.nrm[1][j], ru.nrm[2][j]};
             const double xm[3] = {ru.xm[0][j], ru.xm[1][j], ru.xm[2][j]};
             if (vcol)
                 vw[0] = ru.vwall[0][j], vw[1] = ru.vwall[1][j], vw[2] = ru.vwall[2][j];
-            double *h = ns ? ru.history + (size_t)j * (size_t)ns : nullptr;
             ru.acts[j] =
                 one<STYLE>(ru.row[j], ru.radius[j], ru.mass[j], n, xm, ru.curv[0][j],
                            ru.curv[1][j], NAN, vw, h, ru.F + 3 * j, ru.T + 3 * j);

@@ -259,14 +259,32 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
         rs_wall_acc_take(&fm, F + 3 * j, Mo);
     }
     const rs_load_rows lr = *rows;
-    for (int j = 0; j < m; j++)
-        rs_load_onto_row(&lr, lr.row ? lr.row[j] : j, F + 3 * j, T + 3 * j);
+    /* the engine's row of each contact: rows->row, or the run's own order */
+    int idn[RS_TRACK_LINE_RUN];
+    const int *rk = lr.row;
+    if (!rk) {
+        for (int j = 0; j < m; j++)
+            idn[j] = j;
+        rk = idn;
+    }
+    for (int j = 0; j < m; j++) {
+        double *fi = lr.f + 3 * (size_t)rk[j], *ti = lr.t + 3 * (size_t)rk[j];
+        const double *f = F + 3 * j, *t = T + 3 * j;
+        fi[0] += f[0], fi[1] += f[1], fi[2] += f[2];
+        ti[0] += t[0], ti[1] += t[1], ti[2] += t[2];
+    }
+    if (lr.fstore)
+        for (int j = 0; j < m; j++) {
+            double *si = lr.fstore + 3 * (size_t)rk[j];
+            const double *f = F + 3 * j;
+            si[0] += f[0], si[1] += f[1], si[2] += f[2];
+        }
     if (lr.deepest)
         for (int j = 0; j < m; j++)
             lr.deepest[j] = j;
     if (out6)
         for (int j = 0; j < m; j++) {
-            double *o = out6 + 6 * (size_t)(lr.row ? lr.row[j] : j);
+            double *o = out6 + 6 * (size_t)rk[j];
             o[0] = r.rd1[j], o[1] = r.s1[j], o[2] = r.s2[j];
             o[3] = fr.S[0][j], o[4] = fr.S[1][j], o[5] = fr.S[2][j];
         }

@@ -189,9 +189,10 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
          * face takes only centres in front of it (rs_line_face1), so a sphere behind it
          * goes to the rest, where behind none leaves it alone (keep_tracked). */
         int nu = 0;
+        const double wall_tracking = w->tracking, track_tracking = w->tracker.tracking;
         for (int j = 0; j < m; j++) {
-            const int still_usual = face[j] && c.dist[j] <= w->tracking + pr[j] &&
-                                    !(c.dist[j] - pr[j] > w->tracker.tracking) &&
+            const int still_usual = face[j] && c.dist[j] <= wall_tracking + pr[j] &&
+                                    !(c.dist[j] - pr[j] > track_tracking) &&
                                     usual[row[j]] == c.feature[j] + 1;
             if (!still_usual) {
                 rest[n - 1 - nheld++] = row[j];
