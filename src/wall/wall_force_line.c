@@ -34,11 +34,10 @@ int wall_force_line_takes(const rs_wall *w)
 }
 
 /* What a run holds until every contact's model is through: the forces and torques as
- * rows of 3 (rs_force_run.F, T), then, per contact, the moment about the wall's origin
- * and the stress in columns. */
+ * rows of 3 (rs_force_run.F, T), then the stresses in columns. */
 typedef struct force_run {
     double FT[2][3 * RS_TRACK_LINE_RUN];
-    double M[3][RS_TRACK_LINE_RUN], S[3][RS_TRACK_LINE_RUN];
+    double S[3][RS_TRACK_LINE_RUN];
     double vw[3][RS_TRACK_LINE_RUN];
     int acts[RS_TRACK_LINE_RUN];
     double hist[RS_TRACK_LINE_RUN * RS_FORCE_LINE_STATEV];
@@ -98,6 +97,33 @@ RS_INLINE void copy_statev(double *restrict h, double *const *slot, int sv, int 
         const double *restrict s = in ? slot[j] + sv : h + (size_t)j * ns;
         for (int k = 0; k < ns; k++)
             d[k] = s[k];
+    }
+}
+
+/* The frames (n, t1) of the run's contacts into their slots, and the tracker's entries'
+ * points and features: what run_store (track_run.h) does for a slot of the frame and the
+ * state variables (RS_DROP_SLIP) whose contact is held, as every contact of the run is,
+ * and whose directory entry already names its feature, so that nothing else changes. */
+static void store_frames(const rs_contacts *c, int m, rs_track_out *o)
+{
+    const double *n0 = c->nrm[0], *n1 = c->nrm[1], *n2 = c->nrm[2];
+    const double *a0 = c->t1[0], *a1 = c->t1[1], *a2 = c->t1[2];
+    double *const *slot = o->slot;
+    int j = 0;
+    for (; j + 4 <= m; j += 4) {
+        double *const *h = slot + j;
+        rs_transpose4(n0 + j, n1 + j, n2 + j, a0 + j, h[0], h[1], h[2], h[3]);
+        for (int l = 0; l < 4; l++)
+            h[l][RS_H_T1 + 1] = a1[j + l], h[l][RS_H_T1 + 2] = a2[j + l];
+    }
+    for (; j < m; j++) {
+        double *h = slot[j];
+        h[RS_H_N] = n0[j], h[RS_H_N + 1] = n1[j], h[RS_H_N + 2] = n2[j];
+        h[RS_H_T1] = a0[j], h[RS_H_T1 + 1] = a1[j], h[RS_H_T1 + 2] = a2[j];
+    }
+    for (j = 0; j < m; j++) {
+        o->point[j] = c->point[j];
+        o->feature[j] = c->feature[j];
     }
 }
 
@@ -171,10 +197,8 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
             r.rd1[j] = p->radius[j] - c->dist[j];
     }
     int ncontact = 0;
-    for (int j = 0; j < m; j++) {
-        r.live[j] = 1.0;
+    for (int j = 0; j < m; j++)
         ncontact += r.rd1[j] > 0.0;
-    }
 
     /* the model on the run, its state in the run's copy of the slots */
     force_run fr;
@@ -241,22 +265,19 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
 
     /* every value is finite: the slots, the loads and the sums */
     out->nleave = 0;
-    run_store(r.live, r.rd1, r.s1, r.s2, m, tr, c, 0, out, 0, 1, NULL, NULL);
+    store_frames(c, m, out);
     copy_statev(fr.hist, out->slot, sv, ns, m, 0);
     out->n = m;
-    /* each contact's moment about the wall's origin (rs_load_force_law, unit area), then
-     * the wall's sums in the contacts' order, and the loads onto the engine's rows */
+    /* the wall's sums in the contacts' order (each contact's moment about the wall's
+     * origin as rs_load_force_law gives it, unit area), then the loads onto the engine's
+     * rows */
     const double *const F = fr.FT[0], *const T = fr.FT[1];
+    rs_wall_acc fm = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     for (int j = 0; j < m; j++) {
         const double ctr[3] = {p->x[j], p->y[j], p->z[j]};
         double Fo[3], To[3], Mo[3];
         rs_load_force_law(1.0, F + 3 * j, T + 3 * j, ctr, origin, Fo, To, Mo);
-        fr.M[0][j] = Mo[0], fr.M[1][j] = Mo[1], fr.M[2][j] = Mo[2];
-    }
-    rs_wall_acc fm = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    for (int j = 0; j < m; j++) {
-        const double Mo[3] = {fr.M[0][j], fr.M[1][j], fr.M[2][j]};
-        rs_wall_acc_take(&fm, F + 3 * j, Mo);
+        rs_wall_acc_take(&fm, Fo, Mo);
     }
     const rs_load_rows lr = *rows;
     /* the engine's row of each contact: rows->row, or the run's own order */

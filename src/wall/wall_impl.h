@@ -332,6 +332,8 @@ static inline void wall_force_stress(const double F[3], const double n[3],
     s[1] = -(F[0] * t1[0] + F[1] * t1[1] + F[2] * t1[2]);
     s[2] = -(F[0] * t2[0] + F[1] * t2[1] + F[2] * t2[2]);
 }
+/// A run of spheres p, each holding the one contact of c that its directory entry names
+/// (the line path's usual spheres), through the force law's model.
 int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp, double dt,
                         const rs_particle_block *p, const rs_contacts *c,
                         const double origin[3], const rs_load_rows *rows, rs_wall_load *wl,
