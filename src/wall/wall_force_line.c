@@ -100,6 +100,22 @@ RS_INLINE void copy_statev(double *restrict h, double *const *slot, int sv, int 
     }
 }
 
+/* d[0..2] += s[0..2]: the first two as one pair (the same additions). */
+RS_INLINE void add3(double *restrict d, const double *restrict s)
+{
+#if defined(__GNUC__)
+    typedef double pair __attribute__((vector_size(16)));
+    pair a, b;
+    memcpy(&a, d, sizeof a);
+    memcpy(&b, s, sizeof b);
+    a += b;
+    memcpy(d, &a, sizeof a);
+#else
+    d[0] += s[0], d[1] += s[1];
+#endif
+    d[2] += s[2];
+}
+
 /* The frames (n, t1) of the run's contacts into their slots, and the tracker's entries'
  * points and features: what run_store (track_run.h) does for a slot of the frame and the
  * state variables (RS_DROP_SLIP) whose contact is held, as every contact of the run is,
@@ -204,7 +220,8 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
     force_run fr;
     const rs_law *law = w->law;
     copy_statev(fr.hist, out->slot, sv, ns, m, 1);
-    memset(fr.FT, 0, sizeof fr.FT);
+    memset(fr.FT[0], 0, 3 * (size_t)m * sizeof fr.FT[0][0]);
+    memset(fr.FT[1], 0, 3 * (size_t)m * sizeof fr.FT[1][0]);
     rs_force_run fx;
     fx.n = m;
     fx.row = p->row;
@@ -244,7 +261,7 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
     /* any NaN or Inf of the forces and torques, and of the stresses as
      * rs_wall_force_result gives them (wall_force_stress; zeros where the model acts not) */
     uint64_t acc = 0;
-    for (int k = 0; k < 3 * RS_TRACK_LINE_RUN; k++) /* past m: the zeros of the memset */
+    for (int k = 0; k < 3 * m; k++)
         acc |= rs_nonfinite_bit(fr.FT[0][k]) | rs_nonfinite_bit(fr.FT[1][k]);
     if (out6)
         for (int j = 0; j < m; j++) {
@@ -289,10 +306,8 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
         rk = idn;
     }
     for (int j = 0; j < m; j++) {
-        double *fi = lr.f + 3 * (size_t)rk[j], *ti = lr.t + 3 * (size_t)rk[j];
-        const double *f = F + 3 * j, *t = T + 3 * j;
-        fi[0] += f[0], fi[1] += f[1], fi[2] += f[2];
-        ti[0] += t[0], ti[1] += t[1], ti[2] += t[2];
+        add3(lr.f + 3 * (size_t)rk[j], F + 3 * j);
+        add3(lr.t + 3 * (size_t)rk[j], T + 3 * j);
     }
     if (lr.fstore)
         for (int j = 0; j < m; j++) {
