@@ -127,23 +127,25 @@ void rs_analytic_free(rs_surface *s)
     s->profile.vkind = NULL;
 }
 
-/* The analytic kinds search their profile at every query and have no facets: the
- * optional operations stay NULL. A convex body meets them through the fixed point over
- * their point query (src/convex_geometry/body_fixed_point.c), its iterates on an
- * extruded profile's flat faces in closed form (analytic_body.c). */
-#define ANALYTIC_OPS(kind, nd, conv, sx)                                                   \
+/* The analytic kinds search their profile at every query and have no facets: of the
+ * optional operations, only an extruded profile's closed form of a point on a flat face
+ * (feature_point, analytic_body.c). A convex body meets them through the fixed point over
+ * their point query (src/convex_geometry/body_fixed_point.c), its iterates on an extruded
+ * profile's flat faces in closed form (analytic_body.c). */
+#define ANALYTIC_OPS(kind, nd, conv, sx, fp)                                               \
     {                                                                                      \
         .name = kind, .ndir = nd, .frame = conv, .closest = rs_analytic_closest,           \
         .adjacent = analytic_adjacent, .bounds = analytic_bounds,                          \
         .spin_axis = analytic_spin_axis, .triangulate = rs_analytic_triangulate,           \
-        .free = rs_analytic_free, .syntax = sx, .body = rs_analytic_body                   \
+        .free = rs_analytic_free, .syntax = sx, .body = rs_analytic_body,                  \
+        .feature_point = fp                                                                \
     }
-static const rs_surface_ops segments_ops =
-    ANALYTIC_OPS("SEGMENTS", 2, RS_FRAME_TRAVEL, &rs_segments_syntax);
-static const rs_surface_ops cylinder_ops =
-    ANALYTIC_OPS("CYLINDER", 3, RS_FRAME_GENERATOR, &rs_cylinder_syntax);
+static const rs_surface_ops segments_ops = ANALYTIC_OPS(
+    "SEGMENTS", 2, RS_FRAME_TRAVEL, &rs_segments_syntax, rs_analytic_feature_point);
+static const rs_surface_ops cylinder_ops = ANALYTIC_OPS(
+    "CYLINDER", 3, RS_FRAME_GENERATOR, &rs_cylinder_syntax, rs_analytic_feature_point);
 static const rs_surface_ops revolution_ops =
-    ANALYTIC_OPS("REVOLUTION", 3, RS_FRAME_TRAVEL, &rs_revolution_syntax);
+    ANALYTIC_OPS("REVOLUTION", 3, RS_FRAME_TRAVEL, &rs_revolution_syntax, NULL);
 
 const rs_surface_ops *rs_analytic_ops(rs_surface_kind kind)
 {

@@ -74,3 +74,40 @@ int rs_analytic_body(const rs_surface *s, const rs_pose *pose, const rs_body *b,
     return rs_body_fixed_point_with(s, pose, b, n, gap_max, lenient, extruded_face, &c, out,
                                     err);
 }
+
+int rs_analytic_feature_point(const rs_surface *s, const rs_pose *pose, int f,
+                              const double x[3], double radius, double gap_max,
+                              double depth_max, double *dist, double xm[3], double n[3],
+                              double t1[3], double t2[3])
+{
+    const rs_pcache *pc = s->impl;
+    if (!pc || (s->kind != RS_SURF_CYLINDER && s->kind != RS_SURF_SEGMENTS) ||
+        RS_FEATURE_TYPE(f) != RS_FEAT_FACE || f != RS_FEATURE_BASE(f))
+        return 0;
+    double F[12];
+    rs_analytic_frame(s, pose, F);
+    /* the point's local coordinates and reach as rs_analytic_closest takes them
+     * (local_extrusion, reach_radius, the bounded extrusion's range) */
+    const double wx = x[0] - F[F_A], wy = x[1] - F[F_A + 1], wz = x[2] - F[F_A + 2];
+    const double u = wx * F[F_X] + wy * F[F_X + 1] + wz * F[F_X + 2];
+    const double v = wx * F[F_Y] + wy * F[F_Y + 1] + wz * F[F_Y + 2];
+    const double lz = wx * F[F_Z] + wy * F[F_Z + 1] + wz * F[F_Z + 2];
+    if (s->kind == RS_SURF_CYLINDER && s->bounded && !(lz >= s->zmin && lz <= s->zmax))
+        return 0;
+    rs_hit2 h;
+    if (rs_pcache_face(pc, RS_FEATURE_INDEX(f), u, v, -depth_max, gap_max + radius, &h) !=
+        1)
+        return 0;
+    /* its contact in 3D as map_extrusion writes it: d1 = n_y EX - n_x EY, d2 = -EZ */
+    const double hx = h.x[0], hy = h.x[1], nx = h.n[0], ny = h.n[1];
+    *dist = h.dist;
+    for (int d = 0; d < 3; d++) {
+        xm[d] = F[F_A + d] + hx * F[F_X + d] + hy * F[F_Y + d] + lz * F[F_Z + d];
+        n[d] = nx * F[F_X + d] + ny * F[F_Y + d];
+    }
+    for (int d = 0; t1 && t2 && d < 3; d++) {
+        t1[d] = ny * F[F_X + d] - nx * F[F_Y + d];
+        t2[d] = -F[F_Z + d];
+    }
+    return 1;
+}

@@ -37,6 +37,13 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
 int rs_analytic_body(const rs_surface *s, const rs_pose *pose, const struct rs_body *b,
                      int n, double gap_max, int lenient, struct rs_body_contacts *out,
                      rs_error *err);
+/// The feature_point of CYLINDER and SEGMENTS (analytic_body.c): a LINE's face of the
+/// profile, where the profile's ownership rules give the point to it (rs_pcache_face),
+/// with the contact rs_analytic_closest writes.
+int rs_analytic_feature_point(const rs_surface *s, const rs_pose *pose, int f,
+                              const double x[3], double radius, double gap_max,
+                              double depth_max, double *dist, double xm[3], double n[3],
+                              double t1[3], double t2[3]);
 int rs_analytic_triangulate(const rs_surface *s, double span, int nhoop, rs_trimesh *m,
                             rs_error *err);
 void rs_analytic_free(rs_surface *s);

@@ -174,13 +174,17 @@ typedef struct rs_surface_ops {
     /// Optional (NULL: closest answers every point): the contact on feature f of a ball
     /// of the given radius about the point x (the world, pose as for closest), when the
     /// kind can tell in closed form that closest, asked for that ball with gap_max and
-    /// dist_min = -depth_max, gives f exactly one contact: its dist, closest point xm
-    /// and unit normal n, the same numbers closest writes (t1, t2 and the curvatures
-    /// as closest leaves them for f: RS_FRAME_GLOBAL_X, flat). Returns 1 then, else 0
-    /// (ask closest). A body's manifold asks it for the core points on their feature.
+    /// dist_min = -depth_max, gives f exactly one contact, and f is flat (closest gives
+    /// it curvatures 0): its dist, closest point xm and unit normal n, the same numbers
+    /// closest writes, and where t1 and t2 are not NULL its frame as closest writes it
+    /// (zeros where the kind's frame follows from n, RS_FRAME_GLOBAL_X, and closest
+    /// leaves t1 and t2 unwritten).
+    /// Returns 1 then, else 0 (ask closest). A body's manifold asks it for the core
+    /// points on their feature.
     int (*feature_point)(const struct rs_surface *s, const rs_pose *pose, int f,
                          const double x[3], double radius, double gap_max, double depth_max,
-                         double *dist, double xm[3], double n[3]);
+                         double *dist, double xm[3], double n[3], double t1[3],
+                         double t2[3]);
     /// How a surface file describes the kind: its parameters, data lines and the making
     /// of its surface (private to the geometry's reader; NULL: no surface file names it).
     const struct rs_surface_syntax *syntax;

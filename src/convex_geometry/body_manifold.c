@@ -291,20 +291,30 @@ static int corners_add(corners *a, const corner *q, const double cl[3], double r
     return 0;
 }
 
-/* The core points answered in closed form, in the order of the queried ones. */
+/* The core points answered in closed form, in the order of the queried ones, each with
+ * its frame (t1, t2, as the query would give them; none on a MESH, whose frame follows
+ * from n: zeros). */
 typedef struct answered {
     corner *q;
-    int n, cap;
+    double (*t)[6]; /* where frames are kept */
+    int n, cap, frames;
 } answered;
 
-static int answered_add(answered *a, const corner *q)
+static int answered_add(answered *a, const corner *q, const double *t1, const double *t2)
 {
     if (a->n == a->cap) {
         const int cap = a->cap ? 2 * a->cap : 64;
         corner *nq = realloc(a->q, (size_t)cap * sizeof *nq);
-        if (!nq)
+        if (nq)
+            a->q = nq;
+        double(*nt)[6] = nq && a->frames ? realloc(a->t, (size_t)cap * sizeof *nt) : NULL;
+        if (!nq || (a->frames && !nt))
             return -1;
-        a->q = nq, a->cap = cap;
+        a->t = nt, a->cap = cap;
+    }
+    if (t1) {
+        double *t = a->t[a->n];
+        t[0] = t1[0], t[1] = t1[1], t[2] = t1[2], t[3] = t2[0], t[4] = t2[1], t[5] = t2[2];
     }
     a->q[a->n++] = *q;
     return 0;
@@ -453,7 +463,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
      * normal has the same depth on their planes. */
     const int mesh = s->ops->frame == RS_FRAME_GLOBAL_X;
     corners cq = {w->q, w->x, 0, w->cap};
-    answered ca = {NULL, 0, 0};
+    answered ca = {NULL, NULL, 0, 0, !mesh};
     if (rc == RS_OK && corners_room(&cq, n + 64))
         rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
     w->q = cq.q, w->x = cq.x, w->cap = cq.cap;
@@ -531,13 +541,20 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                 const double cl[3] = {q.cw[0] + lift * o->normal[0],
                                       q.cw[1] + lift * o->normal[1],
                                       q.cw[2] + lift * o->normal[2]};
-                /* the kind's closed form where it has one, else the query */
-                const int known =
-                    s->ops->feature_point &&
-                    s->ops->feature_point(s, pose, RS_FEATURE_BASE(o->feature), cl,
-                                          rr + lift, window(reach, gap_max),
-                                          window(reach, gap_max), &q.dist, q.xm, q.n);
-                if (known ? answered_add(&ca, &q) : corners_add(&cq, &q, cl, rr + lift))
+                /* the kind's closed form where it has one and it pays, else the block's
+                 * query: on a MESH, whose point query is dear, for every core point; on
+                 * the other kinds, whose query of a block is cheaper a point than the
+                 * closed form, for a polyhedron's cap vertices, whose answers let the
+                 * manifold stop after the first few */
+                double t1q[3], t2q[3];
+                double *const t1p = mesh ? NULL : t1q, *const t2p = mesh ? NULL : t2q;
+                const int known = (mesh || poly) && s->ops->feature_point &&
+                                  s->ops->feature_point(
+                                      s, pose, RS_FEATURE_BASE(o->feature), cl, rr + lift,
+                                      window(reach, gap_max), window(reach, gap_max),
+                                      &q.dist, q.xm, q.n, t1p, t2p);
+                if (known ? answered_add(&ca, &q, t1p, t2p)
+                          : corners_add(&cq, &q, cl, rr + lift))
                     rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
                 kp_note(&kp, known, &q, rr, gap_max, rs_dot3(d, cp[k].p));
             }
@@ -581,6 +598,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                 if (!qa && !qe)
                     break;
                 const int from_query = qa && (!qe || cq.q[a].seq < ca.q[e].seq);
+                const double *tq = from_query || mesh ? NULL : ca.t[e];
                 const corner *q = from_query ? cq.q + a++ : ca.q + e++;
                 double dist, xm[3], nw[3], t1[3] = {0.0, 0.0, 0.0}, t2[3] = {0.0, 0.0, 0.0};
                 double curv[2] = {0.0, 0.0};
@@ -600,10 +618,14 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                     }
                     curv[0] = pc.curv[0][j];
                     curv[1] = pc.curv[1][j];
-                } else { /* on the pair's own feature: on its wall */
+                } else { /* on the pair's own feature: on its wall (flat) */
                     dist = q->dist;
                     memcpy(xm, q->xm, sizeof xm);
                     memcpy(nw, q->n, sizeof nw);
+                    if (tq) {
+                        memcpy(t1, tq, sizeof t1);
+                        memcpy(t2, tq + 3, sizeof t2);
+                    }
                 }
                 const double depth = rr + q->lift - dist;
                 if (!(-depth <= gap_max))
@@ -670,6 +692,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
     }
     w->pc = pc;
     free(ca.q);
+    free(ca.t);
     for (int i = 0; i < n; i++)
         rs_body_contacts_free(fl + i);
     return rc;

@@ -153,10 +153,12 @@ int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const struct rs_body 
 
 /// The MESH kind's feature_point (rs_surface_ops.feature_point, mesh_body.c): a face of
 /// one triangle whose triangle holds the ball's centre strictly inside its edges, in
-/// front of it on a one-sided mesh: the face contact of the point query (mesh_query.c).
+/// front of it on a one-sided mesh: the face contact of the point query (mesh_query.c),
+/// t1 and t2 (where asked) zeros: the frame follows from n.
 int rs_mesh_feature_point(const rs_surface *s, const rs_pose *pose, int f,
                           const double x[3], double radius, double gap_max,
-                          double depth_max, double *dist, double xm[3], double n[3]);
+                          double depth_max, double *dist, double xm[3], double n[3],
+                          double t1[3], double t2[3]);
 
 /* What the body operation asks of a MESH s (mesh_body.c), all in the reference
  * configuration. */

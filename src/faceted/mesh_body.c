@@ -30,7 +30,8 @@ int rs_mesh_box_candidates(const rs_surface *s, const double lo[3], const double
 
 int rs_mesh_feature_point(const rs_surface *s, const rs_pose *pose, int f,
                           const double x[3], double radius, double gap_max,
-                          double depth_max, double *dist, double xm[3], double n[3])
+                          double depth_max, double *dist, double xm[3], double n[3],
+                          double t1[3], double t2[3])
 {
     const rs_mesh *m = s->impl;
     const int el = RS_FEATURE_INDEX(f);
@@ -63,6 +64,8 @@ int rs_mesh_feature_point(const rs_surface *s, const rs_pose *pose, int f,
     if (!(d <= gap_lim && d >= dist_min) || (one_sided && d < 0.0))
         return 0;
     *dist = d;
+    for (int k = 0; t1 && t2 && k < 3; k++)
+        t1[k] = t2[k] = 0.0;
     if (pose) {
         rs_matvec3(pose->R, X, xm);
         rs_matvec3(pose->R, N, n);

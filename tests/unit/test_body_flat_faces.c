@@ -4,15 +4,17 @@
  * the profile's walk (rs_pcache_hits) gives, bit for bit, on profiles with convex and
  * concave corners, fillets, two sides and a closed loop, points in front and behind;
  * a box, an ellipsoid, a capsule and a cylinder pressed into a plane under a pose settle
- * in one step at the depth of their support function's closed form; and the body
- * operation gives every body the contacts of the fixed point over the point query
- * alone. */
+ * in one step at the depth of their support function's closed form; the body operation
+ * gives every body the contacts of the fixed point over the point query alone; the
+ * kind's closed form of a point on a flat face (feature_point) is the point query's
+ * contact, and a hull's manifold is the same with it and without it. */
 #include "convex_geometry/convex_internal.h"
 #include "profile.h"
 #include "rigidsurf/convex.h"
 #include "rigidsurf/surface.h"
 #define RS_TEST_SEED 0x6A09E667F3BCC909ull
 #include "rs_test.h"
+#include "test_bodies.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -39,6 +41,24 @@ static const char *PROFILES[] = {
     "LINE, 0.04, -0.03\n",
 };
 enum { NPROFILES = sizeof PROFILES / sizeof *PROFILES };
+
+/* A turn of 0.3 rad about (1, 2, 3) and a shift. */
+static void turned_pose(rs_pose *pose)
+{
+    double ax[3] = {1.0, 2.0, 3.0};
+    const double la = sqrt(14.0), th = 0.3;
+    for (int k = 0; k < 3; k++)
+        ax[k] /= la;
+    const double c = cos(th), sn = sin(th), C = 1.0 - c;
+    const double R[9] = {c + ax[0] * ax[0] * C,          ax[0] * ax[1] * C - ax[2] * sn,
+                         ax[0] * ax[2] * C + ax[1] * sn, ax[1] * ax[0] * C + ax[2] * sn,
+                         c + ax[1] * ax[1] * C,          ax[1] * ax[2] * C - ax[0] * sn,
+                         ax[2] * ax[0] * C - ax[1] * sn, ax[2] * ax[1] * C + ax[0] * sn,
+                         c + ax[2] * ax[2] * C};
+    memset(pose, 0, sizeof *pose);
+    memcpy(pose->R, R, sizeof R);
+    pose->T[0] = 0.1, pose->T[1] = -0.2, pose->T[2] = 0.05;
+}
 
 /* Whether the point lies farther than reach from segment q's box along x or y. */
 static int box_far_of(const rs_pseg *q, double u, double v, double reach)
@@ -152,21 +172,9 @@ static void test_shapes_on_a_moved_plane_settle_at_the_closed_form(void)
     ENSURE(rs_surface_parse(PROFILES[0], "t", NULL, &s, &e) == RS_OK);
     /* the pose: a turn of 0.3 rad about (1, 2, 3) and a shift; the plane's normal is the
      * turned local y (global z), its point the shifted origin */
-    double ax[3] = {1.0, 2.0, 3.0}, R[9];
-    const double la = sqrt(14.0), th = 0.3;
-    for (int k = 0; k < 3; k++)
-        ax[k] /= la;
-    const double c = cos(th), sn = sin(th), C = 1.0 - c;
-    const double Rm[9] = {c + ax[0] * ax[0] * C,          ax[0] * ax[1] * C - ax[2] * sn,
-                          ax[0] * ax[2] * C + ax[1] * sn, ax[1] * ax[0] * C + ax[2] * sn,
-                          c + ax[1] * ax[1] * C,          ax[1] * ax[2] * C - ax[0] * sn,
-                          ax[2] * ax[0] * C - ax[1] * sn, ax[2] * ax[1] * C + ax[0] * sn,
-                          c + ax[2] * ax[2] * C};
-    memcpy(R, Rm, sizeof R);
     rs_pose pose;
-    memset(&pose, 0, sizeof pose);
-    memcpy(pose.R, R, sizeof R);
-    pose.T[0] = 0.1, pose.T[1] = -0.2, pose.T[2] = 0.05;
+    turned_pose(&pose);
+    const double *R = pose.R;
     const double n[3] = {R[2], R[5], R[8]}; /* R (0, 0, 1) */
     static const double dims[4][3] = {
         {0.005, 0.004, 0.003}, {0.006, 0.004, 0.003}, {0.003, 0.003, 0}, {0.004, 0.004, 0}};
@@ -271,10 +279,158 @@ static void test_body_operation_is_the_fixed_point_over_the_query(void)
     ENSURE(contacts > 5000);
 }
 
+/* Points near each profile, with and without a pose: wherever the kind's closed form of a
+ * point on a flat face (rs_surface_ops.feature_point) answers for a face, the point query
+ * gives that face exactly one contact, flat, with the same numbers and frame; a random
+ * face it answers for is among the query's. */
+static void test_feature_point_is_the_point_query(void)
+{
+    long answered = 0, declined = 0;
+    for (int p = 0; p < NPROFILES; p++) {
+        rs_surface s;
+        rs_error e;
+        ENSURE(rs_surface_parse(PROFILES[p], "t", NULL, &s, &e) == RS_OK);
+        ENSURE(s.ops->feature_point != NULL);
+        const int seg = s.kind == RS_SURF_SEGMENTS;
+        const int nseg = ((const rs_pcache *)s.impl)->nseg;
+        rs_pose pose;
+        turned_pose(&pose);
+        for (int moved = 0; moved < 2; moved++) {
+            for (int it = 0; it < 4000; it++) {
+                /* (u, v) in the profile's plane, w along the generator (local -y) */
+                const double u = urange(-0.06, 0.06), v = urange(-0.06, 0.06);
+                const double w = urange(-0.02, 0.02);
+                const double X[3] = {u, seg ? v : -w, seg ? w : v};
+                double x[3];
+                for (int k = 0; k < 3; k++)
+                    x[k] = moved ? pose.R[3 * k] * X[0] + pose.R[3 * k + 1] * X[1] +
+                                       pose.R[3 * k + 2] * X[2] + pose.T[k]
+                                 : X[k];
+                const double r = urange(0.0, 0.003), gap = urange(0.0, 0.02);
+                rs_query q;
+                memset(&q, 0, sizeof q);
+                q.n = 1;
+                q.slave.x = x, q.slave.y = x + 1, q.slave.z = x + 2, q.slave.radius = &r;
+                q.pose = moved ? &pose : NULL;
+                q.gap_max = gap;
+                q.dist_min = -gap;
+                rs_contacts c;
+                memset(&c, 0, sizeof c);
+                rs_error_clear(&e);
+                ENSURE(s.ops->closest(&s, &q, &c, &e) == RS_OK);
+                for (int j = 0; j <= c.n;
+                     j++) { /* each face the query gives, a random one */
+                    const int f = j < c.n ? RS_FEATURE_BASE(c.feature[j])
+                                          : RS_FEATURE(RS_FEAT_FACE, (int)(urand() * nseg));
+                    if (RS_FEATURE_TYPE(f) != RS_FEAT_FACE)
+                        continue;
+                    double dist, xm[3], n[3], t1[3], t2[3], d2, xm2[3], n2[3];
+                    const int got = s.ops->feature_point(&s, q.pose, f, x, r, gap, gap,
+                                                         &dist, xm, n, t1, t2);
+                    /* the frame not asked for: the same answer */
+                    ENSURE(s.ops->feature_point(&s, q.pose, f, x, r, gap, gap, &d2, xm2, n2,
+                                                NULL, NULL) == got);
+                    if (!got) {
+                        declined++;
+                        continue;
+                    }
+                    answered++;
+                    int hits = 0, at = -1;
+                    for (int m = 0; m < c.n; m++)
+                        if (RS_FEATURE_BASE(c.feature[m]) == f)
+                            hits++, at = m;
+                    ENSURE(hits == 1);
+                    ENSURE(test_same_bits(dist, c.dist[at]) && test_same_bits(d2, dist));
+                    ENSURE(c.curv[0][at] == 0.0 && c.curv[1][at] == 0.0);
+                    for (int d = 0; d < 3; d++) {
+                        ENSURE(test_same_bits(xm[d], c.xm[d][at]) &&
+                               test_same_bits(xm2[d], xm[d]));
+                        ENSURE(test_same_bits(n[d], c.nrm[d][at]) &&
+                               test_same_bits(n2[d], n[d]));
+                        ENSURE(test_same_bits(t1[d], c.t1[d][at]));
+                        ENSURE(test_same_bits(t2[d], c.t2[d][at]));
+                    }
+                }
+                rs_contacts_free(&c);
+            }
+        }
+        rs_surface_free(&s);
+    }
+    ENSURE(answered > 10000);
+    ENSURE(declined > 1000);
+}
+
+/* Hulls anywhere near each profile, with and without a pose: their contacts (all fields,
+ * bit for bit) are the same with the kind's closed form, which lets a hull's manifold stop
+ * after its first cap vertices, and with the point query alone (the kind without
+ * feature_point, every cap vertex asked). */
+static void test_hull_manifold_is_the_general_paths(void)
+{
+    enum { N = 150 };
+    long contacts = 0;
+    for (int p = 0; p < NPROFILES; p++) {
+        rs_surface s;
+        rs_error e;
+        ENSURE(rs_surface_parse(PROFILES[p], "t", NULL, &s, &e) == RS_OK);
+        rs_surface_ops general = *s.ops;
+        general.feature_point = NULL;
+        rs_surface g = s; /* the same profile, the general path */
+        g.ops = &general;
+        const int seg = s.kind == RS_SURF_SEGMENTS;
+        rs_pose pose;
+        turned_pose(&pose);
+        for (int moved = 0; moved < 2; moved++) {
+            for (int sh = TEST_HULL64; sh <= TEST_HULL1500; sh++) {
+                rs_shape shape;
+                ENSURE(test_make_shape(sh, &shape) == RS_OK);
+                rs_body b[N];
+                double zero[N], radius[N];
+                for (int i = 0; i < N; i++) {
+                    double q[4], X[3], x0[3];
+                    random_unit_quaternion(q);
+                    X[0] = urange(-0.045, 0.045);
+                    X[1] = seg ? urange(-0.045, 0.045) : urange(-0.02, 0.02);
+                    X[2] = seg ? urange(-0.05, 0.05) : urange(-0.012, 0.04);
+                    for (int k = 0; k < 3; k++)
+                        x0[k] = moved ? pose.R[3 * k] * X[0] + pose.R[3 * k + 1] * X[1] +
+                                            pose.R[3 * k + 2] * X[2] + pose.T[k]
+                                      : X[k];
+                    ENSURE(rs_body_init(b + i, &shape, 1000.0, x0, q, NULL) == RS_OK);
+                    zero[i] = 0.0;
+                    radius[i] = 0.005;
+                }
+                rs_query q;
+                memset(&q, 0, sizeof q);
+                q.n = N;
+                q.slave.x = zero, q.slave.y = zero, q.slave.z = zero;
+                q.slave.radius = radius;
+                q.slave.body = b;
+                q.pose = moved ? &pose : NULL;
+                q.gap_max = 1e-3;
+                q.dist_min = -INFINITY;
+                rs_contacts ca, cb;
+                memset(&ca, 0, sizeof ca), memset(&cb, 0, sizeof cb);
+                ca.witness = cb.witness = 1;
+                rs_error_clear(&e);
+                ENSURE(rs_surface_query(&s, &q, &ca, &e) == RS_OK);
+                ENSURE(rs_surface_query(&g, &q, &cb, &e) == RS_OK);
+                test_same_contacts(&ca, &cb);
+                contacts += ca.n;
+                rs_contacts_free(&ca), rs_contacts_free(&cb);
+                rs_shape_free(&shape);
+            }
+        }
+        rs_surface_free(&s);
+    }
+    ENSURE(contacts > 500);
+}
+
 int main(void)
 {
     RS_RUN(test_face_contact_is_the_walks);
     RS_RUN(test_shapes_on_a_moved_plane_settle_at_the_closed_form);
     RS_RUN(test_body_operation_is_the_fixed_point_over_the_query);
+    RS_RUN(test_feature_point_is_the_point_query);
+    RS_RUN(test_hull_manifold_is_the_general_paths);
     return rs_test_summary();
 }

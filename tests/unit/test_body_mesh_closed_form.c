@@ -12,6 +12,7 @@
 #include "rigidsurf/vec.h"
 #define RS_TEST_SEED 0xBB67AE8584CAA73Bull
 #include "rs_test.h"
+#include "test_bodies.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -96,11 +97,6 @@ static void moved_pose(rs_pose *p)
     p->T[0] = 0.001, p->T[1] = -0.0005, p->T[2] = 0.002;
 }
 
-static int same_bits(double a, double b)
-{
-    return memcmp(&a, &b, sizeof a) == 0;
-}
-
 /* Points near each mesh, with and without a pose: wherever feature_point answers for a
  * face, the point query gives that face exactly one contact, with the same numbers; a
  * random face it answers for is among the query's. */
@@ -139,9 +135,9 @@ static void test_feature_point_is_the_point_query(void)
                                           : RS_FEATURE(RS_FEAT_FACE, (int)(urand() * 200));
                     if (RS_FEATURE_TYPE(f) != RS_FEAT_FACE)
                         continue;
-                    double dist, xm[3], n[3];
-                    if (!s.ops->feature_point(&s, q.pose, f, x, r, gap, gap, &dist, xm,
-                                              n)) {
+                    double dist, xm[3], n[3], t1[3], t2[3];
+                    if (!s.ops->feature_point(&s, q.pose, f, x, r, gap, gap, &dist, xm, n,
+                                              t1, t2)) {
                         declined++;
                         continue;
                     }
@@ -151,10 +147,11 @@ static void test_feature_point_is_the_point_query(void)
                         if (RS_FEATURE_BASE(c.feature[m]) == f)
                             hits++, at = m;
                     ENSURE(hits == 1);
-                    ENSURE(same_bits(dist, c.dist[at]));
+                    ENSURE(test_same_bits(dist, c.dist[at]));
                     for (int d = 0; d < 3; d++) {
-                        ENSURE(same_bits(xm[d], c.xm[d][at]));
-                        ENSURE(same_bits(n[d], c.nrm[d][at]));
+                        ENSURE(test_same_bits(xm[d], c.xm[d][at]));
+                        ENSURE(test_same_bits(n[d], c.nrm[d][at]));
+                        ENSURE(t1[d] == 0.0 && t2[d] == 0.0); /* the frame follows n */
                     }
                 }
                 rs_contacts_free(&c);
@@ -164,43 +161,6 @@ static void test_feature_point_is_the_point_query(void)
     }
     ENSURE(answered > 5000);
     ENSURE(declined > 500);
-}
-
-enum { NSHAPE = 9 };
-
-static int make_shape(int k, rs_shape *s)
-{
-    switch (k) {
-    case 0:
-        return rs_shape_make_sphere(s, 0.005, 0.0, NULL);
-    case 1:
-        return rs_shape_make_ellipsoid(s, 0.006, 0.004, 0.003, 0.0, NULL);
-    case 2:
-        return rs_shape_make_box(s, 0.005, 0.004, 0.003, 0.0, NULL);
-    case 3:
-        return rs_shape_make_box(s, 0.004, 0.003, 0.002, 0.001, NULL);
-    case 4:
-        return rs_shape_make_capsule(s, 0.003, 0.003, 0.0, NULL);
-    case 5:
-        return rs_shape_make_cylinder(s, 0.004, 0.004, 0.0, NULL);
-    case 6:
-        return rs_shape_make_cone(s, 0.004, 0.008, 0.0, NULL);
-    default: { /* points on an ellipsoid: a hull scanned (64) and one climbed (1500) */
-        const int np = k == 7 ? 64 : 1500;
-        double *xyz = malloc(3 * (size_t)np * sizeof *xyz);
-        if (!xyz)
-            return RS_ERR_NOMEM;
-        for (int i = 0; i < np; i++) {
-            const double z = urange(-1, 1), ph = urange(0, 2 * RS_PI), r = sqrt(1 - z * z);
-            xyz[3 * i] = 0.005 * r * cos(ph);
-            xyz[3 * i + 1] = 0.004 * r * sin(ph);
-            xyz[3 * i + 2] = 0.003 * z;
-        }
-        const int rc = rs_shape_make_polyhedron(s, xyz, np, k == 8 ? 5e-4 : 0.0, NULL);
-        free(xyz);
-        return rc;
-    }
-    }
 }
 
 /* Every contact of a block of bodies (all fields, bit for bit) with the kind's closed form
@@ -219,9 +179,9 @@ static void test_manifold_is_the_general_paths(void)
         for (int moved = 0; moved < 2; moved++) {
             rs_pose pose;
             moved_pose(&pose);
-            for (int sh = 0; sh < NSHAPE; sh++) {
+            for (int sh = 0; sh < TEST_NSHAPE; sh++) {
                 rs_shape shape;
-                ENSURE(make_shape(sh, &shape) == RS_OK);
+                ENSURE(test_make_shape(sh, &shape) == RS_OK);
                 rs_body b[N];
                 double zero[N], radius[N];
                 for (int i = 0; i < N; i++) {
@@ -253,21 +213,7 @@ static void test_manifold_is_the_general_paths(void)
                 rs_error_clear(&e);
                 ENSURE(rs_surface_query(&s, &q, &ca, &e) == RS_OK);
                 ENSURE(rs_surface_query(&g, &q, &cb, &e) == RS_OK);
-                ENSURE(ca.n == cb.n);
-                for (int j = 0; j < ca.n; j++) {
-                    ENSURE(ca.point[j] == cb.point[j] && ca.feature[j] == cb.feature[j]);
-                    ENSURE(same_bits(ca.dist[j], cb.dist[j]));
-                    ENSURE(same_bits(ca.share[j], cb.share[j]));
-                    for (int d = 0; d < 3; d++) {
-                        ENSURE(same_bits(ca.nrm[d][j], cb.nrm[d][j]));
-                        ENSURE(same_bits(ca.xm[d][j], cb.xm[d][j]));
-                        ENSURE(same_bits(ca.xs[d][j], cb.xs[d][j]));
-                        ENSURE(same_bits(ca.t1[d][j], cb.t1[d][j]));
-                        ENSURE(same_bits(ca.t2[d][j], cb.t2[d][j]));
-                    }
-                    ENSURE(same_bits(ca.curv[0][j], cb.curv[0][j]));
-                    ENSURE(same_bits(ca.curv[1][j], cb.curv[1][j]));
-                }
+                test_same_contacts(&ca, &cb);
                 contacts += ca.n;
                 rs_contacts_free(&ca), rs_contacts_free(&cb);
                 rs_shape_free(&shape);
