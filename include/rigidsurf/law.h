@@ -240,9 +240,10 @@ struct rs_law {
     /// contact by contact, what this gives.
     int (*force_one)(const rs_law *law, struct rs_force_contact *c, double F[3],
                      double T[3], rs_error *err);
-    /// The same model on a run of such contacts in columns (rs_force_run, wall.h),
-    /// optional: for each contact j what force_one gives (its F and T added onto the run's
-    /// zeros, acts[j]; zeros and 0 where the model acts not), bit for bit, in one call; the
+    /// The same model on a run of such contacts in columns (rs_force_run, wall.h; the
+    /// forces and torques out as rows of 3), optional: for each contact j what force_one
+    /// gives (its F and T onto the run's zeros, acts[j]; zeros and 0 where the model acts
+    /// not), bit for bit, in one call; the
     /// model chosen once for the run, not per contact. RS_OK, or a model that cannot
     /// go on fills err and returns its code. The wall's line path takes it where the law
     /// has it (a force_one is then not needed there).

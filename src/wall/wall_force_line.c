@@ -13,9 +13,9 @@
 
 #include "laws/builtin.h"
 #include "load_contact.h"
+#include "rs_v4.h"
 #include "track_fused.h"
 #include "track_run.h"
-#include "rs_v4.h"
 
 #include "rigidsurf/vec.h"
 
@@ -259,7 +259,8 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
     if (rc)
         return rc;
     /* any NaN or Inf of the forces and torques, and of the stresses as
-     * rs_wall_force_result gives them (wall_force_stress; zeros where the model acts not) */
+     * rs_wall_force_result gives them (wall_force_stress; zeros where the model acts not)
+     */
     uint64_t acc = 0;
     for (int k = 0; k < 3 * m; k++)
         acc |= rs_nonfinite_bit(fr.FT[0][k]) | rs_nonfinite_bit(fr.FT[1][k]);

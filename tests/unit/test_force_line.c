@@ -1,8 +1,8 @@
 /* A force law with a model per contact (rs_law.force_one), and one that also has the
  * model's operation on a run of contacts in columns (rs_law.force_run), on the wall's line
- * path (src/wall/wall_force_line.c) against the staged calls (keyword fused no), through the
- * wall's public calls as an engine makes them (rs_wall_create with the engine's own law,
- * rs_wall_advance, rs_wall_step, rs_wall_reneighbor):
+ * path (src/wall/wall_force_line.c) against the staged calls (keyword fused no), through
+ * the wall's public calls as an engine makes them (rs_wall_create with the engine's own
+ * law, rs_wall_advance, rs_wall_step, rs_wall_reneighbor):
  * - a drum (a REVOLUTION of one LINE, r = 50 mm about z) turning at 3 rad/s with spheres
  *   of two radii tumbling in it under gravity along -y;
  * - a square plate of two triangles (an STL MESH) moving along x, with spheres sliding
