@@ -182,32 +182,28 @@ namespace
  * arrays, and how the wall's radius of curvature is taken. */
 struct ModelCall {
     LammpsWallModel &m;
-    double **x, **v, **omega;
+    double **v, **omega;
     int ns;        // state variables per contact: the model's history, then reff if kept
     int reff_mode; // REFF_
     bool jkr, keep;
 
     ModelCall(LammpsWallModel &model, Atom *atom, int nstatev, int mode)
-        : m(model), x(atom->x), v(atom->v), omega(atom->omega), ns(nstatev),
-          reff_mode(mode), jkr(model.jkr()), keep(nstatev > model.nhistory())
+        : m(model), v(atom->v), omega(atom->omega), ns(nstatev), reff_mode(mode),
+          jkr(model.jkr()), keep(nstatev > model.nhistory())
     {
     }
 
-    /* The contact of the sphere of row `row` (radius R, mass) at the wall's point xm of
-     * normal n, whose curvatures are k1, k2 and effective radius reff_c (NaN: from the
+    /* The contact of the sphere of row `row` (radius R, mass) at the wall's point of
+     * normal n, r from it along n (the centre's distance, as LAMMPS's walls measure it:
+     * R - overlap rounds otherwise), whose curvatures are k1, k2 and effective radius
+     * reff_c (NaN: from the
      * curvatures, rs_effective_radius), the wall's velocity there vwall and its history h:
      * LAMMPS's model STYLE (< 0: the model's own) adds its force and torque onto F and T
      * and gives 1; 0 where the model acts not, the history cleared. */
     template <int STYLE>
-    int one(int row, double R, double mass, const double n[3], const double xm[3],
-            double k1, double k2, double reff_c, double *vwall, double *h, double F[3],
-            double T[3])
+    int one(int row, double R, double mass, const double n[3], double r, double k1,
+            double k2, double reff_c, double *vwall, double *h, double F[3], double T[3])
     {
-        /* r: the distance of the centre from the wall's point along n, as LAMMPS's walls
-         * measure it (R - overlap rounds otherwise) */
-        const double *xi = x[row];
-        const double r =
-            (xi[0] - xm[0]) * n[0] + (xi[1] - xm[1]) * n[1] + (xi[2] - xm[2]) * n[2];
         const double rsq = r * r;
         /* what a known model cannot be: JKR is a granular model's, a kept effective radius
          * a curved model's */
@@ -257,11 +253,10 @@ struct ModelCall {
         double *h = ru.history; /* contact j's: NULL without state variables */
         for (int j = 0; j < ru.n; j++, h += ns) {
             const double n[3] = {ru.nrm[0][j], ru.nrm[1][j], ru.nrm[2][j]};
-            const double xm[3] = {ru.xm[0][j], ru.xm[1][j], ru.xm[2][j]};
             if (vcol)
                 vw[0] = ru.vwall[0][j], vw[1] = ru.vwall[1][j], vw[2] = ru.vwall[2][j];
             ru.acts[j] =
-                one<STYLE>(ru.row[j], ru.radius[j], ru.mass[j], n, xm, ru.curv[0][j],
+                one<STYLE>(ru.row[j], ru.radius[j], ru.mass[j], n, ru.rn[j], ru.curv[0][j],
                            ru.curv[1][j], NAN, vw, h, ru.F + 3 * j, ru.T + 3 * j);
         }
     }
@@ -273,8 +268,12 @@ int FixWallRigid::lammps_one(rs_force_contact &c, double F[3], double T[3])
 {
     model_->set_history_update(!c.setup);
     ModelCall k(*model_, atom, model_desc_.nstatev, reff_mode_);
-    return k.one<-1>(c.row, c.radius, c.mass, c.n, c.xm, c.curv[0], c.curv[1], c.reff,
-                     c.vwall, c.history, F, T);
+    /* the distance of the centre from the wall's point along n, as rs_force_run.rn */
+    const double *xi = atom->x[c.row];
+    const double r = (xi[0] - c.xm[0]) * c.n[0] + (xi[1] - c.xm[1]) * c.n[1] +
+                     (xi[2] - c.xm[2]) * c.n[2];
+    return k.one<-1>(c.row, c.radius, c.mass, c.n, r, c.curv[0], c.curv[1], c.reff, c.vwall,
+                     c.history, F, T);
 }
 
 void FixWallRigid::lammps_run(const rs_force_run &r)

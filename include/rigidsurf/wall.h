@@ -315,6 +315,10 @@ typedef struct rs_force_run {
     const double *t1[3];   ///< the contact's t1 and t2
     const double *t2[3];
     const double *xm[3]; ///< the master point
+    /// The distance of the particle's centre x from xm along n, (x - xm).n (x - xm
+    /// summed component by component), as the engines' walls measure it (R - overlap
+    /// rounds otherwise)
+    const double *rn;
     /// The velocity of the wall's material at xm, per contact; NULL (vwall[0]) where the
     /// wall's velocity is vwall0 at every contact (a wall that does not move: zeros).
     const double *vwall[3];

@@ -38,7 +38,7 @@ int wall_force_line_takes(const rs_wall *w)
 typedef struct force_run {
     double FT[2][3 * RS_TRACK_LINE_RUN];
     double S[3][RS_TRACK_LINE_RUN];
-    double vw[3][RS_TRACK_LINE_RUN];
+    double vw[3][RS_TRACK_LINE_RUN], rn[RS_TRACK_LINE_RUN];
     int acts[RS_TRACK_LINE_RUN];
     double hist[RS_TRACK_LINE_RUN * RS_FORCE_LINE_STATEV];
 } force_run;
@@ -235,6 +235,11 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
         fx.vwall0[d] = 0.0;
     }
     fx.curv[0] = c->curv[0], fx.curv[1] = c->curv[1];
+    for (int j = 0; j < m; j++)
+        fr.rn[j] = (p->x[j] - c->xm[0][j]) * c->nrm[0][j] +
+                   (p->y[j] - c->xm[1][j]) * c->nrm[1][j] +
+                   (p->z[j] - c->xm[2][j]) * c->nrm[2][j];
+    fx.rn = fr.rn;
     /* the wall's velocity at xm, V + W x (xm - C), as rs_motion_velocity_at gives it */
     if (w->moving) {
         for (int j = 0; j < m; j++) {

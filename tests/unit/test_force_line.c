@@ -12,14 +12,14 @@
  * stay identical, and the wall's sums agree to rounding. The model's one-contact calls
  * outside the block call show that the line path took most contacts in the first run
  * and none in the second; with the run operation, that the line path called it and not
- * the model per contact. The model, written here for the test, is a spring-dashpot with
- * a tangential spring kept in space and capped by Coulomb, whose state variables hold
- * that spring and the effective radius where the contact began: it reads every field a
- * force law is given (overlap, radius, mass, effective radius, normal, master point, the
- * wall's velocity there, the history). A model that returns NaN stops the step with a
- * message that names the law and the first value that is not finite (stress(1), the force
- * along n), on the line path as in the block call, and leaves the engine's rows as they
- * were. */
+ * the model per contact, and that its column rn is (x - xm).n bit for bit. The model,
+ * written here for the test, is a spring-dashpot with a tangential spring kept in space and
+ * capped by Coulomb, whose state variables hold that spring and the effective radius where
+ * the contact began: it reads every field a force law is given (overlap, radius, mass,
+ * effective radius, normal, master point, the wall's velocity there, the history). A model
+ * that returns NaN stops the step with a message that names the law and the first value
+ * that is not finite (stress(1), the force along n), on the line path as in the block call,
+ * and leaves the engine's rows as they were. */
 #define _POSIX_C_SOURCE 200809L /* getpid, unlink */
 #include "rigidsurf/vec.h"
 #include "rigidsurf/wall.h"
@@ -46,6 +46,7 @@ typedef struct sim {
     int nan_at;    ///< the particle (id) whose contact gives NaN from this step on; 0: none
     int by_run;    ///< the law has the run operation (tf_run)
     long runs;     ///< its calls
+    long rn_differ; ///< its contacts whose rn is not (x - xm).n bit for bit
 } sim;
 
 static int tf_one(const rs_law *law, rs_force_contact *c, double F[3], double T[3],
@@ -122,6 +123,12 @@ static int tf_run(const rs_law *law, const rs_force_run *r, rs_error *err)
             c.xm[d] = r->xm[d][j];
             c.vwall[d] = r->vwall[0] ? r->vwall[d][j] : r->vwall0[d];
         }
+        /* the centre's distance from the master point along n, as the run gives it */
+        const double *x = s->x[c.row];
+        const double rn = (x[0] - c.xm[0]) * c.n[0] + (x[1] - c.xm[1]) * c.n[1] +
+                          (x[2] - c.xm[2]) * c.n[2];
+        if (memcmp(&rn, &r->rn[j], sizeof rn) != 0)
+            s->rn_differ++;
         c.history = r->history + (size_t)j * (size_t)r->nstatev;
         c.type = r->type ? r->type[c.row] : 1;
         c.wall_type = r->wall_type;
@@ -300,6 +307,7 @@ static void check_pair(sim *a, sim *b, const char *name, long nsteps, long min_c
     ENSURE(contacts > min_contacts);
     ENSURE(a->direct > a->calls / 2 && b->direct == 0 && b->calls == a->calls);
     ENSURE(a->by_run ? a->runs > 0 : a->runs == 0);
+    ENSURE(a->rn_differ == 0);
     ENSURE(b->runs == 0);
 }
 
