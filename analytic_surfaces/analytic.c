@@ -138,7 +138,7 @@ void rs_analytic_free(rs_surface *s)
         .adjacent = analytic_adjacent, .bounds = analytic_bounds,                          \
         .spin_axis = analytic_spin_axis, .triangulate = rs_analytic_triangulate,           \
         .free = rs_analytic_free, .syntax = sx, .body = rs_analytic_body,                  \
-        .feature_point = fp                                                                \
+        .body_run = rs_analytic_body_run, .feature_point = fp                              \
     }
 static const rs_surface_ops segments_ops = ANALYTIC_OPS(
     "SEGMENTS", 2, RS_FRAME_TRAVEL, &rs_segments_syntax, rs_analytic_feature_point);

@@ -62,17 +62,30 @@ static int extruded_face(const void *ctx, int want, const double p[3], double ga
     return 1;
 }
 
-int rs_analytic_body(const rs_surface *s, const rs_pose *pose, const rs_body *b, int n,
-                     double gap_max, int lenient, rs_body_contacts *out, rs_error *err)
+int rs_analytic_body_run(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                         const double *R, int n, double gap_max, int lenient,
+                         rs_body_contacts *out, rs_body_work *w, rs_error *err)
 {
     if (!s->impl || (s->kind != RS_SURF_CYLINDER && s->kind != RS_SURF_SEGMENTS))
-        return rs_body_fixed_point(s, pose, b, n, gap_max, lenient, out, err);
+        return rs_body_fixed_point_run(s, pose, b, R, n, gap_max, lenient, NULL, NULL, out,
+                                       &w->fp, err);
     face_ctx c;
     c.s = s;
     c.pc = s->impl;
     rs_analytic_frame(s, pose, c.F);
-    return rs_body_fixed_point_with(s, pose, b, n, gap_max, lenient, extruded_face, &c, out,
-                                    err);
+    return rs_body_fixed_point_run(s, pose, b, R, n, gap_max, lenient, extruded_face, &c,
+                                   out, &w->fp, err);
+}
+
+int rs_analytic_body(const rs_surface *s, const rs_pose *pose, const rs_body *b, int n,
+                     double gap_max, int lenient, rs_body_contacts *out, rs_error *err)
+{
+    rs_body_work w;
+    memset(&w, 0, sizeof w);
+    const int rc =
+        rs_analytic_body_run(s, pose, b, NULL, n, gap_max, lenient, out, &w, err);
+    rs_body_work_free(&w);
+    return rc;
 }
 
 int rs_analytic_feature_point(const rs_surface *s, const rs_pose *pose, int f,

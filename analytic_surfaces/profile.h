@@ -37,6 +37,12 @@ int rs_analytic_closest(const rs_surface *s, const rs_query *q, rs_contacts *out
 int rs_analytic_body(const rs_surface *s, const rs_pose *pose, const struct rs_body *b,
                      int n, double gap_max, int lenient, struct rs_body_contacts *out,
                      rs_error *err);
+/// rs_analytic_body with the bodies' rotations given and the query's work arrays kept
+/// (rs_surface_ops.body_run).
+int rs_analytic_body_run(const rs_surface *s, const rs_pose *pose, const struct rs_body *b,
+                         const double *R, int n, double gap_max, int lenient,
+                         struct rs_body_contacts *out, struct rs_body_work *w,
+                         rs_error *err);
 /// The feature_point of CYLINDER and SEGMENTS (analytic_body.c): a LINE's face of the
 /// profile, where the profile's ownership rules give the point to it (rs_pcache_face),
 /// with the contact rs_analytic_closest writes.

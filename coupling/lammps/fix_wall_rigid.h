@@ -53,6 +53,8 @@ class FixWallRigid : public RsWallAtoms<Fix>
     int lammps_update(rs_law_block *b, rs_error *err);
     /// law lammps: one contact through LAMMPS's contact model (rs_law.force_one).
     int lammps_one(rs_force_contact &c, double F[3], double T[3]);
+    /// law lammps: a run of contacts through LAMMPS's contact model (rs_law.force_run).
+    void lammps_run(const rs_force_run &r);
     /// law lammps: its default tracking thickness.
     double lammps_reach();
 

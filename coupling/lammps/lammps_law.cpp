@@ -14,6 +14,7 @@
 #include "comm.h"
 #include "group.h"
 #include "memory.h"
+#include "rigidsurf/contact_block.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,28 +39,6 @@ void LammpsWallModel::release_callbacks(const char *fix_id)
     id = utils::strdup(fix_id);
 }
 
-void LammpsWallModel::contact(double rsq, double dx, double dy, double dz, double *vwall,
-                              double rwall, double *v, double *F, double *omega, double *T,
-                              double radius, double meff, double *history)
-{
-    switch (pairstyle) {
-    case HOOKE:
-        hooke(rsq, dx, dy, dz, vwall, v, F, omega, T, radius, meff, nullptr);
-        break;
-    case HOOKE_HISTORY:
-        hooke_history(rsq, dx, dy, dz, vwall, v, F, omega, T, radius, meff, history,
-                      nullptr);
-        break;
-    case HERTZ_HISTORY:
-        hertz_history(rsq, dx, dy, dz, vwall, rwall, v, F, omega, T, radius, meff, history,
-                      nullptr);
-        break;
-    default:
-        granular(rsq, dx, dy, dz, vwall, rwall, v, F, omega, T, radius, meff, history,
-                 nullptr);
-    }
-}
-
 namespace
 {
 
@@ -72,6 +51,12 @@ int lammps_law_one(const rs_law *law, rs_force_contact *c, double F[3], double T
                    rs_error *)
 {
     return static_cast<FixWallRigid *>(law->ctx)->lammps_one(*c, F, T);
+}
+
+int lammps_law_run(const rs_law *law, const rs_force_run *r, rs_error *)
+{
+    static_cast<FixWallRigid *>(law->ctx)->lammps_run(*r);
+    return RS_OK;
 }
 
 double lammps_law_reach(const rs_law *law, const double *, int)
@@ -166,6 +151,7 @@ int FixWallRigid::engine_law(const char *const *words, int nwords, const rs_law 
     model_desc_.update = lammps_law_update;
     model_desc_.reach = lammps_law_reach;
     model_desc_.force_one = lammps_law_one;
+    model_desc_.force_run = lammps_law_run;
     model_desc_.ctx = this;
     model_desc_.skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_SLIP |
                         RS_LAW_SKIPS_DRDISP1;
@@ -189,51 +175,124 @@ int FixWallRigid::lammps_update(rs_law_block *b, rs_error *)
     return RS_OK;
 }
 
+namespace
+{
+
+/* What the model's calls on the contacts of a block or a run share: the model, the atoms'
+ * arrays, and how the wall's radius of curvature is taken. */
+struct ModelCall {
+    LammpsWallModel &m;
+    double **v, **omega;
+    int ns;        // state variables per contact: the model's history, then reff if kept
+    int reff_mode; // REFF_
+    bool jkr, keep;
+
+    ModelCall(LammpsWallModel &model, Atom *atom, int nstatev, int mode)
+        : m(model), v(atom->v), omega(atom->omega), ns(nstatev), reff_mode(mode),
+          jkr(model.jkr()), keep(nstatev > model.nhistory())
+    {
+    }
+
+    /* The contact of the sphere of row `row` (radius R, mass) at the wall's point of
+     * normal n, r from it along n (the centre's distance, as LAMMPS's walls measure it:
+     * R - overlap rounds otherwise), whose curvatures are k1, k2 and effective radius
+     * reff_c (NaN: from the
+     * curvatures, rs_effective_radius), the wall's velocity there vwall and its history h:
+     * LAMMPS's model STYLE (< 0: the model's own) adds its force and torque onto F and T
+     * and gives 1; 0 where the model acts not, the history cleared. */
+    template <int STYLE>
+    int one(int row, double R, double mass, const double n[3], double r, double k1,
+            double k2, double reff_c, double *vwall, double *h, double F[3], double T[3])
+    {
+        const double rsq = r * r;
+        /* what a known model cannot be: JKR is a granular model's, a kept effective radius
+         * a curved model's */
+        const bool pull = (STYLE < 0 || STYLE == FixWallGran::GRANULAR) && jkr;
+        const bool kept = (STYLE < 0 || STYLE == FixWallGran::HERTZ_HISTORY ||
+                           STYLE == FixWallGran::GRANULAR) &&
+                          keep;
+        const double rad = pull ? R + m.pulloff_distance(R) : R;
+        if (rsq > rad * rad || (pull && h[0] == 0.0 && rsq > R * R)) {
+            for (int k = 0; k < ns; k++)
+                h[k] = 0.0;
+            return 0;
+        }
+        /* The wall's radius of curvature as LAMMPS's models take it, rwall (0: a plane),
+         * whose effective radius is R rwall / (R + rwall): the effective radius where the
+         * contact began, which it keeps (its last state variable; 0 for a new contact).
+         * LAMMPS's models take rwall as a constant of a contact: one that changed while
+         * the contact lasts, as a sphere slides from a mantle onto a fillet, would make
+         * the normal force do net work. */
+        double rwall = 0.0;
+        if (kept) {
+            double &reff = h[ns - 1];
+            if (reff == 0.0) {
+                reff = R;
+                if (reff_mode == REFF_EXACT) {
+                    reff = std::isnan(reff_c) ? rs_effective_radius(R, k1, k2) : reff_c;
+                } else {
+                    const double k = std::fabs(k1) >= std::fabs(k2) ? k1 : k2;
+                    if (k != 0.0)
+                        reff = R * (2.0 / k) / (R + 2.0 / k);
+                }
+            }
+            if (reff != R)
+                rwall = R * reff / (R - reff);
+        }
+        m.contact_as(STYLE < 0 ? m.style() : STYLE, rsq, r * n[0], r * n[1], r * n[2],
+                     vwall, rwall, v[row], F, omega[row], T, R, mass, h);
+        return 1;
+    }
+
+    /* The contacts of run ru through the model STYLE, its force and torque added onto
+     * the run's rows. */
+    template <int STYLE> void run(const rs_force_run &ru)
+    {
+        double vw[3] = {ru.vwall0[0], ru.vwall0[1], ru.vwall0[2]};
+        const bool vcol = ru.vwall[0] != nullptr;
+        double *h = ru.history; /* contact j's: NULL without state variables */
+        for (int j = 0; j < ru.n; j++, h += ns) {
+            const double n[3] = {ru.nrm[0][j], ru.nrm[1][j], ru.nrm[2][j]};
+            if (vcol)
+                vw[0] = ru.vwall[0][j], vw[1] = ru.vwall[1][j], vw[2] = ru.vwall[2][j];
+            ru.acts[j] =
+                one<STYLE>(ru.row[j], ru.radius[j], ru.mass[j], n, ru.rn[j], ru.curv[0][j],
+                           ru.curv[1][j], NAN, vw, h, ru.F + 3 * j, ru.T + 3 * j);
+        }
+    }
+};
+
+} // namespace
+
 int FixWallRigid::lammps_one(rs_force_contact &c, double F[3], double T[3])
 {
-    LammpsWallModel &m = *model_;
-    m.set_history_update(!c.setup);
-    const int nh = m.nhistory(), ns = model_desc_.nstatev;
-    const bool jkr = m.jkr(), keep = ns > nh;
-    /* r: the distance of the centre from the wall's point along n, as LAMMPS's walls
-     * measure it (R - overlap rounds otherwise) */
+    model_->set_history_update(!c.setup);
+    ModelCall k(*model_, atom, model_desc_.nstatev, reff_mode_);
+    /* the distance of the centre from the wall's point along n, as rs_force_run.rn */
     const double *xi = atom->x[c.row];
-    const double R = c.radius;
     const double r = (xi[0] - c.xm[0]) * c.n[0] + (xi[1] - c.xm[1]) * c.n[1] +
                      (xi[2] - c.xm[2]) * c.n[2];
-    const double rsq = r * r;
-    const double rad = jkr ? R + m.pulloff_distance(R) : R;
-    if (rsq > rad * rad || (jkr && c.history[0] == 0.0 && rsq > R * R)) {
-        for (int h = 0; h < ns; h++)
-            c.history[h] = 0.0;
-        return 0;
+    return k.one<-1>(c.row, c.radius, c.mass, c.n, r, c.curv[0], c.curv[1], c.reff, c.vwall,
+                     c.history, F, T);
+}
+
+void FixWallRigid::lammps_run(const rs_force_run &r)
+{
+    model_->set_history_update(!r.setup);
+    ModelCall k(*model_, atom, model_desc_.nstatev, reff_mode_);
+    switch (model_->style()) {
+    case FixWallGran::HOOKE:
+        k.run<FixWallGran::HOOKE>(r);
+        break;
+    case FixWallGran::HOOKE_HISTORY:
+        k.run<FixWallGran::HOOKE_HISTORY>(r);
+        break;
+    case FixWallGran::HERTZ_HISTORY:
+        k.run<FixWallGran::HERTZ_HISTORY>(r);
+        break;
+    default:
+        k.run<FixWallGran::GRANULAR>(r);
     }
-    /* The wall's radius of curvature as LAMMPS's models take it, rwall (0: a plane),
-     * whose effective radius is R rwall / (R + rwall): the effective radius where the
-     * contact began, which it keeps (its last state variable; 0 for a new contact).
-     * LAMMPS's models take rwall as a constant of a contact: one that changed while
-     * the contact lasts, as a sphere slides from a mantle onto a fillet, would make
-     * the normal force do net work. */
-    double rwall = 0.0;
-    if (keep) {
-        double &reff = c.history[ns - 1];
-        if (reff == 0.0) {
-            reff = R;
-            if (reff_mode_ == REFF_EXACT) {
-                reff = c.reff;
-            } else {
-                const double k =
-                    std::fabs(c.curv[0]) >= std::fabs(c.curv[1]) ? c.curv[0] : c.curv[1];
-                if (k != 0.0)
-                    reff = R * (2.0 / k) / (R + 2.0 / k);
-            }
-        }
-        if (reff != R)
-            rwall = R * reff / (R - reff);
-    }
-    m.contact(rsq, r * c.n[0], r * c.n[1], r * c.n[2], c.vwall, rwall, atom->v[c.row], F,
-              atom->omega[c.row], T, R, c.mass, c.history);
-    return 1;
 }
 
 /* The default tracking thickness of law lammps: JKR acts within its pull-off distance of

@@ -35,6 +35,11 @@ class LammpsWallModel : public FixWallGran
     /// named fix_id, the wall/rigid that owns it, which it registered.
     void release_callbacks(const char *fix_id);
 
+    /// The model: HOOKE, HOOKE_HISTORY, HERTZ_HISTORY or GRANULAR.
+    int style() const
+    {
+        return pairstyle;
+    }
     /// History values per contact.
     int nhistory() const
     {
@@ -60,7 +65,34 @@ class LammpsWallModel : public FixWallGran
     /// the sphere's v, omega, R, mass and history; F and T are added to.
     void contact(double rsq, double dx, double dy, double dz, double *vwall, double rwall,
                  double *v, double *F, double *omega, double *T, double radius, double meff,
-                 double *history);
+                 double *history)
+    {
+        contact_as(pairstyle, rsq, dx, dy, dz, vwall, rwall, v, F, omega, T, radius, meff,
+                   history);
+    }
+    /// The same as the model style (style()), which a caller that knows it gives as a
+    /// constant, so that the choice is made once for a run of contacts.
+    void contact_as(int style, double rsq, double dx, double dy, double dz, double *vwall,
+                    double rwall, double *v, double *F, double *omega, double *T,
+                    double radius, double meff, double *history)
+    {
+        switch (style) {
+        case HOOKE:
+            hooke(rsq, dx, dy, dz, vwall, v, F, omega, T, radius, meff, nullptr);
+            break;
+        case HOOKE_HISTORY:
+            hooke_history(rsq, dx, dy, dz, vwall, v, F, omega, T, radius, meff, history,
+                          nullptr);
+            break;
+        case HERTZ_HISTORY:
+            hertz_history(rsq, dx, dy, dz, vwall, rwall, v, F, omega, T, radius, meff,
+                          history, nullptr);
+            break;
+        default:
+            granular(rsq, dx, dy, dz, vwall, rwall, v, F, omega, T, radius, meff, history,
+                     nullptr);
+        }
+    }
 };
 
 } // namespace LAMMPS_NS

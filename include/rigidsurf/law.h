@@ -169,8 +169,9 @@ typedef struct rs_law_block {
 } rs_law_block;
 
 typedef struct rs_law rs_law;
-/// A contact as a force law's model sees it (wall.h).
+/// A contact as a force law's model sees it, and a run of them (wall.h).
 struct rs_force_contact;
+struct rs_force_run;
 
 /// The reach of a law that acts only on touching contacts: 0.
 double rs_law_reach_touching(const rs_law *law, const double *props, int nprops);
@@ -239,6 +240,14 @@ struct rs_law {
     /// contact by contact, what this gives.
     int (*force_one)(const rs_law *law, struct rs_force_contact *c, double F[3],
                      double T[3], rs_error *err);
+    /// The same model on a run of such contacts in columns (rs_force_run, wall.h; the
+    /// forces and torques out as rows of 3), optional: for each contact j what force_one
+    /// gives (its F and T onto the run's zeros, acts[j]; zeros and 0 where the model acts
+    /// not), bit for bit, in one call; the
+    /// model chosen once for the run, not per contact. RS_OK, or a model that cannot
+    /// go on fills err and returns its code. The wall's line path takes it where the law
+    /// has it (a force_one is then not needed there).
+    int (*force_run)(const rs_law *law, const struct rs_force_run *r, rs_error *err);
 };
 
 /* What a law declares it does not read on entry, so that the contact's history need not

@@ -96,6 +96,7 @@ struct rs_trimesh;
 struct rs_cands;
 struct rs_body;
 struct rs_body_contacts;
+struct rs_body_work;
 
 /// The operations of one surface kind: the seam through which every kind joins. The
 /// table is chosen once, when the surface is made (rs_surface_read, rs_surface_parse),
@@ -188,6 +189,13 @@ typedef struct rs_surface_ops {
     /// How a surface file describes the kind: its parameters, data lines and the making
     /// of its surface (private to the geometry's reader; NULL: no surface file names it).
     const struct rs_surface_syntax *syntax;
+    /// Optional (NULL: body): body for one run of a query's bodies, with their rotations
+    /// given (R(q_i), row-major, at R + 9 i) and work arrays kept over the query's runs
+    /// (private to the geometry); the same contacts as body.
+    int (*body_run)(const struct rs_surface *s, const rs_pose *pose,
+                    const struct rs_body *b, const double *R, int n, double gap_max,
+                    int lenient, struct rs_body_contacts *out, struct rs_body_work *w,
+                    rs_error *err);
 } rs_surface_ops;
 
 typedef struct rs_surface {

@@ -296,6 +296,44 @@ typedef struct rs_force_contact {
     int setup;       ///< a setup call: the history is not advanced
 } rs_force_contact;
 
+/// A run of live contacts of a force law (RS_LAW_SETS_FORCE), one a particle, as columns
+/// of n entries (entry j of each column is contact j), for the law's operation on a whole
+/// run (rs_law.force_run): what rs_force_contact holds of one contact, less what a model
+/// finds from the rest. The effective radius of contact j is rs_effective_radius(radius,
+/// curv[0], curv[1]) (contact_block.h), as rs_force_contact.reff. The law writes its force
+/// and torque of every contact into F and T, which the wall gives zeroed (the engines'
+/// models add theirs onto them, as onto a particle's rows), writes acts and updates the
+/// history.
+typedef struct rs_force_run {
+    int n;                 ///< contacts in the run, at most RS_BLOCK
+    const int *row;        ///< the engine's index of each particle
+    const double *overlap; ///< rdisp(1)
+    const double *radius;  ///< the particle's radius R
+    const double *mass;    ///< its mass
+    const double *curv[2]; ///< the wall's principal curvatures
+    const double *nrm[3];  ///< unit normal from the wall toward the particle's centre
+    const double *t1[3];   ///< the contact's t1 and t2
+    const double *t2[3];
+    const double *xm[3]; ///< the master point
+    /// The distance of the particle's centre x from xm along n, (x - xm).n (x - xm
+    /// summed component by component), as the engines' walls measure it (R - overlap
+    /// rounds otherwise)
+    const double *rn;
+    /// The velocity of the wall's material at xm, per contact; NULL (vwall[0]) where the
+    /// wall's velocity is vwall0 at every contact (a wall that does not move: zeros).
+    const double *vwall[3];
+    double vwall0[3];
+    double *history; ///< the state variables, contact j's at history + j nstatev
+    int nstatev;     ///< state variables per contact (history NULL when 0)
+    const int *type; ///< the engine's particle types, by row (NULL: all type 1)
+    int wall_type;   ///< the wall's material type
+    int setup;       ///< a setup call: the history is not advanced
+    /* out */
+    double *F; ///< the model's force on the particle, contact j's at F + 3 j
+    double *T; ///< its torque about the particle's centre, at T + 3 j
+    int *acts; ///< 1 where the model acts; 0 where not (F, T left at 0)
+} rs_force_run;
+
 /// The outputs of a force law's block b zeroed (stress, force, torque, heat, energies):
 /// what a contact the law skips, or one leaving, gives. First in the law's call.
 void rs_wall_force_begin(rs_law_block *b);

@@ -8,13 +8,15 @@
 #include <stdlib.h>
 #include <string.h>
 
-double rs_body_reach(const rs_body *b)
-{
-    return b->shape->reach;
-}
-
 int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_body *checked,
                   rs_error *err)
+{
+    const int rc = rs_body_check_shape(s, b, gap_max, err);
+    return rc ? rc : rs_body_check_pose(b, checked, err);
+}
+
+int rs_body_check_shape(const rs_surface *s, const rs_body *b, double gap_max,
+                        rs_error *err)
 {
     if (!s || !s->ops || !b || !b->shape)
         return rs_error_set(err, RS_ERR_ARG,
@@ -27,50 +29,53 @@ int rs_body_check(const rs_surface *s, const rs_body *b, double gap_max, rs_body
         return rs_error_set(err, RS_ERR_ARG,
                             "body contacts: gap_max = %g (expected a finite number >= 0)",
                             gap_max);
-    return rs_body_check_pose(b, checked, err);
+    return RS_OK;
 }
 
-int rs_body_check_pose(const rs_body *b, rs_body *checked, rs_error *err)
+int rs_body_pose_error(const rs_body *b, double nq, rs_error *err)
 {
+    const double *q = b->q;
     for (int k = 0; k < 3; k++)
         if (!(fabs(b->x[k]) <= RS_CONVEX_COORD_MAX))
             return rs_error_set(err, RS_ERR_ARG, "body contacts: body position %g",
                                 b->x[k]);
-    const double *q = b->q;
     if (!isfinite(q[0]) || !isfinite(q[1]) || !isfinite(q[2]) || !isfinite(q[3]))
         return rs_error_set(
             err, RS_ERR_ARG,
             "body contacts: body quaternion (w, x, y, z) = (%g, %g, %g, %g) "
             "(expected finite values)",
             q[0], q[1], q[2], q[3]);
-    const double nq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    if (!(fabs(nq - 1.0) <= 1e-6))
-        return rs_error_set(err, RS_ERR_ARG,
-                            "body contacts: body quaternion (w, x, y, z) has norm %.17g "
-                            "(expected a unit quaternion to 1e-6)",
-                            nq);
+    return rs_error_set(err, RS_ERR_ARG,
+                        "body contacts: body quaternion (w, x, y, z) has norm %.17g "
+                        "(expected a unit quaternion to 1e-6)",
+                        nq);
+}
+
+int rs_body_check_pose(const rs_body *b, rs_body *checked, rs_error *err)
+{
+    double nq;
+    const int rc = rs_body_check_norm(b, &nq, err);
+    if (rc)
+        return rc;
     *checked = *b;
     if (fabs(nq - 1.0) > 1e-12)
         for (int k = 0; k < 4; k++)
-            checked->q[k] = q[k] / nq;
+            checked->q[k] = b->q[k] / nq;
     return RS_OK;
 }
 
-int rs_body_contacts_push(rs_body_contacts *l, const rs_body_contact *o, rs_error *err)
+int rs_body_contacts_grow(rs_body_contacts *l, rs_error *err)
 {
-    if (l->n == l->cap) {
-        const int cap = l->cap ? 2 * l->cap : 16;
-        rs_body_contact *nc = realloc(l->borrowed ? NULL : l->c, (size_t)cap * sizeof *nc);
-        if (!nc)
-            return rs_error_set(err, RS_ERR_NOMEM,
-                                "body contacts: out of memory for %d contacts", cap);
-        if (l->borrowed)
-            memcpy(nc, l->c, (size_t)l->n * sizeof *nc);
-        l->c = nc;
-        l->cap = cap;
-        l->borrowed = 0;
-    }
-    l->c[l->n++] = *o;
+    const int cap = l->cap ? 2 * l->cap : 16;
+    rs_body_contact *nc = realloc(l->borrowed ? NULL : l->c, (size_t)cap * sizeof *nc);
+    if (!nc)
+        return rs_error_set(err, RS_ERR_NOMEM,
+                            "body contacts: out of memory for %d contacts", cap);
+    if (l->borrowed)
+        memcpy(nc, l->c, (size_t)l->n * sizeof *nc);
+    l->c = nc;
+    l->cap = cap;
+    l->borrowed = 0;
     return RS_OK;
 }
 

@@ -58,7 +58,8 @@ static int step(fixed *f, const rs_body_contact *c)
     memcpy(f->nrm, c->normal, sizeof f->nrm);
     f->it++;
     if (f->conv) {
-        f->got = *c;
+        if (c != &f->got) /* (the kind's answer is made there) */
+            f->got = *c;
         f->got.iterations = f->it;
     }
     return !f->conv && f->it < BODY_ITER_MAX;
@@ -76,17 +77,56 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
                              int n, double gap_max, int lenient, rs_body_face_fn face,
                              const void *ctx, rs_body_contacts *out, rs_error *err)
 {
-    /* each body's R, reach, centre (x, y, z) and window */
-    double *rot = malloc((size_t)(n > 0 ? n : 1) * 14 * sizeof *rot);
-    double *reach = rot + 9 * (size_t)n, *ask_xyz = NULL;
+    rs_body_fixed_work w;
+    memset(&w, 0, sizeof w);
+    const int rc = rs_body_fixed_point_run(s, pose, b, NULL, n, gap_max, lenient, face, ctx,
+                                           out, &w, err);
+    rs_body_fixed_work_free(&w);
+    return rc;
+}
+
+void rs_body_fixed_work_free(rs_body_fixed_work *w)
+{
+    rs_contacts_free(&w->pc);
+    free(w->mem);
+    free(w->fx);
+    memset(w, 0, sizeof *w);
+}
+
+/* Room for bytes in the block *mem of *have bytes (its contents not kept); 0, -1. */
+static int room(void **mem, size_t *have, size_t bytes)
+{
+    if (bytes <= *have)
+        return 0;
+    free(*mem);
+    *have = 0;
+    if (!(*mem = malloc(bytes)))
+        return -1;
+    *have = bytes;
+    return 0;
+}
+
+int rs_body_fixed_point_run(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                            const double *R, int n, double gap_max, int lenient,
+                            rs_body_face_fn face, const void *ctx, rs_body_contacts *out,
+                            rs_body_fixed_work *w, rs_error *err)
+{
+    /* each body's R (where not given), reach, centre (x, y, z) and window */
+    const size_t nb = (size_t)(n > 0 ? n : 1);
+    if (room(&w->mem, &w->bytes, nb * (R ? 5 : 14) * sizeof(double)))
+        return rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
+    int rc = RS_OK;
+    double *rot = R ? NULL : w->mem;
+    const double *Rb = R ? R : rot;
+    double *reach = (double *)w->mem + (R ? 0 : 9 * (size_t)n);
+    double *ask_xyz = NULL;
     int *off = NULL, *live = NULL;
-    int rc = rot ? RS_OK : rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
     fixed *fx = NULL;
-    rs_contacts pc; /* the reach spheres' contacts, then each step's */
-    memset(&pc, 0, sizeof pc);
+    rs_contacts pc = w->pc; /* the reach spheres' contacts, then each step's */
     for (int i = 0; rc == RS_OK && i < n; i++) {
         reach[i] = rs_body_reach(b + i);
-        rs_body_rotation(b + i, rot + 9 * i);
+        if (rot)
+            rs_body_rotation(b + i, rot + 9 * i);
     }
     /* The features near each body: a sphere of its reach about its centre (its centre
      * sought as deep as twice its reach: a body deeper lies behind the wall). Each body's
@@ -107,11 +147,12 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
     const int npc = pc.n;
     if (rc == RS_OK && npc > 0) {
         /* the fixed points, the iterates asked (x, y, z), off and live in one block */
-        fx = malloc((size_t)npc * (sizeof *fx + 3 * sizeof(double) + 3 * sizeof(int)) +
-                    sizeof(int));
-        if (!fx)
+        if (room(&w->fx, &w->fxbytes,
+                 (size_t)npc * (sizeof *fx + 3 * sizeof(double) + 3 * sizeof(int)) +
+                     sizeof(int)))
             rc = rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
         else {
+            fx = w->fx;
             ask_xyz = (double *)(fx + npc);
             off = (int *)(ask_xyz + 3 * (size_t)npc);
             live = off + npc + 1;
@@ -142,16 +183,16 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
         for (int a = 0; a < nact; a++) {
             fixed *f = fx + live[a];
             const double down[3] = {-f->nrm[0], -f->nrm[1], -f->nrm[2]};
-            rs_body_support_at(b + f->body, rot + 9 * f->body, down, f->p);
+            rs_body_support_at(b + f->body, Rb + 9 * f->body, down, f->p);
         }
         /* the kind's answers first; the rest (ask) keep their order for the query */
         int still = 0, nask = 0;
         for (int a = 0; a < nact; a++) {
             fixed *f = fx + live[a];
-            rs_body_contact c;
-            if (face && face(ctx, f->want, f->p, win[f->body], &c)) {
-                memcpy(c.xs, f->p, sizeof c.xs);
-                if (step(f, &c))
+            rs_body_contact *c = &f->got; /* kept where it settles (step) */
+            if (face && face(ctx, f->want, f->p, win[f->body], c)) {
+                memcpy(c->xs, f->p, sizeof c->xs);
+                if (step(f, c))
                     live[still++] = live[a];
             } else
                 live[nact + nask++] = live[a]; /* live has room for 2 nf */
@@ -214,8 +255,6 @@ int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_
         else if (l->c[slot].depth < got->depth)
             l->c[slot] = *got;
     }
-    free(rot);
-    free(fx);
-    rs_contacts_free(&pc);
+    w->pc = pc;
     return rc;
 }

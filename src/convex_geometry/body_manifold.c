@@ -105,7 +105,8 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
  * along d (a_k > 0 on its + sides) is the lowest and each other one lies higher by at
  * least 2 dn min |a_k|: when that clears the lowest corner's height past clear by far
  * more than rounding, the lowest is the only one. A cylinder's and a cone's points are
- * made only where their height about is within far more than rounding of clear. */
+ * made only where their height about is within far more than rounding of clear; a
+ * capsule's ends are measured by d_z z. */
 static int low_points(const rs_shape *s, const double d[3], double dn, double nx, double rr,
                       double nxs, double clear, cand *c, int cap)
 {
@@ -161,6 +162,20 @@ static int low_points(const rs_shape *s, const double d[3], double dn, double nx
         }
         return n;
     }
+    if (s->kind == RS_SHAPE_CAPSULE && cap >= 2) {
+        /* its ends' d.p = d_z z (the dot product's other terms are zeros, which change
+         * no comparison) */
+        int n = 0;
+        for (int e = 0; e < 2; e++) {
+            const double z = e ? -s->dim[1] : s->dim[1];
+            if (-dn * (d[2] * z) + nx - rr - nxs > clear)
+                continue;
+            c[n].p[0] = c[n].p[1] = 0.0;
+            c[n].p[2] = z;
+            c[n++].id = 1 + e;
+        }
+        return n;
+    }
     const int m = core_points(s, d, c, cap);
     int n = 0;
     for (int k = 0; k < m; k++)
@@ -175,38 +190,6 @@ static int core_points_of(const rs_shape *s)
     return s->kind == RS_SHAPE_BOX || s->kind == RS_SHAPE_POLYHEDRON ||
            s->kind == RS_SHAPE_CYLINDER || s->kind == RS_SHAPE_CONE ||
            s->kind == RS_SHAPE_CAPSULE;
-}
-
-/* One manifold point, before it is appended. */
-typedef struct mpoint {
-    int id;
-    double depth, xs[3], xm[3], n[3], t1[3], t2[3], curv[2];
-} mpoint;
-
-static int append(rs_contacts *c, int point, double radius, int feature, const mpoint *m,
-                  rs_error *err)
-{
-    if (c->n >= c->cap || !c->xs[0]) { /* room, and witness points (c->witness) */
-        const int rc =
-            rs_contacts_reserve(c, c->n < c->cap ? c->n + 1 : 2 * c->n + 64, err);
-        if (rc)
-            return rc;
-    }
-    const int k = c->n++;
-    c->point[k] = point;
-    c->feature[k] = RS_FEATURE_MANIFOLD(feature, m->id);
-    for (int d = 0; d < 3; d++) {
-        c->xm[d][k] = m->xm[d];
-        c->nrm[d][k] = m->n[d];
-        c->t1[d][k] = m->t1[d];
-        c->t2[d][k] = m->t2[d];
-        c->xs[d][k] = m->xs[d];
-    }
-    c->dist[k] = radius - m->depth;
-    c->curv[0][k] = m->curv[0];
-    c->curv[1][k] = m->curv[1];
-    c->share[k] = 1.0;
-    return RS_OK;
 }
 
 /* Whether the contact j of a core point lies on the pair's wall: the same owning
@@ -236,30 +219,26 @@ static double window(double reach, double gap_max)
     return w > 0.0 ? w : 0.0;
 }
 
-static int by_depth(const void *a, const void *b)
-{
-    const double da = ((const mpoint *)a)->depth, db = ((const mpoint *)b)->depth;
-    return da < db ? 1 : da > db ? -1 : ((const mpoint *)a)->id - ((const mpoint *)b)->id;
-}
-
 /* A core point's query: its body, the feature (index into the body's list) and id, its
- * place among the body's core points (seq), its point in the world and the lift of its
- * ball; where the kind answers it in closed form (rs_surface_ops.feature_point), that
- * answer. */
+ * ball's place among the balls asked of the kind's query (-1 where the kind answers it in
+ * closed form, rs_surface_ops.feature_point: that answer in dist, xm, n), its point in the
+ * world and the lift of its ball; with framed, the frame t1, t2 of the closed form (else
+ * the frame follows from n, as on a MESH: zeros). A body's core points are listed feature
+ * by feature, each feature's in the order made, asked and answered alike. */
 typedef struct corner {
-    int body, f, id, seq;
+    int body, f, id, ball, framed;
     double cw[3], lift;
-    double dist, xm[3], n[3];
+    double dist, xm[3], n[3], t1[3], t2[3];
 } corner;
 
 typedef struct corners {
     corner *q;
-    double *x; /* x, y, z, radius: 4 cap each */
-    int n, cap;
+    double *x; /* the balls asked: x, y, z, radius, cap each */
+    int n, nball, cap;
 } corners;
 
-/* Room for cap queries in a; 0, -1 when out of memory (a unchanged but a->q, which may
- * have moved). */
+/* Room for cap core points in a; 0, -1 when out of memory (a unchanged but a->q, which
+ * may have moved). */
 static int corners_room(corners *a, int cap)
 {
     if (cap > a->cap) {
@@ -271,53 +250,90 @@ static int corners_room(corners *a, int cap)
             return -1;
         }
         for (int k = 0; k < 4; k++)
-            if (a->n)
+            if (a->nball)
                 memcpy(nx + (size_t)k * cap, a->x + (size_t)k * a->cap,
-                       (size_t)a->n * sizeof *nx);
+                       (size_t)a->nball * sizeof *nx);
         free(a->x);
         a->q = nq, a->x = nx, a->cap = cap;
     }
     return 0;
 }
 
-static int corners_add(corners *a, const corner *q, const double cl[3], double r)
+/* The ball of core point q (the last of a's list) asked of the query: centre cl, radius r.
+ */
+static void corners_ball(corners *a, corner *q, const double cl[3], double r)
 {
-    if (a->n == a->cap && corners_room(a, 2 * a->cap))
-        return -1;
-    a->q[a->n] = *q;
-    a->x[a->n] = cl[0], a->x[a->cap + a->n] = cl[1], a->x[2 * a->cap + a->n] = cl[2];
-    a->x[3 * a->cap + a->n] = r;
-    a->n++;
-    return 0;
+    const int j = q->ball = a->nball++;
+    a->x[j] = cl[0], a->x[a->cap + j] = cl[1], a->x[2 * a->cap + j] = cl[2];
+    a->x[3 * a->cap + j] = r;
 }
 
-/* The core points answered in closed form, in the order of the queried ones, each with
- * its frame (t1, t2, as the query would give them; none on a MESH, whose frame follows
- * from n: zeros). */
-typedef struct answered {
-    corner *q;
-    double (*t)[6]; /* where frames are kept */
-    int n, cap, frames;
-} answered;
+/* A manifold point as the selection sees it: its id and depth, and where its contact is:
+ * the query's contact j of core point q, q's closed form (j < 0), or the pair's deepest
+ * point (q NULL). */
+typedef struct mpoint {
+    int id, j;
+    double depth;
+    const corner *q;
+} mpoint;
 
-static int answered_add(answered *a, const corner *q, const double *t1, const double *t2)
+static int by_depth(const mpoint *a, const mpoint *b)
 {
-    if (a->n == a->cap) {
-        const int cap = a->cap ? 2 * a->cap : 64;
-        corner *nq = realloc(a->q, (size_t)cap * sizeof *nq);
-        if (nq)
-            a->q = nq;
-        double(*nt)[6] = nq && a->frames ? realloc(a->t, (size_t)cap * sizeof *nt) : NULL;
-        if (!nq || (a->frames && !nt))
-            return -1;
-        a->t = nt, a->cap = cap;
+    return a->depth < b->depth ? 1 : a->depth > b->depth ? -1 : a->id - b->id;
+}
+
+/* Appends manifold point m of pair o (feature, its deepest point) to c, read from where
+ * it stands: the query's contacts pc, a core point's closed form (flat: curvatures zero;
+ * its frame, or zeros where the kind's frame convention sets it), or o; a core point's
+ * witness is its ball's foot on the body, cw - rr n. */
+static int append(rs_contacts *c, int point, double radius, const rs_body_contact *o,
+                  const mpoint *m, const rs_contacts *pc, double rr, rs_error *err)
+{
+    if (c->n >= c->cap || !c->xs[0]) { /* room, and witness points (c->witness) */
+        const int rc =
+            rs_contacts_reserve(c, c->n < c->cap ? c->n + 1 : 2 * c->n + 64, err);
+        if (rc)
+            return rc;
     }
-    if (t1) {
-        double *t = a->t[a->n];
-        t[0] = t1[0], t[1] = t1[1], t[2] = t1[2], t[3] = t2[0], t[4] = t2[1], t[5] = t2[2];
+    double xm[3], nw[3], t1[3], t2[3], xs[3], cv[2];
+    const corner *q = m->q;
+    if (!q) {
+        for (int d = 0; d < 3; d++) {
+            xm[d] = o->xm[d], nw[d] = o->normal[d], t1[d] = o->t1[d], t2[d] = o->t2[d];
+            xs[d] = o->xs[d];
+        }
+        cv[0] = o->curv[0], cv[1] = o->curv[1];
+    } else if (m->j >= 0) {
+        const int j = m->j;
+        for (int d = 0; d < 3; d++) {
+            xm[d] = pc->xm[d][j], nw[d] = pc->nrm[d][j];
+            t1[d] = pc->t1[d][j], t2[d] = pc->t2[d][j];
+            xs[d] = q->cw[d] - rr * nw[d];
+        }
+        cv[0] = pc->curv[0][j], cv[1] = pc->curv[1][j];
+    } else {
+        for (int d = 0; d < 3; d++) {
+            xm[d] = q->xm[d], nw[d] = q->n[d];
+            t1[d] = q->framed ? q->t1[d] : 0.0, t2[d] = q->framed ? q->t2[d] : 0.0;
+            xs[d] = q->cw[d] - rr * nw[d];
+        }
+        cv[0] = cv[1] = 0.0;
     }
-    a->q[a->n++] = *q;
-    return 0;
+    const int k = c->n++;
+    c->point[k] = point;
+    c->feature[k] = RS_FEATURE_MANIFOLD(o->feature, m->id);
+    for (int d = 0; d < 3; d++) {
+        c->xm[d][k] = xm[d];
+        c->nrm[d][k] = nw[d];
+        c->t1[d][k] = t1[d];
+        c->t2[d][k] = t2[d];
+        c->xs[d][k] = xs[d];
+    }
+    c->dist[k] = radius - m->depth;
+    c->curv[0][k] = cv[0];
+    c->curv[1][k] = cv[1];
+    c->share[k] = 1.0;
+    return RS_OK;
 }
 
 /* A polyhedron's first cap vertices asked (low_points), before the rest. */
@@ -388,6 +404,14 @@ static int settled(const known_points *kp, const rs_body_contact *o, double dn,
     return nid >= RS_MANIFOLD_MAX;
 }
 
+/* A feature f of s beyond the manifold's ids (RS_MANIFOLD_STRIDE). */
+static int beyond_ids(const rs_surface *s, int f, rs_error *err)
+{
+    return rs_error_set(err, RS_ERR_CAPACITY,
+                        "body query: feature %d of '%s' is beyond the manifold's ids (%d)",
+                        f, s->name, RS_MANIFOLD_STRIDE);
+}
+
 void rs_body_work_free(rs_body_work *w)
 {
     rs_contacts_free(&w->pc);
@@ -395,6 +419,8 @@ void rs_body_work_free(rs_body_work *w)
     free(w->q);
     free(w->x);
     free(w->off);
+    free(w->rot);
+    rs_body_fixed_work_free(&w->fp);
     memset(w, 0, sizeof *w);
 }
 
@@ -427,9 +453,9 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
         return RS_OK;
     /* each body's features in a list of its own, on a shared array while they fit */
     enum { FEATURES = 4 };
-    /* in one block: each body's features, checked body, reach and list */
+    /* in one block: each body's features, checked body, reach, window and list */
     const size_t bytes = (size_t)n * (FEATURES * sizeof(rs_body_contact) + sizeof(rs_body) +
-                                      sizeof(double) + sizeof(rs_body_contacts));
+                                      2 * sizeof(double) + sizeof(rs_body_contacts));
     if (bytes > w->bytes) {
         free(w->mem);
         w->bytes = 0;
@@ -439,54 +465,83 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
         w->bytes = bytes;
     }
     rs_body_contact *pool = w->mem;
-    rs_body *b = (rs_body *)(pool + (size_t)n * FEATURES);
-    double *rch = (double *)(b + n);
-    rs_body_contacts *fl = (rs_body_contacts *)(rch + n);
+    rs_body *bc = (rs_body *)(pool + (size_t)n * FEATURES);
+    double *rch = (double *)(bc + n), *win = rch + n;
+    rs_body_contacts *fl = (rs_body_contacts *)(win + n);
     for (int i = 0; i < n; i++) {
         const rs_body_contacts l = {0, FEATURES, pool + (size_t)i * FEATURES, 1};
         fl[i] = l;
     }
-    int rc = RS_OK;
-    for (int i = 0; i < n && rc == RS_OK; i++) /* a run of one shape: its checks once */
-        rc = i > 0 && body[i].shape && body[i].shape == body[i - 1].shape
-                 ? rs_body_check_pose(body + i, b + i, err)
-                 : rs_body_check(s, body + i, gap_max, b + i, err);
+    /* the checked bodies: as given, unless a quaternion is to be normalised (then all
+     * copied, that one normalised: rs_body_check_pose) */
+    int rc = RS_OK, unit = 1;
+    for (int i = 0; i < n && rc == RS_OK; i++) { /* a run of one shape: its checks once */
+        if (!(i > 0 && body[i].shape && body[i].shape == body[i - 1].shape))
+            rc = rs_body_check_shape(s, body + i, gap_max, err);
+        double nq;
+        if (rc == RS_OK && (rc = rs_body_check_norm(body + i, &nq, err)) == RS_OK)
+            unit &= !(fabs(nq - 1.0) > 1e-12);
+    }
+    for (int i = 0; i < n && rc == RS_OK && !unit; i++)
+        rc = rs_body_check_pose(body + i, bc + i, err);
+    const rs_body *b = unit ? body : bc;
     if (rc == RS_OK && !s->ops->body)
         rc = rs_error_set(err, RS_ERR_ARG, "body query: surface '%s' (%s) takes no bodies",
                           s->name, s->ops->name);
+    /* where the kind takes them, the bodies' rotations made once for it and for the core
+     * points below, and its work arrays kept over the query's runs */
+    const double *rot = NULL;
+    if (rc == RS_OK && s->ops->body_run) {
+        if (n > w->nrot) {
+            free(w->rot);
+            w->nrot = 0;
+            if ((w->rot = malloc(9 * (size_t)n * sizeof *w->rot)))
+                w->nrot = n;
+            else
+                rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
+        }
+        for (int i = 0; i < n && rc == RS_OK; i++)
+            rs_body_rotation(b + i, w->rot + 9 * i);
+        rot = w->rot;
+    }
     if (rc == RS_OK)
-        rc = s->ops->body(s, pose, b, n, gap_max, 1, fl, err);
+        rc = rot ? s->ops->body_run(s, pose, b, rot, n, gap_max, 1, fl, w, err)
+                 : s->ops->body(s, pose, b, n, gap_max, 1, fl, err);
 
     /* Every body's core points that may reach the wall, each rounded toward it, asked in
      * one query: its own contact with the feature (the same owning feature, else it rests
      * on another one). flat facets (the FACETED convention): a ball moved along the
      * normal has the same depth on their planes. */
     const int mesh = s->ops->frame == RS_FRAME_GLOBAL_X;
-    corners cq = {w->q, w->x, 0, w->cap};
-    answered ca = {NULL, NULL, 0, 0, !mesh};
+    corners cq = {w->q, w->x, 0, 0, w->cap};
     if (rc == RS_OK && corners_room(&cq, n + 64))
         rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
     w->q = cq.q, w->x = cq.x, w->cap = cq.cap;
     double gap = 0.0; /* the widest window of the bodies (window) */
     for (int i = 0; i < n && rc == RS_OK; i++) { /* (checked bodies only) */
-        const double g = window(rs_body_reach(b + i), gap_max);
+        const double g = win[i] = window(rch[i] = rs_body_reach(b + i), gap_max);
         gap = g > gap ? g : gap;
     }
     for (int i = 0; i < n && rc == RS_OK; i++) {
-        const double rr = rs_shape_core_radius(b[i].shape),
-                     reach = rch[i] = rs_body_reach(b + i);
-        for (int f = 0; f < fl[i].n && rc == RS_OK; f++)
+        const double rr = rs_shape_core_radius(b[i].shape), reach = rch[i];
+        /* every feature within the manifold's ids (a body with core points: below, before
+         * its core points are asked) */
+        const int core = core_points_of(b[i].shape);
+        for (int f = 0; !core && f < fl[i].n && rc == RS_OK; f++)
             if (fl[i].c[f].feature >= RS_MANIFOLD_STRIDE)
-                rc = rs_error_set(err, RS_ERR_CAPACITY,
-                                  "body query: feature %d of '%s' is beyond the manifold's "
-                                  "ids (%d)",
-                                  fl[i].c[f].feature, s->name, RS_MANIFOLD_STRIDE);
-        if (rc != RS_OK || !core_points_of(b[i].shape))
+                rc = beyond_ids(s, fl[i].c[f].feature, err);
+        if (rc != RS_OK || !core)
             continue; /* a smooth body: its deepest point only */
-        double R[9];
-        rs_body_rotation(b + i, R);
+        double Ri[9];
+        if (!rot)
+            rs_body_rotation(b + i, Ri);
+        const double *const R = rot ? rot + 9 * i : Ri;
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
             const rs_body_contact *o = &fl[i].c[f];
+            if (o->feature >= RS_MANIFOLD_STRIDE) {
+                rc = beyond_ids(s, o->feature, err);
+                break;
+            }
             double d[3];
             for (int k = 0; k < 3; k++)
                 d[k] = -(R[k] * o->normal[0] + R[3 + k] * o->normal[1] +
@@ -518,7 +573,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                                  poly ? CORE_FIRST : CAND_MAX - 1);
             known_points kp;
             kp.n = kp.asked = 0;
-            for (int k = 0;; k++) {
+            for (int k = 0; rc == RS_OK; k++) {
                 if (k == ncp && poly && ncp == CORE_FIRST &&
                     !settled(&kp, o, dn, rs_dot3(d, cp[k - 1].p), reach, b[i].x, nxs,
                              gap_max)) /* the same first */
@@ -526,62 +581,68 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                         low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp, CAND_MAX - 1);
                 if (k == ncp)
                     break;
-                corner q = {.body = i, .f = f, .id = cp[k].id, .seq = k, .lift = lift};
-                rs_matvec3(R, cp[k].p, q.cw);
+                if (cq.n == cq.cap && corners_room(&cq, 2 * cq.cap)) {
+                    rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
+                    break;
+                }
+                corner *q = cq.q + cq.n; /* made in place, kept below (cq.n++) */
+                rs_matvec3(R, cp[k].p, q->cw);
                 for (int j = 0; j < 3; j++)
-                    q.cw[j] += b[i].x[j];
-                const double h = rs_dot3(o->normal, q.cw) - rr - rs_dot3(o->normal, o->xs);
+                    q->cw[j] += b[i].x[j];
+                const double h = rs_dot3(o->normal, q->cw) - rr - rs_dot3(o->normal, o->xs);
                 if (h > above)
                     continue; /* too high above the deepest point to reach the wall */
+                q->body = i, q->f = f, q->id = cp[k].id, q->lift = lift;
                 /* the core point's rounding ball, as a sphere meets the wall; on a MESH,
                  * whose two sides answer a point by the side it is on, the ball grown by
                  * lift about its point moved as far out along the pair's normal, so that
                  * its centre is on the body's side (the same depth on the facets' planes)
                  */
-                const double cl[3] = {q.cw[0] + lift * o->normal[0],
-                                      q.cw[1] + lift * o->normal[1],
-                                      q.cw[2] + lift * o->normal[2]};
+                const double cl[3] = {q->cw[0] + lift * o->normal[0],
+                                      q->cw[1] + lift * o->normal[1],
+                                      q->cw[2] + lift * o->normal[2]};
                 /* the kind's closed form where it has one and it pays, else the block's
                  * query: on a MESH, whose point query is dear, for every core point; on
                  * the other kinds, whose query of a block is cheaper a point than the
                  * closed form, for a polyhedron's cap vertices, whose answers let the
-                 * manifold stop after the first few */
-                double t1q[3], t2q[3];
-                double *const t1p = mesh ? NULL : t1q, *const t2p = mesh ? NULL : t2q;
-                const int known = (mesh || poly) && s->ops->feature_point &&
-                                  s->ops->feature_point(
-                                      s, pose, RS_FEATURE_BASE(o->feature), cl, rr + lift,
-                                      window(reach, gap_max), window(reach, gap_max),
-                                      &q.dist, q.xm, q.n, t1p, t2p);
-                if (known ? answered_add(&ca, &q, t1p, t2p)
-                          : corners_add(&cq, &q, cl, rr + lift))
-                    rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
-                kp_note(&kp, known, &q, rr, gap_max, rs_dot3(d, cp[k].p));
+                 * manifold stop after the first few; the frame kept where it does not
+                 * follow from n (not on a MESH) */
+                q->framed = !mesh;
+                const int known =
+                    (mesh || poly) && s->ops->feature_point &&
+                    s->ops->feature_point(s, pose, RS_FEATURE_BASE(o->feature), cl,
+                                          rr + lift, win[i], win[i], &q->dist, q->xm, q->n,
+                                          mesh ? NULL : q->t1, mesh ? NULL : q->t2);
+                q->ball = -1;
+                if (!known)
+                    corners_ball(&cq, q, cl, rr + lift);
+                cq.n++;
+                kp_note(&kp, known, q, rr, gap_max, rs_dot3(d, cp[k].p));
             }
         }
     }
     w->q = cq.q, w->x = cq.x, w->cap = cq.cap; /* (moved as the list grew) */
     rs_contacts pc = w->pc;
-    if (rc == RS_OK && cq.n > 0 && cq.n + 1 > w->noff) {
+    if (rc == RS_OK && cq.nball > 0 && cq.nball + 1 > w->noff) {
         free(w->off);
         w->noff = 0;
-        if ((w->off = malloc(((size_t)cq.n + 1) * sizeof *w->off)))
-            w->noff = cq.n + 1;
+        if ((w->off = malloc(((size_t)cq.nball + 1) * sizeof *w->off)))
+            w->noff = cq.nball + 1;
     }
     int *off = w->off;
-    if (rc == RS_OK && cq.n > 0) {
-        rc = off ? rs_contacts_reserve(&pc, 2 * cq.n + 64, err)
+    if (rc == RS_OK && cq.nball > 0) {
+        rc = off ? rs_contacts_reserve(&pc, 2 * cq.nball + 64, err)
                  : rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
         if (rc == RS_OK)
-            rc = rs_body_closest(s, pose, cq.n, cq.x, cq.x + cq.cap, cq.x + 2 * cq.cap,
+            rc = rs_body_closest(s, pose, cq.nball, cq.x, cq.x + cq.cap, cq.x + 2 * cq.cap,
                                  cq.x + 3 * cq.cap, gap, gap, &pc, err);
         if (rc == RS_OK)
-            rs_contacts_offsets(&pc, cq.n, off);
+            rs_contacts_offsets(&pc, cq.nball, off);
     }
 
     /* Each body's manifold per feature, in order: the deepest point and the core points
      * that rest on the feature's wall. */
-    for (int i = 0, a = 0, e = 0; i < n && rc == RS_OK; i++) {
+    for (int i = 0, a = 0; i < n && rc == RS_OK; i++) {
         const int k0 = c->n;
         const double rr = rs_shape_core_radius(b[i].shape), reach = rch[i];
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
@@ -589,44 +650,23 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
             mpoint m[CAND_MAX];
             int nm = 1;
             m[0].id = 0;
-            m[0].depth = o->depth; /* the rest below, where it stands for itself */
+            m[0].j = -1;
+            m[0].depth = o->depth;
+            m[0].q = NULL;
             int deep_is_core = 0;
             /* the core points in their order, each from the query or the closed form */
-            for (;;) {
-                const int qa = a < cq.n && cq.q[a].body == i && cq.q[a].f == f;
-                const int qe = e < ca.n && ca.q[e].body == i && ca.q[e].f == f;
-                if (!qa && !qe)
-                    break;
-                const int from_query = qa && (!qe || cq.q[a].seq < ca.q[e].seq);
-                const double *tq = from_query || mesh ? NULL : ca.t[e];
-                const corner *q = from_query ? cq.q + a++ : ca.q + e++;
-                double dist, xm[3], nw[3], t1[3] = {0.0, 0.0, 0.0}, t2[3] = {0.0, 0.0, 0.0};
-                double curv[2] = {0.0, 0.0};
-                if (from_query) {
-                    const double win = window(reach, gap_max);
-                    const int j = rs_contacts_pick(&pc, off[a - 1], off[a],
-                                                   RS_FEATURE_BASE(o->feature), -win,
-                                                   win + cq.x[3 * cq.cap + a - 1]);
+            for (; a < cq.n && cq.q[a].body == i && cq.q[a].f == f; a++) {
+                const corner *q = cq.q + a;
+                double dist = q->dist;
+                int j = -1;
+                if (q->ball >= 0) {
+                    j = rs_contacts_pick(&pc, off[q->ball], off[q->ball + 1],
+                                         RS_FEATURE_BASE(o->feature), -win[i],
+                                         win[i] + cq.x[3 * cq.cap + q->ball]);
                     if (j < 0 || !same_wall(&pc, j, o, reach))
                         continue;
                     dist = pc.dist[j];
-                    for (int k = 0; k < 3; k++) {
-                        xm[k] = pc.xm[k][j];
-                        nw[k] = pc.nrm[k][j];
-                        t1[k] = pc.t1[k][j];
-                        t2[k] = pc.t2[k][j];
-                    }
-                    curv[0] = pc.curv[0][j];
-                    curv[1] = pc.curv[1][j];
-                } else { /* on the pair's own feature: on its wall (flat) */
-                    dist = q->dist;
-                    memcpy(xm, q->xm, sizeof xm);
-                    memcpy(nw, q->n, sizeof nw);
-                    if (tq) {
-                        memcpy(t1, tq, sizeof t1);
-                        memcpy(t2, tq + 3, sizeof t2);
-                    }
-                }
+                } /* else on the pair's own feature: on its wall */
                 const double depth = rr + q->lift - dist;
                 if (!(-depth <= gap_max))
                     continue;
@@ -634,16 +674,9 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                     deep_is_core = 1; /* as deep as the deepest point: it stands for it */
                 mpoint *p = &m[nm++];
                 p->id = q->id;
+                p->j = j;
                 p->depth = depth;
-                for (int k = 0; k < 3; k++) {
-                    p->xs[k] = q->cw[k] - rr * nw[k];
-                    p->xm[k] = xm[k];
-                    p->n[k] = nw[k];
-                    p->t1[k] = t1[k];
-                    p->t2[k] = t2[k];
-                }
-                p->curv[0] = curv[0];
-                p->curv[1] = curv[1];
+                p->q = q;
             }
             /* the deepest point stands for itself unless a core point is as deep (is it, or
              * rests on the wall beside it: a face, a rim); where it did not settle (a fold
@@ -651,23 +684,20 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
              * its deepest iterate */
             if (o->iterations < 0 && core_points_of(b[i].shape))
                 deep_is_core = 1;
-            if (!deep_is_core) {
-                memcpy(m[0].xs, o->xs, sizeof m[0].xs);
-                memcpy(m[0].xm, o->xm, sizeof m[0].xm);
-                memcpy(m[0].n, o->normal, sizeof m[0].n);
-                memcpy(m[0].t1, o->t1, sizeof m[0].t1);
-                memcpy(m[0].t2, o->t2, sizeof m[0].t2);
-                memcpy(m[0].curv, o->curv, sizeof m[0].curv);
-            }
-            mpoint *keep = deep_is_core ? m + 1 : m;
+            const mpoint *keep = deep_is_core ? m + 1 : m;
             const int count = deep_is_core ? nm - 1 : nm;
             /* the deepest first (ties: the lower id, then the earlier point), one point
              * an id (a polyhedron's vertices i and i + 30: the deeper), at most
              * RS_MANIFOLD_MAX: the next in that order picked from those left, so that
              * only the kept and the skipped are ordered */
-            unsigned char taken[CAND_MAX] = {0};
+            unsigned char taken[CAND_MAX];
             int nk = 0, kept[RS_MANIFOLD_MAX];
-            for (int round = 0; round < count && nk < RS_MANIFOLD_MAX; round++) {
+            if (count == 1)
+                kept[nk++] = 0;
+            else
+                memset(taken, 0, sizeof taken);
+            for (int round = 0; count > 1 && round < count && nk < RS_MANIFOLD_MAX;
+                 round++) {
                 int next = -1;
                 for (int k = 0; k < count; k++)
                     if (!taken[k] && (next < 0 || by_depth(keep + k, keep + next) < 0))
@@ -680,7 +710,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                     kept[nk++] = next;
             }
             for (int k = 0; k < nk && rc == RS_OK; k++)
-                rc = append(c, point0 + i, radius[i], o->feature, &keep[kept[k]], err);
+                rc = append(c, point0 + i, radius[i], o, &keep[kept[k]], &pc, rr, err);
         }
         /* Contacts on features that fold concavely under the body (two facets of a drum)
          * overlap one patch of it: their shares, as a sphere's of radius R on each
@@ -691,9 +721,8 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
             rs_contacts_body_shares(c, k0, c->n - k0, radius[i]);
     }
     w->pc = pc;
-    free(ca.q);
-    free(ca.t);
     for (int i = 0; i < n; i++)
-        rs_body_contacts_free(fl + i);
+        if (!fl[i].borrowed) /* (grown past its room in the pool) */
+            rs_body_contacts_free(fl + i);
     return rc;
 }

@@ -6,6 +6,8 @@
 
 #include "rigidsurf/convex.h"
 
+#include <math.h>
+
 /// RS_ERR_ARG unless s is a shape an rs_shape_make_* call made (kind, dimensions,
 /// rounding, a polyhedron's hull, a user shape's support).
 int rs_shape_check(const rs_shape *s, rs_error *err);
@@ -33,15 +35,53 @@ void rs_body_support_at(const rs_body *b, const double R[9], const double dir[3]
                         double out[3]);
 /// The rounding around the core: the shape's rounding, plus the radius of a sphere or
 /// a capsule (whose cores are a point and a segment).
-double rs_shape_core_radius(const rs_shape *s);
+static inline double rs_shape_core_radius(const rs_shape *s)
+{
+    if (s->kind == RS_SHAPE_SPHERE || s->kind == RS_SHAPE_CAPSULE)
+        return s->rounding + s->dim[0];
+    return s->rounding;
+}
 
 /// rs_body_check's checks of b's pose alone (its shape and the gap checked before, as
 /// for a body of the same shape): into *checked, its quaternion normalised.
 int rs_body_check_pose(const rs_body *b, rs_body *checked, rs_error *err);
+/// rs_body_check's checks but those of the pose (rs_body_check_norm).
+int rs_body_check_shape(const rs_surface *s, const rs_body *b, double gap_max,
+                        rs_error *err);
+/// What is wrong with b's pose, whose quaternion has norm nq, as rs_body_check_norm says
+/// it (RS_ERR_ARG).
+int rs_body_pose_error(const rs_body *b, double nq, rs_error *err);
+/// rs_body_check_pose's checks without the copy: *nq, the quaternion's norm (b is used as
+/// it is where |nq - 1| <= 1e-12, else normalised).
+static inline int rs_body_check_norm(const rs_body *b, double *nq, rs_error *err)
+{
+    const double *q = b->q;
+    *nq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    /* the position and the norm at once (a unit norm has finite parts) */
+    if (fabs(b->x[0]) <= RS_CONVEX_COORD_MAX && fabs(b->x[1]) <= RS_CONVEX_COORD_MAX &&
+        fabs(b->x[2]) <= RS_CONVEX_COORD_MAX && fabs(*nq - 1.0) <= 1e-6)
+        return RS_OK;
+    return rs_body_pose_error(b, *nq, err);
+}
 /// A body's reach about its centre: the farthest corner of its bounding box.
-double rs_body_reach(const rs_body *b);
+static inline double rs_body_reach(const rs_body *b)
+{
+    return b->shape->reach;
+}
+/// Doubles l's room (at least 16), moving a borrowed array to the heap; RS_ERR_NOMEM.
+int rs_body_contacts_grow(rs_body_contacts *l, rs_error *err);
 /// Appends o to l; RS_ERR_NOMEM when it cannot grow.
-int rs_body_contacts_push(rs_body_contacts *l, const rs_body_contact *o, rs_error *err);
+static inline int rs_body_contacts_push(rs_body_contacts *l, const rs_body_contact *o,
+                                        rs_error *err)
+{
+    if (l->n == l->cap) {
+        const int rc = rs_body_contacts_grow(l, err);
+        if (rc)
+            return rc;
+    }
+    l->c[l->n++] = *o;
+    return RS_OK;
+}
 /// The contacts of n slaves with surface s, into c (emptied first): points (radius NULL)
 /// or spheres at (x, y, z) with a gap of at most gap_max whose centres lie at most
 /// depth_max behind the surface (a body's points are sought no deeper than twice its
@@ -75,6 +115,22 @@ typedef int (*rs_body_face_fn)(const void *ctx, int want, const double p[3], dou
 int rs_body_fixed_point_with(const rs_surface *s, const rs_pose *pose, const rs_body *b,
                              int n, double gap_max, int lenient, rs_body_face_fn face,
                              const void *ctx, rs_body_contacts *out, rs_error *err);
+/// The fixed point's work arrays, kept over the runs of bodies of one query (zero it first;
+/// rs_body_fixed_work_free).
+typedef struct rs_body_fixed_work {
+    rs_contacts pc; ///< the reach spheres' and the iterates' contacts
+    void *mem;      ///< the bodies' rotations (where not given), reach, centres, windows
+    size_t bytes;
+    void *fx; ///< the fixed points and their iterates' queries
+    size_t fxbytes;
+} rs_body_fixed_work;
+/// rs_body_fixed_point_with on the work arrays w, grown as needed and kept, with the
+/// bodies' rotations R(q_i) at R + 9 i (rs_body_rotation; NULL: made here).
+int rs_body_fixed_point_run(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                            const double *R, int n, double gap_max, int lenient,
+                            rs_body_face_fn face, const void *ctx, rs_body_contacts *out,
+                            rs_body_fixed_work *w, rs_error *err);
+void rs_body_fixed_work_free(rs_body_fixed_work *w);
 /// The fixed point of rs_body_fixed_point_with over the kind's point query only: for
 /// each feature near each of the n bodies (a sphere query of its reach about its centre)
 /// the normal iterated to a fixed point through the kind's point query, the bodies in one
@@ -93,6 +149,9 @@ typedef struct rs_body_work {
     int cap;
     int *off; ///< where each ball's contacts start
     int noff;
+    double *rot; ///< the bodies' rotations (rs_surface_ops.body_run)
+    int nrot;
+    rs_body_fixed_work fp; ///< the kind's (rs_surface_ops.body_run)
 } rs_body_work;
 /// rs_body_manifold on the work arrays w, grown as needed and kept.
 int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body *body,

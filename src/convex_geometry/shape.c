@@ -256,13 +256,6 @@ void rs_shape_free(rs_shape *s)
     s->nv = s->nt = 0;
 }
 
-double rs_shape_core_radius(const rs_shape *s)
-{
-    if (s->kind == RS_SHAPE_SPHERE || s->kind == RS_SHAPE_CAPSULE)
-        return s->rounding + s->dim[0];
-    return s->rounding;
-}
-
 static double sign1(double x)
 {
     return x < 0.0 ? -1.0 : 1.0;
@@ -334,7 +327,51 @@ void rs_shape_core_support(const rs_shape *s, const double dir[3], double out[3]
 void rs_shape_support(const rs_shape *s, const double dir[3], double out[3])
 {
     double d[3] = {dir[0], dir[1], dir[2]};
+    const double *h = s->dim;
+    if (s->kind == RS_SHAPE_BOX && s->rounding == 0.0) {
+        /* the corner, as below (d = 0 gives the corner of d = +z too) */
+        for (int k = 0; k < 3; k++)
+            out[k] = sign1(d[k]) * h[k];
+        return;
+    }
     double n = rs_norm3(d);
+    if (n > 0.0 && s->kind != RS_SHAPE_POLYHEDRON && s->kind != RS_SHAPE_USER) {
+        /* the built-in shapes as below, the core's support inline where it is short and
+         * the rounding added where there is one: without it, out + 0 d is out bit for bit
+         * (a part of out at 0 is a zero of the sign of d's part, or +0, which a zero
+         * added leaves as it is) */
+        switch (s->kind) {
+        case RS_SHAPE_SPHERE:
+            out[0] = out[1] = out[2] = 0.0;
+            break;
+        case RS_SHAPE_ELLIPSOID: { /* rs_shape_core_support's, d's norm being n */
+            const double u[3] = {d[0] / n, d[1] / n, d[2] / n};
+            const double e[3] = {h[0] * h[0] * u[0], h[1] * h[1] * u[1],
+                                 h[2] * h[2] * u[2]};
+            const double k = 1.0 / sqrt(rs_dot3(e, u));
+            for (int i = 0; i < 3; i++)
+                out[i] = k * e[i];
+            break;
+        }
+        case RS_SHAPE_BOX:
+            for (int k = 0; k < 3; k++)
+                out[k] = sign1(d[k]) * h[k];
+            break;
+        case RS_SHAPE_CAPSULE:
+            out[0] = out[1] = 0.0, out[2] = sign1(d[2]) * h[1];
+            break;
+        default: /* a cylinder, a cone */
+            rs_shape_core_support(s, d, out);
+            break;
+        }
+        const double rc = rs_shape_core_radius(s);
+        if (rc != 0.0) {
+            const double r = rc / n;
+            for (int k = 0; k < 3; k++)
+                out[k] += r * d[k];
+        }
+        return;
+    }
     if (n == 0.0) {
         d[2] = 1.0;
         n = 1.0;

@@ -150,6 +150,10 @@ struct rs_body;
 struct rs_body_contacts;
 int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const struct rs_body *b, int n,
                  double gap_max, int lenient, struct rs_body_contacts *out, rs_error *err);
+/// rs_mesh_body with the bodies' rotations given (rs_surface_ops.body_run).
+int rs_mesh_body_run(const rs_surface *s, const rs_pose *pose, const struct rs_body *b,
+                     const double *R, int n, double gap_max, int lenient,
+                     struct rs_body_contacts *out, struct rs_body_work *w, rs_error *err);
 
 /// The MESH kind's feature_point (rs_surface_ops.feature_point, mesh_body.c): a face of
 /// one triangle whose triangle holds the ball's centre strictly inside its edges, in

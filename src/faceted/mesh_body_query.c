@@ -374,9 +374,10 @@ static int witness_contact(const rs_surface *s, const rs_pose *p, sbody *sb, con
     return 1;
 }
 
-/* One body's contacts (rs_mesh_body). */
+/* One body's contacts (rs_mesh_body), its rotation R (NULL: made here). */
 static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body *b,
-                         double gap_max, rs_body_contacts *out, rs_error *err)
+                         const double *R, double gap_max, rs_body_contacts *out,
+                         rs_error *err)
 {
     int rc = RS_OK;
     if (!s->impl)
@@ -384,7 +385,10 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
                             s->name);
     pose = pose_moved(pose);
     sbody sb = {.b = b, .have = 0};
-    rs_body_rotation(b, sb.R);
+    if (R)
+        memcpy(sb.R, R, sizeof sb.R);
+    else
+        rs_body_rotation(b, sb.R);
     double lo[3], hi[3];
     body_box(b, sb.R, pose, gap_max, lo, hi);
     /* the candidates' arrays in one block: on the stack for a few, else the heap */
@@ -465,9 +469,16 @@ done:
 int rs_mesh_body(const rs_surface *s, const rs_pose *pose, const rs_body *b, int n,
                  double gap_max, int lenient, rs_body_contacts *out, rs_error *err)
 {
-    (void)lenient; /* no fixed point to settle */
+    return rs_mesh_body_run(s, pose, b, NULL, n, gap_max, lenient, out, NULL, err);
+}
+
+int rs_mesh_body_run(const rs_surface *s, const rs_pose *pose, const rs_body *b,
+                     const double *R, int n, double gap_max, int lenient,
+                     rs_body_contacts *out, struct rs_body_work *w, rs_error *err)
+{
+    (void)lenient, (void)w; /* no fixed point to settle, no work kept */
     int rc = RS_OK;
     for (int i = 0; i < n && rc == RS_OK; i++)
-        rc = body_contacts(s, pose, b + i, gap_max, out + i, err);
+        rc = body_contacts(s, pose, b + i, R ? R + 9 * i : NULL, gap_max, out + i, err);
     return rc;
 }

@@ -143,5 +143,6 @@ const rs_surface_ops rs_mesh_ops = {.name = "MESH",
                                     .facet_index = rs_mesh_facet_index,
                                     .facet_count = rs_mesh_facet_count,
                                     .body = rs_mesh_body,
+                                    .body_run = rs_mesh_body_run,
                                     .feature_point = rs_mesh_feature_point,
                                     .syntax = &rs_mesh_syntax};

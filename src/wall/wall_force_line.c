@@ -1,17 +1,19 @@
-/* The line path's pass for a force law (RS_LAW_SETS_FORCE) with a model per contact
- * (rs_law.force_one): a run of spheres that each hold their one contact, their face
- * contacts given (wall_line.c), in one pass. Per contact the model on the contact as
- * rs_wall_force_contact describes it, with the contact's state variables taken from its
- * slot; once every contact's force and torque are finite, the slots (frame and state
- * variables), the loads onto the engine's rows, the wall's sums and the per-particle
- * rows, with the operations of the staged calls (rs_track_update, rs_track_load,
- * rs_cblock_inputs, the law's block call, rs_cblock_add_loads, rs_track_commit), so that
- * every number is theirs. A force, torque or stress that is NaN or Inf stops the call
- * before anything is written. */
+/* The line path's pass for a force law (RS_LAW_SETS_FORCE) with a model on a run of
+ * contacts (rs_law.force_run) or per contact (rs_law.force_one): a run of spheres that
+ * each hold their one contact, their face contacts given (wall_line.c), in one pass. The
+ * run's contacts in columns (rs_force_run), their state variables copied out of the slots,
+ * handed to the law's run operation, or to its model contact by contact as
+ * rs_wall_force_contact describes a contact; once every contact's force and torque are
+ * finite, the slots (frame and state variables), the loads onto the engine's rows, the
+ * wall's sums and the per-particle rows, with the operations of the staged calls
+ * (rs_track_update, rs_track_load, rs_cblock_inputs, the law's block call,
+ * rs_cblock_add_loads, rs_track_commit), so that every number is theirs. A force, torque
+ * or stress that is NaN or Inf stops the call before anything is written. */
 #include "wall_impl.h"
 
 #include "laws/builtin.h"
 #include "load_contact.h"
+#include "rs_v4.h"
 #include "track_fused.h"
 #include "track_run.h"
 
@@ -31,9 +33,12 @@ int wall_force_line_takes(const rs_wall *w)
            tr->nstatev <= RS_FORCE_LINE_STATEV;
 }
 
-/* What a run holds until every contact's model is through. */
+/* What a run holds until every contact's model is through: the forces and torques as
+ * rows of 3 (rs_force_run.F, T), then the stresses in columns. */
 typedef struct force_run {
-    double F[3][RS_TRACK_LINE_RUN], T[3][RS_TRACK_LINE_RUN], S[3][RS_TRACK_LINE_RUN];
+    double FT[2][3 * RS_TRACK_LINE_RUN];
+    double S[3][RS_TRACK_LINE_RUN];
+    double vw[3][RS_TRACK_LINE_RUN], rn[RS_TRACK_LINE_RUN];
     int acts[RS_TRACK_LINE_RUN];
     double hist[RS_TRACK_LINE_RUN * RS_FORCE_LINE_STATEV];
 } force_run;
@@ -48,7 +53,7 @@ static int check_contact(const rs_wall *w, const force_run *fr, int j, const int
     static const char *const fname[6] = {"force(1)",  "force(2)",  "force(3)",
                                          "torque(1)", "torque(2)", "torque(3)"};
     const int id = tag ? tag[row[j]] : row[j] + 1;
-    const double F[3] = {fr->F[0][j], fr->F[1][j], fr->F[2][j]};
+    const double *F = fr->FT[0] + 3 * j, *T = fr->FT[1] + 3 * j;
     const double n[3] = {c->nrm[0][j], c->nrm[1][j], c->nrm[2][j]};
     const double a[3] = {c->t1[0][j], c->t1[1][j], c->t1[2][j]};
     const double b[3] = {c->t2[0][j], c->t2[1][j], c->t2[2][j]};
@@ -60,7 +65,7 @@ static int check_contact(const rs_wall *w, const force_run *fr, int j, const int
             return rs_law_nonfinite_error(w->law, id, c->feature[j], j, m, sname[i], S[i],
                                           err);
     for (int i = 0; i < 6; i++) {
-        const double v = i < 3 ? F[i] : fr->T[i - 3][j];
+        const double v = i < 3 ? F[i] : T[i - 3];
         if (!isfinite(v))
             return rs_law_nonfinite_error(w->law, id, c->feature[j], j, m, fname[i], v,
                                           err);
@@ -68,15 +73,112 @@ static int check_contact(const rs_wall *w, const force_run *fr, int j, const int
     return RS_OK;
 }
 
-/* A contact's state variables, n of them (the usual few without a loop's overhead). */
-RS_INLINE void copy_statev(double *restrict d, const double *restrict s, int n)
+/* The state variables of m contacts, ns each, between the slots (at offset sv) and the
+ * run's copy h: into h (in) or back (!in); the usual four without a loop's overhead. */
+RS_INLINE void copy_statev(double *restrict h, double *const *slot, int sv, int ns, int m,
+                           const int in)
 {
-    if (n == 4) {
-        d[0] = s[0], d[1] = s[1], d[2] = s[2], d[3] = s[3];
+    if (ns == 4) {
+        for (int j = 0; j < m; j++) {
+            double *restrict d = in ? h + 4 * j : slot[j] + sv;
+            const double *restrict s = in ? slot[j] + sv : h + 4 * j;
+#ifdef RS_HAVE_V4
+            rs_v4 v;
+            rs_v4_load(&v, s);
+            rs_v4_store(d, &v);
+#else
+            d[0] = s[0], d[1] = s[1], d[2] = s[2], d[3] = s[3];
+#endif
+        }
         return;
     }
-    for (int k = 0; k < n; k++)
-        d[k] = s[k];
+    for (int j = 0; j < m; j++) {
+        double *restrict d = in ? h + (size_t)j * ns : slot[j] + sv;
+        const double *restrict s = in ? slot[j] + sv : h + (size_t)j * ns;
+        for (int k = 0; k < ns; k++)
+            d[k] = s[k];
+    }
+}
+
+/* d[0..2] += s[0..2]: the first two as one pair (the same additions). */
+RS_INLINE void add3(double *restrict d, const double *restrict s)
+{
+#if defined(__GNUC__)
+    typedef double pair __attribute__((vector_size(16)));
+    pair a, b;
+    memcpy(&a, d, sizeof a);
+    memcpy(&b, s, sizeof b);
+    a += b;
+    memcpy(d, &a, sizeof a);
+#else
+    d[0] += s[0], d[1] += s[1];
+#endif
+    d[2] += s[2];
+}
+
+/* The frames (n, t1) of the run's contacts into their slots, and the tracker's entries'
+ * points and features: what run_store (track_run.h) does for a slot of the frame and the
+ * state variables (RS_DROP_SLIP) whose contact is held, as every contact of the run is,
+ * and whose directory entry already names its feature, so that nothing else changes. */
+static void store_frames(const rs_contacts *c, int m, rs_track_out *o)
+{
+    const double *n0 = c->nrm[0], *n1 = c->nrm[1], *n2 = c->nrm[2];
+    const double *a0 = c->t1[0], *a1 = c->t1[1], *a2 = c->t1[2];
+    double *const *slot = o->slot;
+    int j = 0;
+    for (; j + 4 <= m; j += 4) {
+        double *const *h = slot + j;
+        rs_transpose4(n0 + j, n1 + j, n2 + j, a0 + j, h[0], h[1], h[2], h[3]);
+        for (int l = 0; l < 4; l++)
+            h[l][RS_H_T1 + 1] = a1[j + l], h[l][RS_H_T1 + 2] = a2[j + l];
+    }
+    for (; j < m; j++) {
+        double *h = slot[j];
+        h[RS_H_N] = n0[j], h[RS_H_N + 1] = n1[j], h[RS_H_N + 2] = n2[j];
+        h[RS_H_T1] = a0[j], h[RS_H_T1 + 1] = a1[j], h[RS_H_T1 + 2] = a2[j];
+    }
+    for (j = 0; j < m; j++) {
+        o->point[j] = c->point[j];
+        o->feature[j] = c->feature[j];
+    }
+}
+
+/* The run through a model per contact (rs_law.force_one), each contact described as
+ * rs_wall_force_contact describes it. */
+static int run_by_one(const rs_law *law, const rs_force_run *r, rs_error *err)
+{
+    rs_force_contact fc;
+    fc.wall_type = r->wall_type;
+    fc.setup = r->setup;
+    const int ns = r->nstatev;
+    /* the effective radius, computed again where the radius or the curvatures change
+     * from the last contact's (rs_cblock_inputs's) */
+    double last_R = NAN, last_k1 = NAN, last_k2 = NAN, reff = 0.0;
+    for (int j = 0; j < r->n; j++) {
+        fc.history = ns ? r->history + (size_t)j * (size_t)ns : NULL;
+        fc.row = r->row[j];
+        fc.overlap = r->overlap[j];
+        fc.radius = r->radius[j];
+        fc.mass = r->mass[j];
+        fc.curv[0] = r->curv[0][j];
+        fc.curv[1] = r->curv[1][j];
+        if (!(fc.radius == last_R && fc.curv[0] == last_k1 && fc.curv[1] == last_k2)) {
+            reff = rs_effective_radius(fc.radius, fc.curv[0], fc.curv[1]);
+            last_R = fc.radius, last_k1 = fc.curv[0], last_k2 = fc.curv[1];
+        }
+        fc.reff = reff;
+        for (int d = 0; d < 3; d++) {
+            fc.n[d] = r->nrm[d][j], fc.t1[d] = r->t1[d][j], fc.t2[d] = r->t2[d][j];
+            fc.xm[d] = r->xm[d][j];
+            fc.vwall[d] = r->vwall[0] ? r->vwall[d][j] : r->vwall0[d];
+        }
+        fc.type = r->type ? r->type[fc.row] : 1;
+        const int acts = law->force_one(law, &fc, r->F + 3 * j, r->T + 3 * j, err);
+        if (acts < 0)
+            return -acts;
+        r->acts[j] = acts;
+    }
+    return RS_OK;
 }
 
 RS_MULTIVERSION
@@ -110,102 +212,124 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
         for (int j = 0; j < m; j++)
             r.rd1[j] = p->radius[j] - c->dist[j];
     }
+    int ncontact = 0;
     for (int j = 0; j < m; j++)
-        r.live[j] = 1.0;
+        ncontact += r.rd1[j] > 0.0;
 
-    /* the model on each contact, its state in the run's copy of the slots */
+    /* the model on the run, its state in the run's copy of the slots */
     force_run fr;
     const rs_law *law = w->law;
-    const int *type = b->type;
-    rs_force_contact fc;
-    fc.vwall[0] = fc.vwall[1] = fc.vwall[2] = 0.0;
-    fc.wall_type = w->info.wall_type;
-    fc.setup = 0;
+    copy_statev(fr.hist, out->slot, sv, ns, m, 1);
+    memset(fr.FT[0], 0, 3 * (size_t)m * sizeof fr.FT[0][0]);
+    memset(fr.FT[1], 0, 3 * (size_t)m * sizeof fr.FT[1][0]);
+    rs_force_run fx;
+    fx.n = m;
+    fx.row = p->row;
+    fx.overlap = r.rd1;
+    fx.radius = p->radius;
+    fx.mass = p->mass;
+    for (int d = 0; d < 3; d++) {
+        fx.nrm[d] = c->nrm[d], fx.t1[d] = c->t1[d], fx.t2[d] = c->t2[d];
+        fx.xm[d] = c->xm[d];
+        fx.vwall[d] = NULL;
+        fx.vwall0[d] = 0.0;
+    }
+    fx.curv[0] = c->curv[0], fx.curv[1] = c->curv[1];
+    for (int j = 0; j < m; j++)
+        fr.rn[j] = (p->x[j] - c->xm[0][j]) * c->nrm[0][j] +
+                   (p->y[j] - c->xm[1][j]) * c->nrm[1][j] +
+                   (p->z[j] - c->xm[2][j]) * c->nrm[2][j];
+    fx.rn = fr.rn;
     /* the wall's velocity at xm, V + W x (xm - C), as rs_motion_velocity_at gives it */
-    const int moving = w->moving;
-    /* the effective radius, computed again where the radius or the curvatures change
-     * from the last contact's (rs_cblock_inputs's) */
-    double last_R = NAN, last_k1 = NAN, last_k2 = NAN, reff = 0.0;
-    uint64_t acc = 0;
-    for (int j = 0; j < m; j++) {
-        double *h = fr.hist + (size_t)j * (size_t)ns;
-        copy_statev(h, out->slot[j] + sv, ns);
-        fc.history = ns ? h : NULL;
-        fc.row = p->row[j];
-        fc.overlap = r.rd1[j];
-        fc.radius = p->radius[j];
-        fc.mass = p->mass[j];
-        fc.curv[0] = c->curv[0][j];
-        fc.curv[1] = c->curv[1][j];
-        if (!(fc.radius == last_R && fc.curv[0] == last_k1 && fc.curv[1] == last_k2)) {
-            reff = rs_effective_radius(fc.radius, fc.curv[0], fc.curv[1]);
-            last_R = fc.radius, last_k1 = fc.curv[0], last_k2 = fc.curv[1];
-        }
-        fc.reff = reff;
-        fc.n[0] = c->nrm[0][j], fc.n[1] = c->nrm[1][j], fc.n[2] = c->nrm[2][j];
-        fc.t1[0] = c->t1[0][j], fc.t1[1] = c->t1[1][j], fc.t1[2] = c->t1[2][j];
-        fc.t2[0] = c->t2[0][j], fc.t2[1] = c->t2[1][j], fc.t2[2] = c->t2[2][j];
-        fc.xm[0] = c->xm[0][j], fc.xm[1] = c->xm[1][j], fc.xm[2] = c->xm[2][j];
-        if (moving) {
-            const double rc3[3] = {fc.xm[0] - mr.C[0], fc.xm[1] - mr.C[1],
-                                   fc.xm[2] - mr.C[2]};
+    if (w->moving) {
+        for (int j = 0; j < m; j++) {
+            const double rc3[3] = {c->xm[0][j] - mr.C[0], c->xm[1][j] - mr.C[1],
+                                   c->xm[2][j] - mr.C[2]};
             double wr[3];
             rs_cross3(mr.W, rc3, wr);
             for (int d = 0; d < 3; d++)
-                fc.vwall[d] = mr.V[d] + wr[d];
+                fr.vw[d][j] = mr.V[d] + wr[d];
         }
-        fc.type = type ? type[fc.row] : 1;
-        double F[3] = {0.0, 0.0, 0.0}, T[3] = {0.0, 0.0, 0.0};
-        const int acts = law->force_one(law, &fc, F, T, err);
-        if (acts < 0)
-            return -acts;
-        fr.acts[j] = acts;
-        fr.F[0][j] = F[0], fr.F[1][j] = F[1], fr.F[2][j] = F[2];
-        fr.T[0][j] = T[0], fr.T[1][j] = T[1], fr.T[2][j] = T[2];
-        acc |= rs_nonfinite_bit(F[0]) | rs_nonfinite_bit(F[1]) | rs_nonfinite_bit(F[2]) |
-               rs_nonfinite_bit(T[0]) | rs_nonfinite_bit(T[1]) | rs_nonfinite_bit(T[2]);
-        /* the stress as rs_wall_force_result gives it (wall_force_stress); zeros where the
-         * model acts not */
-        if (out6) {
+        for (int d = 0; d < 3; d++)
+            fx.vwall[d] = fr.vw[d];
+    }
+    fx.history = ns ? fr.hist : NULL;
+    fx.nstatev = ns;
+    fx.type = b->type;
+    fx.wall_type = w->info.wall_type;
+    fx.setup = 0;
+    fx.F = fr.FT[0], fx.T = fr.FT[1];
+    fx.acts = fr.acts;
+    rc = law->force_run ? law->force_run(law, &fx, err) : run_by_one(law, &fx, err);
+    if (rc)
+        return rc;
+    /* any NaN or Inf of the forces and torques, and of the stresses as
+     * rs_wall_force_result gives them (wall_force_stress; zeros where the model acts not)
+     */
+    uint64_t acc = 0;
+    for (int k = 0; k < 3 * m; k++)
+        acc |= rs_nonfinite_bit(fr.FT[0][k]) | rs_nonfinite_bit(fr.FT[1][k]);
+    if (out6)
+        for (int j = 0; j < m; j++) {
+            const double n[3] = {c->nrm[0][j], c->nrm[1][j], c->nrm[2][j]};
+            const double a[3] = {c->t1[0][j], c->t1[1][j], c->t1[2][j]};
+            const double t[3] = {c->t2[0][j], c->t2[1][j], c->t2[2][j]};
             double S[3] = {0.0, 0.0, 0.0};
-            if (acts)
-                wall_force_stress(F, fc.n, fc.t1, fc.t2, S);
+            if (fr.acts[j])
+                wall_force_stress(fr.FT[0] + 3 * j, n, a, t, S);
             for (int d = 0; d < 3; d++) {
                 fr.S[d][j] = S[d];
                 acc |= rs_nonfinite_bit(S[d]);
             }
         }
-    }
     for (int j = 0; (acc >> 63) && j < m; j++)
         if ((rc = check_contact(w, &fr, j, p->row, b->id, c, m, err)))
             return rc;
 
     /* every value is finite: the slots, the loads and the sums */
     out->nleave = 0;
-    run_store(r.live, r.rd1, r.s1, r.s2, m, tr, c, 0, out, 0, 1, NULL, NULL);
-    for (int j = 0; j < m; j++)
-        copy_statev(out->slot[j] + sv, fr.hist + (size_t)j * (size_t)ns, ns);
+    store_frames(c, m, out);
+    copy_statev(fr.hist, out->slot, sv, ns, m, 0);
     out->n = m;
+    /* the wall's sums in the contacts' order (each contact's moment about the wall's
+     * origin as rs_load_force_law gives it, unit area), then the loads onto the engine's
+     * rows */
+    const double *const F = fr.FT[0], *const T = fr.FT[1];
     rs_wall_acc fm = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    int ncontact = 0;
     for (int j = 0; j < m; j++) {
-        const double f[3] = {fr.F[0][j], fr.F[1][j], fr.F[2][j]};
-        const double t[3] = {fr.T[0][j], fr.T[1][j], fr.T[2][j]};
         const double ctr[3] = {p->x[j], p->y[j], p->z[j]};
-        double Fo[3], To[3], M[3];
-        rs_load_force_law(1.0, f, t, ctr, origin, Fo, To, M);
-        rs_wall_acc_take(&fm, Fo, M);
-        const int rk = rows->row ? rows->row[j] : j;
-        rs_load_onto_row(rows, rk, Fo, To);
-        ncontact += r.rd1[j] > 0.0;
-        if (rows->deepest)
-            rows->deepest[j] = j;
-        if (out6) {
-            double *o = out6 + 6 * (size_t)rk;
+        double Fo[3], To[3], Mo[3];
+        rs_load_force_law(1.0, F + 3 * j, T + 3 * j, ctr, origin, Fo, To, Mo);
+        rs_wall_acc_take(&fm, Fo, Mo);
+    }
+    const rs_load_rows lr = *rows;
+    /* the engine's row of each contact: rows->row, or the run's own order */
+    int idn[RS_TRACK_LINE_RUN];
+    const int *rk = lr.row;
+    if (!rk) {
+        for (int j = 0; j < m; j++)
+            idn[j] = j;
+        rk = idn;
+    }
+    for (int j = 0; j < m; j++) {
+        add3(lr.f + 3 * (size_t)rk[j], F + 3 * j);
+        add3(lr.t + 3 * (size_t)rk[j], T + 3 * j);
+    }
+    if (lr.fstore)
+        for (int j = 0; j < m; j++) {
+            double *si = lr.fstore + 3 * (size_t)rk[j];
+            const double *f = F + 3 * j;
+            si[0] += f[0], si[1] += f[1], si[2] += f[2];
+        }
+    if (lr.deepest)
+        for (int j = 0; j < m; j++)
+            lr.deepest[j] = j;
+    if (out6)
+        for (int j = 0; j < m; j++) {
+            double *o = out6 + 6 * (size_t)rk[j];
             o[0] = r.rd1[j], o[1] = r.s1[j], o[2] = r.s2[j];
             o[3] = fr.S[0][j], o[4] = fr.S[1][j], o[5] = fr.S[2][j];
         }
-    }
     wl->force[0] = fm.fw0, wl->force[1] = fm.fw1, wl->force[2] = fm.fw2;
     wl->moment[0] = fm.mw0, wl->moment[1] = fm.mw1, wl->moment[2] = fm.mw2;
     wl->se = wl->fd = wl->pd = wl->vd = wl->cd = 0.0;

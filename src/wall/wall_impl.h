@@ -75,8 +75,8 @@ struct rs_wall {
     int line_pass;      ///< ... and on a revolved LINE or a MESH, per run of spheres
                         ///< (wall_line.c)
     int line_mesh;      ///< the line path on a MESH: the held faces' clear zones
-    int line_force;     ///< the line path calls the force law's model per contact
-                        ///< (rs_law.force_one; wall_force_line.c)
+    int line_force;     ///< the line path calls the force law's model on its runs
+                        ///< (rs_law.force_run or force_one; wall_force_line.c)
     double *type_props; ///< per type (ntypes + 1 rows of tp_n): hertz's or hooke's props
     char *type_has;     ///< per type: its row is set
     int tp_n, ntype_props;
@@ -322,7 +322,7 @@ int wall_blocks(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
 int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows,
                     const int *list, int n, double dt, rs_error *err);
 
-/* wall_force_line.c: the line path's pass for a force law's model per contact */
+/* wall_force_line.c: the line path's pass for a force law's model on runs of contacts */
 /// The most state variables a contact of the force pass keeps (in the run's copy).
 #define RS_FORCE_LINE_STATEV 16
 int wall_force_line_takes(const rs_wall *w);
@@ -335,6 +335,8 @@ static inline void wall_force_stress(const double F[3], const double n[3],
     s[1] = -(F[0] * t1[0] + F[1] * t1[1] + F[2] * t1[2]);
     s[2] = -(F[0] * t2[0] + F[1] * t2[1] + F[2] * t2[2]);
 }
+/// A run of spheres p, each holding the one contact of c that its directory entry names
+/// (the line path's usual spheres), through the force law's model.
 int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp, double dt,
                         const rs_particle_block *p, const rs_contacts *c,
                         const double origin[3], const rs_load_rows *rows, rs_wall_load *wl,

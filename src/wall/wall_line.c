@@ -78,6 +78,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     rs_pose_to_global(&w->motion->pose, w->surf->a, origin);
     const rs_motion *mp = w->moving || w->belt ? w->motion : NULL;
     const size_t ss = (size_t)wall_slot_size(w);
+    double *const hist = w->hist;
 
     /* One run: the query's columns at every sphere, then those of the spheres still usual
      * compacted in place to the front (the kernel reads entries 0 .. nu-1). */
@@ -85,7 +86,7 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     double px[M], py[M], pz[M], pvx[M], pvy[M], pvz[M], pwx[M], pwy[M], pwz[M], pr[M],
         pm[M];
     double *ph[M];
-    int pid[M], row[M], face[M], held[M], hint[M];
+    int pid[M], row[M], face[M], held[M];
     /* the frames, distances and features: what the kernel reads (no master points,
      * curvatures or shares: rs_line_revolution_faces leaves them out); for a force law's
      * model also the master points and curvatures (and shares, which the faces give) */
@@ -119,15 +120,14 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
         /* The next run: particles of one type whose directory is usual (their one contact
          * in slot 0, which the kernel takes if it is still the face's); the others join
          * the rest, but those whose distance bound keeps them away. */
-        int ix[M], m = 0;
+        int m = 0;
         for (; next < n; next++) {
-            int i = idx[next], u = usual[i];
-            if (!u) {
+            int i = idx[next];
+            if (!usual[i]) {
                 next = line_unusual(idx, next, n, usual, bounds ? &kb : NULL, rest, &nrest);
                 if (next == n)
                     break;
                 i = idx[next];
-                u = usual[i];
             }
             if (type && type[i] != run_t) {
                 if (m > 0)
@@ -139,33 +139,29 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
                 rest[nrest++] = i;
                 continue;
             }
-            held[m] = u; /* its summary: the feature it holds + 1 */
-            ix[m++] = i;
-            if (m == M) {
+            /* the run's sphere m, gathered as it joins */
+            const double *xi = x + 3 * (size_t)i;
+            px[m] = xi[0], py[m] = xi[1], pz[m] = xi[2];
+            pr[m] = radius[i], pm[m] = rmass[i];
+            ph[m] = hist + (size_t)i * ss;
+            row[m] = i;
+            if (++m == M) {
                 next++;
                 break;
             }
         }
         if (m == 0)
             continue;
-        for (int j = 0; j < m; j++) {
-            const int i = ix[j];
-            const double *xi = x + 3 * (size_t)i;
-            px[j] = xi[0], py[j] = xi[1], pz[j] = xi[2];
-            pr[j] = radius[i], pm[j] = rmass[i];
-            ph[j] = w->hist + (size_t)i * ss;
-            row[j] = i;
-        }
         if (kin) {
             for (int j = 0; j < m; j++) {
-                const int i = ix[j];
+                const int i = row[j];
                 const double *vi = v + 3 * (size_t)i;
                 pvx[j] = vi[0], pvy[j] = vi[1], pvz[j] = vi[2];
                 pid[j] = tag ? tag[i] : i + 1;
             }
             if (om)
                 for (int j = 0; j < m; j++) {
-                    const double *wi = om + 3 * (size_t)ix[j];
+                    const double *wi = om + 3 * (size_t)row[j];
                     pwx[j] = wi[0], pwy[j] = wi[1], pwz[j] = wi[2];
                 }
             else
@@ -173,14 +169,14 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
                     pwx[j] = pwy[j] = pwz[j] = 0.0;
         }
         if (w->line_mesh) {
-            /* the depth limit of any block's query (wall_block.c) */
+            /* the face each holds; the depth limit of any block's query (wall_block.c) */
             double rmax = w->rglob;
             for (int j = 0; j < m; j++) {
-                hint[j] = held[j] - 1; /* the face each holds */
+                held[j] = usual[row[j]] - 1;
                 rmax = rmax > pr[j] ? rmax : pr[j];
             }
-            rs_mesh_held_balls(w->surf, &w->motion->pose, m, px, py, pz, pr, hint, gap_max,
-                               -rmax, w->hball, ix, &c, face);
+            rs_mesh_held_balls(w->surf, &w->motion->pose, m, px, py, pz, pr, held, gap_max,
+                               -rmax, w->hball, row, &c, face);
         } else {
             rs_line_revolution_faces(w->surf, &w->motion->pose, m, px, py, pz, pr, gap_max,
                                      &c, face);
@@ -191,10 +187,12 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
          * face takes only centres in front of it (rs_line_face1), so a sphere behind it
          * goes to the rest, where behind none leaves it alone (keep_tracked). */
         int nu = 0;
+        const double wall_tracking = w->tracking, track_tracking = w->tracker.tracking;
         for (int j = 0; j < m; j++) {
-            const int still_usual = face[j] && c.dist[j] <= w->tracking + pr[j] &&
-                                    !(c.dist[j] - pr[j] > w->tracker.tracking) &&
-                                    held[j] == c.feature[j] + 1;
+            /* every test made (no branch between them): rows and features are valid */
+            const int still_usual = (face[j] != 0) & (c.dist[j] <= wall_tracking + pr[j]) &
+                                    !(c.dist[j] - pr[j] > track_tracking) &
+                                    (usual[row[j]] == c.feature[j] + 1);
             if (!still_usual) {
                 rest[n - 1 - nheld++] = row[j];
                 continue;

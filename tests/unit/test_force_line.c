@@ -1,7 +1,8 @@
-/* A force law with a model per contact (rs_law.force_one) on the wall's line path
- * (src/wall/wall_force_line.c) against the staged calls (keyword fused no), through the
- * wall's public calls as an engine makes them (rs_wall_create with the engine's own law,
- * rs_wall_advance, rs_wall_step, rs_wall_reneighbor):
+/* A force law with a model per contact (rs_law.force_one), and one that also has the
+ * model's operation on a run of contacts in columns (rs_law.force_run), on the wall's line
+ * path (src/wall/wall_force_line.c) against the staged calls (keyword fused no), through
+ * the wall's public calls as an engine makes them (rs_wall_create with the engine's own
+ * law, rs_wall_advance, rs_wall_step, rs_wall_reneighbor):
  * - a drum (a REVOLUTION of one LINE, r = 50 mm about z) turning at 3 rad/s with spheres
  *   of two radii tumbling in it under gravity along -y;
  * - a square plate of two triangles (an STL MESH) moving along x, with spheres sliding
@@ -10,14 +11,15 @@
  * torques and per-particle outputs (peratom yes) are the same bit for bit, so the runs
  * stay identical, and the wall's sums agree to rounding. The model's one-contact calls
  * outside the block call show that the line path took most contacts in the first run
- * and none in the second. The model, written here for the test, is a spring-dashpot with
- * a tangential spring kept in space and capped by Coulomb, whose state variables hold
- * that spring and the effective radius where the contact began: it reads every field a
- * force law is given (overlap, radius, mass, effective radius, normal, master point, the
- * wall's velocity there, the history). A model that returns NaN stops the step with a
- * message that names the law and the first value that is not finite (stress(1), the force
- * along n), on the line path as in the block call, and leaves the engine's rows as they
- * were. */
+ * and none in the second; with the run operation, that the line path called it and not
+ * the model per contact, and that its column rn is (x - xm).n bit for bit. The model,
+ * written here for the test, is a spring-dashpot with a tangential spring kept in space and
+ * capped by Coulomb, whose state variables hold that spring and the effective radius where
+ * the contact began: it reads every field a force law is given (overlap, radius, mass,
+ * effective radius, normal, master point, the wall's velocity there, the history). A model
+ * that returns NaN stops the step with a message that names the law and the first value
+ * that is not finite (stress(1), the force along n), on the line path as in the block call,
+ * and leaves the engine's rows as they were. */
 #define _POSIX_C_SOURCE 200809L /* getpid, unlink */
 #include "rigidsurf/vec.h"
 #include "rigidsurf/wall.h"
@@ -42,6 +44,9 @@ typedef struct sim {
     long direct;   ///< the model's calls outside the block call (the line path's)
     long calls;    ///< all its calls
     int nan_at;    ///< the particle (id) whose contact gives NaN from this step on; 0: none
+    int by_run;    ///< the law has the run operation (tf_run)
+    long runs;     ///< its calls
+    long rn_differ; ///< its contacts whose rn is not (x - xm).n bit for bit
 } sim;
 
 static int tf_one(const rs_law *law, rs_force_contact *c, double F[3], double T[3],
@@ -97,6 +102,48 @@ static int tf_one(const rs_law *law, rs_force_contact *c, double F[3], double T[
     return 1;
 }
 
+/* The model on a run in columns (rs_law.force_run): each contact as rs_wall_force_contact
+ * describes it (tf_update), from the run's columns. */
+static int tf_run(const rs_law *law, const rs_force_run *r, rs_error *err)
+{
+    sim *s = law->ctx;
+    s->runs++;
+    for (int j = 0; j < r->n; j++) {
+        rs_force_contact c;
+        memset(&c, 0, sizeof c);
+        c.row = r->row[j];
+        c.overlap = r->overlap[j];
+        c.radius = r->radius[j];
+        c.mass = r->mass[j];
+        c.curv[0] = r->curv[0][j];
+        c.curv[1] = r->curv[1][j];
+        c.reff = rs_effective_radius(c.radius, c.curv[0], c.curv[1]);
+        for (int d = 0; d < 3; d++) {
+            c.n[d] = r->nrm[d][j], c.t1[d] = r->t1[d][j], c.t2[d] = r->t2[d][j];
+            c.xm[d] = r->xm[d][j];
+            c.vwall[d] = r->vwall[0] ? r->vwall[d][j] : r->vwall0[d];
+        }
+        /* the centre's distance from the master point along n, as the run gives it */
+        const double *x = s->x[c.row];
+        const double rn = (x[0] - c.xm[0]) * c.n[0] + (x[1] - c.xm[1]) * c.n[1] +
+                          (x[2] - c.xm[2]) * c.n[2];
+        if (memcmp(&rn, &r->rn[j], sizeof rn) != 0)
+            s->rn_differ++;
+        c.history = r->history + (size_t)j * (size_t)r->nstatev;
+        c.type = r->type ? r->type[c.row] : 1;
+        c.wall_type = r->wall_type;
+        c.setup = r->setup;
+        double F[3] = {0.0, 0.0, 0.0}, T[3] = {0.0, 0.0, 0.0};
+        const int acts = tf_one(law, &c, F, T, err);
+        if (acts < 0)
+            return -acts;
+        r->acts[j] = acts;
+        for (int d = 0; d < 3; d++)
+            r->F[3 * j + d] = F[d], r->T[3 * j + d] = T[d];
+    }
+    return RS_OK;
+}
+
 static int tf_update(const rs_law *law, rs_law_block *b, rs_error *err)
 {
     sim *s = law->ctx;
@@ -124,6 +171,7 @@ static int tf_engine_law(void *ctx, const char *const *words, int nwords,
     s->law.nstatev = 4;
     s->law.update = tf_update;
     s->law.force_one = tf_one;
+    s->law.force_run = s->by_run ? tf_run : NULL;
     s->law.ctx = s;
     s->law.skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_SLIP |
                    RS_LAW_SKIPS_DRDISP1;
@@ -249,14 +297,18 @@ static void check_pair(sim *a, sim *b, const char *name, long nsteps, long min_c
     long contacts = 0;
     lockstep(a, b, nsteps, &contacts);
     const int ok = !rs_test_current_failed;
-    printf("%s: %ld contacts over the run; the model called %ld times on the line path of "
-           "%ld (staged run: %ld of %ld)\n",
-           name, contacts, a->direct, a->calls, b->direct, b->calls);
+    printf("%s%s: %ld contacts over the run; the model called %ld times on the line path "
+           "of %ld (staged run: %ld of %ld), the run operation %ld times\n",
+           name, a->by_run ? " (run operation)" : "", contacts, a->direct, a->calls,
+           b->direct, b->calls, a->runs);
     rs_wall_free(a->w);
     rs_wall_free(b->w);
     ENSURE(ok);
     ENSURE(contacts > min_contacts);
     ENSURE(a->direct > a->calls / 2 && b->direct == 0 && b->calls == a->calls);
+    ENSURE(a->by_run ? a->runs > 0 : a->runs == 0);
+    ENSURE(a->rn_differ == 0);
+    ENSURE(b->runs == 0);
 }
 
 /* A sphere per place of a grid over the drum's lower half, alternating radii 2 and 1.5
@@ -288,14 +340,17 @@ static const char *const DRUM[] = {
 
 static void test_drum_line_path_and_staged_bit_for_bit(void)
 {
-    static sim a, b;
-    drum_particles(&a);
-    drum_particles(&b);
-    rs_error e;
-    const int n = (int)(sizeof DRUM / sizeof DRUM[0]);
-    ENSURE(make(&a, DRUM, n, 0, &e) == RS_OK);
-    ENSURE(make(&b, DRUM, n, 1, &e) == RS_OK);
-    check_pair(&a, &b, "drum", 3000, 3000 * 40);
+    for (int by_run = 0; by_run < 2; by_run++) {
+        static sim a, b;
+        drum_particles(&a);
+        drum_particles(&b);
+        a.by_run = b.by_run = by_run;
+        rs_error e;
+        const int n = (int)(sizeof DRUM / sizeof DRUM[0]);
+        ENSURE(make(&a, DRUM, n, 0, &e) == RS_OK);
+        ENSURE(make(&b, DRUM, n, 1, &e) == RS_OK);
+        check_pair(&a, &b, "drum", 3000, 3000 * 40);
+    }
 }
 
 /* A square plate z = 0 of side 0.1 m, two triangles along its diagonal, into path. */
@@ -342,25 +397,32 @@ static void test_mesh_line_path_and_staged_bit_for_bit(void)
 {
     char path[128];
     ENSURE(write_plate(path, sizeof path));
-    static sim a, b;
-    plate_particles(&a);
-    plate_particles(&b);
     const char *words[] = {"surface", "inline", "mesh", path, "move",
                            "linear",  "0.2",    "0",    "0"};
-    rs_error e;
-    const int ma = make(&a, words, 9, 0, &e), mb = make(&b, words, 9, 1, &e);
+    for (int by_run = 0; by_run < 2; by_run++) {
+        static sim a, b;
+        plate_particles(&a);
+        plate_particles(&b);
+        a.by_run = b.by_run = by_run;
+        rs_error e;
+        const int ma = make(&a, words, 9, 0, &e), mb = make(&b, words, 9, 1, &e);
+        ENSURE(ma == RS_OK && mb == RS_OK);
+        if (ma == RS_OK && mb == RS_OK)
+            check_pair(&a, &b, "plate", 1500, 1500 * NP / 2);
+    }
     unlink(path);
-    ENSURE(ma == RS_OK && mb == RS_OK);
-    check_pair(&a, &b, "plate", 1500, 1500 * NP / 2);
 }
 
 /* A model that returns NaN for one particle: the step fails with the law's name, the
  * particle and what was not finite, and the engine's rows are as they were. */
 static void test_nan_stops_the_step(void)
 {
-    for (int staged = 0; staged < 2; staged++) {
+    for (int v = 0; v < 3; v++) {
+        /* the line path with the model per contact, with the run operation; staged */
+        const int staged = v == 2;
         static sim s;
         drum_particles(&s);
+        s.by_run = v == 1;
         rs_error e;
         const int n = (int)(sizeof DRUM / sizeof DRUM[0]);
         ENSURE(make(&s, DRUM, n, staged, &e) == RS_OK);
@@ -377,7 +439,7 @@ static void test_nan_stops_the_step(void)
         rs_wall_rows rows;
         memset(&rows, 0, sizeof rows);
         rows.f = s.f[0], rows.torque = s.t[0];
-        const long direct = s.direct;
+        const long direct = s.direct, runs = s.runs;
         if (rc == RS_OK)
             rc = rs_wall_advance(s.w, DT, &e);
         const int step_rc = rc == RS_OK ? rs_wall_step(s.w, &b, &rows, DT, &load, &e) : rc;
@@ -387,6 +449,7 @@ static void test_nan_stops_the_step(void)
                strstr(e.msg, "stress(1)"));
         ENSURE(same_bits(f0, s.f, sizeof f0));
         ENSURE(staged ? s.direct == direct : s.direct > direct);
+        ENSURE(s.by_run ? s.runs > runs : s.runs == 0);
     }
 }
 
