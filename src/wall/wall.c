@@ -390,8 +390,8 @@ int rs_wall_init(rs_wall *w, const rs_wall_run *run, const rs_wall_block *b, rs_
     /* ... or a force law's model on a run of contacts or per contact (rs_law.force_run,
      * force_one), whose contacts' slots keep the frame and the state variables alone
      * (wall_force_line.c) ... */
-    w->line_force = fusable && !w->law->fused &&
-                    (w->law->force_run || w->law->force_one) && wall_force_line_takes(w);
+    w->line_force = fusable && !w->law->fused && (w->law->force_run || w->law->force_one) &&
+                    wall_force_line_takes(w);
     /* ... and on a revolved LINE, or on a MESH from the faces its spheres hold (with its
      * candidate lists for the rest), per run of spheres without the block's columns. */
     w->line_mesh = lists && rs_mesh_held(w->surf);
