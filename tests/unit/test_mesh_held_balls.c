@@ -10,6 +10,7 @@
 #include "faceted/cgal_mesh.h"
 #include "faceted/mesh.h"
 #include "faceted/mesh_held.h"
+#include "mesh_soup.h"
 #include "rigidsurf/motion.h"
 #include "rigidsurf/surface.h"
 #include "rigidsurf/vec.h"
@@ -21,89 +22,6 @@
 #include <string.h>
 
 enum { NB = 64, STEPS = 160 };
-
-/* A polygon soup of at most 4 corners a polygon. */
-typedef struct soup {
-    int np, nf;
-    double xyz[3 * 4096];
-    int off[4097], idx[4 * 4096];
-} soup;
-
-static int sp_point(soup *s, double x, double y, double z)
-{
-    s->xyz[3 * s->np] = x, s->xyz[3 * s->np + 1] = y, s->xyz[3 * s->np + 2] = z;
-    return s->np++;
-}
-
-static void sp_poly(soup *s, int n, int a, int b, int c, int d)
-{
-    int *k = s->idx + s->off[s->nf];
-    k[0] = a, k[1] = b, k[2] = c, k[3] = d;
-    s->off[s->nf + 1] = s->off[s->nf] + n;
-    s->nf++;
-}
-
-/* The benchmark's cylinder (bench/liggghts/make_stl.py): nth x nz quads, split in two
- * triangles or kept whole, nodes on the circle of radius R / cos(pi / nth), wound toward
- * the axis. */
-static void cylinder(soup *s, int nth, int nz, double R, double zlo, double zhi, int quads)
-{
-    memset(s, 0, sizeof *s);
-    const double rv = R / cos(RS_PI / nth);
-    for (int k = 0; k <= nz; k++)
-        for (int i = 0; i < nth; i++) {
-            const double a = 2 * RS_PI * i / nth;
-            sp_point(s, rv * cos(a), rv * sin(a), zlo + (zhi - zlo) * k / nz);
-        }
-    for (int i = 0; i < nth; i++)
-        for (int k = 0; k < nz; k++) {
-            const int a = k * nth + i, b = k * nth + (i + 1) % nth;
-            const int c = (k + 1) * nth + (i + 1) % nth, d = (k + 1) * nth + i;
-            if (quads) {
-                sp_poly(s, 4, a, d, c, b);
-            } else {
-                sp_poly(s, 3, a, d, c, 0);
-                sp_poly(s, 3, a, c, b, 0);
-            }
-        }
-}
-
-/* A UV sphere of radius 1, triangles, wound outward. */
-static void uv_sphere(soup *s, int nlat, int nlon)
-{
-    memset(s, 0, sizeof *s);
-    const int north = sp_point(s, 0, 0, 1);
-    for (int i = 1; i < nlat; i++)
-        for (int j = 0; j < nlon; j++) {
-            const double th = RS_PI * i / nlat, ph = 2 * RS_PI * j / nlon;
-            sp_point(s, sin(th) * cos(ph), sin(th) * sin(ph), cos(th));
-        }
-    const int south = sp_point(s, 0, 0, -1);
-    for (int j = 0; j < nlon; j++)
-        sp_poly(s, 3, north, 1 + j, 1 + (j + 1) % nlon, 0);
-    for (int i = 0; i + 2 < nlat; i++)
-        for (int j = 0; j < nlon; j++) {
-            const int a = 1 + i * nlon + j, b = 1 + i * nlon + (j + 1) % nlon;
-            sp_poly(s, 3, a, a + nlon, b + nlon, 0);
-            sp_poly(s, 3, a, b + nlon, b, 0);
-        }
-    const int last = 1 + (nlat - 2) * nlon;
-    for (int j = 0; j < nlon; j++)
-        sp_poly(s, 3, south, last + (j + 1) % nlon, last + j, 0);
-}
-
-static int make(const soup *sp, int sides, rs_surface *s)
-{
-    rs_soup so = {sp->np, sp->nf, (double *)sp->xyz, (int *)sp->off, (int *)sp->idx, NULL};
-    const double frame[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    memset(s, 0, sizeof *s);
-    s->sides = sides;
-    rs_error e;
-    const int rc = rs_mesh_surface_soup(s, &so, 1.0, frame, 2, "test", &e);
-    if (rc)
-        fprintf(stderr, "mesh: %s\n", e.msg);
-    return rc;
-}
 
 /* Do contact lists a and b hold the same m entries, value for value? */
 static int same_lists(const rs_contacts *a, const rs_contacts *b, int m)
@@ -290,7 +208,8 @@ static void walk_case(const char *name, const soup *sp, int sides, const rs_pose
 
 static void cylinder_walks(void)
 {
-    static soup sp;
+    soup sp;
+    memset(&sp, 0, sizeof sp);
     rs_pose pose;
     const double c = cos(0.7), sn = sin(0.7);
     const double R[9] = {c, -sn, 0, sn, c, 0, 0, 0, 1};
@@ -303,15 +222,18 @@ static void cylinder_walks(void)
             walk_case(name, &sp, sides, NULL, 0.001, 2e-6,
                       11 + 2 * (unsigned)quads + sides);
         walk_case(name, &sp, 2, &pose, 0.001, 2e-6, 17 + (unsigned)quads);
+        sp_free(&sp);
     }
 }
 
 static void sphere_walks(void)
 {
-    static soup sp;
+    soup sp;
+    memset(&sp, 0, sizeof sp);
     uv_sphere(&sp, 24, 48);
     for (int sides = 1; sides <= 2; sides++)
         walk_case("sphere", &sp, sides, NULL, 0.02, 2e-4, 31 + (unsigned)sides);
+    sp_free(&sp);
 }
 
 int main(void)
