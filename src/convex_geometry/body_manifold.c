@@ -22,7 +22,7 @@ typedef struct cand {
 /* The direction (c0, s0) of d's part in the body's x-y plane (unit; (1, 0) along z). */
 static void rim_turn(const double d[3], double *c0, double *s0)
 {
-    const double rho = hypot(d[0], d[1]);
+    const double rho = rs_norm2(d[0], d[1]);
     *c0 = rho > 0.0 ? d[0] / rho : 1.0, *s0 = rho > 0.0 ? d[1] / rho : 0.0;
 }
 

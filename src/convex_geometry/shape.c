@@ -287,7 +287,7 @@ void rs_shape_core_support(const rs_shape *s, const double dir[3], double out[3]
         return;
     case RS_SHAPE_CYLINDER:
     case RS_SHAPE_CONE: {
-        const double rho = hypot(d[0], d[1]);
+        const double rho = rs_norm2(d[0], d[1]);
         double rim[3] = {0.0, 0.0, 0.0};
         if (rho > 0.0) {
             rim[0] = h[0] * d[0] / rho;
