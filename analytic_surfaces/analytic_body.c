@@ -6,18 +6,41 @@
  * profile's ownership rules give it to the face (rs_pcache_face); elsewhere, and on a
  * REVOLUTION, the iterate asks the kind's point query. Both give the same contact. */
 #include "convex_internal.h"
+#include "flat_face.h"
 #include "profile.h"
 #include "revolution_point.h"
 
+#include <stdlib.h>
 #include <string.h>
 
-/* A query's set-up for the iterates: the surface, its profile's data and the frame of
- * its pose (rs_analytic_frame). */
+/* Faces of a run set up at once (rs_flat_face), the first met; the others by face_at. */
+enum { FACE_KITS = 8 };
+
+/* A query's set-up for the iterates and the core points: the surface, its profile's data,
+ * the frame of its pose (rs_analytic_frame) and the kits of the faces met so far (kit
+ * -1: k is no LINE's face of the stored form). */
 typedef struct face_ctx {
     const rs_surface *s;
     const rs_pcache *pc;
     double F[12];
+    int nkit, kit_k[FACE_KITS], kit_ok[FACE_KITS];
+    rs_flat_face kit[FACE_KITS];
 } face_ctx;
+
+/* The kit of LINE k's face, set up on first use; NULL where there is none (a curve, no
+ * room left). */
+static const rs_flat_face *kit_of(face_ctx *c, int k)
+{
+    for (int j = 0; j < c->nkit; j++)
+        if (c->kit_k[j] == k)
+            return c->kit_ok[j] ? c->kit + j : NULL;
+    if (c->nkit == FACE_KITS)
+        return NULL;
+    const int j = c->nkit++;
+    c->kit_k[j] = k;
+    c->kit_ok[j] = rs_flat_face_init(c->kit + j, c->s, c->F, k);
+    return c->kit_ok[j] ? c->kit + j : NULL;
+}
 
 /* The contact of point p on LINE k's face of an extruded profile, with the surface's frame
  * F in its pose (rs_analytic_frame), as rs_analytic_closest makes it: the point's local
@@ -50,20 +73,58 @@ static int face_at(const rs_surface *s, const rs_pcache *pc, const double *restr
     return 1;
 }
 
-/* rs_body_face_fn of an extruded profile: the contact of point p on face want (face_at). */
+/* rs_body_face_fn of an extruded profile: the contact of point p on face want (its kit,
+ * else face_at). */
 static int extruded_face(const void *ctx, int want, const double p[3], double gap,
                          rs_body_contact *o)
 {
-    const face_ctx *c = ctx;
+    face_ctx *c = (face_ctx *)ctx; /* (its kits made on first use) */
+    if (RS_FEATURE_TYPE(want) != RS_FEAT_FACE)
+        return 0;
+    const int k = RS_FEATURE_INDEX(want);
+    const rs_flat_face *kit = kit_of(c, k);
+    double dist;
+    const int got = kit ? rs_flat_face_at(kit, p, -gap, gap, &dist, o->xm, o->normal,
+                                          o->t1, o->t2)
+                        : -1;
+    if (got == 0)
+        return 0;
+    if (got == 1) {
+        o->feature = RS_FEATURE(RS_FEAT_FACE, k);
+        o->depth = -dist;
+        o->curv[0] = o->curv[1] = 0.0;
+        return 1;
+    }
     rs_hit2 h;
-    if (RS_FEATURE_TYPE(want) != RS_FEAT_FACE ||
-        !face_at(c->s, c->pc, c->F, RS_FEATURE_INDEX(want), p, -gap, gap, &h, o->xm,
-                 o->normal, o->t1, o->t2))
+    if (!face_at(c->s, c->pc, c->F, k, p, -gap, gap, &h, o->xm, o->normal, o->t1, o->t2))
         return 0;
     o->feature = h.feature;
     o->depth = -h.dist;
     o->curv[0] = h.kappa;
     o->curv[1] = 0.0;
+    return 1;
+}
+
+/* rs_body_point_fn of an extruded profile (rs_analytic_feature_point on the run's kits):
+ * a core point's ball on LINE face f. */
+static int extruded_point(const void *ctx, int f, const double x[3], double radius,
+                          double gap_max, double depth_max, double *dist, double xm[3],
+                          double n[3], double t1[3], double t2[3])
+{
+    face_ctx *c = (face_ctx *)ctx;
+    if (RS_FEATURE_TYPE(f) != RS_FEAT_FACE || f != RS_FEATURE_BASE(f))
+        return 0;
+    const int k = RS_FEATURE_INDEX(f);
+    const rs_flat_face *kit = kit_of(c, k);
+    const int got = kit ? rs_flat_face_at(kit, x, -depth_max, gap_max + radius, dist, xm,
+                                          n, t1, t2)
+                        : -1;
+    if (got >= 0)
+        return got;
+    rs_hit2 h;
+    if (!face_at(c->s, c->pc, c->F, k, x, -depth_max, gap_max + radius, &h, xm, n, t1, t2))
+        return 0;
+    *dist = h.dist;
     return 1;
 }
 
@@ -74,11 +135,24 @@ int rs_analytic_body_run(const rs_surface *s, const rs_pose *pose, const rs_body
     if (!s->impl || (s->kind != RS_SURF_CYLINDER && s->kind != RS_SURF_SEGMENTS))
         return rs_body_fixed_point_run(s, pose, b, R, n, gap_max, lenient, NULL, NULL, out,
                                        &w->fp, err);
-    face_ctx c;
-    c.s = s;
-    c.pc = s->impl;
-    rs_analytic_frame(s, pose, c.F);
-    return rs_body_fixed_point_run(s, pose, b, R, n, gap_max, lenient, extruded_face, &c,
+    /* the run's set-up, kept in the work for its core points (rs_body_work.point) */
+    if (w->kind_bytes < sizeof(face_ctx)) {
+        free(w->kind_mem);
+        w->kind_bytes = 0;
+        if (!(w->kind_mem = malloc(sizeof(face_ctx))))
+            return rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
+        w->kind_bytes = sizeof(face_ctx);
+    }
+    face_ctx *c = w->kind_mem;
+    c->s = s;
+    c->pc = s->impl;
+    c->nkit = 0;
+    rs_analytic_frame(s, pose, c->F);
+    if (s->ops->feature_point) { /* (a kind's table without it: every point asked) */
+        w->point = extruded_point;
+        w->point_ctx = c;
+    }
+    return rs_body_fixed_point_run(s, pose, b, R, n, gap_max, lenient, extruded_face, c,
                                    out, &w->fp, err);
 }
 

@@ -420,6 +420,7 @@ void rs_body_work_free(rs_body_work *w)
     free(w->x);
     free(w->off);
     free(w->rot);
+    free(w->kind_mem);
     rs_body_fixed_work_free(&w->fp);
     memset(w, 0, sizeof *w);
 }
@@ -504,6 +505,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
             rs_body_rotation(b + i, w->rot + 9 * i);
         rot = w->rot;
     }
+    w->point = NULL, w->point_ctx = NULL; /* (the kind's body_run may set them) */
     if (rc == RS_OK)
         rc = rot ? s->ops->body_run(s, pose, b, rot, n, gap_max, 1, fl, w, err)
                  : s->ops->body(s, pose, b, n, gap_max, 1, fl, err);
@@ -602,17 +604,22 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                                       q->cw[1] + lift * o->normal[1],
                                       q->cw[2] + lift * o->normal[2]};
                 /* the kind's closed form where it has one and it pays, else the block's
-                 * query: on a MESH, whose point query is dear, for every core point; on
-                 * the other kinds, whose query of a block is cheaper a point than the
-                 * closed form, for a polyhedron's cap vertices, whose answers let the
-                 * manifold stop after the first few; the frame kept where it does not
-                 * follow from n (not on a MESH) */
+                 * query: on a flat feature, the run's own closed form where the kind's
+                 * body_run set one up (an extruded profile's LINE faces, cheaper a point
+                 * than the block's query); else on a MESH, whose point query is dear, for
+                 * every core point, and on the other kinds for a polyhedron's cap
+                 * vertices, whose answers let the manifold stop after the first few; the
+                 * frame kept where it does not follow from n (not on a MESH) */
                 q->framed = !mesh;
+                const int fb = RS_FEATURE_BASE(o->feature);
                 const int known =
-                    (mesh || poly) && s->ops->feature_point &&
-                    s->ops->feature_point(s, pose, RS_FEATURE_BASE(o->feature), cl,
-                                          rr + lift, win[i], win[i], &q->dist, q->xm, q->n,
-                                          mesh ? NULL : q->t1, mesh ? NULL : q->t2);
+                    flat && w->point
+                        ? w->point(w->point_ctx, fb, cl, rr + lift, win[i], win[i], &q->dist,
+                                   q->xm, q->n, q->t1, q->t2)
+                        : (mesh || poly) && s->ops->feature_point &&
+                              s->ops->feature_point(s, pose, fb, cl, rr + lift, win[i],
+                                                    win[i], &q->dist, q->xm, q->n,
+                                                    mesh ? NULL : q->t1, mesh ? NULL : q->t2);
                 q->ball = -1;
                 if (!known)
                     corners_ball(&cq, q, cl, rr + lift);

@@ -149,6 +149,12 @@ void rs_body_fixed_work_free(rs_body_fixed_work *w);
 int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body *b, int n,
                         double gap_max, int lenient, rs_body_contacts *out, rs_error *err);
 
+/// A kind's closed form of a core point's ball on a flat feature f for one run of bodies
+/// (the arguments and answer of rs_surface_ops.feature_point, the pose the run's), on
+/// the context its body_run set up (rs_body_work.point).
+typedef int (*rs_body_point_fn)(const void *ctx, int f, const double x[3], double radius,
+                                double gap_max, double depth_max, double *dist,
+                                double xm[3], double n[3], double t1[3], double t2[3]);
 /// rs_body_manifold's work arrays, kept over the runs of bodies of one query (zero it
 /// first; rs_body_work_free).
 typedef struct rs_body_work {
@@ -163,6 +169,13 @@ typedef struct rs_body_work {
     double *rot; ///< the bodies' rotations (rs_surface_ops.body_run)
     int nrot;
     rs_body_fixed_work fp; ///< the kind's (rs_surface_ops.body_run)
+    /// The kind's closed form of the run's core points on flat features, set by its
+    /// body_run (NULL: rs_surface_ops.feature_point where the manifold asks it), on the
+    /// context point_ctx it keeps in kind_mem (kind_bytes; freed with the work).
+    rs_body_point_fn point;
+    const void *point_ctx;
+    void *kind_mem;
+    size_t kind_bytes;
 } rs_body_work;
 /// rs_body_manifold on the work arrays w, grown as needed and kept.
 int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body *body,
