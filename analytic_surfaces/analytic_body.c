@@ -10,6 +10,7 @@
 #include "profile.h"
 #include "revolution_point.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -105,6 +106,14 @@ static int extruded_face(const void *ctx, int want, const double p[3], double ga
     return 1;
 }
 
+/* rs_body_kit_fn of an extruded profile: the kit of LINE face f (kit_of). */
+static const rs_flat_face *extruded_kit(const void *ctx, int f)
+{
+    if (RS_FEATURE_TYPE(f) != RS_FEAT_FACE || f != RS_FEATURE_BASE(f))
+        return NULL;
+    return kit_of((face_ctx *)ctx, RS_FEATURE_INDEX(f));
+}
+
 /* rs_body_point_fn of an extruded profile (rs_analytic_feature_point on the run's kits):
  * a core point's ball on LINE face f. */
 static int extruded_point(const void *ctx, int f, const double x[3], double radius,
@@ -128,6 +137,65 @@ static int extruded_point(const void *ctx, int f, const double x[3], double radi
     return 1;
 }
 
+/* The bodies whose one feature near them is a LINE's face set up in c (a kit), settled
+ * at the fixed point's first step: each body's reach sphere asked in one block as the
+ * fixed point asks it (rs_body_fixed_point_run), and where its only feature within its
+ * window is such a face, the body's support along the face's normal answered by the kit
+ * with that normal again (the fixed point's test of a settled step); that contact, with
+ * one iteration, into out[i] where within the gap, and settled[i] = 1. The others are left
+ * to the fixed point (settled[i] = 0): the same contacts either way. */
+static int settle_flat(face_ctx *c, const rs_pose *pose, const rs_body *b, const double *R,
+                       int n, double gap_max, double *mem, unsigned char *settled,
+                       rs_body_contacts *out, rs_contacts *pc, rs_error *err)
+{
+    double *reach = mem, *x = reach + n, *y = x + n, *z = y + n, *win = z + n;
+    double far = gap_max;
+    for (int i = 0; i < n; i++) {
+        reach[i] = rs_body_reach(b + i);
+        x[i] = b[i].x[0], y[i] = b[i].x[1], z[i] = b[i].x[2];
+        const double wi = 2.0 * reach[i] + gap_max;
+        win[i] = wi > gap_max ? wi : gap_max;
+        far = win[i] > far ? win[i] : far;
+        settled[i] = 0;
+    }
+    int rc = rs_contacts_reserve(pc, 2 * n + 64, err);
+    if (rc == RS_OK)
+        rc = rs_body_closest(c->s, pose, n, x, y, z, reach, gap_max, far, pc, err);
+    for (int k = 0; rc == RS_OK && k < pc->n;) {
+        const int i = pc->point[k];
+        int one = -1, many = 0;
+        for (; k < pc->n && pc->point[k] == i; k++)
+            if (pc->dist[k] >= -win[i])
+                many += one >= 0, one = one >= 0 ? one : k;
+        if (one < 0 || many || RS_FEATURE_TYPE(pc->feature[one]) != RS_FEAT_FACE)
+            continue;
+        const int want = RS_FEATURE_BASE(pc->feature[one]);
+        const rs_flat_face *kit = kit_of(c, RS_FEATURE_INDEX(want));
+        if (!kit)
+            continue;
+        const double nrm[3] = {pc->nrm[0][one], pc->nrm[1][one], pc->nrm[2][one]};
+        const double down[3] = {-nrm[0], -nrm[1], -nrm[2]};
+        rs_body_contact o;
+        rs_body_support_at(b + i, R + 9 * i, down, o.xs);
+        double dist;
+        if (rs_flat_face_at(kit, o.xs, -win[i], win[i], &dist, o.xm, o.normal, o.t1,
+                            o.t2) != 1)
+            continue;
+        const double turn = fabs(o.normal[0] - nrm[0]) + fabs(o.normal[1] - nrm[1]) +
+                            fabs(o.normal[2] - nrm[2]);
+        if (!(turn <= 1e-13))
+            continue;
+        settled[i] = 1;
+        o.feature = RS_FEATURE(RS_FEAT_FACE, kit->k);
+        o.depth = -dist;
+        o.iterations = 1;
+        o.curv[0] = o.curv[1] = 0.0;
+        if (-o.depth <= gap_max)
+            rc = rs_body_contacts_push(out + i, &o, err);
+    }
+    return rc;
+}
+
 int rs_analytic_body_run(const rs_surface *s, const rs_pose *pose, const rs_body *b,
                          const double *R, int n, double gap_max, int lenient,
                          rs_body_contacts *out, rs_body_work *w, rs_error *err)
@@ -135,13 +203,17 @@ int rs_analytic_body_run(const rs_surface *s, const rs_pose *pose, const rs_body
     if (!s->impl || (s->kind != RS_SURF_CYLINDER && s->kind != RS_SURF_SEGMENTS))
         return rs_body_fixed_point_run(s, pose, b, R, n, gap_max, lenient, NULL, NULL, out,
                                        &w->fp, err);
-    /* the run's set-up, kept in the work for its core points (rs_body_work.point) */
-    if (w->kind_bytes < sizeof(face_ctx)) {
+    /* the run's set-up, kept in the work for its core points (rs_body_work.point), and
+     * with rotations given, each body's reach, centre and window and whether it settled
+     * on a flat face (settle_flat) */
+    const size_t nb = (size_t)(n > 0 ? n : 0);
+    const size_t bytes = sizeof(face_ctx) + (R ? 5 * nb * sizeof(double) + nb : 0);
+    if (w->kind_bytes < bytes) {
         free(w->kind_mem);
         w->kind_bytes = 0;
-        if (!(w->kind_mem = malloc(sizeof(face_ctx))))
+        if (!(w->kind_mem = malloc(bytes)))
             return rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
-        w->kind_bytes = sizeof(face_ctx);
+        w->kind_bytes = bytes;
     }
     face_ctx *c = w->kind_mem;
     c->s = s;
@@ -151,9 +223,28 @@ int rs_analytic_body_run(const rs_surface *s, const rs_pose *pose, const rs_body
     if (s->ops->feature_point) { /* (a kind's table without it: every point asked) */
         w->point = extruded_point;
         w->point_ctx = c;
+        w->kit = extruded_kit;
     }
-    return rs_body_fixed_point_run(s, pose, b, R, n, gap_max, lenient, extruded_face, c,
-                                   out, &w->fp, err);
+    if (!R || !s->ops->feature_point) /* (a kind's table without it: the fixed point) */
+        return rs_body_fixed_point_run(s, pose, b, R, n, gap_max, lenient, extruded_face, c,
+                                       out, &w->fp, err);
+    double *mem = (double *)(c + 1);
+    unsigned char *settled = (unsigned char *)(mem + 5 * nb);
+    int rc = settle_flat(c, pose, b, R, n, gap_max, mem, settled, out, &w->fp.pc, err);
+    /* the rest by the fixed point, a run of unsettled bodies at a time */
+    for (int i = 0; rc == RS_OK && i < n;) {
+        if (settled[i]) {
+            i++;
+            continue;
+        }
+        int j = i;
+        while (j < n && !settled[j])
+            j++;
+        rc = rs_body_fixed_point_run(s, pose, b + i, R + 9 * (size_t)i, j - i, gap_max,
+                                     lenient, extruded_face, c, out + i, &w->fp, err);
+        i = j;
+    }
+    return rc;
 }
 
 int rs_analytic_body(const rs_surface *s, const rs_pose *pose, const rs_body *b, int n,
@@ -161,8 +252,14 @@ int rs_analytic_body(const rs_surface *s, const rs_pose *pose, const rs_body *b,
 {
     rs_body_work w;
     memset(&w, 0, sizeof w);
-    const int rc =
-        rs_analytic_body_run(s, pose, b, NULL, n, gap_max, lenient, out, &w, err);
+    /* the bodies' rotations made here, as the manifold makes them for body_run */
+    double *R = n > 0 ? malloc(9 * (size_t)n * sizeof *R) : NULL;
+    if (n > 0 && !R)
+        return rs_error_set(err, RS_ERR_NOMEM, "body contacts: out of memory");
+    for (int i = 0; i < n; i++)
+        rs_body_rotation(b + i, R + 9 * i);
+    const int rc = rs_analytic_body_run(s, pose, b, R, n, gap_max, lenient, out, &w, err);
+    free(R);
     rs_body_work_free(&w);
     return rc;
 }

@@ -11,13 +11,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { CAND_MAX = 1 + RS_MANIFOLD_IDS };
+enum { CAND_MAX = RS_CORE_CANDS };
 
-/* A candidate: body-frame core point, its id (1 .. RS_MANIFOLD_IDS - 1). */
-typedef struct cand {
-    double p[3];
-    int id;
-} cand;
+typedef rs_core_cand cand;
 
 /* The direction (c0, s0) of d's part in the body's x-y plane (unit; (1, 0) along z). */
 static void rim_turn(const double d[3], double *c0, double *s0)
@@ -107,8 +103,8 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
  * more than rounding, the lowest is the only one. A cylinder's and a cone's points are
  * made only where their height about is within far more than rounding of clear; a
  * capsule's ends are measured by d_z z. */
-static int low_points(const rs_shape *s, const double d[3], double dn, double nx, double rr,
-                      double nxs, double clear, cand *c, int cap)
+int rs_body_low_points(const rs_shape *s, const double d[3], double dn, double nx, double rr,
+                       double nxs, double clear, cand *c, int cap)
 {
     if (s->kind == RS_SHAPE_BOX && cap >= 8) {
         const double *h = s->dim;
@@ -336,6 +332,34 @@ static int append(rs_contacts *c, int point, double radius, const rs_body_contac
     return RS_OK;
 }
 
+/* Appends point k of a manifold answered in closed form (rs_body_flat_manifold) on
+ * feature f, as append does. */
+static int append_flat(rs_contacts *c, int point, double radius, int f,
+                       const rs_flat_manifold *m, int k, rs_error *err)
+{
+    if (c->n >= c->cap || !c->xs[0]) {
+        const int rc =
+            rs_contacts_reserve(c, c->n < c->cap ? c->n + 1 : 2 * c->n + 64, err);
+        if (rc)
+            return rc;
+    }
+    const int j = c->n++;
+    c->point[j] = point;
+    c->feature[j] = RS_FEATURE_MANIFOLD(f, m->id[k]);
+    for (int d = 0; d < 3; d++) {
+        c->xm[d][j] = m->xm[k][d];
+        c->nrm[d][j] = m->nrm[k][d];
+        c->t1[d][j] = m->t1[k][d];
+        c->t2[d][j] = m->t2[k][d];
+        c->xs[d][j] = m->xs[k][d];
+    }
+    c->dist[j] = radius - m->depth[k];
+    c->curv[0][j] = m->curv[k][0];
+    c->curv[1][j] = m->curv[k][1];
+    c->share[j] = 1.0;
+    return RS_OK;
+}
+
 /* A polyhedron's first cap vertices asked (low_points), before the rest. */
 enum { CORE_FIRST = 8 };
 
@@ -421,6 +445,8 @@ void rs_body_work_free(rs_body_work *w)
     free(w->off);
     free(w->rot);
     free(w->kind_mem);
+    free(w->flat);
+    free(w->flat_at);
     rs_body_fixed_work_free(&w->fp);
     memset(w, 0, sizeof *w);
 }
@@ -505,7 +531,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
             rs_body_rotation(b + i, w->rot + 9 * i);
         rot = w->rot;
     }
-    w->point = NULL, w->point_ctx = NULL; /* (the kind's body_run may set them) */
+    w->point = NULL, w->point_ctx = NULL, w->kit = NULL; /* (the kind's body_run's) */
     if (rc == RS_OK)
         rc = rot ? s->ops->body_run(s, pose, b, rot, n, gap_max, 1, fl, w, err)
                  : s->ops->body(s, pose, b, n, gap_max, 1, fl, err);
@@ -519,6 +545,21 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
     if (rc == RS_OK && corners_room(&cq, n + 64))
         rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
     w->q = cq.q, w->x = cq.x, w->cap = cq.cap;
+    /* room for the bodies' manifolds answered in closed form (a flat face whose core
+     * points the kind's body_run answers: rs_body_flat_manifold) */
+    if (rc == RS_OK && w->point && n > w->nflat) {
+        free(w->flat), free(w->flat_at);
+        w->nflat = 0;
+        w->flat = malloc((size_t)n * sizeof *w->flat);
+        w->flat_at = malloc((size_t)n * sizeof *w->flat_at);
+        if (w->flat && w->flat_at)
+            w->nflat = n;
+        else
+            rc = rs_error_set(err, RS_ERR_NOMEM, "body query: out of memory");
+    }
+    for (int i = 0; rc == RS_OK && w->point && i < n; i++)
+        w->flat_at[i] = -1;
+    int nflat = 0;
     double gap = 0.0; /* the widest window of the bodies (window) */
     for (int i = 0; i < n && rc == RS_OK; i++) { /* (checked bodies only) */
         const double g = win[i] = window(rch[i] = rs_body_reach(b + i), gap_max);
@@ -538,6 +579,22 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
         if (!rot)
             rs_body_rotation(b + i, Ri);
         const double *const R = rot ? rot + 9 * i : Ri;
+        /* one flat face whose core points the kind answers in closed form: the manifold
+         * in one pass (the same points and contacts), else as below */
+        const rs_body_contact *o1 = fl[i].c;
+        const struct rs_flat_face *kit =
+            w->kit && !mesh && fl[i].n == 1 && b[i].shape->kind != RS_SHAPE_POLYHEDRON &&
+                    o1->feature < RS_MANIFOLD_STRIDE &&
+                    RS_FEATURE_TYPE(o1->feature) == RS_FEAT_FACE && o1->curv[0] == 0.0 &&
+                    o1->curv[1] == 0.0
+                ? w->kit(w->point_ctx, RS_FEATURE_BASE(o1->feature))
+                : NULL;
+        if (kit &&
+            rs_body_flat_manifold(b + i, R, o1, reach, win[i], gap_max, kit,
+                                  w->flat + nflat)) {
+            w->flat_at[i] = nflat++;
+            continue;
+        }
         for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
             const rs_body_contact *o = &fl[i].c[f];
             if (o->feature >= RS_MANIFOLD_STRIDE) {
@@ -571,7 +628,7 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
              * height is monotone along the list) and do not settle the manifold */
             const int poly =
                 b[i].shape->kind == RS_SHAPE_POLYHEDRON && s->ops->feature_point != NULL;
-            int ncp = low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp,
+            int ncp = rs_body_low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp,
                                  poly ? CORE_FIRST : CAND_MAX - 1);
             known_points kp;
             kp.n = kp.asked = 0;
@@ -580,7 +637,8 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                     !settled(&kp, o, dn, rs_dot3(d, cp[k - 1].p), reach, b[i].x, nxs,
                              gap_max)) /* the same first */
                     ncp =
-                        low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp, CAND_MAX - 1);
+                        rs_body_low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp,
+                                           CAND_MAX - 1);
                 if (k == ncp)
                     break;
                 if (cq.n == cq.cap && corners_room(&cq, 2 * cq.cap)) {
@@ -652,7 +710,11 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
     for (int i = 0, a = 0; i < n && rc == RS_OK; i++) {
         const int k0 = c->n;
         const double rr = rs_shape_core_radius(b[i].shape), reach = rch[i];
-        for (int f = 0; f < fl[i].n && rc == RS_OK; f++) {
+        const int at = w->point ? w->flat_at[i] : -1;
+        for (int k = 0; at >= 0 && k < w->flat[at].n && rc == RS_OK; k++)
+            rc = append_flat(c, point0 + i, radius[i], fl[i].c[0].feature, w->flat + at, k,
+                             err);
+        for (int f = 0; at < 0 && f < fl[i].n && rc == RS_OK; f++) {
             const rs_body_contact *o = &fl[i].c[f];
             mpoint m[CAND_MAX];
             int nm = 1;

@@ -155,6 +155,43 @@ int rs_body_fixed_point(const rs_surface *s, const rs_pose *pose, const rs_body 
 typedef int (*rs_body_point_fn)(const void *ctx, int f, const double x[3], double radius,
                                 double gap_max, double depth_max, double *dist,
                                 double xm[3], double n[3], double t1[3], double t2[3]);
+/// A core point of a body's manifold (body_manifold.c): its body-frame point and id
+/// (1 .. RS_MANIFOLD_IDS - 1).
+typedef struct rs_core_cand {
+    double p[3];
+    int id;
+} rs_core_cand;
+/// Room for a body's core points (its deepest point, then the rest).
+#define RS_CORE_CANDS (1 + RS_MANIFOLD_IDS)
+/// The core points of shape s that can touch a wall under it, d the body-frame direction
+/// into the wall (unit, dn its length before): those whose height above the deepest
+/// point, -dn d.p + nx - rr - nxs, is at most clear, in their order (a box's corners, a
+/// cylinder's and a cone's rim points and apex, a capsule's ends, a polyhedron's cap
+/// vertices farthest first; none for a smooth shape), at most cap; returns how many.
+int rs_body_low_points(const rs_shape *s, const double d[3], double dn, double nx, double rr,
+                       double nxs, double clear, rs_core_cand *c, int cap);
+
+/// A body's manifold on one flat feature answered in closed form (body_flat.c): its
+/// points as the manifold keeps them, in order, each with its id, depth and contact.
+typedef struct rs_flat_manifold {
+    int n;
+    int id[RS_MANIFOLD_MAX];
+    double depth[RS_MANIFOLD_MAX];
+    double xm[RS_MANIFOLD_MAX][3], nrm[RS_MANIFOLD_MAX][3], t1[RS_MANIFOLD_MAX][3],
+        t2[RS_MANIFOLD_MAX][3], xs[RS_MANIFOLD_MAX][3], curv[RS_MANIFOLD_MAX][2];
+} rs_flat_manifold;
+/// The manifold of body b (rotation R, reach, window win: rs_body_manifold_in's) on its
+/// one feature o, a flat face set up as kit (flat_face.h): the same points and contacts
+/// as rs_body_manifold_in makes through the kind's closed form, into *m, and 1; 0 where
+/// the kit does not answer a core point (the block's query tells).
+struct rs_flat_face;
+int rs_body_flat_manifold(const rs_body *b, const double R[9], const rs_body_contact *o,
+                          double reach, double win, double gap_max,
+                          const struct rs_flat_face *kit, rs_flat_manifold *m);
+/// The kit of flat feature f (flat_face.h) the kind's body_run set up for the run, on the
+/// context it keeps (rs_body_work.point_ctx); NULL where it has none.
+typedef const struct rs_flat_face *(*rs_body_kit_fn)(const void *ctx, int f);
+
 /// rs_body_manifold's work arrays, kept over the runs of bodies of one query (zero it
 /// first; rs_body_work_free).
 typedef struct rs_body_work {
@@ -174,8 +211,12 @@ typedef struct rs_body_work {
     /// context point_ctx it keeps in kind_mem (kind_bytes; freed with the work).
     rs_body_point_fn point;
     const void *point_ctx;
+    rs_body_kit_fn kit; ///< with point: the kits of its flat faces (NULL: none)
     void *kind_mem;
     size_t kind_bytes;
+    rs_flat_manifold *flat; ///< the run's manifolds answered in closed form
+    int *flat_at;           ///< each body's there, -1 for none
+    int nflat;              ///< room for bodies in both
 } rs_body_work;
 /// rs_body_manifold on the work arrays w, grown as needed and kept.
 int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body *body,

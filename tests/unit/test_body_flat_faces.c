@@ -144,27 +144,40 @@ static void test_face_contact_is_the_walks(void)
 }
 
 /* The depth of the deepest point of a built-in shape along -n (body frame d = R^T n,
- * unit), from its support function's closed form: a box sum h_k |d_k|, an ellipsoid
- * |diag(a) d|, a capsule h |d_z| + r, a cylinder h |d_z| + r sqrt(1 - d_z^2). */
+ * unit) below its centre, max -p.d over its points p, from its support function's closed
+ * form: a box sum h_k |d_k| (rounded: plus its rounding), an ellipsoid |diag(a) d|, a
+ * capsule h |d_z| + r, a cylinder h |d_z| + r sqrt(1 - d_z^2), a sphere r, a cone of
+ * radius r and height H about its centroid (base at -H/4, apex at 3H/4) the larger of its
+ * rim's r sqrt(1 - d_z^2) + H d_z / 4 and its apex's -3 H d_z / 4. */
 static double support_height(int kind, const double *dim, const double d[3])
 {
+    const double rho = sqrt(fmax(0.0, 1.0 - d[2] * d[2]));
     switch (kind) {
     case 0:
-        return dim[0] * fabs(d[0]) + dim[1] * fabs(d[1]) + dim[2] * fabs(d[2]);
+    case 5:
+        return dim[0] * fabs(d[0]) + dim[1] * fabs(d[1]) + dim[2] * fabs(d[2]) +
+               (kind == 5 ? 0.001 : 0.0);
     case 1:
         return sqrt(dim[0] * dim[0] * d[0] * d[0] + dim[1] * dim[1] * d[1] * d[1] +
                     dim[2] * dim[2] * d[2] * d[2]);
     case 2:
         return dim[1] * fabs(d[2]) + dim[0];
-    default:
-        return dim[1] * fabs(d[2]) + dim[0] * sqrt(fmax(0.0, 1.0 - d[2] * d[2]));
+    case 3:
+        return dim[1] * fabs(d[2]) + dim[0] * rho;
+    case 4:
+        return dim[0];
+    default: {
+        const double rim = dim[0] * rho + 0.25 * dim[1] * d[2], apex = -0.75 * dim[1] * d[2];
+        return rim > apex ? rim : apex;
+    }
     }
 }
 
-/* A box, an ellipsoid, a capsule and a cylinder in random orientations pressed into the
- * plane of a CYLINDER surface moved by a rigid pose: one contact each, on the face, with
- * the plane's normal, at the depth of the closed form (to rounding), its witness point
- * on the body's surface at that depth and its foot on the plane, settled in one step. */
+/* Every built-in shape (a box, an ellipsoid, a capsule, a cylinder, a sphere, a rounded
+ * box, a cone) in random orientations pressed into the plane of a CYLINDER surface moved
+ * by a rigid pose: one contact each, on the face, with the plane's normal, at the depth
+ * of the closed form (to rounding), its witness point on the body's surface at that depth
+ * and its foot on the plane, settled in one step. */
 static void test_shapes_on_a_moved_plane_settle_at_the_closed_form(void)
 {
     rs_surface s;
@@ -176,15 +189,19 @@ static void test_shapes_on_a_moved_plane_settle_at_the_closed_form(void)
     turned_pose(&pose);
     const double *R = pose.R;
     const double n[3] = {R[2], R[5], R[8]}; /* R (0, 0, 1) */
-    static const double dims[4][3] = {
-        {0.005, 0.004, 0.003}, {0.006, 0.004, 0.003}, {0.003, 0.003, 0}, {0.004, 0.004, 0}};
-    for (int kind = 0; kind < 4; kind++) {
+    static const double dims[7][3] = {
+        {0.005, 0.004, 0.003}, {0.006, 0.004, 0.003}, {0.003, 0.003, 0}, {0.004, 0.004, 0},
+        {0.005, 0, 0},         {0.004, 0.003, 0.002}, {0.004, 0.008, 0}};
+    for (int kind = 0; kind < 7; kind++) {
         rs_shape sh;
         const double *dm = dims[kind];
         ENSURE((kind == 0   ? rs_shape_make_box(&sh, dm[0], dm[1], dm[2], 0.0, &e)
                 : kind == 1 ? rs_shape_make_ellipsoid(&sh, dm[0], dm[1], dm[2], 0.0, &e)
                 : kind == 2 ? rs_shape_make_capsule(&sh, dm[0], dm[1], 0.0, &e)
-                            : rs_shape_make_cylinder(&sh, dm[0], dm[1], 0.0, &e)) == RS_OK);
+                : kind == 3 ? rs_shape_make_cylinder(&sh, dm[0], dm[1], 0.0, &e)
+                : kind == 4 ? rs_shape_make_sphere(&sh, dm[0], 0.0, &e)
+                : kind == 5 ? rs_shape_make_box(&sh, dm[0], dm[1], dm[2], 0.001, &e)
+                            : rs_shape_make_cone(&sh, dm[0], dm[1], 0.0, &e)) == RS_OK);
         for (int it = 0; it < 300; it++) {
             double q[4], x0[3] = {0.0, 0.0, 0.0};
             random_unit_quaternion(q);
@@ -360,11 +377,14 @@ static void test_feature_point_is_the_point_query(void)
     ENSURE(declined > 1000);
 }
 
-/* Hulls anywhere near each profile, with and without a pose: their contacts (all fields,
- * bit for bit) are the same with the kind's closed form, which lets a hull's manifold stop
- * after its first cap vertices, and with the point query alone (the kind without
- * feature_point, every cap vertex asked). */
-static void test_hull_manifold_is_the_general_paths(void)
+/* Bodies of every shape anywhere near each profile, with and without a pose: their
+ * contacts (all fields, bit for bit) are the same with the kind's closed forms (a body
+ * whose one feature is a flat face settled at the fixed point's first step, settle_flat;
+ * its manifold in one pass, rs_body_flat_manifold; every core point on a flat face
+ * answered by the face's kit; a hull's manifold stopped after its first cap vertices) and
+ * with the point query alone (the kind without feature_point: the fixed point over every
+ * body, every core point asked). */
+static void test_manifold_is_the_general_paths(void)
 {
     enum { N = 150 };
     long contacts = 0;
@@ -380,7 +400,7 @@ static void test_hull_manifold_is_the_general_paths(void)
         rs_pose pose;
         turned_pose(&pose);
         for (int moved = 0; moved < 2; moved++) {
-            for (int sh = TEST_HULL64; sh <= TEST_HULL1500; sh++) {
+            for (int sh = 0; sh < TEST_NSHAPE; sh++) {
                 rs_shape shape;
                 ENSURE(test_make_shape(sh, &shape) == RS_OK);
                 rs_body b[N];
@@ -422,7 +442,7 @@ static void test_hull_manifold_is_the_general_paths(void)
         }
         rs_surface_free(&s);
     }
-    ENSURE(contacts > 500);
+    ENSURE(contacts > 5000);
 }
 
 int main(void)
@@ -431,6 +451,6 @@ int main(void)
     RS_RUN(test_shapes_on_a_moved_plane_settle_at_the_closed_form);
     RS_RUN(test_body_operation_is_the_fixed_point_over_the_query);
     RS_RUN(test_feature_point_is_the_point_query);
-    RS_RUN(test_hull_manifold_is_the_general_paths);
+    RS_RUN(test_manifold_is_the_general_paths);
     return rs_test_summary();
 }
