@@ -85,9 +85,9 @@ static int extruded_face(const void *ctx, int want, const double p[3], double ga
     const int k = RS_FEATURE_INDEX(want);
     const rs_flat_face *kit = kit_of(c, k);
     double dist;
-    const int got = kit ? rs_flat_face_at(kit, p, -gap, gap, &dist, o->xm, o->normal,
-                                          o->t1, o->t2)
-                        : -1;
+    const int got =
+        kit ? rs_flat_face_at(kit, p, -gap, gap, &dist, o->xm, o->normal, o->t1, o->t2)
+            : -1;
     if (got == 0)
         return 0;
     if (got == 1) {
@@ -125,9 +125,9 @@ static int extruded_point(const void *ctx, int f, const double x[3], double radi
         return 0;
     const int k = RS_FEATURE_INDEX(f);
     const rs_flat_face *kit = kit_of(c, k);
-    const int got = kit ? rs_flat_face_at(kit, x, -depth_max, gap_max + radius, dist, xm,
-                                          n, t1, t2)
-                        : -1;
+    const int got =
+        kit ? rs_flat_face_at(kit, x, -depth_max, gap_max + radius, dist, xm, n, t1, t2)
+            : -1;
     if (got >= 0)
         return got;
     rs_hit2 h;

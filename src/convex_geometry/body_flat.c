@@ -27,8 +27,8 @@ static int before(const fpoint *a, const fpoint *b)
 }
 
 int rs_body_flat_manifold(const rs_body *b, const double R[9], const rs_body_contact *o,
-                          double reach, double win, double gap_max,
-                          const rs_flat_face *kit, rs_flat_manifold *m)
+                          double reach, double win, double gap_max, const rs_flat_face *kit,
+                          rs_flat_manifold *m)
 {
     const rs_shape *sh = b->shape;
     const double rr = rs_shape_core_radius(sh);
@@ -46,7 +46,8 @@ int rs_body_flat_manifold(const rs_body *b, const double R[9], const rs_body_con
     const double nx = rs_dot3(o->normal, b->x), nxs = rs_dot3(o->normal, o->xs);
     const double clear = above + 1e-12 * (reach + fabs(nx) + fabs(nxs));
     rs_core_cand cp[RS_CORE_CANDS];
-    const int ncp = rs_body_low_points(sh, d, dn, nx, rr, nxs, clear, cp, RS_CORE_CANDS - 1);
+    const int ncp =
+        rs_body_low_points(sh, d, dn, nx, rr, nxs, clear, cp, RS_CORE_CANDS - 1);
     /* the points: the deepest (0), then the core points within the gap */
     fpoint p[RS_CORE_CANDS];
     double cxm[RS_CORE_CANDS][3], cn[RS_CORE_CANDS][3], ct1[RS_CORE_CANDS][3],

@@ -103,8 +103,8 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
  * more than rounding, the lowest is the only one. A cylinder's and a cone's points are
  * made only where their height about is within far more than rounding of clear; a
  * capsule's ends are measured by d_z z. */
-int rs_body_low_points(const rs_shape *s, const double d[3], double dn, double nx, double rr,
-                       double nxs, double clear, cand *c, int cap)
+int rs_body_low_points(const rs_shape *s, const double d[3], double dn, double nx,
+                       double rr, double nxs, double clear, cand *c, int cap)
 {
     if (s->kind == RS_SHAPE_BOX && cap >= 8) {
         const double *h = s->dim;
@@ -589,9 +589,8 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                     o1->curv[1] == 0.0
                 ? w->kit(w->point_ctx, RS_FEATURE_BASE(o1->feature))
                 : NULL;
-        if (kit &&
-            rs_body_flat_manifold(b + i, R, o1, reach, win[i], gap_max, kit,
-                                  w->flat + nflat)) {
+        if (kit && rs_body_flat_manifold(b + i, R, o1, reach, win[i], gap_max, kit,
+                                         w->flat + nflat)) {
             w->flat_at[i] = nflat++;
             continue;
         }
@@ -629,16 +628,15 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
             const int poly =
                 b[i].shape->kind == RS_SHAPE_POLYHEDRON && s->ops->feature_point != NULL;
             int ncp = rs_body_low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp,
-                                 poly ? CORE_FIRST : CAND_MAX - 1);
+                                         poly ? CORE_FIRST : CAND_MAX - 1);
             known_points kp;
             kp.n = kp.asked = 0;
             for (int k = 0; rc == RS_OK; k++) {
                 if (k == ncp && poly && ncp == CORE_FIRST &&
                     !settled(&kp, o, dn, rs_dot3(d, cp[k - 1].p), reach, b[i].x, nxs,
                              gap_max)) /* the same first */
-                    ncp =
-                        rs_body_low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp,
-                                           CAND_MAX - 1);
+                    ncp = rs_body_low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp,
+                                             CAND_MAX - 1);
                 if (k == ncp)
                     break;
                 if (cq.n == cq.cap && corners_room(&cq, 2 * cq.cap)) {
@@ -672,12 +670,12 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
                 const int fb = RS_FEATURE_BASE(o->feature);
                 const int known =
                     flat && w->point
-                        ? w->point(w->point_ctx, fb, cl, rr + lift, win[i], win[i], &q->dist,
-                                   q->xm, q->n, q->t1, q->t2)
+                        ? w->point(w->point_ctx, fb, cl, rr + lift, win[i], win[i],
+                                   &q->dist, q->xm, q->n, q->t1, q->t2)
                         : (mesh || poly) && s->ops->feature_point &&
-                              s->ops->feature_point(s, pose, fb, cl, rr + lift, win[i],
-                                                    win[i], &q->dist, q->xm, q->n,
-                                                    mesh ? NULL : q->t1, mesh ? NULL : q->t2);
+                              s->ops->feature_point(
+                                  s, pose, fb, cl, rr + lift, win[i], win[i], &q->dist,
+                                  q->xm, q->n, mesh ? NULL : q->t1, mesh ? NULL : q->t2);
                 q->ball = -1;
                 if (!known)
                     corners_ball(&cq, q, cl, rr + lift);

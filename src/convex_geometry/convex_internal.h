@@ -168,8 +168,8 @@ typedef struct rs_core_cand {
 /// point, -dn d.p + nx - rr - nxs, is at most clear, in their order (a box's corners, a
 /// cylinder's and a cone's rim points and apex, a capsule's ends, a polyhedron's cap
 /// vertices farthest first; none for a smooth shape), at most cap; returns how many.
-int rs_body_low_points(const rs_shape *s, const double d[3], double dn, double nx, double rr,
-                       double nxs, double clear, rs_core_cand *c, int cap);
+int rs_body_low_points(const rs_shape *s, const double d[3], double dn, double nx,
+                       double rr, double nxs, double clear, rs_core_cand *c, int cap);
 
 /// A body's manifold on one flat feature answered in closed form (body_flat.c): its
 /// points as the manifold keeps them, in order, each with its id, depth and contact.

@@ -167,7 +167,8 @@ static double support_height(int kind, const double *dim, const double d[3])
     case 4:
         return dim[0];
     default: {
-        const double rim = dim[0] * rho + 0.25 * dim[1] * d[2], apex = -0.75 * dim[1] * d[2];
+        const double rim = dim[0] * rho + 0.25 * dim[1] * d[2],
+                     apex = -0.75 * dim[1] * d[2];
         return rim > apex ? rim : apex;
     }
     }
