@@ -6,6 +6,7 @@
  * bodies"). Each point is measured by the kind's own sphere query (closest). */
 #include "convex_internal.h"
 #include "rigidsurf/vec.h"
+#include "rs_compiler.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -103,8 +104,8 @@ static int core_points(const rs_shape *s, const double d[3], cand *c, int cap)
  * more than rounding, the lowest is the only one. A cylinder's and a cone's points are
  * made only where their height about is within far more than rounding of clear; a
  * capsule's ends are measured by d_z z. */
-int rs_body_low_points(const rs_shape *s, const double d[3], double dn, double nx,
-                       double rr, double nxs, double clear, cand *c, int cap)
+RS_INLINE int low_points(const rs_shape *s, const double d[3], double dn, double nx,
+                         double rr, double nxs, double clear, cand *c, int cap)
 {
     if (s->kind == RS_SHAPE_BOX && cap >= 8) {
         const double *h = s->dim;
@@ -178,6 +179,12 @@ int rs_body_low_points(const rs_shape *s, const double d[3], double dn, double n
         if (!(-dn * rs_dot3(d, c[k].p) + nx - rr - nxs > clear))
             c[n++] = c[k];
     return n;
+}
+
+int rs_body_low_points(const rs_shape *s, const double d[3], double dn, double nx, double rr,
+                       double nxs, double clear, rs_core_cand *c, int cap)
+{
+    return low_points(s, d, dn, nx, rr, nxs, clear, c, cap);
 }
 
 /* Does the shape have core points (core_points gives some)? */
@@ -627,16 +634,16 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
              * height is monotone along the list) and do not settle the manifold */
             const int poly =
                 b[i].shape->kind == RS_SHAPE_POLYHEDRON && s->ops->feature_point != NULL;
-            int ncp = rs_body_low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp,
-                                         poly ? CORE_FIRST : CAND_MAX - 1);
+            int ncp = low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp,
+                                 poly ? CORE_FIRST : CAND_MAX - 1);
             known_points kp;
             kp.n = kp.asked = 0;
             for (int k = 0; rc == RS_OK; k++) {
                 if (k == ncp && poly && ncp == CORE_FIRST &&
                     !settled(&kp, o, dn, rs_dot3(d, cp[k - 1].p), reach, b[i].x, nxs,
                              gap_max)) /* the same first */
-                    ncp = rs_body_low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp,
-                                             CAND_MAX - 1);
+                    ncp =
+                        low_points(b[i].shape, d, dn, nx, rr, nxs, clear, cp, CAND_MAX - 1);
                 if (k == ncp)
                     break;
                 if (cq.n == cq.cap && corners_room(&cq, 2 * cq.cap)) {
