@@ -142,8 +142,9 @@ static int extruded_point(const void *ctx, int f, const double x[3], double radi
  * fixed point asks it (rs_body_fixed_point_run), and where its only feature within its
  * window is such a face, the body's support along the face's normal answered by the kit
  * with that normal again (the fixed point's test of a settled step); that contact, with
- * one iteration, into out[i] where within the gap, and settled[i] = 1. The others are left
- * to the fixed point (settled[i] = 0): the same contacts either way. */
+ * one iteration, into out[i] where within the gap, and settled[i] = 1, as for a body with
+ * no feature within its window (no contact). The others are left to the fixed point
+ * (settled[i] = 0): the same contacts either way. */
 static int settle_flat(face_ctx *c, const rs_pose *pose, const rs_body *b, const double *R,
                        int n, double gap_max, double *mem, unsigned char *settled,
                        rs_body_contacts *out, rs_contacts *pc, rs_error *err)
@@ -156,7 +157,7 @@ static int settle_flat(face_ctx *c, const rs_pose *pose, const rs_body *b, const
         const double wi = 2.0 * reach[i] + gap_max;
         win[i] = wi > gap_max ? wi : gap_max;
         far = win[i] > far ? win[i] : far;
-        settled[i] = 0;
+        settled[i] = 1; /* (no feature within its window: no contact, as the fixed point) */
     }
     int rc = rs_contacts_reserve(pc, 2 * n + 64, err);
     if (rc == RS_OK)
@@ -167,7 +168,10 @@ static int settle_flat(face_ctx *c, const rs_pose *pose, const rs_body *b, const
         for (; k < pc->n && pc->point[k] == i; k++)
             if (pc->dist[k] >= -win[i])
                 many += one >= 0, one = one >= 0 ? one : k;
-        if (one < 0 || many || RS_FEATURE_TYPE(pc->feature[one]) != RS_FEAT_FACE)
+        if (one < 0)
+            continue;
+        settled[i] = 0; /* (unless it settles below) */
+        if (many || RS_FEATURE_TYPE(pc->feature[one]) != RS_FEAT_FACE)
             continue;
         const int want = RS_FEATURE_BASE(pc->feature[one]);
         const rs_flat_face *kit = kit_of(c, RS_FEATURE_INDEX(want));
