@@ -241,9 +241,9 @@ static void plane_pair(const rs_surface *s, const rs_pose *p, sbody *sb, cand *c
     }
     to_local(p, cc->pb, F);
     cc->state = !tri_holds(s->impl, ck->t, F) ? RS_CONVEX_APART
-                : cc->depth > 0.0                    ? RS_CONVEX_OVERLAP
-                : -cc->depth <= gap_max              ? RS_CONVEX_NEAR
-                                                     : RS_CONVEX_APART;
+                : cc->depth > 0.0             ? RS_CONVEX_OVERLAP
+                : -cc->depth <= gap_max       ? RS_CONVEX_NEAR
+                                              : RS_CONVEX_APART;
 }
 
 /* The candidate of the region (candidates ru[0 .. nr)) whose triangle holds the reference
@@ -290,7 +290,8 @@ static int region_face(const rs_surface *s, const rs_pose *p, sbody *sb, double 
     if (cb->plain) { /* plane_pair's answer is the same: its plane, along the same ns */
         h = cb->h, depth = cb->cc.depth;
         for (int d = 0; d < 3; d++)
-            ns[d] = cb->ns[d], xs[d] = cb->cc.pa[d], foot[d] = cb->cc.pb[d], F[d] = cb->F[d];
+            ns[d] = cb->ns[d], xs[d] = cb->cc.pa[d], foot[d] = cb->cc.pb[d],
+            F[d] = cb->F[d];
     } else {
         h = (b->x[0] - a0[0]) * nf[0] + (b->x[1] - a0[1]) * nf[1] +
             (b->x[2] - a0[2]) * nf[2];

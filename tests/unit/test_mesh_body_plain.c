@@ -33,7 +33,8 @@ static void make_case(int k, soup *sp)
         const int n = 6;
         for (int j = 0; j <= n; j++)
             for (int i = 0; i <= n; i++)
-                sp_point(sp, (double)i / n, (double)j / n, i <= n / 2 ? 0.0 : urange(0, 0.2));
+                sp_point(sp, (double)i / n, (double)j / n,
+                         i <= n / 2 ? 0.0 : urange(0, 0.2));
         for (int j = 0; j < n; j++)
             for (int i = 0; i < n; i++) {
                 const int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
