@@ -42,6 +42,9 @@ typedef struct rs_mtri {
                               ///< of its node j: the query tests each edge and vertex from
                               ///< that triangle alone
     unsigned char kind[3];    ///< the kind of each slot's edge (rs_edge_kind)
+    unsigned char rough;      ///< bit j when the edge of slot j is not FLAT, bit 3 + j when
+                              ///< node j is not inside a coplanar region (vflat 0): what
+                              ///< may keep a ball off the face alone
 } rs_mtri;
 _Static_assert(sizeof(rs_mtri) == 192, "a triangle's record spans three cache lines");
 

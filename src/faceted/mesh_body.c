@@ -103,10 +103,8 @@ int rs_mesh_triangle_plain(const rs_surface *s, int t, const double c[3], double
     const rs_mtri *rec = m->rec + t;
     /* the edges and nodes that may spoil it: those not FLAT, those not inside a coplanar
      * region */
-    int edge[3], node[3];
-    for (int j = 0; j < 3; j++)
-        edge[j] = rec->kind[j] != RS_EDGE_FLAT, node[j] = !m->vflat[rec->v[j]];
-    if (!(edge[0] | edge[1] | edge[2] | node[0] | node[1] | node[2]))
+    const unsigned rough = rec->rough;
+    if (!rough)
         return 1;
     /* c clearly farther than r from the plane of edge j (through it, normal to t) is
      * farther from the edge and its two nodes: those need no distance (a margin far above
@@ -120,13 +118,13 @@ int rs_mesh_triangle_plain(const rs_surface *s, int t, const double c[3], double
         if (far[j])
             continue;
         const double *a = m->xyz + 3 * rec->v[j];
-        if (edge[j]) {
+        if (rough >> j & 1u) {
             const double *b = m->xyz + 3 * rec->v[(j + 1) % 3];
             if (!clear_of_segment(a, b, c, r) && segment_distance2(a, b, c) <= r * r)
                 return 0;
         }
         const double d[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        if (node[j] && !far[(j + 2) % 3] && rs_dot3(d, d) <= r * r)
+        if ((rough >> (3 + j) & 1u) && !far[(j + 2) % 3] && rs_dot3(d, d) <= r * r)
             return 0;
     }
     return 1;

@@ -167,7 +167,7 @@ static void set_contact(found *g, int feature, double depth, const double n[3],
  * and the foot of the pair's witness in the reference configuration F. */
 typedef struct cand {
     int t, face, region;
-    int reach; /* the body within gap_max of the triangle */
+    int reach; /* the body within gap_max of the triangle (-1: a plain one not yet asked) */
     int plain; /* the body meets it at its face only: its plane answers for it */
     double tri[9], nf[3];
     double h, ns[3], F[3];
@@ -244,6 +244,7 @@ static void plane_pair(const rs_surface *s, const rs_pose *p, sbody *sb, cand *c
                 : cc->depth > 0.0             ? RS_CONVEX_OVERLAP
                 : -cc->depth <= gap_max       ? RS_CONVEX_NEAR
                                               : RS_CONVEX_APART;
+    ck->reach = cc->state != RS_CONVEX_APART && cc->depth >= -gap_max;
 }
 
 /* The candidate of the region (candidates ru[0 .. nr)) whose triangle holds the reference
@@ -271,15 +272,22 @@ static int region_holds(const rs_surface *s, const cand *c, const member *ru, in
  * deepest point; the centre's foot moves with the body), else under the deepest
  * point's. */
 static int region_face(const rs_surface *s, const rs_pose *p, sbody *sb, double gap_max,
-                       const cand *c, const member *ru, int nr, found *g)
+                       cand *c, const member *ru, int nr, found *g)
 {
     const rs_body *b = sb->b;
     int best = -1;
     double ba = -1.0;
     for (int i = 0; i < nr; i++) {
-        const cand *ci = c + ru[i].k;
-        const double along = fabs(rs_dot3(ci->cc.normal, ci->nf));
-        if (ci->reach && along > ba)
+        cand *ci = c + ru[i].k;
+        /* a plain triangle's pair normal is its own normal (either way), so it is asked
+         * only where its normal is nearer the region's than the best's so far */
+        const double along =
+            ci->plain ? rs_dot3(ci->nf, ci->nf) : fabs(rs_dot3(ci->cc.normal, ci->nf));
+        if (!(along > ba))
+            continue;
+        if (ci->reach < 0)
+            plane_pair(s, p, sb, ci, gap_max);
+        if (ci->reach)
             best = ru[i].k, ba = along;
     }
     if (best < 0)
@@ -453,14 +461,14 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
          * closed form gives; no pair query */
         ck->plain = rs_mesh_triangle_plain(s, ck->t, C, near);
         if (ck->plain) {
-            plane_pair(s, pose, &sb, ck, gap_max);
+            ck->reach = -1; /* its plane, where its region asks it (region_face) */
         } else {
             for (int i = 1; i < 3; i++)
                 to_global(pose, m->xyz + 3 * rec->v[i], ck->tri + 3 * i);
             if ((rc = rs_convex_triangle(b, ck->tri, gap_max, &ck->cc, err)) != RS_OK)
                 goto done;
+            ck->reach = ck->cc.state != RS_CONVEX_APART && ck->cc.depth >= -gap_max;
         }
-        ck->reach = ck->cc.state != RS_CONVEX_APART && ck->cc.depth >= -gap_max;
         ru[k].region = label[k];
         ru[k].k = k;
     }
