@@ -64,8 +64,9 @@ int rs_mesh_feature_point(const rs_surface *s, const rs_pose *pose, int f,
     if (!(d <= gap_lim && d >= dist_min) || (one_sided && d < 0.0))
         return 0;
     *dist = d;
-    for (int k = 0; t1 && t2 && k < 3; k++)
-        t1[k] = t2[k] = 0.0;
+    if (t1 && t2)
+        for (int k = 0; k < 3; k++)
+            t1[k] = t2[k] = 0.0;
     if (pose) {
         rs_matvec3(pose->R, X, xm);
         rs_matvec3(pose->R, N, n);

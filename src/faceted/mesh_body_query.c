@@ -21,7 +21,8 @@ typedef struct found {
     int exact;  /* a face's contact from the body's support along the face's normal */
 } found;
 
-/* The contacts found, at most two per candidate (its region's and its witness's). */
+/* The contacts found, at most two per candidate (its region's and its witness's), each
+ * made in the next slot and kept there or merged (keep). */
 typedef struct found_list {
     found *f;
     int n;
@@ -33,10 +34,11 @@ static int better(const found *a, const found *b)
     return a->exact != b->exact ? a->exact > b->exact : a->c.depth > b->c.depth;
 }
 
-/* Keeps g, merged with the contact of its feature or, for a face, of its coplanar
- * region: the better of the two stays. */
-static void keep(found_list *l, const found *g)
+/* Keeps g, the list's next slot l->f[l->n], merged with the contact of its feature or,
+ * for a face, of its coplanar region: the better of the two stays. */
+static void keep(found_list *l)
 {
+    const found *g = l->f + l->n;
     for (int j = 0; j < l->n; j++) {
         found *o = &l->f[j];
         if (o->c.feature == g->c.feature ||
@@ -46,7 +48,7 @@ static void keep(found_list *l, const found *g)
             return;
         }
     }
-    l->f[l->n++] = *g;
+    l->n++;
 }
 
 /* The pose's maps, nothing where it is NULL (the identity: the reference configuration). */
@@ -94,10 +96,10 @@ static void body_box(const rs_body *b, const double R[9], const rs_pose *p, doub
     if (!p) {
         for (int d = 0; d < 3; d++) {
             double tl[3], th[3];
-            for (int j = 0; j < 3; j++) {
-                const double u = R[3 * d + j] * blo[j], v = R[3 * d + j] * bhi[j];
-                tl[j] = v < u ? v : u;
-                th[j] = v < u ? u : v;
+            for (int j = 0; j < 3; j++) { /* (blo <= bhi: the sign picks the end) */
+                const double r = R[3 * d + j];
+                tl[j] = r * (r >= 0.0 ? blo[j] : bhi[j]);
+                th[j] = r * (r >= 0.0 ? bhi[j] : blo[j]);
             }
             lo[d] = tl[0] + tl[1] + tl[2] + b->x[d] - gap_max;
             hi[d] = th[0] + th[1] + th[2] + b->x[d] + gap_max;
@@ -482,14 +484,12 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
     for (int i = 0, j; i < nt; i = j) {
         for (j = i + 1; j < nt && ru[j].region == ru[i].region;)
             j++;
-        found g;
-        if (region_face(s, pose, &sb, gap_max, c, ru + i, j - i, &g))
-            keep(&l, &g);
+        if (region_face(s, pose, &sb, gap_max, c, ru + i, j - i, l.f + l.n))
+            keep(&l);
     }
     for (int k = 0; k < nt; k++) {
-        found g;
-        if (c[k].reach && !c[k].plain && witness_contact(s, pose, &sb, c, nt, k, &g))
-            keep(&l, &g);
+        if (c[k].reach && !c[k].plain && witness_contact(s, pose, &sb, c, nt, k, l.f + l.n))
+            keep(&l);
     }
     for (int k = 0; k < l.n && rc == RS_OK; k++)
         rc = rs_body_contacts_push(out, &l.f[k].c, err);

@@ -214,7 +214,6 @@ static void flat_regions_are_the_flood(void)
     ENSURE(lists == 1600 && joined > 200);
 }
 
-
 /* A flat grid of 8 x 8 cells over [-0.02, 0.02]^2 in the plane z = 0.05 x + 0.02 y, each
  * cell two triangles along a random diagonal. */
 static void tilted_grid(soup *sp)
@@ -269,8 +268,10 @@ static void plane_answer_is_the_closed_form(void)
                     for (int i = 0; i < 60; i++) {
                         /* a body over the middle of the mesh, its lowest point a little
                          * below or above the plane */
-                        double q[4], X[3] = {urange(-0.012, 0.012), urange(-0.012, 0.012), 0};
-                        X[2] = A0[2] + (N[0] * (A0[0] - X[0]) + N[1] * (A0[1] - X[1])) / N[2];
+                        double q[4],
+                            X[3] = {urange(-0.012, 0.012), urange(-0.012, 0.012), 0};
+                        X[2] =
+                            A0[2] + (N[0] * (A0[0] - X[0]) + N[1] * (A0[1] - X[1])) / N[2];
                         double x[3];
                         rs_pose_to_global(&pose, X, x);
                         random_unit_quaternion(q);
@@ -279,8 +280,8 @@ static void plane_answer_is_the_closed_form(void)
                         const double down[3] = {-n[0], -n[1], -n[2]};
                         double low[3];
                         rs_body_support(&b, down, low);
-                        const double lift = urange(-1e-3, 8e-4) - rs_dot3(n, low) +
-                                            rs_dot3(n, a0);
+                        const double lift =
+                            urange(-1e-3, 8e-4) - rs_dot3(n, low) + rs_dot3(n, a0);
                         for (int d = 0; d < 3; d++)
                             b.x[d] += lift * n[d];
                         const double gap = 5e-4;
@@ -288,8 +289,8 @@ static void plane_answer_is_the_closed_form(void)
                         int nc = 0;
                         rs_error e;
                         rs_error_clear(&e);
-                        ENSURE(rs_body_surface_contacts(&s, moved ? &pose : NULL, &b, gap, bc,
-                                                        8, &nc, &e) == RS_OK);
+                        ENSURE(rs_body_surface_contacts(&s, moved ? &pose : NULL, &b, gap,
+                                                        bc, 8, &nc, &e) == RS_OK);
                         /* the body's deepest point below the plane, over the mesh */
                         rs_body_support(&b, down, low);
                         const double h = rs_dot3(n, low) - rs_dot3(n, a0);
