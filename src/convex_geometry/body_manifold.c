@@ -181,8 +181,8 @@ RS_INLINE int low_points(const rs_shape *s, const double d[3], double dn, double
     return n;
 }
 
-int rs_body_low_points(const rs_shape *s, const double d[3], double dn, double nx, double rr,
-                       double nxs, double clear, rs_core_cand *c, int cap)
+int rs_body_low_points(const rs_shape *s, const double d[3], double dn, double nx,
+                       double rr, double nxs, double clear, rs_core_cand *c, int cap)
 {
     return low_points(s, d, dn, nx, rr, nxs, clear, c, cap);
 }
@@ -336,34 +336,6 @@ static int append(rs_contacts *c, int point, double radius, const rs_body_contac
     c->curv[0][k] = cv[0];
     c->curv[1][k] = cv[1];
     c->share[k] = 1.0;
-    return RS_OK;
-}
-
-/* Appends point k of a manifold answered in closed form (rs_body_flat_manifold) on
- * feature f, as append does. */
-static int append_flat(rs_contacts *c, int point, double radius, int f,
-                       const rs_flat_manifold *m, int k, rs_error *err)
-{
-    if (c->n >= c->cap || !c->xs[0]) {
-        const int rc =
-            rs_contacts_reserve(c, c->n < c->cap ? c->n + 1 : 2 * c->n + 64, err);
-        if (rc)
-            return rc;
-    }
-    const int j = c->n++;
-    c->point[j] = point;
-    c->feature[j] = RS_FEATURE_MANIFOLD(f, m->id[k]);
-    for (int d = 0; d < 3; d++) {
-        c->xm[d][j] = m->xm[k][d];
-        c->nrm[d][j] = m->nrm[k][d];
-        c->t1[d][j] = m->t1[k][d];
-        c->t2[d][j] = m->t2[k][d];
-        c->xs[d][j] = m->xs[k][d];
-    }
-    c->dist[j] = radius - m->depth[k];
-    c->curv[0][j] = m->curv[k][0];
-    c->curv[1][j] = m->curv[k][1];
-    c->share[j] = 1.0;
     return RS_OK;
 }
 
@@ -717,8 +689,8 @@ int rs_body_manifold_in(const rs_surface *s, const rs_pose *pose, const rs_body 
         const double rr = rs_shape_core_radius(b[i].shape), reach = rch[i];
         const int at = w->point ? w->flat_at[i] : -1;
         for (int k = 0; at >= 0 && k < w->flat[at].n && rc == RS_OK; k++)
-            rc = append_flat(c, point0 + i, radius[i], fl[i].c[0].feature, w->flat + at, k,
-                             err);
+            rc = rs_body_flat_append(c, point0 + i, radius[i], fl[i].c[0].feature,
+                                     w->flat + at, k, err);
         for (int f = 0; at < 0 && f < fl[i].n && rc == RS_OK; f++) {
             const rs_body_contact *o = &fl[i].c[f];
             mpoint m[CAND_MAX];

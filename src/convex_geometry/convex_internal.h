@@ -188,6 +188,33 @@ struct rs_flat_face;
 int rs_body_flat_manifold(const rs_body *b, const double R[9], const rs_body_contact *o,
                           double reach, double win, double gap_max,
                           const struct rs_flat_face *kit, rs_flat_manifold *m);
+/// Appends point k of m, a manifold on feature f, to c as the manifold appends its points
+/// (the witness kept, share 1) for slave point of the given radius; RS_ERR_NOMEM.
+static inline int rs_body_flat_append(rs_contacts *c, int point, double radius, int f,
+                                      const rs_flat_manifold *m, int k, rs_error *err)
+{
+    if (c->n >= c->cap || !c->xs[0]) {
+        const int rc =
+            rs_contacts_reserve(c, c->n < c->cap ? c->n + 1 : 2 * c->n + 64, err);
+        if (rc)
+            return rc;
+    }
+    const int j = c->n++;
+    c->point[j] = point;
+    c->feature[j] = RS_FEATURE_MANIFOLD(f, m->id[k]);
+    for (int d = 0; d < 3; d++) {
+        c->xm[d][j] = m->xm[k][d];
+        c->nrm[d][j] = m->nrm[k][d];
+        c->t1[d][j] = m->t1[k][d];
+        c->t2[d][j] = m->t2[k][d];
+        c->xs[d][j] = m->xs[k][d];
+    }
+    c->dist[j] = radius - m->depth[k];
+    c->curv[0][j] = m->curv[k][0];
+    c->curv[1][j] = m->curv[k][1];
+    c->share[j] = 1.0;
+    return RS_OK;
+}
 /// The kit of flat feature f (flat_face.h) the kind's body_run set up for the run, on the
 /// context it keeps (rs_body_work.point_ctx); NULL where it has none.
 typedef const struct rs_flat_face *(*rs_body_kit_fn)(const void *ctx, int f);
