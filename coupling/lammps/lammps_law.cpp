@@ -153,8 +153,9 @@ int FixWallRigid::engine_law(const char *const *words, int nwords, const rs_law 
     model_desc_.force_one = lammps_law_one;
     model_desc_.force_run = lammps_law_run;
     model_desc_.ctx = this;
+    /* LAMMPS's models keep their shear in space and turn it themselves: no drot */
     model_desc_.skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_SLIP |
-                        RS_LAW_SKIPS_DRDISP1;
+                        RS_LAW_SKIPS_DRDISP1 | RS_LAW_SKIPS_DROT;
     model_desc_.sets = RS_LAW_SETS_FORCE | RS_LAW_SETS_ENERGIES | RS_LAW_SETS_NO_HEAT |
                        RS_LAW_SETS_NO_CREEP_PLASTIC | RS_LAW_SETS_STRESS;
     *law = &model_desc_;

@@ -116,12 +116,19 @@ RS_INLINE void add3(double *restrict d, const double *restrict s)
     d[2] += s[2];
 }
 
-/* The frames (n, t1) of the run's contacts into their slots, and the tracker's entries'
- * points and features: what run_store (track_run.h) does for a slot of the frame and the
- * state variables (RS_DROP_SLIP) whose contact is held, as every contact of the run is,
- * and whose directory entry already names its feature, so that nothing else changes. */
-static void store_frames(const rs_contacts *c, int m, rs_track_out *o)
+/* The frames (n, t1) of the run's contacts into their slots (unless the law reads none of
+ * what they give: frame 0, RS_LAW_SKIPS_DROT), and the tracker's entries' points and
+ * features: what run_store (track_run.h) does for a slot of the frame and the state
+ * variables (RS_DROP_SLIP) whose contact is held, as every contact of the run is, and
+ * whose directory entry already names its feature, so that nothing else changes. */
+static void store_frames(const rs_contacts *c, int m, rs_track_out *o, const int frame)
 {
+    for (int j = 0; j < m; j++) {
+        o->point[j] = c->point[j];
+        o->feature[j] = c->feature[j];
+    }
+    if (!frame)
+        return;
     const double *n0 = c->nrm[0], *n1 = c->nrm[1], *n2 = c->nrm[2];
     const double *a0 = c->t1[0], *a1 = c->t1[1], *a2 = c->t1[2];
     double *const *slot = o->slot;
@@ -136,10 +143,6 @@ static void store_frames(const rs_contacts *c, int m, rs_track_out *o)
         double *h = slot[j];
         h[RS_H_N] = n0[j], h[RS_H_N + 1] = n1[j], h[RS_H_N + 2] = n2[j];
         h[RS_H_T1] = a0[j], h[RS_H_T1 + 1] = a1[j], h[RS_H_T1 + 2] = a2[j];
-    }
-    for (j = 0; j < m; j++) {
-        o->point[j] = c->point[j];
-        o->feature[j] = c->feature[j];
     }
 }
 
@@ -288,7 +291,7 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
 
     /* every value is finite: the slots, the loads and the sums */
     out->nleave = 0;
-    store_frames(c, m, out);
+    store_frames(c, m, out, !(law->skips & RS_LAW_SKIPS_DROT));
     copy_statev(fr.hist, out->slot, sv, ns, m, 0);
     out->n = m;
     /* the wall's sums in the contacts' order (each contact's moment about the wall's
