@@ -146,6 +146,72 @@ static void store_frames(const rs_contacts *c, int m, rs_track_out *o, const int
     }
 }
 
+/* The wall's sums of a run's m contacts, -F and the moment -((x - o) x F + T) of each
+ * about the wall's origin o, x the particle's centre (rs_load_force_law's, unit area), as
+ * -(sum F) and -(sum (x - o) x F + sum T): four contacts at a time, the sums of F and T
+ * over their rows as they lie, the moments from F's columns. */
+RS_INLINE void wall_sums(const double *restrict F, const double *restrict T,
+                         const double *restrict x, const double *restrict y,
+                         const double *restrict z, const double o[3], int m,
+                         rs_wall_acc *acc)
+{
+    const double o0 = o[0], o1 = o[1], o2 = o[2];
+    double f[3] = {0.0, 0.0, 0.0}, t[3] = {0.0, 0.0, 0.0}, mo[3] = {0.0, 0.0, 0.0};
+    int j = 0;
+#ifdef RS_HAVE_V4
+    const rs_v4 zero = {0.0, 0.0, 0.0, 0.0};
+    rs_v4 sf[3] = {zero, zero, zero}, st[3] = {zero, zero, zero};
+    rs_v4 sm0 = zero, sm1 = zero, sm2 = zero;
+    for (; j + 4 <= m; j += 4) {
+        /* rows (a0 b0 c0 a1) (b1 c1 a2 b2) (c2 a3 b3 c3) of F and T */
+        rs_v4 r0, r1, r2, q;
+        rs_v4_load(&r0, F + 3 * j);
+        rs_v4_load(&r1, F + 3 * j + 4);
+        rs_v4_load(&r2, F + 3 * j + 8);
+        sf[0] += r0, sf[1] += r1, sf[2] += r2;
+        for (int k = 0; k < 3; k++) {
+            rs_v4_load(&q, T + 3 * j + 4 * k);
+            st[k] += q;
+        }
+        const rs_v4 u = __builtin_shufflevector(r0, r1, 0, 3, 6, 5);  /* a0 a1 a2 c1 */
+        const rs_v4 v = __builtin_shufflevector(r0, r1, 1, 4, 7, 2);  /* b0 b1 b2 c0 */
+        const rs_v4 fx = __builtin_shufflevector(u, r2, 0, 1, 2, 5);  /* a0 a1 a2 a3 */
+        const rs_v4 fy = __builtin_shufflevector(v, r2, 0, 1, 2, 6);  /* b0 b1 b2 b3 */
+        const rs_v4 fz = __builtin_shufflevector(v, u, 3, 7, 0, 0);   /* c0 c1 */
+        const rs_v4 fzz = __builtin_shufflevector(fz, r2, 0, 1, 4, 7); /* c0 c1 c2 c3 */
+        rs_v4 rx, ry, rz;
+        rs_v4_load(&rx, x + j);
+        rs_v4_load(&ry, y + j);
+        rs_v4_load(&rz, z + j);
+        rx -= o0, ry -= o1, rz -= o2;
+        sm0 += ry * fzz - rz * fy;
+        sm1 += rz * fx - rx * fzz;
+        sm2 += rx * fy - ry * fx;
+    }
+    /* a row's position p in its 12 holds component p mod 3 */
+    f[0] = (sf[0][0] + sf[0][3]) + (sf[1][2] + sf[2][1]);
+    f[1] = (sf[0][1] + sf[1][0]) + (sf[1][3] + sf[2][2]);
+    f[2] = (sf[0][2] + sf[1][1]) + (sf[2][0] + sf[2][3]);
+    t[0] = (st[0][0] + st[0][3]) + (st[1][2] + st[2][1]);
+    t[1] = (st[0][1] + st[1][0]) + (st[1][3] + st[2][2]);
+    t[2] = (st[0][2] + st[1][1]) + (st[2][0] + st[2][3]);
+    mo[0] = (sm0[0] + sm0[1]) + (sm0[2] + sm0[3]);
+    mo[1] = (sm1[0] + sm1[1]) + (sm1[2] + sm1[3]);
+    mo[2] = (sm2[0] + sm2[1]) + (sm2[2] + sm2[3]);
+#endif
+    for (; j < m; j++) {
+        const double *fj = F + 3 * j, *tj = T + 3 * j;
+        const double r0 = x[j] - o0, r1 = y[j] - o1, r2 = z[j] - o2;
+        f[0] += fj[0], f[1] += fj[1], f[2] += fj[2];
+        t[0] += tj[0], t[1] += tj[1], t[2] += tj[2];
+        mo[0] += r1 * fj[2] - r2 * fj[1];
+        mo[1] += r2 * fj[0] - r0 * fj[2];
+        mo[2] += r0 * fj[1] - r1 * fj[0];
+    }
+    acc->fw0 = -f[0], acc->fw1 = -f[1], acc->fw2 = -f[2];
+    acc->mw0 = -(mo[0] + t[0]), acc->mw1 = -(mo[1] + t[1]), acc->mw2 = -(mo[2] + t[2]);
+}
+
 /* The run through a model per contact (rs_law.force_one), each contact described as
  * rs_wall_force_contact describes it. */
 static int run_by_one(const rs_law *law, const rs_force_run *r, rs_error *err)
@@ -298,13 +364,8 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
      * origin as rs_load_force_law gives it, unit area), then the loads onto the engine's
      * rows */
     const double *const F = fr.FT[0], *const T = fr.FT[1];
-    rs_wall_acc fm = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    for (int j = 0; j < m; j++) {
-        const double ctr[3] = {p->x[j], p->y[j], p->z[j]};
-        double Fo[3], To[3], Mo[3];
-        rs_load_force_law(1.0, F + 3 * j, T + 3 * j, ctr, origin, Fo, To, Mo);
-        rs_wall_acc_take(&fm, Fo, Mo);
-    }
+    rs_wall_acc fm;
+    wall_sums(F, T, p->x, p->y, p->z, origin, m, &fm);
     const rs_load_rows lr = *rows;
     /* the engine's row of each contact: rows->row, or the run's own order */
     int idn[RS_TRACK_LINE_RUN];
