@@ -93,9 +93,16 @@ void rs_line_revolution_faces(const rs_surface *s, const rs_pose *pose, int m,
 {
     double F[12];
     rs_analytic_frame(s, pose, F);
-    double rmax = 0.0;
-    for (int j = 0; j < m; j++)
-        rmax = radius[j] > rmax ? radius[j] : rmax;
+    /* the largest radius, in four lanes (which the compiler vectorises), then theirs */
+    double rl[4] = {0.0, 0.0, 0.0, 0.0};
+    int j = 0;
+    for (; j + 4 <= m; j += 4)
+        for (int l = 0; l < 4; l++)
+            rl[l] = radius[j + l] > rl[l] ? radius[j + l] : rl[l];
+    for (; j < m; j++)
+        rl[0] = radius[j] > rl[0] ? radius[j] : rl[0];
+    const double r01 = rl[1] > rl[0] ? rl[1] : rl[0], r23 = rl[3] > rl[2] ? rl[3] : rl[2];
+    const double rmax = r23 > r01 ? r23 : r01;
     if (c->xm[0])
         faces_all(s->impl, F, m, x, y, z, radius, gap_max, rmax, c, face);
     else
