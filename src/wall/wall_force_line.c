@@ -79,16 +79,44 @@ RS_INLINE void copy_statev(double *restrict h, double *const *slot, int sv, int 
                            const int in)
 {
     if (ns == 4) {
-        for (int j = 0; j < m; j++) {
+        /* four contacts an iteration */
+        int j = 0;
+        for (; j + 4 <= m; j += 4) {
+            double *const *sl = slot + j;
+            double *hj = h + 4 * j;
+#ifdef RS_HAVE_V4
+            rs_v4 v0, v1, v2, v3;
+            if (in) {
+                rs_v4_load(&v0, sl[0] + sv);
+                rs_v4_load(&v1, sl[1] + sv);
+                rs_v4_load(&v2, sl[2] + sv);
+                rs_v4_load(&v3, sl[3] + sv);
+                rs_v4_store(hj, &v0);
+                rs_v4_store(hj + 4, &v1);
+                rs_v4_store(hj + 8, &v2);
+                rs_v4_store(hj + 12, &v3);
+            } else {
+                rs_v4_load(&v0, hj);
+                rs_v4_load(&v1, hj + 4);
+                rs_v4_load(&v2, hj + 8);
+                rs_v4_load(&v3, hj + 12);
+                rs_v4_store(sl[0] + sv, &v0);
+                rs_v4_store(sl[1] + sv, &v1);
+                rs_v4_store(sl[2] + sv, &v2);
+                rs_v4_store(sl[3] + sv, &v3);
+            }
+#else
+            for (int l = 0; l < 4; l++) {
+                double *restrict d = in ? hj + 4 * l : sl[l] + sv;
+                const double *restrict s = in ? sl[l] + sv : hj + 4 * l;
+                d[0] = s[0], d[1] = s[1], d[2] = s[2], d[3] = s[3];
+            }
+#endif
+        }
+        for (; j < m; j++) {
             double *restrict d = in ? h + 4 * j : slot[j] + sv;
             const double *restrict s = in ? slot[j] + sv : h + 4 * j;
-#ifdef RS_HAVE_V4
-            rs_v4 v;
-            rs_v4_load(&v, s);
-            rs_v4_store(d, &v);
-#else
             d[0] = s[0], d[1] = s[1], d[2] = s[2], d[3] = s[3];
-#endif
         }
         return;
     }
