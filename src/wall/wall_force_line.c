@@ -403,9 +403,19 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
             idn[j] = j;
         rk = idn;
     }
-    for (int j = 0; j < m; j++) {
-        add3(lr.f + 3 * (size_t)rk[j], F + 3 * j);
-        add3(lr.t + 3 * (size_t)rk[j], T + 3 * j);
+    {
+        int j = 0; /* two contacts an iteration, in their order */
+        for (; j + 2 <= m; j += 2) {
+            const size_t r0 = 3 * (size_t)rk[j], r1 = 3 * (size_t)rk[j + 1];
+            add3(lr.f + r0, F + 3 * j);
+            add3(lr.t + r0, T + 3 * j);
+            add3(lr.f + r1, F + 3 * j + 3);
+            add3(lr.t + r1, T + 3 * j + 3);
+        }
+        if (j < m) {
+            add3(lr.f + 3 * (size_t)rk[j], F + 3 * j);
+            add3(lr.t + 3 * (size_t)rk[j], T + 3 * j);
+        }
     }
     if (lr.fstore)
         for (int j = 0; j < m; j++) {
