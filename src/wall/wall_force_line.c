@@ -145,16 +145,14 @@ RS_INLINE void add3(double *restrict d, const double *restrict s)
 }
 
 /* The frames (n, t1) of the run's contacts into their slots (unless the law reads none of
- * what they give: frame 0, RS_LAW_SKIPS_DROT), and the tracker's entries' points and
- * features: what run_store (track_run.h) does for a slot of the frame and the state
- * variables (RS_DROP_SLIP) whose contact is held, as every contact of the run is, and
- * whose directory entry already names its feature, so that nothing else changes. */
+ * what they give: frame 0, RS_LAW_SKIPS_DROT), and the tracker's entries' features (their
+ * points, j for contact j of sphere j, rs_track_match_usual gave): what run_store
+ * (track_run.h) does for a slot of the frame and the state variables (RS_DROP_SLIP) whose
+ * contact is held, as every contact of the run is, and whose directory entry already
+ * names its feature, so that nothing else changes. */
 static void store_frames(const rs_contacts *c, int m, rs_track_out *o, const int frame)
 {
-    for (int j = 0; j < m; j++) {
-        o->point[j] = c->point[j];
-        o->feature[j] = c->feature[j];
-    }
+    memcpy(o->feature, c->feature, (size_t)m * sizeof *o->feature);
     if (!frame)
         return;
     const double *n0 = c->nrm[0], *n1 = c->nrm[1], *n2 = c->nrm[2];
