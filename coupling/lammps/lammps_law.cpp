@@ -201,7 +201,7 @@ struct ModelCall {
      * curvatures, rs_effective_radius), the wall's velocity there vwall and its history h:
      * LAMMPS's model STYLE (< 0: the model's own) adds its force and torque onto F and T
      * and gives 1; 0 where the model acts not, the history cleared. */
-    template <int STYLE>
+    template <int STYLE, int KEEP = -1>
     int one(int row, double R, double mass, const double n[3], double r, double k1,
             double k2, double reff_c, double *vwall, double *h, double F[3], double T[3])
     {
@@ -211,7 +211,7 @@ struct ModelCall {
         const bool pull = (STYLE < 0 || STYLE == FixWallGran::GRANULAR) && jkr;
         const bool kept = (STYLE < 0 || STYLE == FixWallGran::HERTZ_HISTORY ||
                            STYLE == FixWallGran::GRANULAR) &&
-                          keep;
+                          (KEEP < 0 ? keep : KEEP != 0);
         const double rad = pull ? R + m.pulloff_distance(R) : R;
         if (rsq > rad * rad || (pull && h[0] == 0.0 && rsq > R * R)) {
             for (int k = 0; k < ns; k++)
@@ -246,19 +246,33 @@ struct ModelCall {
     }
 
     /* The contacts of run ru through the model STYLE, its force and torque added onto
-     * the run's rows. */
+     * the run's rows: the loop of run_as for whether the contacts keep their effective
+     * radius and whether the wall's velocity is a column, constants of the loop. */
     template <int STYLE> void run(const rs_force_run &ru)
     {
-        double vw[3] = {ru.vwall0[0], ru.vwall0[1], ru.vwall0[2]};
         const bool vcol = ru.vwall[0] != nullptr;
+        if (keep)
+            vcol ? run_as<STYLE, 1, 1>(ru) : run_as<STYLE, 1, 0>(ru);
+        else
+            vcol ? run_as<STYLE, 0, 1>(ru) : run_as<STYLE, 0, 0>(ru);
+    }
+
+    template <int STYLE, int KEEP, int VCOL> void run_as(const rs_force_run &ru)
+    {
+        double vw[3] = {ru.vwall0[0], ru.vwall0[1], ru.vwall0[2]};
         double *h = ru.history; /* contact j's: NULL without state variables */
-        for (int j = 0; j < ru.n; j++, h += ns) {
-            const double n[3] = {ru.nrm[0][j], ru.nrm[1][j], ru.nrm[2][j]};
-            if (vcol)
+        const double *const n0 = ru.nrm[0], *const n1 = ru.nrm[1], *const n2 = ru.nrm[2];
+        const double *const rn = ru.rn, *const radius = ru.radius, *const mass = ru.mass;
+        const int *const row = ru.row;
+        int *const acts = ru.acts;
+        double *const F = ru.F, *const T = ru.T;
+        const int nc = ru.n;
+        for (int j = 0; j < nc; j++, h += ns) {
+            const double n[3] = {n0[j], n1[j], n2[j]};
+            if (VCOL)
                 vw[0] = ru.vwall[0][j], vw[1] = ru.vwall[1][j], vw[2] = ru.vwall[2][j];
-            ru.acts[j] =
-                one<STYLE>(ru.row[j], ru.radius[j], ru.mass[j], n, ru.rn[j], ru.curv[0][j],
-                           ru.curv[1][j], NAN, vw, h, ru.F + 3 * j, ru.T + 3 * j);
+            acts[j] = one<STYLE, KEEP>(row[j], radius[j], mass[j], n, rn[j], ru.curv[0][j],
+                                       ru.curv[1][j], NAN, vw, h, F + 3 * j, T + 3 * j);
         }
     }
 };
