@@ -201,7 +201,20 @@ struct ModelCall {
      * curvatures, rs_effective_radius), the wall's velocity there vwall and its history h:
      * LAMMPS's model STYLE (< 0: the model's own) adds its force and torque onto F and T
      * and gives 1; 0 where the model acts not, the history cleared. */
-    template <int STYLE, int KEEP = -1>
+    /* The effective radius a new contact keeps: of the wall's curvatures k1, k2 (reff_c
+     * where given, not NaN) in REFF_EXACT; of 2/k, k the most curved direction's, as
+     * LAMMPS's region walls, in REFF_REGION; R on a plane. Out of line: once a contact. */
+    __attribute__((noinline)) double first_reff(double R, double k1, double k2,
+                                                double reff_c) const
+    {
+        if (reff_mode == REFF_EXACT)
+            return std::isnan(reff_c) ? rs_effective_radius(R, k1, k2) : reff_c;
+        const double k = std::fabs(k1) >= std::fabs(k2) ? k1 : k2;
+        return k != 0.0 ? R * (2.0 / k) / (R + 2.0 / k) : R;
+    }
+
+    /* KEEP, NS: keep and ns where known (< 0, 0: not) */
+    template <int STYLE, int KEEP = -1, int NS = 0>
     int one(int row, double R, double mass, const double n[3], double r, double k1,
             double k2, double reff_c, double *vwall, double *h, double F[3], double T[3])
     {
@@ -214,7 +227,7 @@ struct ModelCall {
                           (KEEP < 0 ? keep : KEEP != 0);
         const double rad = pull ? R + m.pulloff_distance(R) : R;
         if (rsq > rad * rad || (pull && h[0] == 0.0 && rsq > R * R)) {
-            for (int k = 0; k < ns; k++)
+            for (int k = 0; k < (NS ? NS : ns); k++)
                 h[k] = 0.0;
             return 0;
         }
@@ -226,17 +239,9 @@ struct ModelCall {
          * the normal force do net work. */
         double rwall = 0.0;
         if (kept) {
-            double &reff = h[ns - 1];
-            if (reff == 0.0) {
-                reff = R;
-                if (reff_mode == REFF_EXACT) {
-                    reff = std::isnan(reff_c) ? rs_effective_radius(R, k1, k2) : reff_c;
-                } else {
-                    const double k = std::fabs(k1) >= std::fabs(k2) ? k1 : k2;
-                    if (k != 0.0)
-                        reff = R * (2.0 / k) / (R + 2.0 / k);
-                }
-            }
+            double &reff = h[(NS ? NS : ns) - 1];
+            if (reff == 0.0)
+                reff = first_reff(R, k1, k2, reff_c);
             if (reff != R)
                 rwall = R * reff / (R - reff);
         }
@@ -251,13 +256,15 @@ struct ModelCall {
     template <int STYLE> void run(const rs_force_run &ru)
     {
         const bool vcol = ru.vwall[0] != nullptr;
-        if (keep)
+        if (keep && STYLE == FixWallGran::HERTZ_HISTORY && ns == 4)
+            vcol ? run_as<STYLE, 1, 1, 4>(ru) : run_as<STYLE, 1, 0, 4>(ru);
+        else if (keep)
             vcol ? run_as<STYLE, 1, 1>(ru) : run_as<STYLE, 1, 0>(ru);
         else
             vcol ? run_as<STYLE, 0, 1>(ru) : run_as<STYLE, 0, 0>(ru);
     }
 
-    template <int STYLE, int KEEP, int VCOL> void run_as(const rs_force_run &ru)
+    template <int STYLE, int KEEP, int VCOL, int NS = 0> void run_as(const rs_force_run &ru)
     {
         double vw[3] = {ru.vwall0[0], ru.vwall0[1], ru.vwall0[2]};
         double *h = ru.history; /* contact j's: NULL without state variables */
@@ -267,12 +274,13 @@ struct ModelCall {
         int *const acts = ru.acts;
         double *const F = ru.F, *const T = ru.T;
         const int nc = ru.n;
-        for (int j = 0; j < nc; j++, h += ns) {
+        for (int j = 0; j < nc; j++, h += (NS ? NS : ns)) {
             const double n[3] = {n0[j], n1[j], n2[j]};
             if (VCOL)
                 vw[0] = ru.vwall[0][j], vw[1] = ru.vwall[1][j], vw[2] = ru.vwall[2][j];
-            acts[j] = one<STYLE, KEEP>(row[j], radius[j], mass[j], n, rn[j], ru.curv[0][j],
-                                       ru.curv[1][j], NAN, vw, h, F + 3 * j, T + 3 * j);
+            acts[j] =
+                one<STYLE, KEEP, NS>(row[j], radius[j], mass[j], n, rn[j], ru.curv[0][j],
+                                     ru.curv[1][j], NAN, vw, h, F + 3 * j, T + 3 * j);
         }
     }
 };
