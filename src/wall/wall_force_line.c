@@ -358,12 +358,18 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
     rc = law->force_run ? law->force_run(law, &fx, err) : run_by_one(law, &fx, err);
     if (rc)
         return rc;
-    /* any NaN or Inf of the forces and torques, and of the stresses as
-     * rs_wall_force_result gives them (wall_force_stress; zeros where the model acts not)
-     */
-    uint64_t acc = 0;
-    for (int k = 0; k < 3 * m; k++)
-        acc |= rs_nonfinite_bit(fr.FT[0][k]) | rs_nonfinite_bit(fr.FT[1][k]);
+    /* The wall's sums (each contact's moment about the wall's origin as rs_load_force_law
+     * gives it, unit area), which also tell whether any force or torque is NaN or Inf:
+     * a sum over values one of which is not finite is not finite (a finite sum that
+     * overflows only makes the contacts be looked at one by one). Then the stresses as
+     * rs_wall_force_result gives them (wall_force_stress; zeros where the model acts
+     * not). */
+    const double *const F = fr.FT[0], *const T = fr.FT[1];
+    rs_wall_acc fm;
+    wall_sums(F, T, p->x, p->y, p->z, origin, m, &fm);
+    uint64_t acc = rs_nonfinite_bit(fm.fw0) | rs_nonfinite_bit(fm.fw1) |
+                   rs_nonfinite_bit(fm.fw2) | rs_nonfinite_bit(fm.mw0) |
+                   rs_nonfinite_bit(fm.mw1) | rs_nonfinite_bit(fm.mw2);
     if (out6)
         for (int j = 0; j < m; j++) {
             const double n[3] = {c->nrm[0][j], c->nrm[1][j], c->nrm[2][j]};
@@ -386,12 +392,7 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
     store_frames(c, m, out, !(law->skips & RS_LAW_SKIPS_DROT));
     copy_statev(fr.hist, out->slot, sv, ns, m, 0);
     out->n = m;
-    /* the wall's sums in the contacts' order (each contact's moment about the wall's
-     * origin as rs_load_force_law gives it, unit area), then the loads onto the engine's
-     * rows */
-    const double *const F = fr.FT[0], *const T = fr.FT[1];
-    rs_wall_acc fm;
-    wall_sums(F, T, p->x, p->y, p->z, origin, m, &fm);
+    /* the loads onto the engine's rows */
     const rs_load_rows lr = *rows;
     /* the engine's row of each contact: rows->row, or the run's own order */
     int idn[RS_TRACK_LINE_RUN];
