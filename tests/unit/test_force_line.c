@@ -44,8 +44,9 @@ typedef struct sim {
     long direct;   ///< the model's calls outside the block call (the line path's)
     long calls;    ///< all its calls
     int nan_at;    ///< the particle (id) whose contact gives NaN from this step on; 0: none
-    int by_run;    ///< the law has the run operation (tf_run)
-    long runs;     ///< its calls
+    int inf_torque; ///< there an infinite torque(3), not a NaN force(2)
+    int by_run;     ///< the law has the run operation (tf_run)
+    long runs;      ///< its calls
     long rn_differ; ///< its contacts whose rn is not (x - xm).n bit for bit
     int skips_drot; ///< the law declares RS_LAW_SKIPS_DROT
     long k;         ///< the step
@@ -105,8 +106,12 @@ static int tf_one(const rs_law *law, rs_force_contact *c, double F[3], double T[
         const int a = (d + 1) % 3, b = (d + 2) % 3;
         T[d] = arm[a] * ft[b] - arm[b] * ft[a];
     }
-    if (s->nan_at && s->id[c->row] == s->nan_at)
-        F[1] = NAN;
+    if (s->nan_at && s->id[c->row] == s->nan_at) {
+        if (s->inf_torque)
+            T[2] = INFINITY;
+        else
+            F[1] = NAN;
+    }
     return 1;
 }
 
@@ -407,9 +412,10 @@ static void test_drum_frames_unless_the_law_skips_drot(void)
                 }
             }
         }
-        printf("drum, %s RS_LAW_SKIPS_DROT: %ld contacts, the line path's %ld calls of "
-               "%ld; at the last step %d particles touch, %d slots hold that step's frame\n",
-               skips ? "with" : "without", contacts, a.direct, a.calls, touched, current);
+        printf(
+            "drum, %s RS_LAW_SKIPS_DROT: %ld contacts, the line path's %ld calls of "
+            "%ld; at the last step %d particles touch, %d slots hold that step's frame\n",
+            skips ? "with" : "without", contacts, a.direct, a.calls, touched, current);
         rs_wall_free(a.w);
         rs_wall_free(b.w);
         ENSURE(contacts > nsteps * 30 && a.direct > a.calls / 2);
@@ -482,15 +488,18 @@ static void test_mesh_line_path_and_staged_bit_for_bit(void)
 }
 
 /* A model that returns NaN for one particle: the step fails with the law's name, the
- * particle and what was not finite, and the engine's rows are as they were. */
+ * particle and what was not finite, and the engine's rows are as they were; likewise an
+ * infinite torque alone. */
 static void test_nan_stops_the_step(void)
 {
-    for (int v = 0; v < 3; v++) {
-        /* the line path with the model per contact, with the run operation; staged */
-        const int staged = v == 2;
+    for (int v = 0; v < 5; v++) {
+        /* the line path with the model per contact, with the run operation; staged; then
+         * the infinite torque on the line path with the run operation, and staged */
+        const int staged = v == 2 || v == 4;
         static sim s;
         drum_particles(&s);
-        s.by_run = v == 1;
+        s.by_run = v == 1 || v == 3;
+        s.inf_torque = v >= 3;
         rs_error e;
         const int n = (int)(sizeof DRUM / sizeof DRUM[0]);
         ENSURE(make(&s, DRUM, n, staged, &e) == RS_OK);
@@ -514,7 +523,7 @@ static void test_nan_stops_the_step(void)
         rs_wall_free(s.w);
         ENSURE(step_rc == RS_ERR_NONFINITE);
         ENSURE(strstr(e.msg, "law 'test'") && strstr(e.msg, "particle 3") &&
-               strstr(e.msg, "stress(1)"));
+               strstr(e.msg, s.inf_torque ? "torque(3)" : "stress(1)"));
         ENSURE(same_bits(f0, s.f, sizeof f0));
         ENSURE(staged ? s.direct == direct : s.direct > direct);
         ENSURE(s.by_run ? s.runs > runs : s.runs == 0);
