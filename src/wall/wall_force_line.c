@@ -300,16 +300,19 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
      * increments of a slot without the slip); without those rows rdisp(1) alone. Every
      * contact is held (its slot is live). */
     track_run r;
+    int ncontact = 0;
     if (out6) {
         run_gather(&r, m, out, 0, 1, hs);
         run_kinematics(&r, m, &mr, dt, p, 0, c, 0, 3, 0, 0, 1);
-    } else {
         for (int j = 0; j < m; j++)
-            r.rd1[j] = p->radius[j] - c->dist[j];
+            ncontact += r.rd1[j] > 0.0;
+    } else {
+        for (int j = 0; j < m; j++) {
+            const double rd1 = p->radius[j] - c->dist[j];
+            r.rd1[j] = rd1;
+            ncontact += rd1 > 0.0;
+        }
     }
-    int ncontact = 0;
-    for (int j = 0; j < m; j++)
-        ncontact += r.rd1[j] > 0.0;
 
     /* the model on the run, its state in the run's copy of the slots */
     force_run fr;
