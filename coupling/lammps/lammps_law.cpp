@@ -272,15 +272,14 @@ struct ModelCall {
         const double *const rn = ru.rn, *const radius = ru.radius, *const mass = ru.mass;
         const int *const row = ru.row;
         int *const acts = ru.acts;
-        double *const F = ru.F, *const T = ru.T;
+        double *F = ru.F, *T = ru.T; /* contact j's */
         const int nc = ru.n;
-        for (int j = 0; j < nc; j++, h += (NS ? NS : ns)) {
+        for (int j = 0; j < nc; j++, h += (NS ? NS : ns), F += 3, T += 3) {
             const double n[3] = {n0[j], n1[j], n2[j]};
             if (VCOL)
                 vw[0] = ru.vwall[0][j], vw[1] = ru.vwall[1][j], vw[2] = ru.vwall[2][j];
-            acts[j] =
-                one<STYLE, KEEP, NS>(row[j], radius[j], mass[j], n, rn[j], ru.curv[0][j],
-                                     ru.curv[1][j], NAN, vw, h, F + 3 * j, T + 3 * j);
+            acts[j] = one<STYLE, KEEP, NS>(row[j], radius[j], mass[j], n, rn[j],
+                                           ru.curv[0][j], ru.curv[1][j], NAN, vw, h, F, T);
         }
     }
 };
