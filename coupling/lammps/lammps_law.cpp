@@ -196,7 +196,8 @@ struct ModelCall {
 
     /* The contact of the sphere of row `row` (radius R, mass) at the wall's point of
      * normal n, r from it along n (the centre's distance, as LAMMPS's walls measure it:
-     * R - overlap rounds otherwise), whose curvatures are k1, k2 and effective radius
+     * R - overlap rounds otherwise), whose curvatures are *k1, *k2 (read for a new
+     * contact only) and effective radius
      * reff_c (NaN: from the
      * curvatures, rs_effective_radius), the wall's velocity there vwall and its history h:
      * LAMMPS's model STYLE (< 0: the model's own) adds its force and torque onto F and T
@@ -215,8 +216,9 @@ struct ModelCall {
 
     /* KEEP, NS: keep and ns where known (< 0, 0: not) */
     template <int STYLE, int KEEP = -1, int NS = 0>
-    int one(int row, double R, double mass, const double n[3], double r, double k1,
-            double k2, double reff_c, double *vwall, double *h, double F[3], double T[3])
+    int one(int row, double R, double mass, const double n[3], double r, const double *k1,
+            const double *k2, double reff_c, double *vwall, double *h, double F[3],
+            double T[3])
     {
         const double rsq = r * r;
         /* what a known model cannot be: JKR is a granular model's, a kept effective radius
@@ -241,7 +243,7 @@ struct ModelCall {
         if (kept) {
             double &reff = h[(NS ? NS : ns) - 1];
             if (reff == 0.0)
-                reff = first_reff(R, k1, k2, reff_c);
+                reff = first_reff(R, *k1, *k2, reff_c);
             if (reff != R)
                 rwall = R * reff / (R - reff);
         }
@@ -278,8 +280,9 @@ struct ModelCall {
             const double n[3] = {n0[j], n1[j], n2[j]};
             if (VCOL)
                 vw[0] = ru.vwall[0][j], vw[1] = ru.vwall[1][j], vw[2] = ru.vwall[2][j];
-            acts[j] = one<STYLE, KEEP, NS>(row[j], radius[j], mass[j], n, rn[j],
-                                           ru.curv[0][j], ru.curv[1][j], NAN, vw, h, F, T);
+            acts[j] =
+                one<STYLE, KEEP, NS>(row[j], radius[j], mass[j], n, rn[j], ru.curv[0] + j,
+                                     ru.curv[1] + j, NAN, vw, h, F, T);
         }
     }
 };
@@ -294,8 +297,8 @@ int FixWallRigid::lammps_one(rs_force_contact &c, double F[3], double T[3])
     const double *xi = atom->x[c.row];
     const double r = (xi[0] - c.xm[0]) * c.n[0] + (xi[1] - c.xm[1]) * c.n[1] +
                      (xi[2] - c.xm[2]) * c.n[2];
-    return k.one<-1>(c.row, c.radius, c.mass, c.n, r, c.curv[0], c.curv[1], c.reff, c.vwall,
-                     c.history, F, T);
+    return k.one<-1>(c.row, c.radius, c.mass, c.n, r, &c.curv[0], &c.curv[1], c.reff,
+                     c.vwall, c.history, F, T);
 }
 
 void FixWallRigid::lammps_run(const rs_force_run &r)
