@@ -199,11 +199,11 @@ RS_INLINE void wall_sums(const double *restrict F, const double *restrict T,
             rs_v4_load(&q, T + 3 * j + 4 * k);
             st[k] += q;
         }
-        const rs_v4 u = __builtin_shufflevector(r0, r1, 0, 3, 6, 5);  /* a0 a1 a2 c1 */
-        const rs_v4 v = __builtin_shufflevector(r0, r1, 1, 4, 7, 2);  /* b0 b1 b2 c0 */
-        const rs_v4 fx = __builtin_shufflevector(u, r2, 0, 1, 2, 5);  /* a0 a1 a2 a3 */
-        const rs_v4 fy = __builtin_shufflevector(v, r2, 0, 1, 2, 6);  /* b0 b1 b2 b3 */
-        const rs_v4 fz = __builtin_shufflevector(v, u, 3, 7, 0, 0);   /* c0 c1 */
+        const rs_v4 u = __builtin_shufflevector(r0, r1, 0, 3, 6, 5);   /* a0 a1 a2 c1 */
+        const rs_v4 v = __builtin_shufflevector(r0, r1, 1, 4, 7, 2);   /* b0 b1 b2 c0 */
+        const rs_v4 fx = __builtin_shufflevector(u, r2, 0, 1, 2, 5);   /* a0 a1 a2 a3 */
+        const rs_v4 fy = __builtin_shufflevector(v, r2, 0, 1, 2, 6);   /* b0 b1 b2 b3 */
+        const rs_v4 fz = __builtin_shufflevector(v, u, 3, 7, 0, 0);    /* c0 c1 */
         const rs_v4 fzz = __builtin_shufflevector(fz, r2, 0, 1, 4, 7); /* c0 c1 c2 c3 */
         rs_v4 rx, ry, rz;
         rs_v4_load(&rx, x + j);
