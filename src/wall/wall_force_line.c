@@ -3,12 +3,14 @@
  * each hold their one contact, their face contacts given (wall_line.c), in one pass. The
  * run's contacts in columns (rs_force_run), their state variables copied out of the slots,
  * handed to the law's run operation, or to its model contact by contact as
- * rs_wall_force_contact describes a contact; once every contact's force and torque are
- * finite, the slots (frame and state variables), the loads onto the engine's rows, the
- * wall's sums and the per-particle rows, with the operations of the staged calls
- * (rs_track_update, rs_track_load, rs_cblock_inputs, the law's block call,
- * rs_cblock_add_loads, rs_track_commit), so that every number is theirs. A force, torque
- * or stress that is NaN or Inf stops the call before anything is written. */
+ * rs_wall_force_contact describes a contact; the wall's sums; once every contact's force
+ * and torque are finite, the slots (state variables, and the frame unless the law reads
+ * none of what it gives, RS_LAW_SKIPS_DROT), the loads onto the engine's rows and the
+ * per-particle rows, with the operations of the staged calls (rs_track_update,
+ * rs_track_load, rs_cblock_inputs, the law's block call, rs_cblock_add_loads,
+ * rs_track_commit), so that every number is theirs (the wall's sums, added in another
+ * order, to rounding). A force, torque or stress that is NaN or Inf stops the call
+ * before anything is written. */
 #include "wall_impl.h"
 
 #include "laws/builtin.h"
