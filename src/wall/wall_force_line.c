@@ -152,7 +152,7 @@ RS_INLINE void add3(double *restrict d, const double *restrict s)
  * (track_run.h) does for a slot of the frame and the state variables (RS_DROP_SLIP) whose
  * contact is held, as every contact of the run is, and whose directory entry already
  * names its feature, so that nothing else changes. */
-static void store_frames(const rs_contacts *c, int m, rs_track_out *o, const int frame)
+RS_INLINE void store_frames(const rs_contacts *c, int m, rs_track_out *o, const int frame)
 {
     memcpy(o->feature, c->feature, (size_t)m * sizeof *o->feature);
     if (!frame)
