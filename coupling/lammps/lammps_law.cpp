@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <mpi.h>
 #include <string>
@@ -242,7 +243,10 @@ struct ModelCall {
         double rwall = 0.0;
         if (kept) {
             double &reff = h[(NS ? NS : ns) - 1];
-            if (reff == 0.0)
+            /* a new contact's is +0.0 (a cleared history), which its bits tell at once */
+            std::uint64_t bits;
+            std::memcpy(&bits, &reff, sizeof bits);
+            if (bits == 0)
                 reff = first_reff(R, *k1, *k2, reff_c);
             if (reff != R)
                 rwall = R * reff / (R - reff);
