@@ -42,6 +42,9 @@ typedef struct rs_mtri {
                               ///< of its node j: the query tests each edge and vertex from
                               ///< that triangle alone
     unsigned char kind[3];    ///< the kind of each slot's edge (rs_edge_kind)
+    unsigned char rough;      ///< bit j when the edge of slot j is not FLAT, bit 3 + j when
+                              ///< node j is not inside a coplanar region (vflat 0): what
+                              ///< may keep a ball off the face alone
 } rs_mtri;
 _Static_assert(sizeof(rs_mtri) == 192, "a triangle's record spans three cache lines");
 
@@ -171,14 +174,13 @@ int rs_mesh_feature_point(const rs_surface *s, const rs_pose *pose, int f,
 /// more than cap, only cap were written (ask again with room for all).
 int rs_mesh_box_candidates(const rs_surface *s, const double lo[3], const double hi[3],
                            int *ids, int cap);
-/// Triangle t's nodes (9 values) and unit normal; returns its face feature
-/// RS_FEATURE(RS_FEAT_FACE, element).
-int rs_mesh_triangle(const rs_surface *s, int t, double xyz[9], double n[3]);
 /// Does x, a point of t's plane, lie in triangle t (on the inner side of each of its
 /// edges' planes, ties included)?
 int rs_mesh_triangle_holds(const rs_surface *s, int t, const double x[3]);
 /// 1 when no edge of triangle t but a FLAT one, and no vertex but one inside a coplanar
-/// region, comes within r of the point c: a body within r of c meets t at its face.
+/// region, comes within r of the point c: a body within r of c meets t at its face. An
+/// edge whose plane (through it, normal to t) c is clearly farther than r from needs no
+/// distance, nor do its nodes.
 int rs_mesh_triangle_plain(const rs_surface *s, int t, const double c[3], double r);
 /// Does x, a point of t's plane, lie beyond a CONCAVE edge of t: outside its line, and
 /// between the perpendiculars at its ends?
@@ -196,8 +198,9 @@ int rs_mesh_beyond_concave(const rs_surface *s, int t, const double x[3]);
 int rs_mesh_direction_owner(const rs_surface *s, int t, const double x[3],
                             const double n[3], int *tri);
 /// The coplanar regions among triangles ids[0 .. n): label[k] is the least index in ids
-/// of the triangles joined to ids[k] through flat edges between triangles of the list.
-/// scratch: room for 2 n ints.
+/// of the triangles joined to ids[k] through flat edges between triangles of the list
+/// (two: one look at the first's flat edges; up to 16: each flat edge's other face
+/// looked up in the list; more: in a sorted copy). scratch: room for 2 n ints.
 void rs_mesh_flat_regions(const rs_surface *s, const int *ids, int n, int *label,
                           int *scratch);
 

@@ -1,8 +1,8 @@
 /* What a convex body's query against a MESH asks of the mesh (mesh_body_query.c;
- * docs/conventions.md, "Convex bodies"): the triangles near a box,
- * a triangle's nodes and normal, the feature that owns a direction at a point of a
- * triangle (the Voronoi rules of the point query, mesh_query.c) and the coplanar regions
- * of a set of triangles. All in the reference configuration. */
+ * docs/conventions.md, "Convex bodies"): the triangles near a box, whether a triangle
+ * holds a point or meets a ball at its face only, the feature that owns a direction at a
+ * point of a triangle (the Voronoi rules of the point query, mesh_query.c) and the
+ * coplanar regions of a set of triangles. All in the reference configuration. */
 #include "mesh.h"
 #include "mesh_regions.h"
 #include "rigidsurf/vec.h"
@@ -54,7 +54,7 @@ int rs_mesh_feature_point(const rs_surface *s, const rs_pose *pose, int f,
         if (!(side_of(m, t, j, p) > 0.0))
             return 0;
     const double gap_lim = gap_max + radius, dist_min = -depth_max;
-    const double lim = fmax(gap_lim, -dist_min), h = plane_height(m, t, p);
+    const double lim = gap_lim > -dist_min ? gap_lim : -dist_min, h = plane_height(m, t, p);
     if (!(gap_lim >= 0.0) || !(h * h <= lim * lim))
         return 0;
     const int one_sided = s->sides != 2;
@@ -64,8 +64,9 @@ int rs_mesh_feature_point(const rs_surface *s, const rs_pose *pose, int f,
     if (!(d <= gap_lim && d >= dist_min) || (one_sided && d < 0.0))
         return 0;
     *dist = d;
-    for (int k = 0; t1 && t2 && k < 3; k++)
-        t1[k] = t2[k] = 0.0;
+    if (t1 && t2)
+        for (int k = 0; k < 3; k++)
+            t1[k] = t2[k] = 0.0;
     if (pose) {
         rs_matvec3(pose->R, X, xm);
         rs_matvec3(pose->R, N, n);
@@ -78,21 +79,9 @@ int rs_mesh_feature_point(const rs_surface *s, const rs_pose *pose, int f,
     return 1;
 }
 
-int rs_mesh_triangle(const rs_surface *s, int t, double xyz[9], double n[3])
-{
-    const rs_mesh *m = s->impl;
-    const rs_mtri *r = m->rec + t;
-    for (int i = 0; i < 3; i++)
-        memcpy(xyz + 3 * i, m->xyz + 3 * r->v[i], 3 * sizeof(double));
-    memcpy(n, r->n, 3 * sizeof(double));
-    return RS_FEATURE(RS_FEAT_FACE, r->el);
-}
-
 int rs_mesh_triangle_holds(const rs_surface *s, int t, const double x[3])
 {
-    const rs_mesh *m = s->impl;
-    return side_of(m, t, 0, x) >= 0.0 && side_of(m, t, 1, x) >= 0.0 &&
-           side_of(m, t, 2, x) >= 0.0;
+    return tri_holds(s->impl, t, x);
 }
 
 /* Is x clearly farther than r from the segment ab: outside the segment's box grown by r
@@ -113,13 +102,30 @@ int rs_mesh_triangle_plain(const rs_surface *s, int t, const double c[3], double
 {
     const rs_mesh *m = s->impl;
     const rs_mtri *rec = m->rec + t;
+    /* the edges and nodes that may spoil it: those not FLAT, those not inside a coplanar
+     * region */
+    const unsigned rough = rec->rough;
+    if (!rough)
+        return 1;
+    /* c clearly farther than r from the plane of edge j (through it, normal to t) is
+     * farther from the edge and its two nodes: those need no distance (a margin far above
+     * the rounding of side_of and of the distances) */
+    const double g =
+        r + 1e-9 * (r + m->size + fabs(c[0]) + fabs(c[1]) + fabs(c[2])) + 1e-300;
+    int far[3];
+    for (int j = 0; j < 3; j++)
+        far[j] = fabs(side_of(m, t, j, c)) > g;
     for (int j = 0; j < 3; j++) {
-        const double *a = m->xyz + 3 * rec->v[j], *b = m->xyz + 3 * rec->v[(j + 1) % 3];
-        if (rec->kind[j] != RS_EDGE_FLAT && !clear_of_segment(a, b, c, r) &&
-            segment_distance2(a, b, c) <= r * r)
-            return 0;
+        if (far[j])
+            continue;
+        const double *a = m->xyz + 3 * rec->v[j];
+        if (rough >> j & 1u) {
+            const double *b = m->xyz + 3 * rec->v[(j + 1) % 3];
+            if (!clear_of_segment(a, b, c, r) && segment_distance2(a, b, c) <= r * r)
+                return 0;
+        }
         const double d[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        if (!m->vflat[rec->v[j]] && rs_dot3(d, d) <= r * r)
+        if ((rough >> (3 + j) & 1u) && !far[(j + 2) % 3] && rs_dot3(d, d) <= r * r)
             return 0;
     }
     return 1;
@@ -255,16 +261,9 @@ static int cmp_int(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* The position of id among sorted[0 .. n), -1 if absent: a scan for a few, else a
- * binary search. */
+/* The position of id among sorted[0 .. n), -1 if absent: a binary search. */
 static int find_sorted(const int *sorted, int n, int id)
 {
-    if (n <= 16) {
-        for (int i = 0; i < n; i++)
-            if (sorted[i] == id)
-                return i;
-        return -1;
-    }
     const int *hit = bsearch(&id, sorted, (size_t)n, sizeof *sorted, cmp_int);
     return hit ? (int)(hit - sorted) : -1;
 }
@@ -273,23 +272,43 @@ void rs_mesh_flat_regions(const rs_surface *s, const int *ids, int n, int *label
                           int *sorted)
 {
     const rs_mesh *m = s->impl;
+    for (int k = 0; k < n; k++)
+        label[k] = k;
+    if (n == 2) { /* one region where a flat edge joins the two */
+        const rs_mtri *r = m->rec + ids[0];
+        for (int j = 0; j < 3; j++)
+            if (r->kind[j] == RS_EDGE_FLAT && r->nbr[j] >= 0 && r->nbr[j] / 3 == ids[1])
+                label[1] = 0;
+        return;
+    }
+    if (n <= 16) { /* few: each flat edge's other face looked up in ids */
+        for (int k = 0; k < n; k++) {
+            const rs_mtri *r = m->rec + ids[k];
+            for (int j = 0; j < 3; j++) {
+                const int o = r->nbr[j] / 3; /* each edge once, from its lower face */
+                if (r->kind[j] != RS_EDGE_FLAT || r->nbr[j] < 0 || o < ids[k])
+                    continue;
+                int at = 0;
+                while (at < n && ids[at] != o)
+                    at++;
+                if (at == n)
+                    continue; /* not among the candidates */
+                const int a = find_root(label, k), b = find_root(label, at);
+                if (a != b)
+                    label[a > b ? a : b] = a < b ? a : b;
+            }
+        }
+        for (int k = 0; k < n; k++)
+            label[k] = find_root(label, k);
+        return;
+    }
     int *pos = sorted + n;
     for (int k = 0; k < n; k++)
         sorted[k] = ids[k];
-    if (n > 16)
-        qsort(sorted, (size_t)n, sizeof *sorted, cmp_int);
-    else /* few: by insertion */
-        for (int i = 1; i < n; i++)
-            for (int j = i; j > 0 && sorted[j - 1] > sorted[j]; j--) {
-                const int t = sorted[j];
-                sorted[j] = sorted[j - 1];
-                sorted[j - 1] = t;
-            }
+    qsort(sorted, (size_t)n, sizeof *sorted, cmp_int);
     /* pos[i]: the index in ids of sorted[i] */
-    for (int k = 0; k < n; k++) {
+    for (int k = 0; k < n; k++)
         pos[find_sorted(sorted, n, ids[k])] = k;
-        label[k] = k;
-    }
     for (int k = 0; k < n; k++) {
         const rs_mtri *r = m->rec + ids[k];
         for (int j = 0; j < 3; j++) {

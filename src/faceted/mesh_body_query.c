@@ -21,7 +21,8 @@ typedef struct found {
     int exact;  /* a face's contact from the body's support along the face's normal */
 } found;
 
-/* The contacts found, at most two per candidate (its region's and its witness's). */
+/* The contacts found, at most two per candidate (its region's and its witness's), each
+ * made in the next slot and kept there or merged (keep). */
 typedef struct found_list {
     found *f;
     int n;
@@ -33,10 +34,11 @@ static int better(const found *a, const found *b)
     return a->exact != b->exact ? a->exact > b->exact : a->c.depth > b->c.depth;
 }
 
-/* Keeps g, merged with the contact of its feature or, for a face, of its coplanar
- * region: the better of the two stays. */
-static void keep(found_list *l, const found *g)
+/* Keeps g, the list's next slot l->f[l->n], merged with the contact of its feature or,
+ * for a face, of its coplanar region: the better of the two stays. */
+static void keep(found_list *l)
 {
+    const found *g = l->f + l->n;
     for (int j = 0; j < l->n; j++) {
         found *o = &l->f[j];
         if (o->c.feature == g->c.feature ||
@@ -46,7 +48,7 @@ static void keep(found_list *l, const found *g)
             return;
         }
     }
-    l->f[l->n++] = *g;
+    l->n++;
 }
 
 /* The pose's maps, nothing where it is NULL (the identity: the reference configuration). */
@@ -94,10 +96,10 @@ static void body_box(const rs_body *b, const double R[9], const rs_pose *p, doub
     if (!p) {
         for (int d = 0; d < 3; d++) {
             double tl[3], th[3];
-            for (int j = 0; j < 3; j++) {
-                const double u = R[3 * d + j] * blo[j], v = R[3 * d + j] * bhi[j];
-                tl[j] = v < u ? v : u;
-                th[j] = v < u ? u : v;
+            for (int j = 0; j < 3; j++) { /* (blo <= bhi: the sign picks the end) */
+                const double r = R[3 * d + j];
+                tl[j] = r * (r >= 0.0 ? blo[j] : bhi[j]);
+                th[j] = r * (r >= 0.0 ? bhi[j] : blo[j]);
             }
             lo[d] = tl[0] + tl[1] + tl[2] + b->x[d] - gap_max;
             hi[d] = th[0] + th[1] + th[2] + b->x[d] + gap_max;
@@ -128,9 +130,10 @@ static void body_box(const rs_body *b, const double R[9], const rs_pose *p, doub
  * the direction, so a repeated direction takes the last answer. */
 typedef struct sbody {
     const rs_body *b;
-    double R[9];
+    const double *R; /* the caller's, or Rm */
     double dir[3], xs[3];
     int have;
+    double Rm[9];
 } sbody;
 
 static void support(sbody *sb, const double dir[3], double xs[3])
@@ -147,7 +150,10 @@ static void support(sbody *sb, const double dir[3], double xs[3])
 static void set_contact(found *g, int feature, double depth, const double n[3],
                         const double xm[3], const double xs[3], int region, int exact)
 {
-    memset(g, 0, sizeof *g);
+    for (int d = 0; d < 3; d++)
+        g->c.t1[d] = g->c.t2[d] = 0.0;
+    g->c.curv[0] = g->c.curv[1] = 0.0;
+    g->c.iterations = 0;
     g->c.feature = feature;
     g->c.depth = depth;
     memcpy(g->c.normal, n, sizeof g->c.normal);
@@ -157,12 +163,16 @@ static void set_contact(found *g, int feature, double depth, const double n[3],
     g->exact = exact;
 }
 
-/* A candidate triangle in the world, its coplanar region and the pair query's answer. */
+/* A candidate triangle in the world (its first node, its normal; its other nodes where
+ * the pair query asks them), its coplanar region and the pair query's answer; of a plain
+ * one, the body's centre's height h over its plane, the plane's normal ns toward the body
+ * and the foot of the pair's witness in the reference configuration F. */
 typedef struct cand {
     int t, face, region;
-    int reach; /* the body within gap_max of the triangle */
+    int reach; /* the body within gap_max of the triangle (-1: a plain one not yet asked) */
     int plain; /* the body meets it at its face only: its plane answers for it */
     double tri[9], nf[3];
+    double h, ns[3], F[3];
     rs_convex_contact cc;
 } cand;
 
@@ -219,7 +229,9 @@ static void plane_pair(const rs_surface *s, const rs_pose *p, sbody *sb, cand *c
     const double h =
         (b->x[0] - a0[0]) * nf[0] + (b->x[1] - a0[1]) * nf[1] + (b->x[2] - a0[2]) * nf[2];
     const double side = s->sides != 2 || h >= 0.0 ? 1.0 : -1.0;
-    const double ns[3] = {side * nf[0], side * nf[1], side * nf[2]};
+    double *ns = ck->ns, *F = ck->F;
+    ck->h = h;
+    ns[0] = side * nf[0], ns[1] = side * nf[1], ns[2] = side * nf[2];
     const double down[3] = {-ns[0], -ns[1], -ns[2]};
     rs_convex_contact *cc = &ck->cc;
     support(sb, down, cc->pa);
@@ -229,23 +241,24 @@ static void plane_pair(const rs_surface *s, const rs_pose *p, sbody *sb, cand *c
         cc->normal[d] = down[d];
         cc->pb[d] = cc->pa[d] + cc->depth * ns[d];
     }
-    double F[3];
     to_local(p, cc->pb, F);
-    cc->state = !rs_mesh_triangle_holds(s, ck->t, F) ? RS_CONVEX_APART
-                : cc->depth > 0.0                    ? RS_CONVEX_OVERLAP
-                : -cc->depth <= gap_max              ? RS_CONVEX_NEAR
-                                                     : RS_CONVEX_APART;
+    cc->state = !tri_holds(s->impl, ck->t, F) ? RS_CONVEX_APART
+                : cc->depth > 0.0             ? RS_CONVEX_OVERLAP
+                : -cc->depth <= gap_max       ? RS_CONVEX_NEAR
+                                              : RS_CONVEX_APART;
+    ck->reach = cc->state != RS_CONVEX_APART && cc->depth >= -gap_max;
 }
 
 /* The candidate of the region (candidates ru[0 .. nr)) whose triangle holds the reference
- * point X, the least face where several do (X on their borders); -1 for none. */
+ * point X, the least face where several do (X on their borders; of one face, a candidate
+ * of it); -1 for none. k0: a candidate known to hold X, or -1. */
 static int region_holds(const rs_surface *s, const cand *c, const member *ru, int nr,
-                        const double X[3])
+                        const double X[3], int k0)
 {
-    int k = -1;
+    const rs_mesh *m = s->impl;
+    int k = k0;
     for (int i = 0; i < nr; i++)
-        if ((k < 0 || c[ru[i].k].face < c[k].face) &&
-            rs_mesh_triangle_holds(s, c[ru[i].k].t, X))
+        if ((k < 0 || c[ru[i].k].face < c[k].face) && tri_holds(m, c[ru[i].k].t, X))
             k = ru[i].k;
     return k;
 }
@@ -261,37 +274,53 @@ static int region_holds(const rs_surface *s, const cand *c, const member *ru, in
  * deepest point; the centre's foot moves with the body), else under the deepest
  * point's. */
 static int region_face(const rs_surface *s, const rs_pose *p, sbody *sb, double gap_max,
-                       const cand *c, const member *ru, int nr, found *g)
+                       cand *c, const member *ru, int nr, found *g)
 {
     const rs_body *b = sb->b;
     int best = -1;
     double ba = -1.0;
     for (int i = 0; i < nr; i++) {
-        const cand *ci = c + ru[i].k;
-        const double along = fabs(rs_dot3(ci->cc.normal, ci->nf));
-        if (ci->reach && along > ba)
+        cand *ci = c + ru[i].k;
+        /* a plain triangle's pair normal is its own normal (either way), so it is asked
+         * only where its normal is nearer the region's than the best's so far */
+        const double along =
+            ci->plain ? rs_dot3(ci->nf, ci->nf) : fabs(rs_dot3(ci->cc.normal, ci->nf));
+        if (!(along > ba))
+            continue;
+        if (ci->reach < 0)
+            plane_pair(s, p, sb, ci, gap_max);
+        if (ci->reach)
             best = ru[i].k, ba = along;
     }
     if (best < 0)
         return 0;
     const cand *cb = c + best;
     const double *a0 = cb->tri, *nf = cb->nf;
-    const double h =
-        (b->x[0] - a0[0]) * nf[0] + (b->x[1] - a0[1]) * nf[1] + (b->x[2] - a0[2]) * nf[2];
-    const double side = s->sides != 2 || h >= 0.0 ? 1.0 : -1.0;
-    const double ns[3] = {side * nf[0], side * nf[1], side * nf[2]};
-    double xs[3], foot[3], F[3];
-    const double depth = deepest_along(sb, p, ns, a0, xs, foot, F);
+    double h, ns[3], xs[3], foot[3], F[3], depth;
+    if (cb->plain) { /* plane_pair's answer is the same: its plane, along the same ns */
+        h = cb->h, depth = cb->cc.depth;
+        for (int d = 0; d < 3; d++)
+            ns[d] = cb->ns[d], xs[d] = cb->cc.pa[d], foot[d] = cb->cc.pb[d],
+            F[d] = cb->F[d];
+    } else {
+        h = (b->x[0] - a0[0]) * nf[0] + (b->x[1] - a0[1]) * nf[1] +
+            (b->x[2] - a0[2]) * nf[2];
+        const double side = s->sides != 2 || h >= 0.0 ? 1.0 : -1.0;
+        for (int d = 0; d < 3; d++)
+            ns[d] = side * nf[d];
+        depth = deepest_along(sb, p, ns, a0, xs, foot, F);
+    }
     if (!(depth >= -gap_max))
         return 0;
-    int k = region_holds(s, c, ru, nr, F);
+    /* (a plain triangle's reach: its triangle holds F) */
+    int k = region_holds(s, c, ru, nr, F, cb->plain ? best : -1);
     if (k < 0)
         return 0;
     double xc[3], C[3];
     for (int d = 0; d < 3; d++)
         xc[d] = b->x[d] - h * nf[d];
     to_local(p, xc, C);
-    const int kc = region_holds(s, c, ru, nr, C);
+    const int kc = region_holds(s, c, ru, nr, C, -1);
     if (kc < 0 && ba < RS_BODY_FACE_COS)
         return 0;
     if (kc >= 0)
@@ -374,21 +403,22 @@ static int witness_contact(const rs_surface *s, const rs_pose *p, sbody *sb, con
     return 1;
 }
 
-/* One body's contacts (rs_mesh_body), its rotation R (NULL: made here). */
+/* One body's contacts (rs_mesh_body), its rotation R (NULL: made here), the pose as
+ * pose_moved gives it, the mesh's data there (rs_mesh_body_run checks). */
 static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body *b,
                          const double *R, double gap_max, rs_body_contacts *out,
                          rs_error *err)
 {
     int rc = RS_OK;
-    if (!s->impl)
-        return rs_error_set(err, RS_ERR_ARG, "body contacts: mesh '%s' has no data",
-                            s->name);
-    pose = pose_moved(pose);
-    sbody sb = {.b = b, .have = 0};
-    if (R)
-        memcpy(sb.R, R, sizeof sb.R);
-    else
-        rs_body_rotation(b, sb.R);
+    sbody sb;
+    sb.b = b;
+    sb.have = 0;
+    if (R) {
+        sb.R = R;
+    } else {
+        rs_body_rotation(b, sb.Rm);
+        sb.R = sb.Rm;
+    }
     double lo[3], hi[3];
     body_box(b, sb.R, pose, gap_max, lo, hi);
     /* the candidates' arrays in one block: on the stack for a few, else the heap */
@@ -419,24 +449,28 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
     double C[3]; /* the body's centre in the reference configuration */
     to_local(pose, b->x, C);
     const double near = rs_body_reach(b) + gap_max;
+    const rs_mesh *m = s->impl;
     for (int k = 0; k < nt; k++) {
         cand *ck = c + k;
-        double X[9], nr[3];
+        const rs_mtri *rec = m->rec + ids[k];
         ck->t = ids[k];
         ck->region = label[k];
-        ck->face = rs_mesh_triangle(s, ck->t, X, nr);
-        for (int i = 0; i < 3; i++)
-            to_global(pose, X + 3 * i, ck->tri + 3 * i);
-        rotate(pose, nr, ck->nf);
+        ck->face = RS_FEATURE(RS_FEAT_FACE, rec->el);
+        to_global(pose, rec->a0, ck->tri);
+        rotate(pose, rec->n, ck->nf);
         /* a triangle the body meets at its face only: the pair's answer would be its
          * plane's (a flat contact, its witness owned by the face), which its region's
          * closed form gives; no pair query */
         ck->plain = rs_mesh_triangle_plain(s, ck->t, C, near);
-        if (ck->plain)
-            plane_pair(s, pose, &sb, ck, gap_max);
-        else if ((rc = rs_convex_triangle(b, ck->tri, gap_max, &ck->cc, err)) != RS_OK)
-            goto done;
-        ck->reach = ck->cc.state != RS_CONVEX_APART && ck->cc.depth >= -gap_max;
+        if (ck->plain) {
+            ck->reach = -1; /* its plane, where its region asks it (region_face) */
+        } else {
+            for (int i = 1; i < 3; i++)
+                to_global(pose, m->xyz + 3 * rec->v[i], ck->tri + 3 * i);
+            if ((rc = rs_convex_triangle(b, ck->tri, gap_max, &ck->cc, err)) != RS_OK)
+                goto done;
+            ck->reach = ck->cc.state != RS_CONVEX_APART && ck->cc.depth >= -gap_max;
+        }
         ru[k].region = label[k];
         ru[k].k = k;
     }
@@ -450,14 +484,12 @@ static int body_contacts(const rs_surface *s, const rs_pose *pose, const rs_body
     for (int i = 0, j; i < nt; i = j) {
         for (j = i + 1; j < nt && ru[j].region == ru[i].region;)
             j++;
-        found g;
-        if (region_face(s, pose, &sb, gap_max, c, ru + i, j - i, &g))
-            keep(&l, &g);
+        if (region_face(s, pose, &sb, gap_max, c, ru + i, j - i, l.f + l.n))
+            keep(&l);
     }
     for (int k = 0; k < nt; k++) {
-        found g;
-        if (c[k].reach && !c[k].plain && witness_contact(s, pose, &sb, c, nt, k, &g))
-            keep(&l, &g);
+        if (c[k].reach && !c[k].plain && witness_contact(s, pose, &sb, c, nt, k, l.f + l.n))
+            keep(&l);
     }
     for (int k = 0; k < l.n && rc == RS_OK; k++)
         rc = rs_body_contacts_push(out, &l.f[k].c, err);
@@ -477,6 +509,10 @@ int rs_mesh_body_run(const rs_surface *s, const rs_pose *pose, const rs_body *b,
                      rs_body_contacts *out, struct rs_body_work *w, rs_error *err)
 {
     (void)lenient, (void)w; /* no fixed point to settle, no work kept */
+    if (!s->impl)
+        return rs_error_set(err, RS_ERR_ARG, "body contacts: mesh '%s' has no data",
+                            s->name);
+    pose = pose_moved(pose);
     int rc = RS_OK;
     for (int i = 0; i < n && rc == RS_OK; i++)
         rc = body_contacts(s, pose, b + i, R ? R + 9 * i : NULL, gap_max, out + i, err);

@@ -483,7 +483,7 @@ static int finish_topology(rs_mesh *m, int two_sided)
             m->vfirst[m->tri[3 * t + j]] = t;
     for (int t = 0; t < m->nt; t++) {
         rs_mtri *r = m->rec + t;
-        unsigned bits = 0;
+        unsigned bits = 0, rough = 0;
         for (int j = 0; j < 3; j++) {
             const int e = m->tedge[3 * t + j];
             bits |= (unsigned)(m->edge_f[m->edge_f0[e]] == t) << j;
@@ -491,8 +491,11 @@ static int finish_topology(rs_mesh *m, int two_sided)
             r->v[j] = m->tri[3 * t + j];
             r->edge[j] = e;
             r->kind[j] = m->edge_kind[e];
+            rough |= (unsigned)(m->edge_kind[e] != RS_EDGE_FLAT) << j;
+            rough |= (unsigned)!m->vflat[r->v[j]] << (3 + j);
         }
         r->first = (unsigned char)bits;
+        r->rough = (unsigned char)rough;
         r->el = m->tel[t];
         for (int d = 0; d < 3; d++) {
             r->n[d] = tn[3 * t + d];

@@ -21,6 +21,14 @@ static inline double side_of(const rs_mesh *m, int t, int j, const double p[3])
     return p[0] * r[0] + p[1] * r[1] + p[2] * r[2] - r[3];
 }
 
+/* Does x, a point of t's plane, lie in triangle t: on the inner side of each of its
+ * edges' planes, ties included (rs_mesh_triangle_holds)? */
+static inline int tri_holds(const rs_mesh *m, int t, const double x[3])
+{
+    return side_of(m, t, 0, x) >= 0.0 && side_of(m, t, 1, x) >= 0.0 &&
+           side_of(m, t, 2, x) >= 0.0;
+}
+
 /* (p - v).(w - v): the position of p along the edge of nodes v and w, seen from v. */
 static inline double along(const rs_mesh *m, int v, int w, const double p[3])
 {
