@@ -195,14 +195,6 @@ struct ModelCall {
     {
     }
 
-    /* The contact of the sphere of row `row` (radius R, mass) at the wall's point of
-     * normal n, r from it along n (the centre's distance, as LAMMPS's walls measure it:
-     * R - overlap rounds otherwise), whose curvatures are *k1, *k2 (read for a new
-     * contact only) and effective radius
-     * reff_c (NaN: from the
-     * curvatures, rs_effective_radius), the wall's velocity there vwall and its history h:
-     * LAMMPS's model STYLE (< 0: the model's own) adds its force and torque onto F and T
-     * and gives 1; 0 where the model acts not, the history cleared. */
     /* The effective radius a new contact keeps: of the wall's curvatures k1, k2 (reff_c
      * where given, not NaN) in REFF_EXACT; of 2/k, k the most curved direction's, as
      * LAMMPS's region walls, in REFF_REGION; R on a plane. Out of line: once a contact. */
@@ -215,7 +207,14 @@ struct ModelCall {
         return k != 0.0 ? R * (2.0 / k) / (R + 2.0 / k) : R;
     }
 
-    /* KEEP, NS: keep and ns where known (< 0, 0: not) */
+    /* The contact of the sphere of row `row` (radius R, mass) at the wall's point of
+     * normal n, r from it along n (the centre's distance, as LAMMPS's walls measure it:
+     * R - overlap rounds otherwise), whose curvatures are *k1, *k2 (read for a new
+     * contact only) and effective radius reff_c (NaN: from the curvatures,
+     * rs_effective_radius), the wall's velocity there vwall and its history h:
+     * LAMMPS's model STYLE (< 0: the model's own) adds its force and torque onto F and T
+     * and gives 1; 0 where the model acts not, the history cleared. KEEP, NS: keep and ns
+     * where known (< 0, 0: not). */
     template <int STYLE, int KEEP = -1, int NS = 0>
     int one(int row, double R, double mass, const double n[3], double r, const double *k1,
             const double *k2, double reff_c, double *vwall, double *h, double F[3],
