@@ -86,6 +86,11 @@ RS_MULTIVERSION static void faces_frames(const rs_pcache *pc, const double *F, i
               c->t2[2], c->dist, NULL, NULL, NULL, c->point, c->feature, face, 0);
 }
 
+void rs_line_revolution_frame(const rs_surface *s, const rs_pose *pose, double F[12])
+{
+    rs_analytic_frame(s, pose, F);
+}
+
 void rs_line_revolution_faces(const rs_surface *s, const rs_pose *pose, int m,
                               const double *x, const double *y, const double *z,
                               const double *radius, double gap_max, rs_contacts *c,
@@ -93,9 +98,24 @@ void rs_line_revolution_faces(const rs_surface *s, const rs_pose *pose, int m,
 {
     double F[12];
     rs_analytic_frame(s, pose, F);
-    double rmax = 0.0;
-    for (int j = 0; j < m; j++)
-        rmax = radius[j] > rmax ? radius[j] : rmax;
+    rs_line_revolution_faces_in(s, F, m, x, y, z, radius, gap_max, c, face);
+}
+
+void rs_line_revolution_faces_in(const rs_surface *s, const double F[12], int m,
+                                 const double *x, const double *y, const double *z,
+                                 const double *radius, double gap_max, rs_contacts *c,
+                                 int *face)
+{
+    /* the largest radius, in four lanes (which the compiler vectorises), then theirs */
+    double rl[4] = {0.0, 0.0, 0.0, 0.0};
+    int j = 0;
+    for (; j + 4 <= m; j += 4)
+        for (int l = 0; l < 4; l++)
+            rl[l] = radius[j + l] > rl[l] ? radius[j + l] : rl[l];
+    for (; j < m; j++)
+        rl[0] = radius[j] > rl[0] ? radius[j] : rl[0];
+    const double r01 = rl[1] > rl[0] ? rl[1] : rl[0], r23 = rl[3] > rl[2] ? rl[3] : rl[2];
+    const double rmax = r23 > r01 ? r23 : r01;
     if (c->xm[0])
         faces_all(s->impl, F, m, x, y, z, radius, gap_max, rmax, c, face);
     else

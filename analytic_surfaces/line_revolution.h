@@ -33,6 +33,17 @@ void rs_line_revolution_faces(const rs_surface *s, const rs_pose *pose, int m,
                               const double *radius, double gap_max, rs_contacts *c,
                               int *face);
 
+/// The frame of s under pose that rs_line_revolution_faces_in takes (12 doubles).
+void rs_line_revolution_frame(const rs_surface *s, const rs_pose *pose, double F[12]);
+
+/// rs_line_revolution_faces with s's frame F under the pose (rs_line_revolution_frame)
+/// given: what a caller of many runs under one pose (the wall's line path, whose pose is
+/// the step's) computes once.
+void rs_line_revolution_faces_in(const rs_surface *s, const double F[12], int m,
+                                 const double *x, const double *y, const double *z,
+                                 const double *radius, double gap_max, rs_contacts *c,
+                                 int *face);
+
 #ifdef __cplusplus
 }
 #endif

@@ -404,12 +404,10 @@ int rs_track_match_usual(const rs_tracker *tr, const rs_motion *m, const rs_part
     int rc = out_begin(out, tr, np, 0, err);
     if (rc)
         return rc;
-    double *const *hist = p->hist, *const *dir = p->dir;
-    for (int e = 0; e < np; e++) {
+    memcpy(out->slot, p->hist, (size_t)np * sizeof *out->slot);
+    memcpy(out->dir, p->dir, (size_t)np * sizeof *out->dir);
+    for (int e = 0; e < np; e++)
         out->point[e] = e;
-        out->slot[e] = hist[e];
-        out->dir[e] = dir[e];
-    }
     master_rates_of(m, mr);
     return RS_OK;
 }

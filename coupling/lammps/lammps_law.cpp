@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <mpi.h>
 #include <string>
@@ -153,8 +154,9 @@ int FixWallRigid::engine_law(const char *const *words, int nwords, const rs_law 
     model_desc_.force_one = lammps_law_one;
     model_desc_.force_run = lammps_law_run;
     model_desc_.ctx = this;
+    /* LAMMPS's models keep their shear in space and turn it themselves: no drot */
     model_desc_.skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_SLIP |
-                        RS_LAW_SKIPS_DRDISP1;
+                        RS_LAW_SKIPS_DRDISP1 | RS_LAW_SKIPS_DROT;
     model_desc_.sets = RS_LAW_SETS_FORCE | RS_LAW_SETS_ENERGIES | RS_LAW_SETS_NO_HEAT |
                        RS_LAW_SETS_NO_CREEP_PLASTIC | RS_LAW_SETS_STRESS;
     *law = &model_desc_;
@@ -193,16 +195,30 @@ struct ModelCall {
     {
     }
 
+    /* The effective radius a new contact keeps: of the wall's curvatures k1, k2 (reff_c
+     * where given, not NaN) in REFF_EXACT; of 2/k, k the most curved direction's, as
+     * LAMMPS's region walls, in REFF_REGION; R on a plane. Out of line: once a contact. */
+    __attribute__((noinline)) double first_reff(double R, double k1, double k2,
+                                                double reff_c) const
+    {
+        if (reff_mode == REFF_EXACT)
+            return std::isnan(reff_c) ? rs_effective_radius(R, k1, k2) : reff_c;
+        const double k = std::fabs(k1) >= std::fabs(k2) ? k1 : k2;
+        return k != 0.0 ? R * (2.0 / k) / (R + 2.0 / k) : R;
+    }
+
     /* The contact of the sphere of row `row` (radius R, mass) at the wall's point of
      * normal n, r from it along n (the centre's distance, as LAMMPS's walls measure it:
-     * R - overlap rounds otherwise), whose curvatures are k1, k2 and effective radius
-     * reff_c (NaN: from the
-     * curvatures, rs_effective_radius), the wall's velocity there vwall and its history h:
+     * R - overlap rounds otherwise), whose curvatures are *k1, *k2 (read for a new
+     * contact only) and effective radius reff_c (NaN: from the curvatures,
+     * rs_effective_radius), the wall's velocity there vwall and its history h:
      * LAMMPS's model STYLE (< 0: the model's own) adds its force and torque onto F and T
-     * and gives 1; 0 where the model acts not, the history cleared. */
-    template <int STYLE>
-    int one(int row, double R, double mass, const double n[3], double r, double k1,
-            double k2, double reff_c, double *vwall, double *h, double F[3], double T[3])
+     * and gives 1; 0 where the model acts not, the history cleared. KEEP, NS: keep and ns
+     * where known (< 0, 0: not). */
+    template <int STYLE, int KEEP = -1, int NS = 0>
+    int one(int row, double R, double mass, const double n[3], double r, const double *k1,
+            const double *k2, double reff_c, double *vwall, double *h, double F[3],
+            double T[3])
     {
         const double rsq = r * r;
         /* what a known model cannot be: JKR is a granular model's, a kept effective radius
@@ -210,10 +226,10 @@ struct ModelCall {
         const bool pull = (STYLE < 0 || STYLE == FixWallGran::GRANULAR) && jkr;
         const bool kept = (STYLE < 0 || STYLE == FixWallGran::HERTZ_HISTORY ||
                            STYLE == FixWallGran::GRANULAR) &&
-                          keep;
+                          (KEEP < 0 ? keep : KEEP != 0);
         const double rad = pull ? R + m.pulloff_distance(R) : R;
         if (rsq > rad * rad || (pull && h[0] == 0.0 && rsq > R * R)) {
-            for (int k = 0; k < ns; k++)
+            for (int k = 0; k < (NS ? NS : ns); k++)
                 h[k] = 0.0;
             return 0;
         }
@@ -225,17 +241,12 @@ struct ModelCall {
          * the normal force do net work. */
         double rwall = 0.0;
         if (kept) {
-            double &reff = h[ns - 1];
-            if (reff == 0.0) {
-                reff = R;
-                if (reff_mode == REFF_EXACT) {
-                    reff = std::isnan(reff_c) ? rs_effective_radius(R, k1, k2) : reff_c;
-                } else {
-                    const double k = std::fabs(k1) >= std::fabs(k2) ? k1 : k2;
-                    if (k != 0.0)
-                        reff = R * (2.0 / k) / (R + 2.0 / k);
-                }
-            }
+            double &reff = h[(NS ? NS : ns) - 1];
+            /* a new contact's is +0.0 (a cleared history), which its bits tell at once */
+            std::uint64_t bits;
+            std::memcpy(&bits, &reff, sizeof bits);
+            if (bits == 0)
+                reff = first_reff(R, *k1, *k2, reff_c);
             if (reff != R)
                 rwall = R * reff / (R - reff);
         }
@@ -245,19 +256,36 @@ struct ModelCall {
     }
 
     /* The contacts of run ru through the model STYLE, its force and torque added onto
-     * the run's rows. */
+     * the run's rows: the loop of run_as for whether the contacts keep their effective
+     * radius and whether the wall's velocity is a column, constants of the loop. */
     template <int STYLE> void run(const rs_force_run &ru)
     {
-        double vw[3] = {ru.vwall0[0], ru.vwall0[1], ru.vwall0[2]};
         const bool vcol = ru.vwall[0] != nullptr;
+        if (keep && STYLE == FixWallGran::HERTZ_HISTORY && ns == 4)
+            vcol ? run_as<STYLE, 1, 1, 4>(ru) : run_as<STYLE, 1, 0, 4>(ru);
+        else if (keep)
+            vcol ? run_as<STYLE, 1, 1>(ru) : run_as<STYLE, 1, 0>(ru);
+        else
+            vcol ? run_as<STYLE, 0, 1>(ru) : run_as<STYLE, 0, 0>(ru);
+    }
+
+    template <int STYLE, int KEEP, int VCOL, int NS = 0> void run_as(const rs_force_run &ru)
+    {
+        double vw[3] = {ru.vwall0[0], ru.vwall0[1], ru.vwall0[2]};
         double *h = ru.history; /* contact j's: NULL without state variables */
-        for (int j = 0; j < ru.n; j++, h += ns) {
-            const double n[3] = {ru.nrm[0][j], ru.nrm[1][j], ru.nrm[2][j]};
-            if (vcol)
+        const double *const n0 = ru.nrm[0], *const n1 = ru.nrm[1], *const n2 = ru.nrm[2];
+        const double *const rn = ru.rn, *const radius = ru.radius, *const mass = ru.mass;
+        const int *const row = ru.row;
+        int *const acts = ru.acts;
+        double *F = ru.F, *T = ru.T; /* contact j's */
+        const int nc = ru.n;
+        for (int j = 0; j < nc; j++, h += (NS ? NS : ns), F += 3, T += 3) {
+            const double n[3] = {n0[j], n1[j], n2[j]};
+            if (VCOL)
                 vw[0] = ru.vwall[0][j], vw[1] = ru.vwall[1][j], vw[2] = ru.vwall[2][j];
-            ru.acts[j] =
-                one<STYLE>(ru.row[j], ru.radius[j], ru.mass[j], n, ru.rn[j], ru.curv[0][j],
-                           ru.curv[1][j], NAN, vw, h, ru.F + 3 * j, ru.T + 3 * j);
+            acts[j] =
+                one<STYLE, KEEP, NS>(row[j], radius[j], mass[j], n, rn[j], ru.curv[0] + j,
+                                     ru.curv[1] + j, NAN, vw, h, F, T);
         }
     }
 };
@@ -272,8 +300,8 @@ int FixWallRigid::lammps_one(rs_force_contact &c, double F[3], double T[3])
     const double *xi = atom->x[c.row];
     const double r = (xi[0] - c.xm[0]) * c.n[0] + (xi[1] - c.xm[1]) * c.n[1] +
                      (xi[2] - c.xm[2]) * c.n[2];
-    return k.one<-1>(c.row, c.radius, c.mass, c.n, r, c.curv[0], c.curv[1], c.reff, c.vwall,
-                     c.history, F, T);
+    return k.one<-1>(c.row, c.radius, c.mass, c.n, r, &c.curv[0], &c.curv[1], c.reff,
+                     c.vwall, c.history, F, T);
 }
 
 void FixWallRigid::lammps_run(const rs_force_run &r)

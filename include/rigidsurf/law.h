@@ -264,6 +264,15 @@ struct rs_law {
 #define RS_LAW_SKIPS_COORDMST 4u
 #define RS_LAW_SKIPS_SLIP 8u
 #define RS_LAW_SKIPS_DRDISP1 16u
+/* A law that reads neither drot nor the frame of a contact's call after it leaves (the
+ * inputs that come from the frame its slot keeps of the last call), because it keeps any
+ * tangential state of its own in space and turns it itself, as LAMMPS's wall models do,
+ * declares RS_LAW_SKIPS_DROT. Its slot keeps the frame all the same (the layout does not
+ * change), but the wall's line path for force laws (src/wall/wall_force_line.c) does not
+ * store the frame there each step: the slot's frame is that of the contact's last call
+ * through the block call, and the drot and leaving frame made from it are of no use to
+ * the law. Every other law gets its slot's frame stored on every call. */
+#define RS_LAW_SKIPS_DROT 32u
 
 /* What a law declares it writes for every contact of a call (rs_law.sets):
  * - RS_LAW_SETS_ENERGIES: sfd, scd, spd and svd, so rs_law_call does not zero them

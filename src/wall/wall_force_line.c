@@ -3,12 +3,14 @@
  * each hold their one contact, their face contacts given (wall_line.c), in one pass. The
  * run's contacts in columns (rs_force_run), their state variables copied out of the slots,
  * handed to the law's run operation, or to its model contact by contact as
- * rs_wall_force_contact describes a contact; once every contact's force and torque are
- * finite, the slots (frame and state variables), the loads onto the engine's rows, the
- * wall's sums and the per-particle rows, with the operations of the staged calls
- * (rs_track_update, rs_track_load, rs_cblock_inputs, the law's block call,
- * rs_cblock_add_loads, rs_track_commit), so that every number is theirs. A force, torque
- * or stress that is NaN or Inf stops the call before anything is written. */
+ * rs_wall_force_contact describes a contact; the wall's sums; once every contact's force
+ * and torque are finite, the slots (state variables, and the frame unless the law reads
+ * none of what it gives, RS_LAW_SKIPS_DROT), the loads onto the engine's rows and the
+ * per-particle rows, with the operations of the staged calls (rs_track_update,
+ * rs_track_load, rs_cblock_inputs, the law's block call, rs_cblock_add_loads,
+ * rs_track_commit), so that every number is theirs (the wall's sums, added in another
+ * order, to rounding). A force, torque or stress that is NaN or Inf stops the call
+ * before anything is written. */
 #include "wall_impl.h"
 
 #include "laws/builtin.h"
@@ -79,16 +81,44 @@ RS_INLINE void copy_statev(double *restrict h, double *const *slot, int sv, int 
                            const int in)
 {
     if (ns == 4) {
-        for (int j = 0; j < m; j++) {
+        /* four contacts an iteration */
+        int j = 0;
+        for (; j + 4 <= m; j += 4) {
+            double *const *sl = slot + j;
+            double *hj = h + 4 * j;
+#ifdef RS_HAVE_V4
+            rs_v4 v0, v1, v2, v3;
+            if (in) {
+                rs_v4_load(&v0, sl[0] + sv);
+                rs_v4_load(&v1, sl[1] + sv);
+                rs_v4_load(&v2, sl[2] + sv);
+                rs_v4_load(&v3, sl[3] + sv);
+                rs_v4_store(hj, &v0);
+                rs_v4_store(hj + 4, &v1);
+                rs_v4_store(hj + 8, &v2);
+                rs_v4_store(hj + 12, &v3);
+            } else {
+                rs_v4_load(&v0, hj);
+                rs_v4_load(&v1, hj + 4);
+                rs_v4_load(&v2, hj + 8);
+                rs_v4_load(&v3, hj + 12);
+                rs_v4_store(sl[0] + sv, &v0);
+                rs_v4_store(sl[1] + sv, &v1);
+                rs_v4_store(sl[2] + sv, &v2);
+                rs_v4_store(sl[3] + sv, &v3);
+            }
+#else
+            for (int l = 0; l < 4; l++) {
+                double *restrict d = in ? hj + 4 * l : sl[l] + sv;
+                const double *restrict s = in ? sl[l] + sv : hj + 4 * l;
+                d[0] = s[0], d[1] = s[1], d[2] = s[2], d[3] = s[3];
+            }
+#endif
+        }
+        for (; j < m; j++) {
             double *restrict d = in ? h + 4 * j : slot[j] + sv;
             const double *restrict s = in ? slot[j] + sv : h + 4 * j;
-#ifdef RS_HAVE_V4
-            rs_v4 v;
-            rs_v4_load(&v, s);
-            rs_v4_store(d, &v);
-#else
             d[0] = s[0], d[1] = s[1], d[2] = s[2], d[3] = s[3];
-#endif
         }
         return;
     }
@@ -116,12 +146,17 @@ RS_INLINE void add3(double *restrict d, const double *restrict s)
     d[2] += s[2];
 }
 
-/* The frames (n, t1) of the run's contacts into their slots, and the tracker's entries'
- * points and features: what run_store (track_run.h) does for a slot of the frame and the
- * state variables (RS_DROP_SLIP) whose contact is held, as every contact of the run is,
- * and whose directory entry already names its feature, so that nothing else changes. */
-static void store_frames(const rs_contacts *c, int m, rs_track_out *o)
+/* The frames (n, t1) of the run's contacts into their slots (unless the law reads none of
+ * what they give: frame 0, RS_LAW_SKIPS_DROT), and the tracker's entries' features (their
+ * points, j for contact j of sphere j, rs_track_match_usual gave): what run_store
+ * (track_run.h) does for a slot of the frame and the state variables (RS_DROP_SLIP) whose
+ * contact is held, as every contact of the run is, and whose directory entry already
+ * names its feature, so that nothing else changes. */
+RS_INLINE void store_frames(const rs_contacts *c, int m, rs_track_out *o, const int frame)
 {
+    memcpy(o->feature, c->feature, (size_t)m * sizeof *o->feature);
+    if (!frame)
+        return;
     const double *n0 = c->nrm[0], *n1 = c->nrm[1], *n2 = c->nrm[2];
     const double *a0 = c->t1[0], *a1 = c->t1[1], *a2 = c->t1[2];
     double *const *slot = o->slot;
@@ -137,10 +172,72 @@ static void store_frames(const rs_contacts *c, int m, rs_track_out *o)
         h[RS_H_N] = n0[j], h[RS_H_N + 1] = n1[j], h[RS_H_N + 2] = n2[j];
         h[RS_H_T1] = a0[j], h[RS_H_T1 + 1] = a1[j], h[RS_H_T1 + 2] = a2[j];
     }
-    for (j = 0; j < m; j++) {
-        o->point[j] = c->point[j];
-        o->feature[j] = c->feature[j];
+}
+
+/* The wall's sums of a run's m contacts, -F and the moment -((x - o) x F + T) of each
+ * about the wall's origin o, x the particle's centre (rs_load_force_law's, unit area), as
+ * -(sum F) and -(sum (x - o) x F + sum T): four contacts at a time, the sums of F and T
+ * over their rows as they lie, the moments from F's columns. */
+RS_INLINE void wall_sums(const double *restrict F, const double *restrict T,
+                         const double *restrict x, const double *restrict y,
+                         const double *restrict z, const double o[3], int m,
+                         rs_wall_acc *acc)
+{
+    const double o0 = o[0], o1 = o[1], o2 = o[2];
+    double f[3] = {0.0, 0.0, 0.0}, t[3] = {0.0, 0.0, 0.0}, mo[3] = {0.0, 0.0, 0.0};
+    int j = 0;
+#ifdef RS_HAVE_V4
+    const rs_v4 zero = {0.0, 0.0, 0.0, 0.0};
+    rs_v4 sf[3] = {zero, zero, zero}, st[3] = {zero, zero, zero};
+    rs_v4 sm0 = zero, sm1 = zero, sm2 = zero;
+    for (; j + 4 <= m; j += 4) {
+        /* rows (a0 b0 c0 a1) (b1 c1 a2 b2) (c2 a3 b3 c3) of F and T */
+        rs_v4 r0, r1, r2, q;
+        rs_v4_load(&r0, F + 3 * j);
+        rs_v4_load(&r1, F + 3 * j + 4);
+        rs_v4_load(&r2, F + 3 * j + 8);
+        sf[0] += r0, sf[1] += r1, sf[2] += r2;
+        for (int k = 0; k < 3; k++) {
+            rs_v4_load(&q, T + 3 * j + 4 * k);
+            st[k] += q;
+        }
+        const rs_v4 u = __builtin_shufflevector(r0, r1, 0, 3, 6, 5);   /* a0 a1 a2 c1 */
+        const rs_v4 v = __builtin_shufflevector(r0, r1, 1, 4, 7, 2);   /* b0 b1 b2 c0 */
+        const rs_v4 fx = __builtin_shufflevector(u, r2, 0, 1, 2, 5);   /* a0 a1 a2 a3 */
+        const rs_v4 fy = __builtin_shufflevector(v, r2, 0, 1, 2, 6);   /* b0 b1 b2 b3 */
+        const rs_v4 fz = __builtin_shufflevector(v, u, 3, 7, 0, 0);    /* c0 c1 */
+        const rs_v4 fzz = __builtin_shufflevector(fz, r2, 0, 1, 4, 7); /* c0 c1 c2 c3 */
+        rs_v4 rx, ry, rz;
+        rs_v4_load(&rx, x + j);
+        rs_v4_load(&ry, y + j);
+        rs_v4_load(&rz, z + j);
+        rx -= o0, ry -= o1, rz -= o2;
+        sm0 += ry * fzz - rz * fy;
+        sm1 += rz * fx - rx * fzz;
+        sm2 += rx * fy - ry * fx;
     }
+    /* a row's position p in its 12 holds component p mod 3 */
+    f[0] = (sf[0][0] + sf[0][3]) + (sf[1][2] + sf[2][1]);
+    f[1] = (sf[0][1] + sf[1][0]) + (sf[1][3] + sf[2][2]);
+    f[2] = (sf[0][2] + sf[1][1]) + (sf[2][0] + sf[2][3]);
+    t[0] = (st[0][0] + st[0][3]) + (st[1][2] + st[2][1]);
+    t[1] = (st[0][1] + st[1][0]) + (st[1][3] + st[2][2]);
+    t[2] = (st[0][2] + st[1][1]) + (st[2][0] + st[2][3]);
+    mo[0] = (sm0[0] + sm0[1]) + (sm0[2] + sm0[3]);
+    mo[1] = (sm1[0] + sm1[1]) + (sm1[2] + sm1[3]);
+    mo[2] = (sm2[0] + sm2[1]) + (sm2[2] + sm2[3]);
+#endif
+    for (; j < m; j++) {
+        const double *fj = F + 3 * j, *tj = T + 3 * j;
+        const double r0 = x[j] - o0, r1 = y[j] - o1, r2 = z[j] - o2;
+        f[0] += fj[0], f[1] += fj[1], f[2] += fj[2];
+        t[0] += tj[0], t[1] += tj[1], t[2] += tj[2];
+        mo[0] += r1 * fj[2] - r2 * fj[1];
+        mo[1] += r2 * fj[0] - r0 * fj[2];
+        mo[2] += r0 * fj[1] - r1 * fj[0];
+    }
+    acc->fw0 = -f[0], acc->fw1 = -f[1], acc->fw2 = -f[2];
+    acc->mw0 = -(mo[0] + t[0]), acc->mw1 = -(mo[1] + t[1]), acc->mw2 = -(mo[2] + t[2]);
 }
 
 /* The run through a model per contact (rs_law.force_one), each contact described as
@@ -205,16 +302,19 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
      * increments of a slot without the slip); without those rows rdisp(1) alone. Every
      * contact is held (its slot is live). */
     track_run r;
+    int ncontact = 0;
     if (out6) {
         run_gather(&r, m, out, 0, 1, hs);
         run_kinematics(&r, m, &mr, dt, p, 0, c, 0, 3, 0, 0, 1);
-    } else {
         for (int j = 0; j < m; j++)
-            r.rd1[j] = p->radius[j] - c->dist[j];
+            ncontact += r.rd1[j] > 0.0;
+    } else {
+        for (int j = 0; j < m; j++) {
+            const double rd1 = p->radius[j] - c->dist[j];
+            r.rd1[j] = rd1;
+            ncontact += rd1 > 0.0;
+        }
     }
-    int ncontact = 0;
-    for (int j = 0; j < m; j++)
-        ncontact += r.rd1[j] > 0.0;
 
     /* the model on the run, its state in the run's copy of the slots */
     force_run fr;
@@ -263,12 +363,18 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
     rc = law->force_run ? law->force_run(law, &fx, err) : run_by_one(law, &fx, err);
     if (rc)
         return rc;
-    /* any NaN or Inf of the forces and torques, and of the stresses as
-     * rs_wall_force_result gives them (wall_force_stress; zeros where the model acts not)
-     */
-    uint64_t acc = 0;
-    for (int k = 0; k < 3 * m; k++)
-        acc |= rs_nonfinite_bit(fr.FT[0][k]) | rs_nonfinite_bit(fr.FT[1][k]);
+    /* The wall's sums (each contact's moment about the wall's origin as rs_load_force_law
+     * gives it, unit area), which also tell whether any force or torque is NaN or Inf:
+     * a sum over values one of which is not finite is not finite (a finite sum that
+     * overflows only makes the contacts be looked at one by one). Then the stresses as
+     * rs_wall_force_result gives them (wall_force_stress; zeros where the model acts
+     * not). */
+    const double *const F = fr.FT[0], *const T = fr.FT[1];
+    rs_wall_acc fm;
+    wall_sums(F, T, p->x, p->y, p->z, origin, m, &fm);
+    uint64_t acc = rs_nonfinite_bit(fm.fw0) | rs_nonfinite_bit(fm.fw1) |
+                   rs_nonfinite_bit(fm.fw2) | rs_nonfinite_bit(fm.mw0) |
+                   rs_nonfinite_bit(fm.mw1) | rs_nonfinite_bit(fm.mw2);
     if (out6)
         for (int j = 0; j < m; j++) {
             const double n[3] = {c->nrm[0][j], c->nrm[1][j], c->nrm[2][j]};
@@ -288,20 +394,10 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
 
     /* every value is finite: the slots, the loads and the sums */
     out->nleave = 0;
-    store_frames(c, m, out);
+    store_frames(c, m, out, !(law->skips & RS_LAW_SKIPS_DROT));
     copy_statev(fr.hist, out->slot, sv, ns, m, 0);
     out->n = m;
-    /* the wall's sums in the contacts' order (each contact's moment about the wall's
-     * origin as rs_load_force_law gives it, unit area), then the loads onto the engine's
-     * rows */
-    const double *const F = fr.FT[0], *const T = fr.FT[1];
-    rs_wall_acc fm = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    for (int j = 0; j < m; j++) {
-        const double ctr[3] = {p->x[j], p->y[j], p->z[j]};
-        double Fo[3], To[3], Mo[3];
-        rs_load_force_law(1.0, F + 3 * j, T + 3 * j, ctr, origin, Fo, To, Mo);
-        rs_wall_acc_take(&fm, Fo, Mo);
-    }
+    /* the loads onto the engine's rows */
     const rs_load_rows lr = *rows;
     /* the engine's row of each contact: rows->row, or the run's own order */
     int idn[RS_TRACK_LINE_RUN];
@@ -311,9 +407,19 @@ int wall_force_line_run(rs_wall *w, const rs_wall_block *b, const rs_motion *mp,
             idn[j] = j;
         rk = idn;
     }
-    for (int j = 0; j < m; j++) {
-        add3(lr.f + 3 * (size_t)rk[j], F + 3 * j);
-        add3(lr.t + 3 * (size_t)rk[j], T + 3 * j);
+    {
+        int j = 0; /* two contacts an iteration, in their order */
+        for (; j + 2 <= m; j += 2) {
+            const size_t r0 = 3 * (size_t)rk[j], r1 = 3 * (size_t)rk[j + 1];
+            add3(lr.f + r0, F + 3 * j);
+            add3(lr.t + r0, T + 3 * j);
+            add3(lr.f + r1, F + 3 * j + 3);
+            add3(lr.t + r1, T + 3 * j + 3);
+        }
+        if (j < m) {
+            add3(lr.f + 3 * (size_t)rk[j], F + 3 * j);
+            add3(lr.t + 3 * (size_t)rk[j], T + 3 * j);
+        }
     }
     if (lr.fstore)
         for (int j = 0; j < m; j++) {

@@ -115,6 +115,9 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
     const int bounds = w->bounds_ok || w->list_bounds;
     double live[M];
     double *pl[M];
+    double lineF[12] = {0.0}; /* a revolved LINE's frame under the step's pose */
+    if (!w->line_mesh)
+        rs_line_revolution_frame(w->surf, &w->motion->pose, lineF);
     int next = 0;
     while (next < n) {
         /* The next run: particles of one type whose directory is usual (their one contact
@@ -178,8 +181,8 @@ int wall_line_block(rs_wall *w, const rs_wall_block *b, const rs_wall_rows *rows
             rs_mesh_held_balls(w->surf, &w->motion->pose, m, px, py, pz, pr, held, gap_max,
                                -rmax, w->hball, row, &c, face);
         } else {
-            rs_line_revolution_faces(w->surf, &w->motion->pose, m, px, py, pz, pr, gap_max,
-                                     &c, face);
+            rs_line_revolution_faces_in(w->surf, lineF, m, px, py, pz, pr, gap_max, &c,
+                                        face);
         }
         rs_frame_orient(w->surf->ops->frame, &c, 0, m);
         /* Usual still: the face contact within the tracking thickness (keep_tracked's

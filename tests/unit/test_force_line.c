@@ -44,9 +44,15 @@ typedef struct sim {
     long direct;   ///< the model's calls outside the block call (the line path's)
     long calls;    ///< all its calls
     int nan_at;    ///< the particle (id) whose contact gives NaN from this step on; 0: none
-    int by_run;    ///< the law has the run operation (tf_run)
-    long runs;     ///< its calls
+    int inf_torque; ///< there an infinite torque(3), not a NaN force(2)
+    int by_run;     ///< the law has the run operation (tf_run)
+    long runs;      ///< its calls
     long rn_differ; ///< its contacts whose rn is not (x - xm).n bit for bit
+    int skips_drot; ///< the law declares RS_LAW_SKIPS_DROT
+    long k;         ///< the step
+    /// each particle's last contact the model saw: its frame (n, t1) and step (-1: none)
+    double seen_n[NP][3], seen_t1[NP][3];
+    long seen_at[NP];
 } sim;
 
 static int tf_one(const rs_law *law, rs_force_contact *c, double F[3], double T[3],
@@ -57,6 +63,9 @@ static int tf_one(const rs_law *law, rs_force_contact *c, double F[3], double T[
     s->calls++;
     if (!s->in_update)
         s->direct++;
+    memcpy(s->seen_n[c->row], c->n, sizeof c->n);
+    memcpy(s->seen_t1[c->row], c->t1, sizeof c->t1);
+    s->seen_at[c->row] = s->k;
     double *h = c->history;
     if (c->overlap <= 0.0) {
         h[0] = h[1] = h[2] = h[3] = 0.0;
@@ -97,8 +106,12 @@ static int tf_one(const rs_law *law, rs_force_contact *c, double F[3], double T[
         const int a = (d + 1) % 3, b = (d + 2) % 3;
         T[d] = arm[a] * ft[b] - arm[b] * ft[a];
     }
-    if (s->nan_at && s->id[c->row] == s->nan_at)
-        F[1] = NAN;
+    if (s->nan_at && s->id[c->row] == s->nan_at) {
+        if (s->inf_torque)
+            T[2] = INFINITY;
+        else
+            F[1] = NAN;
+    }
     return 1;
 }
 
@@ -174,7 +187,7 @@ static int tf_engine_law(void *ctx, const char *const *words, int nwords,
     s->law.force_run = s->by_run ? tf_run : NULL;
     s->law.ctx = s;
     s->law.skips = RS_LAW_SKIPS_STRESS | RS_LAW_SKIPS_ENERGY | RS_LAW_SKIPS_SLIP |
-                   RS_LAW_SKIPS_DRDISP1;
+                   RS_LAW_SKIPS_DRDISP1 | (s->skips_drot ? RS_LAW_SKIPS_DROT : 0u);
     s->law.sets = RS_LAW_SETS_FORCE | RS_LAW_SETS_ENERGIES | RS_LAW_SETS_NO_HEAT |
                   RS_LAW_SETS_NO_CREEP_PLASTIC | RS_LAW_SETS_STRESS;
     *law = &s->law;
@@ -230,6 +243,7 @@ static int step(sim *s, long k, rs_wall_load *load, rs_error *err)
     memset(s->f, 0, sizeof s->f);
     memset(s->t, 0, sizeof s->t);
     memset(s->out, 0, sizeof s->out);
+    s->k = k;
     int rc = rs_wall_advance(s->w, DT, err);
     if (rc)
         return rc;
@@ -353,6 +367,66 @@ static void test_drum_line_path_and_staged_bit_for_bit(void)
     }
 }
 
+/* The drum with a model that keeps its tangential spring in space and so reads no drot:
+ * declared (RS_LAW_SKIPS_DROT) or not, its forces on the line path are the staged calls'
+ * bit for bit. Undeclared, the slot of each particle's contact holds the frame of the
+ * model's last call on it (what the next step's drot is made from), on the line path as
+ * in the block call; declared, the line path leaves the slot's frame as the block call
+ * stored it, so most contacts' slots (they move round with the drum) hold an older
+ * frame. */
+static void test_drum_frames_unless_the_law_skips_drot(void)
+{
+    for (int skips = 0; skips < 2; skips++) {
+        static sim a, b;
+        drum_particles(&a);
+        drum_particles(&b);
+        a.by_run = b.by_run = 1;
+        a.skips_drot = skips;
+        for (int i = 0; i < NP; i++)
+            a.seen_at[i] = -1;
+        rs_error e;
+        const int n = (int)(sizeof DRUM / sizeof DRUM[0]);
+        ENSURE(make(&a, DRUM, n, 0, &e) == RS_OK);
+        ENSURE(make(&b, DRUM, n, 1, &e) == RS_OK);
+        const long nsteps = 600;
+        long contacts = 0;
+        lockstep(&a, &b, nsteps, &contacts);
+        /* a particle's record: its capacity, its row, its slots of n, t1 and the 4 state
+         * variables */
+        const int size = rs_wall_pack_size(a.w), hs = 6 + 4;
+        double buf[1024];
+        ENSURE(size <= 1024);
+        int touched = 0, current = 0;
+        for (int i = 0; i < NP && size <= 1024; i++) {
+            if (a.seen_at[i] != nsteps - 1)
+                continue;
+            touched++;
+            ENSURE(rs_wall_pack(a.w, i, buf) == size);
+            const int cap = (int)buf[0], rs = size - 1 - cap * hs;
+            for (int j = 0; j < cap; j++) {
+                const double *h = buf + 1 + rs + j * hs;
+                if (same_bits(h, a.seen_n[i], sizeof a.seen_n[i]) &&
+                    same_bits(h + 3, a.seen_t1[i], sizeof a.seen_t1[i])) {
+                    current++;
+                    break;
+                }
+            }
+        }
+        printf(
+            "drum, %s RS_LAW_SKIPS_DROT: %ld contacts, the line path's %ld calls of "
+            "%ld; at the last step %d particles touch, %d slots hold that step's frame\n",
+            skips ? "with" : "without", contacts, a.direct, a.calls, touched, current);
+        rs_wall_free(a.w);
+        rs_wall_free(b.w);
+        ENSURE(contacts > nsteps * 30 && a.direct > a.calls / 2);
+        ENSURE(touched >= 30);
+        if (skips)
+            ENSURE(current < touched / 2);
+        else
+            ENSURE(current == touched);
+    }
+}
+
 /* A square plate z = 0 of side 0.1 m, two triangles along its diagonal, into path. */
 static int write_plate(char *path, size_t cap)
 {
@@ -414,15 +488,18 @@ static void test_mesh_line_path_and_staged_bit_for_bit(void)
 }
 
 /* A model that returns NaN for one particle: the step fails with the law's name, the
- * particle and what was not finite, and the engine's rows are as they were. */
+ * particle and what was not finite, and the engine's rows are as they were; likewise an
+ * infinite torque alone. */
 static void test_nan_stops_the_step(void)
 {
-    for (int v = 0; v < 3; v++) {
-        /* the line path with the model per contact, with the run operation; staged */
-        const int staged = v == 2;
+    for (int v = 0; v < 5; v++) {
+        /* the line path with the model per contact, with the run operation; staged; then
+         * the infinite torque on the line path with the run operation, and staged */
+        const int staged = v == 2 || v == 4;
         static sim s;
         drum_particles(&s);
-        s.by_run = v == 1;
+        s.by_run = v == 1 || v == 3;
+        s.inf_torque = v >= 3;
         rs_error e;
         const int n = (int)(sizeof DRUM / sizeof DRUM[0]);
         ENSURE(make(&s, DRUM, n, staged, &e) == RS_OK);
@@ -446,7 +523,7 @@ static void test_nan_stops_the_step(void)
         rs_wall_free(s.w);
         ENSURE(step_rc == RS_ERR_NONFINITE);
         ENSURE(strstr(e.msg, "law 'test'") && strstr(e.msg, "particle 3") &&
-               strstr(e.msg, "stress(1)"));
+               strstr(e.msg, s.inf_torque ? "torque(3)" : "stress(1)"));
         ENSURE(same_bits(f0, s.f, sizeof f0));
         ENSURE(staged ? s.direct == direct : s.direct > direct);
         ENSURE(s.by_run ? s.runs > runs : s.runs == 0);
@@ -456,6 +533,7 @@ static void test_nan_stops_the_step(void)
 int main(void)
 {
     RS_RUN(test_drum_line_path_and_staged_bit_for_bit);
+    RS_RUN(test_drum_frames_unless_the_law_skips_drot);
     RS_RUN(test_mesh_line_path_and_staged_bit_for_bit);
     RS_RUN(test_nan_stops_the_step);
     return rs_test_summary();
