@@ -98,15 +98,21 @@ static double spoiler_dist(const rs_mesh *m, int t, const double c[3])
     return best;
 }
 
+/* Case k's soup and its MESH of two sides. */
+static int case_mesh(int k, soup *sp, rs_surface *s)
+{
+    memset(sp, 0, sizeof *sp);
+    make_case(k, sp);
+    return make(sp, 2, s);
+}
+
 static void triangle_plain_is_the_brute_force(void)
 {
     int plain = 0, spoiled = 0;
     for (int k = 0; k < NCASE; k++) {
         soup sp;
-        memset(&sp, 0, sizeof sp);
-        make_case(k, &sp);
         rs_surface s;
-        ENSURE(make(&sp, 2, &s) == RS_OK);
+        ENSURE(case_mesh(k, &sp, &s) == RS_OK);
         const rs_mesh *m = s.impl;
         const double scale = k == 0 ? 20.0 : 1.0;
         for (int i = 0; i < 20000; i++) {
@@ -156,10 +162,8 @@ static void flat_regions_are_the_flood(void)
     int lists = 0, joined = 0;
     for (int k = 0; k < NCASE; k++) {
         soup sp;
-        memset(&sp, 0, sizeof sp);
-        make_case(k, &sp);
         rs_surface s;
-        ENSURE(make(&sp, 2, &s) == RS_OK);
+        ENSURE(case_mesh(k, &sp, &s) == RS_OK);
         const rs_mesh *m = s.impl;
         for (int rep = 0; rep < 400; rep++) {
             int n = 1 + (int)(urand() * 40);
