@@ -289,30 +289,19 @@ int rs_pcache_face(const rs_pcache *pc, int k, double px, double py, double dlo,
     if (!pc->ps || k < 0 || k >= pc->nseg || pc->ps[k].type != RS_LINE)
         return -1;
     const rs_pseg *q = &pc->ps[k];
-    const double reach = (pc->sides == 2 || dhi > -dlo) ? dhi : -dlo;
-    if (!(reach >= 0.0) || dlo > dhi || box_far(q->box, px, py, reach))
-        return 0;
-    /* near_seg's candidate: within reach of the line, owned, the contact eval_seg makes */
-    const double wx = px - q->o[0], wy = py - q->o[1];
-    const double nx = -q->t[1], ny = q->t[0], sd = wx * nx + wy * ny;
-    int in_start, in_end;
-    rs_pseg_owns(q, px, py, &in_start, &in_end);
-    if (fabs(sd) > reach || !(in_start && in_end))
-        return 0;
-    const int flip = pc->sides == 2 && sd < 0.0;
-    const double dist = flip ? -sd : sd;
-    if (!(dist >= dlo && dist <= dhi))
+    double dist, hx, hy;
+    int flip;
+    if (!rs_pseg_line_face(q, pc->sides == 2, px, py, dlo, dhi, &dist, &flip, &hx, &hy))
         return 0;
     const int j1 = k + 1 == pc->nvert ? 0 : k + 1;
     if (pc->sides == 1 && dist < 0.0 &&
         ((pc->vk[k] == RS_VTX_CONVEX && face_dropped(pc, k, dist, k, px, py)) ||
          (pc->vk[j1] == RS_VTX_CONVEX && face_dropped(pc, k, dist, j1, px, py))))
         return 0;
-    double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
-    tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
+    const double nx = -q->t[1], ny = q->t[0];
     h->feature = RS_FEATURE(RS_FEAT_FACE, k);
-    h->x[0] = q->o[0] + tau * q->e[0];
-    h->x[1] = q->o[1] + tau * q->e[1];
+    h->x[0] = hx;
+    h->x[1] = hy;
     h->n[0] = flip ? -nx : nx;
     h->n[1] = flip ? -ny : ny;
     h->dist = dist;

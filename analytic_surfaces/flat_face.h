@@ -46,26 +46,12 @@ static inline int rs_flat_face_at(const rs_flat_face *restrict kit, const double
     const double lz = wx * F[F_Z] + wy * F[F_Z + 1] + wz * F[F_Z + 2];
     if (kit->bounded && !(lz >= kit->zmin && lz <= kit->zmax))
         return 0;
-    const rs_pseg *restrict q = kit->q;
-    const double reach = (kit->two || dhi > -dlo) ? dhi : -dlo;
-    if (!(reach >= 0.0) || dlo > dhi || q->box[0] - u > reach || u - q->box[1] > reach ||
-        q->box[2] - v > reach || v - q->box[3] > reach)
-        return 0;
-    const double ox = u - q->o[0], oy = v - q->o[1];
-    const double nx = -q->t[1], ny = q->t[0], sd = ox * nx + oy * ny;
-    int in_start, in_end;
-    rs_pseg_owns(q, u, v, &in_start, &in_end);
-    if (fabs(sd) > reach || !(in_start && in_end))
-        return 0;
-    const int flip = kit->two && sd < 0.0;
-    const double d = flip ? -sd : sd;
-    if (!(d >= dlo && d <= dhi))
+    double d, hx, hy;
+    int flip;
+    if (!rs_pseg_line_face(kit->q, kit->two, u, v, dlo, dhi, &d, &flip, &hx, &hy))
         return 0;
     if (kit->drop && d < 0.0)
         return -1;
-    double tau = (ox * q->e[0] + oy * q->e[1]) * q->inv_len2;
-    tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
-    const double hx = q->o[0] + tau * q->e[0], hy = q->o[1] + tau * q->e[1];
     *dist = d;
     for (int j = 0; j < 3; j++)
         xm[j] = F[F_A + j] + hx * F[F_X + j] + hy * F[F_Y + j] + lz * F[F_Z + j];

@@ -137,6 +137,36 @@ static inline void rs_pseg_owns(const rs_pseg *q, double px, double py, int *in_
     *in_end = q->end_incl ? dA <= 0.0 : dA < 0.0;
 }
 
+/* The contact of profile-plane point (px, py) on LINE q's face within [dlo, dhi] (two:
+ * SIDES=2, where a point behind the face meets its flipped side): 1 with the distance
+ * (*dist), whether the side is the flipped one (*flip) and the foot (hx, hy); 0 where the
+ * point is beyond reach, not owned by q, or outside the window. The test the profile's
+ * cache makes of a LINE's face (rs_pcache_face) and a flat face's kit (flat_face.h). */
+static inline int rs_pseg_line_face(const rs_pseg *q, int two, double px, double py,
+                                    double dlo, double dhi, double *dist, int *flip,
+                                    double *hx, double *hy)
+{
+    const double reach = (two || dhi > -dlo) ? dhi : -dlo;
+    if (!(reach >= 0.0) || dlo > dhi || q->box[0] - px > reach || px - q->box[1] > reach ||
+        q->box[2] - py > reach || py - q->box[3] > reach)
+        return 0;
+    const double wx = px - q->o[0], wy = py - q->o[1];
+    const double nx = -q->t[1], ny = q->t[0], sd = wx * nx + wy * ny;
+    int in_start, in_end;
+    rs_pseg_owns(q, px, py, &in_start, &in_end);
+    if (fabs(sd) > reach || !(in_start && in_end))
+        return 0;
+    const int f = two && sd < 0.0;
+    const double d = f ? -sd : sd;
+    if (!(d >= dlo && d <= dhi))
+        return 0;
+    double tau = (wx * q->e[0] + wy * q->e[1]) * q->inv_len2;
+    tau = tau < 0.0 ? 0.0 : tau > 1.0 ? 1.0 : tau;
+    *dist = d, *flip = f;
+    *hx = q->o[0] + tau * q->e[0], *hy = q->o[1] + tau * q->e[1];
+    return 1;
+}
+
 typedef struct rs_pvert {
     double v[2];
     double ta[2], tb[2]; ///< end tangent of segment sa, start tangent of segment sb
